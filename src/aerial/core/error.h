@@ -1,0 +1,25 @@
+#pragma once
+// One error type for every boundary of the program (configs, CLI values, files, Vulkan results).
+// It names what was wrong (field), the offending value and what was allowed, so a message is
+// actionable on its own. It is thrown at the boundary and caught once, in main().
+#include <stdexcept>
+#include <string>
+
+namespace aerial {
+
+class Error : public std::runtime_error {
+ public:
+  // field: dotted name of the input ("rayleigh.scattering[1]", "--altitude-m", "cache header").
+  // value: the bad value as text. allowed: the accepted range or form. where: file or context.
+  Error(std::string field, std::string value, std::string allowed, std::string where = "");
+
+  const std::string& field() const { return field_; }
+  const std::string& value() const { return value_; }
+  const std::string& allowed() const { return allowed_; }
+  const std::string& where() const { return where_; }
+
+ private:
+  std::string field_, value_, allowed_, where_;
+};
+
+}  // namespace aerial
