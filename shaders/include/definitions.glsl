@@ -1,0 +1,59 @@
+// Shared definitions of every aerial shader: constants, the atmosphere uniform block and the small
+// numerical guards that keep rounding from producing NaNs (Bruneton 2017, definitions.glsl and
+// functions.glsl "ClampCosine", "SafeSqrt"). Lengths are in meters, coefficients in m^-1.
+#ifndef AERIAL_DEFINITIONS_GLSL
+#define AERIAL_DEFINITIONS_GLSL
+
+const float PI = 3.14159265358979323846;
+
+// One layer of a density profile (Bruneton 2017, DensityProfileLayer):
+// density(h) = exp_term * exp(exp_scale * h) + linear_term * h + constant_term, clamped to [0, 1].
+struct DensityProfileLayer {
+  float width;
+  float exp_term;
+  float exp_scale;
+  float linear_term;
+  float constant_term;
+  float pad0;
+  float pad1;
+  float pad2;
+};
+
+// layers[0] below layers[0].width, layers[1] above.
+struct DensityProfile {
+  DensityProfileLayer layers[2];
+};
+
+// Mirrored by aerial::AtmosphereUniforms (src/aerial/precompute/atmosphere_uniforms.h).
+layout(std140, set = 0, binding = 0) uniform AtmosphereBlock {
+  vec4 solar_irradiance;        // W/m^2/nm, xyz = the three wavelengths.
+  vec4 rayleigh_scattering;
+  vec4 mie_scattering;
+  vec4 mie_extinction;
+  vec4 absorption_extinction;
+  vec4 ground_albedo;
+  DensityProfile rayleigh_density;
+  DensityProfile mie_density;
+  DensityProfile absorption_density;
+  float bottom_radius;
+  float top_radius;
+  float sun_angular_radius;
+  float mie_phase_g;
+  float mu_s_min;
+  float pad0;
+  float pad1;
+  float pad2;
+  ivec4 transmittance_size;     // x: mu, y: r.
+  ivec4 irradiance_size;        // x: mu_s, y: r.
+  ivec4 scattering_size;        // x: r, y: mu, z: mu_s, w: nu (w == 1: the 3D variant).
+  ivec4 density_directions;     // x: zenith samples above the horizon, y: below, z: azimuths in [0, pi].
+  ivec4 sample_counts;          // x: transmittance steps, y: single and multiple scattering steps,
+                                // z: irradiance zenith samples, w: irradiance azimuth samples.
+} atmosphere;
+
+float ClampCosine(float mu) { return clamp(mu, -1.0, 1.0); }
+float ClampDistance(float d) { return max(d, 0.0); }
+float ClampRadius(float r) { return clamp(r, atmosphere.bottom_radius, atmosphere.top_radius); }
+float SafeSqrt(float a) { return sqrt(max(a, 0.0)); }
+
+#endif

@@ -1,0 +1,54 @@
+// Ray geometry inside a spherical shell (Bruneton 2017, functions.glsl section "Distance to the top
+// and bottom atmosphere boundaries"). A ray starts at radius r with cos(view zenith) = mu.
+#ifndef AERIAL_GEOMETRY_GLSL
+#define AERIAL_GEOMETRY_GLSL
+#include "definitions.glsl"
+
+// d = -r mu + sqrt(r^2 (mu^2 - 1) + R_top^2): the positive root of |x + d v| = R_top.
+float DistanceToTopAtmosphereBoundary(float r, float mu) {
+  float discriminant = r * r * (mu * mu - 1.0) + atmosphere.top_radius * atmosphere.top_radius;
+  return ClampDistance(-r * mu + SafeSqrt(discriminant));
+}
+
+// d = -r mu - sqrt(r^2 (mu^2 - 1) + R_bottom^2): the nearer root of |x + d v| = R_bottom.
+float DistanceToBottomAtmosphereBoundary(float r, float mu) {
+  float discriminant =
+      r * r * (mu * mu - 1.0) + atmosphere.bottom_radius * atmosphere.bottom_radius;
+  return ClampDistance(-r * mu - SafeSqrt(discriminant));
+}
+
+// The ray hits the ground when it points down and the discriminant is non-negative.
+bool RayIntersectsGround(float r, float mu) {
+  return mu < 0.0 && r * r * (mu * mu - 1.0) +
+                             atmosphere.bottom_radius * atmosphere.bottom_radius >= 0.0;
+}
+
+float DistanceToNearestAtmosphereBoundary(float r, float mu, bool ray_r_mu_intersects_ground) {
+  return ray_r_mu_intersects_ground ? DistanceToBottomAtmosphereBoundary(r, mu)
+                                    : DistanceToTopAtmosphereBoundary(r, mu);
+}
+
+// Radius and view cosine at distance d along the ray (law of cosines).
+float RadiusAtDistance(float r, float mu, float d) {
+  return ClampRadius(sqrt(d * d + 2.0 * r * mu * d + r * r));
+}
+float MuAtDistance(float r, float mu, float d, float r_d) {
+  return ClampCosine((r * mu + d) / r_d);
+}
+// The sun is at infinity: cos(sun zenith) at the point is (r mu_s + d nu) / r_d.
+float MuSAtDistance(float r, float mu_s, float nu, float d, float r_d) {
+  return ClampCosine((r * mu_s + d * nu) / r_d);
+}
+
+float GetLayerDensity(DensityProfileLayer layer, float altitude) {
+  float density = layer.exp_term * exp(layer.exp_scale * altitude) +
+                  layer.linear_term * altitude + layer.constant_term;
+  return clamp(density, 0.0, 1.0);
+}
+
+float GetProfileDensity(DensityProfile profile, float altitude) {
+  return altitude < profile.layers[0].width ? GetLayerDensity(profile.layers[0], altitude)
+                                            : GetLayerDensity(profile.layers[1], altitude);
+}
+
+#endif

@@ -1,0 +1,51 @@
+// Ground irradiance: the direct sun term (computed, never tabulated at render time) and the
+// indirect sky term (Bruneton 2017, functions.glsl "Ground irradiance").
+#ifndef AERIAL_IRRADIANCE_GLSL
+#define AERIAL_IRRADIANCE_GLSL
+#include "scattering.glsl"
+
+// Direct irradiance on a horizontal surface. The cosine is averaged over the sun disc while it
+// crosses the horizon: 0 below -alpha, mu_s above alpha, (mu_s + alpha)^2 / (4 alpha) between
+// (Bruneton 2017 "ComputeDirectIrradiance").
+vec3 ComputeDirectIrradiance(sampler2D transmittance_texture, float r, float mu_s) {
+  float alpha_s = atmosphere.sun_angular_radius;
+  float average_cosine_factor =
+      mu_s < -alpha_s ? 0.0
+                      : (mu_s > alpha_s ? mu_s : (mu_s + alpha_s) * (mu_s + alpha_s) / (4.0 * alpha_s));
+  return atmosphere.solar_irradiance.rgb *
+         GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, mu_s) *
+         average_cosine_factor;
+}
+
+// Indirect irradiance of order `order`: the radiance of that order integrated over the upper
+// hemisphere with the cosine weight, by the midpoint rule in zenith and azimuth.
+vec3 ComputeIndirectIrradiance(sampler3D single_rayleigh_texture, sampler3D single_mie_texture,
+                               sampler3D multiple_scattering_texture, float r, float mu_s,
+                               int order) {
+  int zenith_samples = atmosphere.sample_counts.z;
+  int azimuth_samples = atmosphere.sample_counts.w;
+  float d_theta = 0.5 * PI / float(zenith_samples);
+  float d_phi = 2.0 * PI / float(azimuth_samples);
+  vec3 omega_s = vec3(sqrt(max(1.0 - mu_s * mu_s, 0.0)), 0.0, mu_s);
+  vec3 irradiance = vec3(0.0);
+  for (int j = 0; j < zenith_samples; ++j) {
+    float theta = (float(j) + 0.5) * d_theta;
+    for (int i = 0; i < azimuth_samples; ++i) {
+      float phi = (float(i) + 0.5) * d_phi;
+      vec3 omega = vec3(cos(phi) * sin(theta), sin(phi) * sin(theta), cos(theta));
+      float domega = d_theta * d_phi * sin(theta);
+      float nu = dot(omega, omega_s);
+      irradiance += GetScatteringOfOrder(single_rayleigh_texture, single_mie_texture,
+                                         multiple_scattering_texture, r, omega.z, mu_s, nu,
+                                         false, order) *
+                    omega.z * domega;
+    }
+  }
+  return irradiance;
+}
+
+vec3 GetIrradiance(sampler2D irradiance_texture, float r, float mu_s) {
+  return texture(irradiance_texture, GetIrradianceTextureUvFromRMuS(r, mu_s)).rgb;
+}
+
+#endif

@@ -1,0 +1,180 @@
+// Texture coordinate mappings of the precomputed tables (Bruneton 2017, functions.glsl sections
+// "Precomputation" of each table). Every mapping comes as a pair, table coordinate from physical
+// parameters and back, and every coordinate lands on texel centers so that no lookup reads past the
+// domain.
+//
+// The horizon. The scattering table's mu axis is split in two halves: u_mu < 0.5 holds rays that
+// hit the ground and u_mu > 0.5 rays that reach the top of the atmosphere. Both halves place the
+// horizon at their outer texel centers (u -> 0 and u -> 1) and the zenith/nadir in the middle, so a
+// bilinear fetch never blends a ground ray with a sky ray: that blending is what draws the bright or
+// dark line at the horizon in ports that map mu linearly. The caller passes the ground flag
+// explicitly (RayIntersectsGround of the camera ray) and uses the same flag for every lookup along
+// one ray, so the two ends of an aerial-perspective segment can never fall in different halves.
+// Near the horizon the mapping is in terms of the distance to the boundary, which varies smoothly
+// there, instead of mu, whose derivative diverges.
+#ifndef AERIAL_MAPPINGS_GLSL
+#define AERIAL_MAPPINGS_GLSL
+#include "geometry.glsl"
+
+// x in [0,1] -> texel-center coordinate of a table of `size` texels, and back.
+float GetTextureCoordFromUnitRange(float x, int size) {
+  return 0.5 / float(size) + x * (1.0 - 1.0 / float(size));
+}
+float GetUnitRangeFromTextureCoord(float u, int size) {
+  return (u - 0.5 / float(size)) / (1.0 - 1.0 / float(size));
+}
+
+// H: distance to the top boundary of a horizontal ray from the ground.
+float HorizonDistanceFromGround() {
+  return sqrt(atmosphere.top_radius * atmosphere.top_radius -
+              atmosphere.bottom_radius * atmosphere.bottom_radius);
+}
+
+// ---- Transmittance table: x = d/d_max mapping of mu, y = rho/H mapping of r. ----
+vec2 GetTransmittanceTextureUvFromRMu(float r, float mu) {
+  float H = HorizonDistanceFromGround();
+  float rho = SafeSqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
+  float d = DistanceToTopAtmosphereBoundary(r, mu);
+  float d_min = atmosphere.top_radius - r;
+  float d_max = rho + H;
+  float x_mu = (d - d_min) / (d_max - d_min);
+  float x_r = rho / H;
+  return vec2(GetTextureCoordFromUnitRange(x_mu, atmosphere.transmittance_size.x),
+              GetTextureCoordFromUnitRange(x_r, atmosphere.transmittance_size.y));
+}
+
+void GetRMuFromTransmittanceTextureUv(vec2 uv, out float r, out float mu) {
+  float x_mu = GetUnitRangeFromTextureCoord(uv.x, atmosphere.transmittance_size.x);
+  float x_r = GetUnitRangeFromTextureCoord(uv.y, atmosphere.transmittance_size.y);
+  float H = HorizonDistanceFromGround();
+  float rho = H * x_r;
+  r = sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
+  float d_min = atmosphere.top_radius - r;
+  float d_max = rho + H;
+  float d = d_min + x_mu * (d_max - d_min);
+  mu = d == 0.0 ? 1.0 : (H * H - rho * rho - d * d) / (2.0 * r * d);
+  mu = ClampCosine(mu);
+}
+
+// ---- Irradiance table: linear in r and mu_s. ----
+vec2 GetIrradianceTextureUvFromRMuS(float r, float mu_s) {
+  float x_r = (r - atmosphere.bottom_radius) / (atmosphere.top_radius - atmosphere.bottom_radius);
+  float x_mu_s = mu_s * 0.5 + 0.5;
+  return vec2(GetTextureCoordFromUnitRange(x_mu_s, atmosphere.irradiance_size.x),
+              GetTextureCoordFromUnitRange(x_r, atmosphere.irradiance_size.y));
+}
+
+void GetRMuSFromIrradianceTextureUv(vec2 uv, out float r, out float mu_s) {
+  float x_mu_s = GetUnitRangeFromTextureCoord(uv.x, atmosphere.irradiance_size.x);
+  float x_r = GetUnitRangeFromTextureCoord(uv.y, atmosphere.irradiance_size.y);
+  r = atmosphere.bottom_radius + x_r * (atmosphere.top_radius - atmosphere.bottom_radius);
+  mu_s = ClampCosine(2.0 * x_mu_s - 1.0);
+}
+
+// ---- Scattering table: (u_nu, u_mu_s, u_mu, u_r) in [0,1]^4. ----
+// mu_s is mapped through the distance to the top boundary from the ground, normalized so that
+// mu_s_min maps to 0; this spends more texels near the horizon where scattering changes fastest.
+float GetScatteringUMuS(float mu_s) {
+  float H = HorizonDistanceFromGround();
+  float d_min = atmosphere.top_radius - atmosphere.bottom_radius;
+  float d_max = H;
+  float a = (DistanceToTopAtmosphereBoundary(atmosphere.bottom_radius, mu_s) - d_min) /
+            (d_max - d_min);
+  float D = DistanceToTopAtmosphereBoundary(atmosphere.bottom_radius, atmosphere.mu_s_min);
+  float A = (D - d_min) / (d_max - d_min);
+  return GetTextureCoordFromUnitRange(max(1.0 - a / A, 0.0) / (1.0 + a),
+                                      atmosphere.scattering_size.z);
+}
+
+float GetMuSFromScatteringUMuS(float u_mu_s) {
+  float H = HorizonDistanceFromGround();
+  float x_mu_s = GetUnitRangeFromTextureCoord(u_mu_s, atmosphere.scattering_size.z);
+  float d_min = atmosphere.top_radius - atmosphere.bottom_radius;
+  float d_max = H;
+  float D = DistanceToTopAtmosphereBoundary(atmosphere.bottom_radius, atmosphere.mu_s_min);
+  float A = (D - d_min) / (d_max - d_min);
+  float a = (A - x_mu_s * A) / (1.0 + x_mu_s * A);
+  float d = d_min + min(a, A) * (d_max - d_min);
+  return d == 0.0 ? 1.0
+                  : ClampCosine((H * H - d * d) / (2.0 * atmosphere.bottom_radius * d));
+}
+
+float GetScatteringUR(float r) {
+  float H = HorizonDistanceFromGround();
+  float rho = SafeSqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
+  return GetTextureCoordFromUnitRange(rho / H, atmosphere.scattering_size.x);
+}
+
+float GetRFromScatteringUR(float u_r) {
+  float rho = HorizonDistanceFromGround() *
+              GetUnitRangeFromTextureCoord(u_r, atmosphere.scattering_size.x);
+  return sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
+}
+
+vec4 GetScatteringTextureUvwzFromRMuMuSNu(float r, float mu, float mu_s, float nu,
+                                          bool ray_r_mu_intersects_ground) {
+  float H = HorizonDistanceFromGround();
+  float rho = SafeSqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
+  float r_mu = r * mu;
+  float discriminant = r_mu * r_mu - r * r + atmosphere.bottom_radius * atmosphere.bottom_radius;
+  int half_mu = atmosphere.scattering_size.y / 2;
+  float u_mu;
+  if (ray_r_mu_intersects_ground) {
+    // Distance to the ground, from r - R (nadir) to rho (horizon).
+    float d = -r_mu - SafeSqrt(discriminant);
+    float d_min = r - atmosphere.bottom_radius;
+    float d_max = rho;
+    u_mu = 0.5 - 0.5 * GetTextureCoordFromUnitRange(
+                           d_max == d_min ? 0.0 : (d - d_min) / (d_max - d_min), half_mu);
+  } else {
+    // Distance to the top boundary, from R_top - r (zenith) to rho + H (horizon).
+    float d = -r_mu + SafeSqrt(discriminant + H * H);
+    float d_min = atmosphere.top_radius - r;
+    float d_max = rho + H;
+    u_mu = 0.5 + 0.5 * GetTextureCoordFromUnitRange((d - d_min) / (d_max - d_min), half_mu);
+  }
+  return vec4((nu + 1.0) / 2.0, GetScatteringUMuS(mu_s), u_mu, GetScatteringUR(r));
+}
+
+void GetRMuMuSNuFromScatteringTextureUvwz(vec4 uvwz, out float r, out float mu, out float mu_s,
+                                          out float nu, out bool ray_r_mu_intersects_ground) {
+  float H = HorizonDistanceFromGround();
+  r = GetRFromScatteringUR(uvwz.w);
+  float rho = SafeSqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
+  int half_mu = atmosphere.scattering_size.y / 2;
+  if (uvwz.z < 0.5) {
+    float d_min = r - atmosphere.bottom_radius;
+    float d_max = rho;
+    float d = d_min + (d_max - d_min) * GetUnitRangeFromTextureCoord(1.0 - 2.0 * uvwz.z, half_mu);
+    mu = d == 0.0 ? -1.0 : ClampCosine(-(rho * rho + d * d) / (2.0 * r * d));
+    ray_r_mu_intersects_ground = true;
+  } else {
+    float d_min = atmosphere.top_radius - r;
+    float d_max = rho + H;
+    float d = d_min + (d_max - d_min) * GetUnitRangeFromTextureCoord(2.0 * uvwz.z - 1.0, half_mu);
+    mu = d == 0.0 ? 1.0 : ClampCosine((H * H - rho * rho - d * d) / (2.0 * r * d));
+    ray_r_mu_intersects_ground = false;
+  }
+  mu_s = GetMuSFromScatteringUMuS(uvwz.y);
+  nu = ClampCosine(uvwz.x * 2.0 - 1.0);
+}
+
+// The texel (x, y, z) of the 3D image that packs the 4D table: x = nu_index * MU_S + mu_s_index.
+// nu samples span [-1, 1] exactly (nu_size texels, end points included); the other axes use texel
+// centers. nu is then clamped to the values that (mu, mu_s) allow.
+void GetRMuMuSNuFromScatteringTexel(ivec3 texel, out float r, out float mu, out float mu_s,
+                                    out float nu, out bool ray_r_mu_intersects_ground) {
+  int mu_s_size = atmosphere.scattering_size.z;
+  int nu_size = atmosphere.scattering_size.w;
+  float nu_index = float(texel.x / mu_s_size);
+  float mu_s_index = float(texel.x % mu_s_size);
+  vec4 uvwz = vec4(nu_size > 1 ? nu_index / float(nu_size - 1) : 0.5,
+                   (mu_s_index + 0.5) / float(mu_s_size),
+                   (float(texel.y) + 0.5) / float(atmosphere.scattering_size.y),
+                   (float(texel.z) + 0.5) / float(atmosphere.scattering_size.x));
+  GetRMuMuSNuFromScatteringTextureUvwz(uvwz, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+  float spread = sqrt((1.0 - mu * mu) * (1.0 - mu_s * mu_s));
+  nu = clamp(nu, mu * mu_s - spread, mu * mu_s + spread);
+}
+
+#endif

@@ -1,0 +1,68 @@
+// Transmittance: computing the table and reading it (Bruneton 2017, functions.glsl "Transmittance").
+#ifndef AERIAL_TRANSMITTANCE_GLSL
+#define AERIAL_TRANSMITTANCE_GLSL
+#include "mappings.glsl"
+
+// Extinction coefficient at radius r: sum of Rayleigh, Mie and ozone, each scaled by its density.
+vec3 GetExtinction(float r) {
+  float altitude = r - atmosphere.bottom_radius;
+  return atmosphere.rayleigh_scattering.rgb *
+             GetProfileDensity(atmosphere.rayleigh_density, altitude) +
+         atmosphere.mie_extinction.rgb * GetProfileDensity(atmosphere.mie_density, altitude) +
+         atmosphere.absorption_extinction.rgb *
+             GetProfileDensity(atmosphere.absorption_density, altitude);
+}
+
+// T = exp(-integral of extinction) from (r, mu) to the top boundary, by the trapezoidal rule
+// (Bruneton 2017 eq. "ComputeOpticalLengthToTopAtmosphereBoundary").
+vec3 ComputeTransmittanceToTopAtmosphereBoundary(float r, float mu) {
+  int steps = atmosphere.sample_counts.x;
+  float dx = DistanceToTopAtmosphereBoundary(r, mu) / float(steps);
+  vec3 optical_depth = vec3(0.0);
+  for (int i = 0; i <= steps; ++i) {
+    float d_i = float(i) * dx;
+    float r_i = sqrt(d_i * d_i + 2.0 * r * mu * d_i + r * r);
+    float weight = (i == 0 || i == steps) ? 0.5 : 1.0;
+    optical_depth += GetExtinction(r_i) * (weight * dx);
+  }
+  return exp(-optical_depth);
+}
+
+vec3 GetTransmittanceToTopAtmosphereBoundary(sampler2D transmittance_texture, float r, float mu) {
+  return texture(transmittance_texture, GetTransmittanceTextureUvFromRMu(r, mu)).rgb;
+}
+
+// Transmittance over the first d meters of a ray, as a ratio of two table values. For rays that hit
+// the ground both values are taken on the reversed ray (-mu), which never hits the ground, so the
+// table is only ever read for rays that reach the top boundary (Bruneton 2017 "GetTransmittance").
+vec3 GetTransmittance(sampler2D transmittance_texture, float r, float mu, float d,
+                      bool ray_r_mu_intersects_ground) {
+  float r_d = RadiusAtDistance(r, mu, d);
+  float mu_d = MuAtDistance(r, mu, d, r_d);
+  if (ray_r_mu_intersects_ground) {
+    return min(GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r_d, -mu_d) /
+                   GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, -mu),
+               vec3(1.0));
+  }
+  return min(GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, mu) /
+                 GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r_d, mu_d),
+             vec3(1.0));
+}
+
+// Fraction of the sun disc (angular radius alpha) above the horizon seen from radius r. With x the
+// elevation of the disc center above the horizon in units of alpha, the visible area of a uniform
+// disc cut by a straight horizon is 1/2 + (x sqrt(1 - x^2) + asin x) / pi.
+float GetSunVisibleFraction(float r, float mu_s) {
+  float sin_theta_h = atmosphere.bottom_radius / r;
+  float cos_theta_h = -sqrt(max(1.0 - sin_theta_h * sin_theta_h, 0.0));
+  float x = clamp((mu_s - cos_theta_h) / (sin_theta_h * atmosphere.sun_angular_radius), -1.0, 1.0);
+  return 0.5 + (x * sqrt(1.0 - x * x) + asin(x)) / PI;
+}
+
+// Transmittance of sunlight to radius r, including the part of the sun hidden by the planet.
+vec3 GetTransmittanceToSun(sampler2D transmittance_texture, float r, float mu_s) {
+  return GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, mu_s) *
+         GetSunVisibleFraction(r, mu_s);
+}
+
+#endif

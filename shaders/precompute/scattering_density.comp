@@ -1,0 +1,71 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Pass 4b (orders >= 2): the scattering density J(r, mu, mu_s, nu) of order n (Bruneton 2008
+// eq. 7): the incident radiance of pass 4a convolved with each species' phase function and scaled
+// by its scattering coefficient. One workgroup shares one (r, mu_s, nu) and stages the incident
+// radiance in shared memory; the threads differ only in mu.
+//
+// The discrete phase weights are renormalized to sum to 1 (the phase functions' exact integral):
+// with a finite direction grid Mie's forward peak would otherwise gain or lose energy depending on
+// where it falls between grid directions.
+#include "density_directions.glsl"
+#include "mappings.glsl"
+#include "phase.glsl"
+layout(local_size_x = 1, local_size_y = 64) in;
+layout(std430, set = 0, binding = 1) readonly buffer IncidentRadiance { vec4 weighted_radiance[]; };
+layout(std430, set = 0, binding = 2) readonly buffer Directions { vec4 directions[]; };
+layout(set = 0, binding = 3) writeonly uniform image3D scattering_density_image;
+
+const int kMaxDirections = 1024;
+shared vec3 shared_radiance[kMaxDirections];
+shared vec4 shared_direction[kMaxDirections];
+
+void main() {
+  ivec3 texel = ivec3(gl_GlobalInvocationID);
+  int direction_count = DensityDirectionCount();
+  int mu_s_size = atmosphere.scattering_size.z;
+  int mu_s_index = texel.x % mu_s_size;
+  int first = (texel.z * mu_s_size + mu_s_index) * direction_count;
+  for (int k = int(gl_LocalInvocationIndex); k < direction_count; k += 64) {
+    shared_radiance[k] = weighted_radiance[first + k].rgb;
+    shared_direction[k] = directions[texel.z * direction_count + k];
+  }
+  barrier();
+  if (texel.y >= atmosphere.scattering_size.y) return;
+
+  float r, mu, mu_s, nu;
+  bool ray_r_mu_intersects_ground;
+  GetRMuMuSNuFromScatteringTexel(texel, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+  // View direction in the sun frame (sun at azimuth 0), and its mirror image under y -> -y.
+  float sin_theta = sqrt(max(1.0 - mu * mu, 0.0));
+  float sin_theta_s = sqrt(max(1.0 - mu_s * mu_s, 0.0));
+  float cos_phi = sin_theta * sin_theta_s > 0.0
+                      ? clamp((nu - mu * mu_s) / (sin_theta * sin_theta_s), -1.0, 1.0)
+                      : 1.0;
+  vec3 omega = vec3(sin_theta * cos_phi, sin_theta * sqrt(max(1.0 - cos_phi * cos_phi, 0.0)), mu);
+  vec3 omega_mirror = vec3(omega.x, -omega.y, omega.z);
+
+  float g = atmosphere.mie_phase_g;
+  vec3 rayleigh_sum = vec3(0.0);
+  vec3 mie_sum = vec3(0.0);
+  float rayleigh_norm = 0.0;
+  float mie_norm = 0.0;
+  for (int k = 0; k < direction_count; ++k) {
+    vec4 omega_i = shared_direction[k];  // w: the cell's solid angle
+    float c0 = dot(omega, omega_i.xyz);
+    float c1 = dot(omega_mirror, omega_i.xyz);
+    float rayleigh_phase = RayleighPhaseFunction(c0) + RayleighPhaseFunction(c1);
+    float mie_phase = MiePhaseFunction(g, c0) + MiePhaseFunction(g, c1);
+    rayleigh_sum += shared_radiance[k] * rayleigh_phase;
+    mie_sum += shared_radiance[k] * mie_phase;
+    rayleigh_norm += omega_i.w * rayleigh_phase;
+    mie_norm += omega_i.w * mie_phase;
+  }
+  float altitude = r - atmosphere.bottom_radius;
+  vec3 density =
+      atmosphere.rayleigh_scattering.rgb * GetProfileDensity(atmosphere.rayleigh_density, altitude) *
+          rayleigh_sum / rayleigh_norm +
+      atmosphere.mie_scattering.rgb * GetProfileDensity(atmosphere.mie_density, altitude) * mie_sum /
+          mie_norm;
+  imageStore(scattering_density_image, texel, vec4(density, 0.0));
+}

@@ -1,0 +1,139 @@
+#include "aerial/core/atomic_file.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <random>
+#include <string>
+#include <system_error>
+
+#include "aerial/core/error.h"
+
+namespace aerial {
+namespace fs = std::filesystem;
+namespace {
+
+// One message shape for all I/O failures: the file, what we tried and why the OS refused.
+[[noreturn]] void Fail(const fs::path& path, const std::string& action, int error_number) {
+  throw Error("file", path.string(),
+              "a path where we can " + action + " (" + std::strerror(error_number) + ")");
+}
+
+// Closes the descriptor on every exit path, including exceptions.
+struct Fd {
+  int fd = -1;
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+fs::path ParentOf(const fs::path& path) {
+  fs::path parent = path.parent_path();
+  return parent.empty() ? fs::path(".") : parent;
+}
+
+// Creates the parent directory when missing, and fails clearly when it is not a directory
+// (e.g. a regular file sits where a directory component should be).
+void EnsureParentDirectory(const fs::path& path) {
+  fs::path parent = ParentOf(path);
+  std::error_code ec;
+  fs::create_directories(parent, ec);
+  if (ec) Fail(path, "create the directory " + parent.string(), ec.value());
+  if (!fs::is_directory(parent, ec)) Fail(path, "use " + parent.string() + " as a directory", ENOTDIR);
+}
+
+// The pid separates concurrent processes; the random part separates threads and reused pids.
+fs::path TemporaryNameFor(const fs::path& path) {
+  static thread_local std::mt19937_64 random{std::random_device{}()};
+  char suffix[64];
+  std::snprintf(suffix, sizeof suffix, ".tmp-%ld-%016llx", static_cast<long>(::getpid()),
+                static_cast<unsigned long long>(random()));
+  fs::path temporary = path;
+  temporary += suffix;
+  return temporary;
+}
+
+void WriteAll(int fd, const std::byte* data, size_t size, const fs::path& temporary) {
+  while (size > 0) {
+    ssize_t written = ::write(fd, data, size);
+    if (written < 0) {
+      if (errno == EINTR) continue;
+      Fail(temporary, "write", errno);
+    }
+    data += written;
+    size -= static_cast<size_t>(written);
+  }
+}
+
+// Makes the rename itself durable. Some file systems cannot fsync a directory (EINVAL); there
+// the rename is as durable as the file system allows and nothing is lost by skipping it.
+void SyncDirectory(const fs::path& directory) {
+  Fd dir{::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)};
+  if (dir.fd < 0) Fail(directory, "open the directory to sync it", errno);
+  if (::fsync(dir.fd) != 0 && errno != EINVAL) Fail(directory, "sync the directory", errno);
+}
+
+}  // namespace
+
+void WriteFileAtomically(const fs::path& path, std::span<const std::byte> bytes) {
+  EnsureParentDirectory(path);
+  const fs::path temporary = TemporaryNameFor(path);
+  Fd file{::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)};
+  if (file.fd < 0) Fail(path, "create the temporary " + temporary.filename().string(), errno);
+  try {
+    WriteAll(file.fd, bytes.data(), bytes.size(), temporary);
+    if (::fsync(file.fd) != 0) Fail(temporary, "sync", errno);
+    // close() can report a deferred write error (NFS, quota), so check it rather than the destructor.
+    int fd = file.fd;
+    file.fd = -1;
+    if (::close(fd) != 0) Fail(temporary, "close", errno);
+    if (::rename(temporary.c_str(), path.c_str()) != 0) Fail(path, "rename a file over", errno);
+  } catch (...) {
+    ::unlink(temporary.c_str());
+    throw;
+  }
+  SyncDirectory(ParentOf(path));
+}
+
+void WriteFileAtomically(const fs::path& path, std::string_view text) {
+  WriteFileAtomically(path, std::as_bytes(std::span(text.data(), text.size())));
+}
+
+std::vector<std::byte> ReadFile(const fs::path& path) {
+  Fd file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
+  if (file.fd < 0) Fail(path, "open a file for reading", errno);
+  struct stat info;
+  if (::fstat(file.fd, &info) != 0) Fail(path, "stat", errno);
+  if (S_ISDIR(info.st_mode)) Fail(path, "read a file", EISDIR);
+  std::vector<std::byte> bytes;
+  bytes.reserve(static_cast<size_t>(info.st_size));
+  // Read until end of file rather than trusting st_size: /proc files and pipes report 0.
+  std::byte chunk[1 << 16];
+  for (;;) {
+    ssize_t got = ::read(file.fd, chunk, sizeof chunk);
+    if (got < 0) {
+      if (errno == EINTR) continue;
+      Fail(path, "read", errno);
+    }
+    if (got == 0) break;
+    bytes.insert(bytes.end(), chunk, chunk + got);
+  }
+  return bytes;
+}
+
+void CheckWritable(const fs::path& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) Fail(path, "write a file", EISDIR);
+  EnsureParentDirectory(path);
+  // Creating a file tests the very operation the write will do; access(W_OK) checks permission
+  // bits only and misses, e.g., NFS root squashing or a full inode table.
+  const fs::path probe = TemporaryNameFor(path);
+  Fd file{::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)};
+  if (file.fd < 0) Fail(path, "create a file in " + ParentOf(path).string(), errno);
+  ::unlink(probe.c_str());
+}
+
+}  // namespace aerial

@@ -1,0 +1,28 @@
+#pragma once
+// Whole-file I/O for outputs that take long to make (table caches, images, reports). A reader
+// must never see half a file, even if the program is killed mid-write or the disk fills up, so
+// every write goes to a temporary in the same directory and is renamed over the target (rename(2)
+// is atomic within one file system). Failures throw aerial::Error naming the path and the OS reason.
+#include <cstddef>
+#include <filesystem>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace aerial {
+
+// Writes bytes to path atomically: path then holds either its old content or all of bytes.
+// Missing parent directories are created. The data is fsync'ed before the rename, and the
+// directory after it, so the new content also survives a power cut.
+void WriteFileAtomically(const std::filesystem::path& path, std::span<const std::byte> bytes);
+void WriteFileAtomically(const std::filesystem::path& path, std::string_view text);
+
+// Reads the whole file.
+std::vector<std::byte> ReadFile(const std::filesystem::path& path);
+
+// Checks, before any long work, that WriteFileAtomically(path, ...) can succeed: the parent
+// directory exists (it is created if missing) and a file can be created in it, and path is not
+// a directory. It cannot foresee a full disk.
+void CheckWritable(const std::filesystem::path& path);
+
+}  // namespace aerial

@@ -1,0 +1,73 @@
+#include "aerial/core/progress.h"
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <memory>
+
+namespace aerial {
+namespace {
+
+TEST(ProgressLine, ShowsBarCountAndLabel) {
+  EXPECT_EQ(ProgressLine("precompute", 3, 9, "scattering density (order 2)", 9),
+            "precompute [###......] 3/9 scattering density (order 2)");
+  EXPECT_EQ(ProgressLine("", 0, 4, "", 4), "[....] 0/4");
+  EXPECT_EQ(ProgressLine("t", 4, 4, "done", 4), "t [####] 4/4 done");
+}
+
+TEST(ProgressLine, ClampsOutOfRangeCounts) {
+  EXPECT_EQ(ProgressLine("t", 7, 4, "", 4), "t [####] 4/4");
+  EXPECT_EQ(ProgressLine("t", 1, 0, "", 4), "t [####] 1/0");  // no division by zero.
+}
+
+// Redirected output (a regular file here) must stay clean: no bar, no newline.
+TEST(Progress, PrintsNothingWhenNotATerminal) {
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::tmpfile(), &std::fclose);
+  ASSERT_NE(file, nullptr);
+  {
+    Progress progress("precompute", 3, file.get());
+    EXPECT_FALSE(progress.enabled());
+    progress.Advance("transmittance");
+    progress.Advance("irradiance");
+  }
+  EXPECT_EQ(std::ftell(file.get()), 0);
+}
+
+// A pseudo-terminal stands in for the user's terminal. Skipped where none can be opened.
+TEST(Progress, DrawsOnTerminalUnlessQuiet) {
+  int master = ::posix_openpt(O_RDWR | O_NOCTTY);
+  if (master < 0 || ::grantpt(master) != 0 || ::unlockpt(master) != 0) {
+    if (master >= 0) ::close(master);
+    GTEST_SKIP() << "no pseudo-terminal available";
+  }
+  std::FILE* terminal = std::fopen(::ptsname(master), "w");
+  ASSERT_NE(terminal, nullptr);
+  ::unsetenv("AERIAL_NO_PROGRESS");
+  {
+    Progress progress("precompute", 2, terminal);
+    EXPECT_TRUE(progress.enabled());
+    progress.Advance("transmittance");
+    progress.Advance("irradiance");
+  }
+  EXPECT_FALSE(Progress("t", 1, terminal, /*quiet=*/true).enabled());
+  ::setenv("AERIAL_NO_PROGRESS", "1", 1);
+  EXPECT_FALSE(Progress("t", 1, terminal).enabled());
+  ::unsetenv("AERIAL_NO_PROGRESS");
+  std::fclose(terminal);
+
+  char buffer[512] = {};
+  ::fcntl(master, F_SETFL, O_NONBLOCK);
+  ssize_t got = ::read(master, buffer, sizeof buffer - 1);
+  ::close(master);
+  ASSERT_GT(got, 0);
+  std::string text(buffer, static_cast<size_t>(got));
+  EXPECT_NE(text.find("\rprecompute [##########..........] 1/2 transmittance"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("\rprecompute [####################] 2/2 irradiance"), std::string::npos)
+      << text;
+}
+
+}  // namespace
+}  // namespace aerial
