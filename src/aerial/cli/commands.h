@@ -1,0 +1,10 @@
+#pragma once
+// Each subcommand registers its options and its action on the root application.
+#include <CLI/CLI.hpp>
+
+namespace aerial::cli {
+
+void AddPrecomputeCommand(CLI::App& app);
+void AddProbeCommand(CLI::App& app);
+
+}  // namespace aerial::cli

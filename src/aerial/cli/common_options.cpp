@@ -1,0 +1,45 @@
+#include "aerial/cli/common_options.h"
+
+#include "aerial/atmosphere/config.h"
+
+namespace aerial::cli {
+
+void TableOptions::AddTo(CLI::App& command) {
+  command.add_option("--atmosphere", atmosphere_file,
+                     "Atmosphere parameters (TOML); default: the built-in \"earth\"");
+  command.add_option("--lut", lut, "Scattering table variant: 4d (r, mu, mu_s, nu) or 3d (nu dropped)")
+      ->check(CLI::IsMember({"4d", "3d"}));
+  command.add_option("--orders", orders, "Scattering orders to precompute (1-16)")->check(CLI::Range(1, 16));
+  command.add_flag("--half", half_precision, "Store the scattering tables as 16-bit floats");
+  command.add_flag("--small-tables", small_tables, "Quarter-resolution tables (tests, quick looks)");
+  command.add_option("--cache-dir", cache_dir, "Table cache directory (default ~/.cache/aerial)");
+  command.add_flag("--no-cache", no_cache, "Recompute the tables even when a cached copy exists");
+  command.add_option("--device", device, "Vulkan device to use: part of its name (or AERIAL_DEVICE)");
+  command.add_flag("--validation", validation, "Enable the Vulkan validation layers (or AERIAL_VALIDATION=1)");
+  command.add_flag("--quiet", quiet, "No progress bar");
+}
+
+AtmosphereParameters TableOptions::LoadAtmosphere() const {
+  return atmosphere_file.empty() ? AtmosphereParameters::Earth() : LoadAtmosphereFile(atmosphere_file);
+}
+
+PrecomputeOptions TableOptions::MakePrecomputeOptions() const {
+  LutVariant variant = ParseLutVariant(lut, "--lut");
+  PrecomputeOptions options = small_tables ? PrecomputeOptions::Small(variant) : PrecomputeOptions{};
+  options.variant = variant;
+  if (variant == LutVariant::k3D) options.resolution.scattering_nu = 1;
+  options.orders = orders;
+  options.precision = half_precision ? TablePrecision::kFloat16 : TablePrecision::kFloat32;
+  options.Validate();
+  return options;
+}
+
+std::unique_ptr<vk::Context> TableOptions::MakeContext() const {
+  return std::make_unique<vk::Context>(vk::ContextCreateInfo{.device_name = device, .validation = validation});
+}
+
+TableStoreOptions TableOptions::MakeStoreOptions() const {
+  return {.cache_dir = cache_dir, .read_cache = !no_cache, .write_cache = true, .quiet = quiet};
+}
+
+}  // namespace aerial::cli

@@ -1,0 +1,35 @@
+#pragma once
+// Options shared by every command that uses tables: the atmosphere file, the table variant and
+// resolution knobs, the cache, the Vulkan device.
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "aerial/atmosphere/parameters.h"
+#include "aerial/precompute/table_store.h"
+#include "aerial/vk/context.h"
+
+namespace aerial::cli {
+
+struct TableOptions {
+  std::filesystem::path atmosphere_file;
+  std::string lut = "4d";
+  int orders = 4;
+  bool half_precision = false;
+  bool small_tables = false;
+  std::filesystem::path cache_dir;
+  bool no_cache = false;
+  std::string device;
+  bool validation = false;
+  bool quiet = false;
+
+  void AddTo(CLI::App& command);
+  AtmosphereParameters LoadAtmosphere() const;
+  PrecomputeOptions MakePrecomputeOptions() const;
+  std::unique_ptr<vk::Context> MakeContext() const;
+  TableStoreOptions MakeStoreOptions() const;
+};
+
+}  // namespace aerial::cli

@@ -1,0 +1,35 @@
+// aerial: physically based sky and aerial perspective. Errors from any boundary (configs, CLI
+// values, files, Vulkan) arrive here as exceptions, are printed once and turn into exit status 1.
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+
+#include "aerial/cli/commands.h"
+#include "aerial/core/error.h"
+#include "aerial/vk/context.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"aerial: precomputed atmospheric scattering (Bruneton 2008) on Vulkan"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", AERIAL_VERSION);
+  aerial::cli::AddPrecomputeCommand(app);
+  aerial::cli::AddProbeCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const aerial::Error& e) {
+    std::fprintf(stderr, "aerial: error: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "aerial: error: %s\n", e.what());
+    return 1;
+  }
+  // With validation on, any message is a failure even if the command otherwise succeeded.
+  if (int messages = aerial::vk::Context::ValidationMessageCount(); messages > 0) {
+    std::fprintf(stderr, "aerial: error: %d Vulkan validation message(s)\n", messages);
+    return 3;
+  }
+  return 0;
+}

@@ -1,0 +1,37 @@
+// aerial precompute: build (or validate) the cached tables and report the GPU time of each pass.
+#include <cstdio>
+#include <memory>
+
+#include "aerial/cli/commands.h"
+#include "aerial/cli/common_options.h"
+
+namespace aerial::cli {
+
+void AddPrecomputeCommand(CLI::App& app) {
+  auto options = std::make_shared<TableOptions>();
+  CLI::App* command = app.add_subcommand("precompute", "Precompute the atmosphere tables into the cache");
+  options->AddTo(*command);
+  command->add_option("--out", options->cache_dir, "Directory for the table cache (alias of --cache-dir)");
+  command->callback([options] {
+    AtmosphereParameters atmosphere = options->LoadAtmosphere();
+    PrecomputeOptions precompute = options->MakePrecomputeOptions();
+    auto context = options->MakeContext();
+    LoadedTables loaded = LoadOrPrecompute(*context, atmosphere, precompute, options->MakeStoreOptions());
+    std::printf("device: %s\ntables: %s (%s)\n", context->device_name().c_str(),
+                loaded.tables->options().Describe().c_str(), atmosphere.name.c_str());
+    std::printf("table memory: %.2f MiB\n", double(loaded.tables->table_bytes()) / (1 << 20));
+    if (loaded.from_cache) {
+      std::printf("cache: %s (valid, reused; --no-cache recomputes)\n", loaded.cache_file.c_str());
+      return;
+    }
+    std::printf("cache: %s (written)\nGPU time per pass:\n", loaded.cache_file.c_str());
+    double total = 0.0;
+    for (const auto& pass : loaded.pass_times) {
+      std::printf("  %-36s %10.1f ms\n", pass.pass.c_str(), pass.milliseconds);
+      total += pass.milliseconds;
+    }
+    std::printf("  %-36s %10.1f ms\n", "total", total);
+  });
+}
+
+}  // namespace aerial::cli

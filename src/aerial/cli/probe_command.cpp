@@ -1,0 +1,112 @@
+// aerial probe: the sky seen by one camera along one view ray, as JSON, from the tables or from
+// the CPU reference. Other tools script against the option and key names: keep them stable.
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+#include "aerial/cli/commands.h"
+#include "aerial/cli/common_options.h"
+#include "aerial/probe/table_probe.h"
+#include "aerial/reference/reference.h"
+
+namespace aerial::cli {
+namespace {
+
+struct ProbeOptions {
+  TableOptions tables;
+  ViewAngles view;
+  std::optional<double> distance_m;
+  bool reference = false;
+};
+
+nlohmann::json ToJson(const Spectrum& s) { return nlohmann::json::array({s[0], s[1], s[2]}); }
+
+ProbeResult ProbeWithReference(const AtmosphereParameters& atmosphere, const RayParameters& ray,
+                               std::optional<double> distance, int orders) {
+  reference::Reference model(atmosphere);
+  ProbeResult result{};
+  result.sky_radiance = model.ComputeRadiance(ray.r, ray.mu, ray.mu_s, ray.nu, orders).value;
+  result.transmittance = model.TransmittanceToBoundary(ray.r, ray.mu);
+  result.sun_irradiance = model.ComputeDirectIrradiance(ray.r, ray.mu_s);
+  // The tables hold the sky irradiance of orders 1..N-1 (Bruneton 2008 Algorithm 4.1).
+  if (orders > 1)
+    result.sky_irradiance = model.ComputeSkyIrradiance(ray.r, ray.mu_s, orders - 1).value;
+  double alpha = atmosphere.sun_angular_radius_rad;
+  for (int i = 0; i < 3; ++i)
+    result.solar_radiance[i] = atmosphere.solar_irradiance[i] / (M_PI * alpha * alpha);
+  if (distance) {
+    result.radiance_to_point =
+        model.ComputeRadiance(ray.r, ray.mu, ray.mu_s, ray.nu, orders, *distance).value;
+    result.transmittance_to_point = model.Transmittance(ray.r, ray.mu, *distance);
+  }
+  return result;
+}
+
+void RunProbe(const ProbeOptions& options) {
+  AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
+  ValidateViewAngles(options.view, atmosphere);
+  if (options.distance_m && (!std::isfinite(*options.distance_m) || *options.distance_m < 0.0))
+    throw Error("--distance-m", std::to_string(*options.distance_m), "a distance >= 0 in meters");
+  PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
+  RayParameters ray = ToRayParameters(options.view, atmosphere);
+
+  ProbeResult result;
+  if (options.reference) {
+    result = ProbeWithReference(atmosphere, ray, options.distance_m, precompute.orders);
+  } else {
+    auto context = options.tables.MakeContext();
+    LoadedTables loaded =
+        LoadOrPrecompute(*context, atmosphere, precompute, options.tables.MakeStoreOptions());
+    ProbeQuery query{ray, options.distance_m.value_or(0.0)};
+    result = ProbeTables(*loaded.tables, std::span(&query, 1)).front();
+  }
+
+  nlohmann::json json;
+  json["source"] = options.reference ? "reference" : "tables";
+  json["lut"] = options.tables.lut;
+  json["atmosphere"] = atmosphere.name;
+  json["wavelengths_nm"] = ToJson(atmosphere.wavelengths_nm);
+  json["altitude_m"] = options.view.altitude_m;
+  json["view_zenith_deg"] = options.view.view_zenith_deg;
+  json["sun_zenith_deg"] = options.view.sun_zenith_deg;
+  json["azimuth_deg"] = options.view.azimuth_deg;
+  json["sky_radiance"] = ToJson(result.sky_radiance);
+  json["transmittance"] = ToJson(result.transmittance);
+  json["sun_irradiance"] = ToJson(result.sun_irradiance);
+  json["sky_irradiance"] = ToJson(result.sky_irradiance);
+  json["solar_radiance"] = ToJson(result.solar_radiance);
+  if (options.distance_m) {
+    json["distance_m"] = *options.distance_m;
+    json["radiance_to_point"] = ToJson(result.radiance_to_point);
+    json["transmittance_to_point"] = ToJson(result.transmittance_to_point);
+  }
+  std::printf("%s\n", json.dump(2).c_str());
+}
+
+}  // namespace
+
+void AddProbeCommand(CLI::App& app) {
+  auto options = std::make_shared<ProbeOptions>();
+  CLI::App* command = app.add_subcommand("probe", "Print the sky for one camera and view ray as JSON");
+  options->tables.AddTo(*command);
+  command->add_option("--altitude-m", options->view.altitude_m, "Camera altitude above the ground (m)")
+      ->required();
+  command->add_option("--view-zenith-deg", options->view.view_zenith_deg, "View zenith angle (deg)")
+      ->required();
+  command->add_option("--sun-zenith-deg", options->view.sun_zenith_deg, "Sun zenith angle (deg)")
+      ->required();
+  command->add_option("--azimuth-deg", options->view.azimuth_deg,
+                      "Angle between the horizontal parts of view and sun (deg); 0: toward the sun")
+      ->required();
+  command->add_option("--distance-m", options->distance_m,
+                      "Also report radiance_to_point and transmittance_to_point for this distance (m)");
+  command->add_flag("--reference", options->reference,
+                    "Compute with the CPU double-precision reference instead of the tables");
+  command->callback([options] { RunProbe(*options); });
+}
+
+}  // namespace aerial::cli

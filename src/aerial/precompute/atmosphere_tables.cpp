@@ -1,0 +1,118 @@
+#include "aerial/precompute/atmosphere_tables.h"
+
+#include <cstring>
+
+#include "aerial/core/error.h"
+
+namespace aerial {
+namespace {
+
+::vk::Format ScatteringFormat(TablePrecision precision) {
+  return precision == TablePrecision::kFloat32 ? ::vk::Format::eR32G32B32A32Sfloat
+                                               : ::vk::Format::eR16G16B16A16Sfloat;
+}
+
+::vk::Extent3D ScatteringExtent(const TableResolution& r) {
+  return {uint32_t(r.scattering_nu * r.scattering_mu_s), uint32_t(r.scattering_mu),
+          uint32_t(r.scattering_r)};
+}
+
+}  // namespace
+
+AtmosphereTables::AtmosphereTables(const vk::Context& context,
+                                   const AtmosphereParameters& atmosphere,
+                                   const PrecomputeOptions& options)
+    : context_(context),
+      atmosphere_(atmosphere),
+      options_(options),
+      uniforms_(MakeAtmosphereUniforms(atmosphere, options)),
+      uniform_buffer_(context, {.size = sizeof(AtmosphereUniforms),
+                                .usage = ::vk::BufferUsageFlagBits::eUniformBuffer,
+                                .host_visible = true}),
+      sampler_(vk::CreateLinearClampSampler(context)),
+      // Transmittance and irradiance stay float32 in every precision: they are tiny, and half
+      // floats band visibly in the transmittance (Bruneton 2017 notes the same).
+      transmittance_(context, {.extent = {uint32_t(options.resolution.transmittance_mu),
+                                          uint32_t(options.resolution.transmittance_r), 1}}),
+      irradiance_(context, {.extent = {uint32_t(options.resolution.irradiance_mu_s),
+                                       uint32_t(options.resolution.irradiance_r), 1}}),
+      rayleigh_(context, {.extent = ScatteringExtent(options.resolution),
+                          .format = ScatteringFormat(options.precision)}),
+      mie_(context, {.extent = ScatteringExtent(options.resolution),
+                     .format = ScatteringFormat(options.precision)}) {
+  uniform_buffer_.Write(std::as_bytes(std::span(&uniforms_, 1)));
+  context_.Submit([&](const auto& cmd) {
+    for (const vk::Image* image : {&transmittance_, &irradiance_, &rayleigh_, &mie_})
+      image->InitializeLayout(cmd);
+  });
+}
+
+size_t AtmosphereTables::table_bytes() const {
+  return transmittance_.byte_size() + irradiance_.byte_size() + rayleigh_.byte_size() +
+         mie_.byte_size();
+}
+
+TableCacheKey AtmosphereTables::cache_key() const {
+  return {.atmosphere_hash = atmosphere_.Hash(), .options_hash = options_.Hash()};
+}
+
+namespace {
+
+struct NamedImage {
+  const char* name;
+  const vk::Image* image;
+};
+
+TexelFormat ToTexelFormat(::vk::Format format) {
+  return format == ::vk::Format::eR16G16B16A16Sfloat ? TexelFormat::kRgba16f : TexelFormat::kRgba32f;
+}
+
+}  // namespace
+
+TableCache AtmosphereTables::Download() const {
+  TableCache cache;
+  cache.key = cache_key();
+  cache.description = atmosphere_.name + ": " + options_.Describe();
+  for (NamedImage table : {NamedImage{"transmittance", &transmittance_},
+                           NamedImage{"irradiance", &irradiance_}, NamedImage{"rayleigh", &rayleigh_},
+                           NamedImage{"mie", &mie_}}) {
+    vk::Buffer staging(context_, {.size = table.image->byte_size(),
+                                  .usage = ::vk::BufferUsageFlagBits::eTransferDst,
+                                  .host_visible = true});
+    context_.Submit([&](const auto& cmd) {
+      table.image->CopyToBuffer(cmd, staging);
+      vk::FullBarrier(cmd);
+    });
+    ::vk::Extent3D e = table.image->extent();
+    CachedTable cached{.name = table.name, .width = e.width, .height = e.height, .depth = e.depth,
+                       .format = ToTexelFormat(table.image->format())};
+    cached.texels.assign(staging.mapped(), staging.mapped() + table.image->byte_size());
+    cache.tables.push_back(std::move(cached));
+  }
+  return cache;
+}
+
+void AtmosphereTables::Upload(const TableCache& cache) {
+  for (NamedImage table : {NamedImage{"transmittance", &transmittance_},
+                           NamedImage{"irradiance", &irradiance_}, NamedImage{"rayleigh", &rayleigh_},
+                           NamedImage{"mie", &mie_}}) {
+    const CachedTable* cached = nullptr;
+    for (const auto& t : cache.tables)
+      if (t.name == table.name) cached = &t;
+    ::vk::Extent3D e = table.image->extent();
+    if (!cached || cached->width != e.width || cached->height != e.height ||
+        cached->depth != e.depth || cached->texels.size() != table.image->byte_size())
+      throw Error(std::string("cache table ") + table.name, cached ? "wrong size" : "missing",
+                  std::to_string(e.width) + "x" + std::to_string(e.height) + "x" + std::to_string(e.depth));
+    vk::Buffer staging(context_, {.size = cached->texels.size(),
+                                  .usage = ::vk::BufferUsageFlagBits::eTransferSrc,
+                                  .host_visible = true});
+    staging.Write(cached->texels);
+    context_.Submit([&](const auto& cmd) {
+      table.image->CopyFromBuffer(cmd, staging);
+      vk::FullBarrier(cmd);
+    });
+  }
+}
+
+}  // namespace aerial

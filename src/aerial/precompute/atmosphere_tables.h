@@ -1,0 +1,55 @@
+#pragma once
+// The precomputed tables on the GPU, for either variant, behind one interface: transmittance
+// T(r, mu), ground irradiance E(r, mu_s), and Rayleigh (single + multiple / P_R) and Mie (single)
+// scattering without phase, 4D packed in 3D (x = nu * MU_S + mu_s) or 3D (nu dropped). Shaders
+// read them through shaders/include/sky_lookup.glsl whatever the variant.
+#include <memory>
+
+#include "aerial/atmosphere/parameters.h"
+#include "aerial/precompute/atmosphere_uniforms.h"
+#include "aerial/precompute/precompute_options.h"
+#include "aerial/precompute/table_cache.h"
+#include "aerial/vk/resources.h"
+
+namespace aerial {
+
+class AtmosphereTables {
+ public:
+  // Allocates the tables (contents undefined until Precompute or Load).
+  AtmosphereTables(const vk::Context& context, const AtmosphereParameters& atmosphere,
+                   const PrecomputeOptions& options);
+
+  const vk::Context& context() const { return context_; }
+  const AtmosphereParameters& atmosphere() const { return atmosphere_; }
+  const PrecomputeOptions& options() const { return options_; }
+  const AtmosphereUniforms& uniforms() const { return uniforms_; }
+  const vk::Buffer& uniform_buffer() const { return uniform_buffer_; }
+  ::vk::Sampler sampler() const { return *sampler_; }
+
+  const vk::Image& transmittance() const { return transmittance_; }
+  const vk::Image& irradiance() const { return irradiance_; }
+  const vk::Image& rayleigh() const { return rayleigh_; }
+  const vk::Image& mie() const { return mie_; }
+
+  // GPU memory of the four tables, in bytes.
+  size_t table_bytes() const;
+  TableCacheKey cache_key() const;
+
+  // Reads the tables back for the cache, or uploads cached ones.
+  TableCache Download() const;
+  void Upload(const TableCache& cache);
+
+ private:
+  const vk::Context& context_;
+  AtmosphereParameters atmosphere_;
+  PrecomputeOptions options_;
+  AtmosphereUniforms uniforms_;
+  vk::Buffer uniform_buffer_;
+  ::vk::raii::Sampler sampler_;
+  vk::Image transmittance_;
+  vk::Image irradiance_;
+  vk::Image rayleigh_;
+  vk::Image mie_;
+};
+
+}  // namespace aerial

@@ -1,0 +1,49 @@
+#include "aerial/precompute/atmosphere_uniforms.h"
+
+namespace aerial {
+namespace {
+
+std::array<float, 4> ToFloat4(const Spectrum& s) {
+  return {float(s[0]), float(s[1]), float(s[2]), 0.0f};
+}
+
+std::array<GpuDensityLayer, 2> ToGpu(const DensityProfile& profile) {
+  std::array<GpuDensityLayer, 2> layers{};
+  for (int i = 0; i < 2; ++i) {
+    const DensityProfileLayer& l = profile.layers[i];
+    layers[i] = {float(l.width_m), float(l.exp_term), float(l.exp_scale_per_m),
+                 float(l.linear_term_per_m), float(l.constant_term), 0, 0, 0};
+  }
+  return layers;
+}
+
+}  // namespace
+
+AtmosphereUniforms MakeAtmosphereUniforms(const AtmosphereParameters& a,
+                                          const PrecomputeOptions& options) {
+  const TableResolution& r = options.resolution;
+  const SampleCounts& s = options.samples;
+  AtmosphereUniforms u{};
+  u.solar_irradiance = ToFloat4(a.solar_irradiance);
+  u.rayleigh_scattering = ToFloat4(a.rayleigh_scattering);
+  u.mie_scattering = ToFloat4(a.mie_scattering);
+  u.mie_extinction = ToFloat4(a.mie_extinction);
+  u.absorption_extinction = ToFloat4(a.absorption_extinction);
+  u.ground_albedo = ToFloat4(a.ground_albedo);
+  u.rayleigh_density = ToGpu(a.rayleigh_density);
+  u.mie_density = ToGpu(a.mie_density);
+  u.absorption_density = ToGpu(a.absorption_density);
+  u.bottom_radius = float(a.bottom_radius_m);
+  u.top_radius = float(a.top_radius_m);
+  u.sun_angular_radius = float(a.sun_angular_radius_rad);
+  u.mie_phase_g = float(a.mie_phase_g);
+  u.mu_s_min = float(a.mu_s_min);
+  u.transmittance_size = {r.transmittance_mu, r.transmittance_r, 0, 0};
+  u.irradiance_size = {r.irradiance_mu_s, r.irradiance_r, 0, 0};
+  u.scattering_size = {r.scattering_r, r.scattering_mu, r.scattering_mu_s, r.scattering_nu};
+  u.density_directions = {s.density_theta_up, s.density_theta_down, s.density_phi, 0};
+  u.sample_counts = {s.transmittance_steps, s.ray_steps, s.irradiance_zenith, s.irradiance_azimuth};
+  return u;
+}
+
+}  // namespace aerial

@@ -1,0 +1,94 @@
+#include "aerial/precompute/precompute_options.h"
+
+#include <cstring>
+
+#include "aerial/core/error.h"
+
+namespace aerial {
+
+std::string ToString(LutVariant variant) { return variant == LutVariant::k4D ? "4d" : "3d"; }
+
+LutVariant ParseLutVariant(const std::string& text, const std::string& field) {
+  if (text == "4d") return LutVariant::k4D;
+  if (text == "3d") return LutVariant::k3D;
+  throw Error(field, text, "4d or 3d");
+}
+
+PrecomputeOptions PrecomputeOptions::Small(LutVariant variant) {
+  PrecomputeOptions options;
+  options.variant = variant;
+  options.resolution = {.transmittance_mu = 128, .transmittance_r = 32, .irradiance_mu_s = 32,
+                        .irradiance_r = 8, .scattering_r = 16, .scattering_mu = 64,
+                        .scattering_mu_s = 16, .scattering_nu = variant == LutVariant::k4D ? 8 : 1};
+  options.samples.density_theta_up = 12;
+  options.samples.density_theta_down = 4;
+  options.samples.density_phi = 12;
+  return options;
+}
+
+namespace {
+void CheckRange(const std::string& field, int value, int low, int high) {
+  if (value < low || value > high)
+    throw Error(field, std::to_string(value), "an integer in [" + std::to_string(low) + ", " +
+                                                  std::to_string(high) + "]");
+}
+}  // namespace
+
+void PrecomputeOptions::Validate() const {
+  CheckRange("orders", orders, 1, 16);
+  const TableResolution& r = resolution;
+  CheckRange("transmittance width (mu)", r.transmittance_mu, 4, 4096);
+  CheckRange("transmittance height (r)", r.transmittance_r, 4, 4096);
+  CheckRange("irradiance width (mu_s)", r.irradiance_mu_s, 4, 4096);
+  CheckRange("irradiance height (r)", r.irradiance_r, 2, 4096);
+  CheckRange("scattering r", r.scattering_r, 2, 512);
+  CheckRange("scattering mu", r.scattering_mu, 4, 1024);
+  if (r.scattering_mu % 2 != 0)
+    throw Error("scattering mu", std::to_string(r.scattering_mu), "an even number (split at the horizon)");
+  CheckRange("scattering mu_s", r.scattering_mu_s, 2, 512);
+  if (variant == LutVariant::k3D)
+    CheckRange("scattering nu (3d variant)", r.scattering_nu, 1, 1);
+  else
+    CheckRange("scattering nu", r.scattering_nu, 2, 64);
+  // The 3D image packs nu and mu_s along x: its width is bounded by maxImageDimension3D (>= 2048).
+  CheckRange("scattering nu * mu_s", r.scattering_nu * r.scattering_mu_s, 2, 2048);
+  const SampleCounts& s = samples;
+  CheckRange("transmittance steps", s.transmittance_steps, 8, 10000);
+  CheckRange("ray steps", s.ray_steps, 4, 1000);
+  CheckRange("irradiance zenith samples", s.irradiance_zenith, 2, 512);
+  CheckRange("irradiance azimuth samples", s.irradiance_azimuth, 2, 1024);
+  CheckRange("density zenith cells above the horizon", s.density_theta_up, 2, 128);
+  CheckRange("density zenith cells below the horizon", s.density_theta_down, 1, 128);
+  CheckRange("density azimuth cells", s.density_phi, 1, 128);
+  // The density pass stages the direction grid in 32 KiB of shared memory (kMaxDirections).
+  CheckRange("density directions", (s.density_theta_up + s.density_theta_down) * s.density_phi, 1, 1024);
+}
+
+uint64_t PrecomputeOptions::Hash() const {
+  const int values[] = {int(variant), int(precision), orders,
+                        resolution.transmittance_mu, resolution.transmittance_r,
+                        resolution.irradiance_mu_s, resolution.irradiance_r, resolution.scattering_r,
+                        resolution.scattering_mu, resolution.scattering_mu_s, resolution.scattering_nu,
+                        samples.transmittance_steps, samples.ray_steps, samples.irradiance_zenith,
+                        samples.irradiance_azimuth, samples.density_theta_up,
+                        samples.density_theta_down, samples.density_phi};
+  uint64_t h = 1469598103934665603ull;
+  for (int v : values) {
+    unsigned char bytes[sizeof(int)];
+    std::memcpy(bytes, &v, sizeof(int));
+    for (unsigned char b : bytes) h = (h ^ b) * 1099511628211ull;
+  }
+  return h;
+}
+
+std::string PrecomputeOptions::Describe() const {
+  const TableResolution& r = resolution;
+  return ToString(variant) + (precision == TablePrecision::kFloat32 ? " float32" : " float16") +
+         ", " + std::to_string(orders) + " orders, transmittance " +
+         std::to_string(r.transmittance_mu) + "x" + std::to_string(r.transmittance_r) +
+         ", irradiance " + std::to_string(r.irradiance_mu_s) + "x" + std::to_string(r.irradiance_r) +
+         ", scattering R" + std::to_string(r.scattering_r) + " MU" + std::to_string(r.scattering_mu) +
+         " MU_S" + std::to_string(r.scattering_mu_s) + " NU" + std::to_string(r.scattering_nu);
+}
+
+}  // namespace aerial

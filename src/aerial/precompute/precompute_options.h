@@ -1,0 +1,54 @@
+#pragma once
+// What to precompute besides the atmosphere itself: table variant, precision, resolutions,
+// scattering orders and the integration sample counts. Together with the atmosphere's hash they
+// key the table cache.
+#include <cstdint>
+#include <string>
+
+namespace aerial {
+
+enum class LutVariant { k4D, k3D };
+enum class TablePrecision { kFloat32, kFloat16 };
+
+std::string ToString(LutVariant variant);         // "4d" / "3d"
+LutVariant ParseLutVariant(const std::string& text, const std::string& field);  // throws Error
+
+struct TableResolution {
+  int transmittance_mu = 256;
+  int transmittance_r = 64;
+  int irradiance_mu_s = 64;
+  int irradiance_r = 16;
+  int scattering_r = 32;
+  int scattering_mu = 128;  // even: half for rays that hit the ground, half for the others
+  int scattering_mu_s = 32;
+  int scattering_nu = 8;    // 1 in the 3D variant
+};
+
+// Integration sample counts (Bruneton 2017 uses 500, 50, 32x64 and a 16x32 density grid).
+struct SampleCounts {
+  int transmittance_steps = 500;
+  int ray_steps = 50;              // single and multiple scattering, per ray
+  int irradiance_zenith = 32;
+  int irradiance_azimuth = 64;
+  int density_theta_up = 16;       // density grid: zenith cells above the horizon
+  int density_theta_down = 8;      // zenith cells below the horizon
+  int density_phi = 16;            // azimuth cells over [0, pi] (mirrored to [0, 2 pi])
+};
+
+struct PrecomputeOptions {
+  LutVariant variant = LutVariant::k4D;
+  TablePrecision precision = TablePrecision::kFloat32;
+  int orders = 4;
+  TableResolution resolution;
+  SampleCounts samples;
+
+  // Small tables for quick tests; same shape, roughly 1/16 of the texels.
+  static PrecomputeOptions Small(LutVariant variant = LutVariant::k4D);
+
+  // Throws aerial::Error naming the field, value and allowed range.
+  void Validate() const;
+  uint64_t Hash() const;
+  std::string Describe() const;  // one line, for logs and the cache header
+};
+
+}  // namespace aerial

@@ -1,0 +1,201 @@
+#include "aerial/precompute/precomputer.h"
+
+#include <optional>
+
+#include "aerial/core/progress.h"
+#include "aerial/vk/compute_pipeline.h"
+
+namespace aerial {
+namespace {
+
+using vk::kSampled;
+using vk::kStorageBuffer;
+using vk::kStorageImage;
+using vk::kUniform;
+
+// The passes' pipelines; slot order = binding order in each shader.
+struct Pipelines {
+  explicit Pipelines(const vk::Context& c)
+      : transmittance(c, "precompute/transmittance.comp", {kUniform, kStorageImage}),
+        direct_irradiance(c, "precompute/direct_irradiance.comp", {kUniform, kSampled, kStorageImage}),
+        single_scattering(c, "precompute/single_scattering.comp",
+                          {kUniform, kSampled, kStorageImage, kStorageImage, kStorageImage}),
+        incident_radiance(c, "precompute/incident_radiance.comp",
+                          {kUniform, kSampled, kSampled, kSampled, kSampled, kSampled,
+                           kStorageBuffer, kStorageBuffer}, sizeof(int)),
+        scattering_density(c, "precompute/scattering_density.comp",
+                           {kUniform, kStorageBuffer, kStorageBuffer, kStorageImage}),
+        indirect_irradiance(c, "precompute/indirect_irradiance.comp",
+                            {kUniform, kSampled, kSampled, kSampled, kStorageImage, kStorageImage},
+                            sizeof(int)),
+        multiple_scattering(c, "precompute/multiple_scattering.comp",
+                            {kUniform, kSampled, kSampled, kStorageImage, kStorageImage}) {}
+  vk::ComputePipeline transmittance, direct_irradiance, single_scattering, incident_radiance,
+      scattering_density, indirect_irradiance, multiple_scattering;
+};
+
+// Intermediate tables that only live during the precomputation.
+struct Scratch {
+  Scratch(const vk::Context& c, const AtmosphereTables& tables)
+      : delta_irradiance(c, {.extent = tables.irradiance().extent()}),
+        delta_rayleigh(c, {.extent = tables.rayleigh().extent()}),
+        delta_multiple(c, {.extent = tables.rayleigh().extent()}),
+        density(c, {.extent = tables.rayleigh().extent()}),
+        incident_radiance(c, {.size = IncidentBytes(tables), .usage = ::vk::BufferUsageFlagBits::eStorageBuffer}),
+        directions(c, {.size = DirectionBytes(tables), .usage = ::vk::BufferUsageFlagBits::eStorageBuffer}) {
+    // Half-precision tables are accumulated in float32 and converted once at the end.
+    if (tables.rayleigh().format() != ::vk::Format::eR32G32B32A32Sfloat) {
+      rayleigh_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.rayleigh().extent()});
+      mie_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.mie().extent()});
+    }
+  }
+  static size_t DirectionCount(const AtmosphereTables& t) {
+    const SampleCounts& s = t.options().samples;
+    return size_t(s.density_theta_up + s.density_theta_down) * s.density_phi;
+  }
+  static size_t IncidentBytes(const AtmosphereTables& t) {
+    const TableResolution& r = t.options().resolution;
+    return DirectionCount(t) * r.scattering_r * r.scattering_mu_s * 16;
+  }
+  static size_t DirectionBytes(const AtmosphereTables& t) {
+    return DirectionCount(t) * t.options().resolution.scattering_r * 16;
+  }
+
+  vk::Image delta_irradiance, delta_rayleigh, delta_multiple, density;
+  vk::Buffer incident_radiance, directions;
+  std::optional<vk::Image> rayleigh_f32, mie_f32;
+};
+
+::vk::Extent3D Extent2D(const vk::Image& image) { return image.extent(); }
+
+void BlitConvert(const ::vk::raii::CommandBuffer& cmd, const vk::Image& from, const vk::Image& to) {
+  ::vk::Extent3D e = from.extent();
+  ::vk::ImageSubresourceLayers layers{.aspectMask = ::vk::ImageAspectFlagBits::eColor, .layerCount = 1};
+  ::vk::ImageBlit region{
+      .srcSubresource = layers,
+      .srcOffsets = std::array<::vk::Offset3D, 2>{::vk::Offset3D{0, 0, 0},
+                                                   ::vk::Offset3D{int(e.width), int(e.height), int(e.depth)}},
+      .dstSubresource = layers,
+      .dstOffsets = std::array<::vk::Offset3D, 2>{::vk::Offset3D{0, 0, 0},
+                                                   ::vk::Offset3D{int(e.width), int(e.height), int(e.depth)}}};
+  cmd.blitImage(from.handle(), ::vk::ImageLayout::eGeneral, to.handle(), ::vk::ImageLayout::eGeneral,
+                region, ::vk::Filter::eNearest);
+}
+
+}  // namespace
+
+int PrecomputePassCount(const PrecomputeOptions& options) {
+  // transmittance, direct irradiance, single scattering, then 4 passes per order >= 2.
+  return 3 + 4 * (options.orders - 1);
+}
+
+std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progress) {
+  const vk::Context& context = tables.context();
+  Pipelines pipelines(context);
+  Scratch scratch(context, tables);
+  vk::GpuTimer timer(context);
+  std::vector<vk::PassTime> times;
+  const vk::Image& rayleigh = scratch.rayleigh_f32 ? *scratch.rayleigh_f32 : tables.rayleigh();
+  const vk::Image& mie = scratch.mie_f32 ? *scratch.mie_f32 : tables.mie();
+  const vk::Buffer& uniforms = tables.uniform_buffer();
+  ::vk::Sampler sampler = tables.sampler();
+  auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
+  const TableResolution& res = tables.options().resolution;
+  ::vk::Extent3D scattering_threads = tables.rayleigh().extent();
+
+  // Each pass is its own submission so that the progress bar advances as the GPU finishes it.
+  auto run = [&](const std::string& label, auto&& record) {
+    context.Submit([&](const ::vk::raii::CommandBuffer& cmd) {
+      timer.Reset(cmd);
+      timer.Begin(cmd, label);
+      record(cmd);
+      timer.End(cmd);
+      vk::FullBarrier(cmd);
+    });
+    for (auto& t : timer.Collect()) times.push_back(t);
+    if (progress) progress->Advance(label);
+  };
+
+  context.Submit([&](const auto& cmd) {
+    for (const vk::Image* image : {&scratch.delta_irradiance, &scratch.delta_rayleigh,
+                                   &scratch.delta_multiple, &scratch.density})
+      image->InitializeLayout(cmd);
+    if (scratch.rayleigh_f32) {
+      scratch.rayleigh_f32->InitializeLayout(cmd);
+      scratch.mie_f32->InitializeLayout(cmd);
+    }
+    // The irradiance table accumulates indirect orders only; it starts at zero.
+    tables.irradiance().Clear(cmd);
+    vk::FullBarrier(cmd);
+  });
+
+  // Step 1: transmittance T(r, mu).
+  run("transmittance", [&](const auto& cmd) {
+    pipelines.transmittance.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms},
+                                           vk::StorageImageSlot{&tables.transmittance()}},
+                                     Extent2D(tables.transmittance()), {8, 8, 1});
+  });
+  // Step 2: direct irradiance, the ground's order-0 light (delta E).
+  run("direct irradiance", [&](const auto& cmd) {
+    pipelines.direct_irradiance.Dispatch(
+        cmd, {vk::UniformBufferSlot{&uniforms}, sampled(tables.transmittance()),
+              vk::StorageImageSlot{&scratch.delta_irradiance}},
+        Extent2D(scratch.delta_irradiance), {8, 8, 1});
+  });
+  // Step 3: single scattering, Rayleigh (delta S_R, and the accumulated table) and Mie.
+  run("single scattering", [&](const auto& cmd) {
+    pipelines.single_scattering.Dispatch(
+        cmd, {vk::UniformBufferSlot{&uniforms}, sampled(tables.transmittance()),
+              vk::StorageImageSlot{&scratch.delta_rayleigh}, vk::StorageImageSlot{&mie},
+              vk::StorageImageSlot{&rayleigh}},
+        scattering_threads, {8, 8, 1});
+  });
+  // Step 4: for each order n >= 2, the scattering density J_n (from the order n-1 radiance and
+  // the order n-2 ground irradiance), the ground irradiance of order n-1, and the order n
+  // scattering S_n, added to the Rayleigh table.
+  for (int order = 2; order <= tables.options().orders; ++order) {
+    std::string suffix = " (order " + std::to_string(order) + ")";
+    run("incident radiance" + suffix, [&](const auto& cmd) {
+      pipelines.incident_radiance.Dispatch(
+          cmd, {vk::UniformBufferSlot{&uniforms}, sampled(tables.transmittance()),
+                sampled(scratch.delta_rayleigh), sampled(mie), sampled(scratch.delta_multiple),
+                sampled(scratch.delta_irradiance), vk::StorageBufferSlot{&scratch.incident_radiance},
+                vk::StorageBufferSlot{&scratch.directions}},
+          {uint32_t(Scratch::DirectionCount(tables)), uint32_t(res.scattering_mu_s),
+           uint32_t(res.scattering_r)},
+          {64, 1, 1}, &order);
+    });
+    run("scattering density" + suffix, [&](const auto& cmd) {
+      pipelines.scattering_density.Dispatch(
+          cmd, {vk::UniformBufferSlot{&uniforms}, vk::StorageBufferSlot{&scratch.incident_radiance},
+                vk::StorageBufferSlot{&scratch.directions}, vk::StorageImageSlot{&scratch.density}},
+          scattering_threads, {1, 64, 1});
+    });
+    int radiance_order = order - 1;
+    run("indirect irradiance" + suffix, [&](const auto& cmd) {
+      pipelines.indirect_irradiance.Dispatch(
+          cmd, {vk::UniformBufferSlot{&uniforms}, sampled(scratch.delta_rayleigh), sampled(mie),
+                sampled(scratch.delta_multiple), vk::StorageImageSlot{&scratch.delta_irradiance},
+                vk::StorageImageSlot{&tables.irradiance()}},
+          Extent2D(tables.irradiance()), {8, 8, 1}, &radiance_order);
+    });
+    run("multiple scattering" + suffix, [&](const auto& cmd) {
+      pipelines.multiple_scattering.Dispatch(
+          cmd, {vk::UniformBufferSlot{&uniforms}, sampled(tables.transmittance()),
+                sampled(scratch.density), vk::StorageImageSlot{&scratch.delta_multiple},
+                vk::StorageImageSlot{&rayleigh}},
+          scattering_threads, {8, 8, 1});
+    });
+  }
+  if (scratch.rayleigh_f32) {
+    context.Submit([&](const auto& cmd) {
+      BlitConvert(cmd, *scratch.rayleigh_f32, tables.rayleigh());
+      BlitConvert(cmd, *scratch.mie_f32, tables.mie());
+      vk::FullBarrier(cmd);
+    });
+  }
+  if (progress) progress->Finish();
+  return times;
+}
+
+}  // namespace aerial

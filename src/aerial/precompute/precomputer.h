@@ -1,0 +1,20 @@
+#pragma once
+// Runs the precomputation passes on the GPU (Bruneton & Neyret 2008, Algorithm 4.1), with the
+// scattering density split in two passes (incident radiance per (r, mu_s), then its convolution
+// with the phase functions per texel). Each pass is timed with GPU timestamps.
+#include <vector>
+
+#include "aerial/precompute/atmosphere_tables.h"
+#include "aerial/vk/gpu_timer.h"
+
+namespace aerial {
+
+class Progress;
+
+// Fills `tables`. Returns the GPU time of every pass, in order. `progress` may be null.
+std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progress);
+
+// Number of passes Precompute runs for these options (progress bars size themselves with it).
+int PrecomputePassCount(const PrecomputeOptions& options);
+
+}  // namespace aerial

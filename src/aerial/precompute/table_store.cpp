@@ -1,0 +1,56 @@
+#include "aerial/precompute/table_store.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "aerial/core/error.h"
+#include "aerial/core/progress.h"
+#include "aerial/precompute/precomputer.h"
+
+namespace aerial {
+
+std::filesystem::path DefaultCacheDirectory() {
+  if (const char* dir = std::getenv("AERIAL_CACHE_DIR"); dir && *dir) return dir;
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+    return std::filesystem::path(xdg) / "aerial";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return std::filesystem::path(home) / ".cache" / "aerial";
+  return ".aerial-cache";
+}
+
+std::filesystem::path CacheFilePath(const std::filesystem::path& dir,
+                                    const AtmosphereParameters& atmosphere,
+                                    const PrecomputeOptions& options) {
+  char name[96];
+  std::snprintf(name, sizeof name, "tables-%s-%016llx-%016llx.bin", ToString(options.variant).c_str(),
+                static_cast<unsigned long long>(atmosphere.Hash()),
+                static_cast<unsigned long long>(options.Hash()));
+  return dir / name;
+}
+
+LoadedTables LoadOrPrecompute(const vk::Context& context, const AtmosphereParameters& atmosphere,
+                              const PrecomputeOptions& options, const TableStoreOptions& store) {
+  options.Validate();
+  LoadedTables loaded;
+  loaded.tables = std::make_unique<AtmosphereTables>(context, atmosphere, options);
+  std::filesystem::path dir = store.cache_dir.empty() ? DefaultCacheDirectory() : store.cache_dir;
+  loaded.cache_file = CacheFilePath(dir, atmosphere, options);
+
+  if (store.read_cache && std::filesystem::exists(loaded.cache_file)) {
+    try {
+      loaded.tables->Upload(ReadTableCache(loaded.cache_file, loaded.tables->cache_key()));
+      loaded.from_cache = true;
+      return loaded;
+    } catch (const Error& e) {
+      // Never use a damaged or stale file: say why, then rebuild it.
+      std::fprintf(stderr, "aerial: ignoring table cache (%s); recomputing\n", e.what());
+    }
+  }
+  Progress progress("precompute " + ToString(options.variant), PrecomputePassCount(options), stderr,
+                    store.quiet);
+  loaded.pass_times = Precompute(*loaded.tables, &progress);
+  if (store.write_cache) WriteTableCache(loaded.cache_file, loaded.tables->Download());
+  return loaded;
+}
+
+}  // namespace aerial

@@ -1,0 +1,38 @@
+#pragma once
+// Tables for an atmosphere and options: read from the cache when a valid file for exactly these
+// parameters exists, precomputed (and cached, atomically) otherwise. A corrupt, truncated or stale
+// cache file is reported and rebuilt, never used.
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "aerial/precompute/atmosphere_tables.h"
+#include "aerial/vk/gpu_timer.h"
+
+namespace aerial {
+
+struct TableStoreOptions {
+  std::filesystem::path cache_dir;  // empty: DefaultCacheDirectory()
+  bool read_cache = true;           // false: always precompute (still writes the cache)
+  bool write_cache = true;
+  bool quiet = false;               // no progress bar, no cache notes
+};
+
+struct LoadedTables {
+  std::unique_ptr<AtmosphereTables> tables;
+  bool from_cache = false;
+  std::filesystem::path cache_file;
+  std::vector<vk::PassTime> pass_times;  // empty when read from the cache
+};
+
+// $AERIAL_CACHE_DIR, else $XDG_CACHE_HOME/aerial, else ~/.cache/aerial, else ./.aerial-cache.
+std::filesystem::path DefaultCacheDirectory();
+
+// One file per variant and parameter set: tables-<variant>-<atmosphere hash>-<options hash>.bin.
+std::filesystem::path CacheFilePath(const std::filesystem::path& dir, const AtmosphereParameters&,
+                                    const PrecomputeOptions&);
+
+LoadedTables LoadOrPrecompute(const vk::Context& context, const AtmosphereParameters& atmosphere,
+                              const PrecomputeOptions& options, const TableStoreOptions& store);
+
+}  // namespace aerial

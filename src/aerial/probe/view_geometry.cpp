@@ -1,0 +1,44 @@
+#include "aerial/probe/view_geometry.h"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "aerial/core/error.h"
+
+namespace aerial {
+namespace {
+
+std::string Text(double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
+
+void CheckAngle(const char* field, double value, double low, double high) {
+  if (!std::isfinite(value) || value < low || value > high)
+    throw Error(field, Text(value), "degrees in [" + Text(low) + ", " + Text(high) + "]");
+}
+
+}  // namespace
+
+void ValidateViewAngles(const ViewAngles& view, const AtmosphereParameters& atmosphere) {
+  double thickness = atmosphere.top_radius_m - atmosphere.bottom_radius_m;
+  if (!std::isfinite(view.altitude_m) || view.altitude_m < 0.0 || view.altitude_m > thickness)
+    throw Error("--altitude-m", Text(view.altitude_m),
+                "meters in [0, " + Text(thickness) + "] (ground to the top of the atmosphere)");
+  CheckAngle("--view-zenith-deg", view.view_zenith_deg, 0.0, 180.0);
+  CheckAngle("--sun-zenith-deg", view.sun_zenith_deg, 0.0, 180.0);
+  CheckAngle("--azimuth-deg", view.azimuth_deg, -360.0, 360.0);
+}
+
+RayParameters ToRayParameters(const ViewAngles& view, const AtmosphereParameters& atmosphere) {
+  constexpr double kDegree = std::numbers::pi / 180.0;
+  double mu = std::cos(view.view_zenith_deg * kDegree);
+  double mu_s = std::cos(view.sun_zenith_deg * kDegree);
+  double nu = mu * mu_s + std::sqrt(std::max(0.0, (1.0 - mu * mu) * (1.0 - mu_s * mu_s))) *
+                              std::cos(view.azimuth_deg * kDegree);
+  return {atmosphere.bottom_radius_m + view.altitude_m, mu, mu_s, std::clamp(nu, -1.0, 1.0)};
+}
+
+}  // namespace aerial

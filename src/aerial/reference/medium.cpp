@@ -1,0 +1,98 @@
+#include "aerial/reference/medium.h"
+
+#include <limits>
+
+namespace aerial::reference {
+namespace {
+
+double Mean(const Spectrum& s) { return (s[0] + s[1] + s[2]) / 3.0; }
+
+double Unclamped(const DensityProfileLayer& l, double h) {
+  return l.exp_term * std::exp(l.exp_scale_per_m * h) + l.linear_term_per_m * h + l.constant_term;
+}
+
+// Altitudes in (lo, hi) where the unclamped layer density crosses `target` (a clamp kink): sign
+// changes on a 4096-step scan, refined by bisection. A tangency without crossing is no kink.
+void AddCrossings(const DensityProfileLayer& l, double lo, double hi, double target,
+                  std::vector<double>* levels) {
+  const int steps = 4096;
+  for (int i = 0; i < steps; ++i) {
+    double a = lo + (hi - lo) * i / steps, b = lo + (hi - lo) * (i + 1) / steps;
+    bool below_a = Unclamped(l, a) < target;
+    if (below_a == (Unclamped(l, b) < target)) continue;
+    for (int k = 0; k < 100 && b - a > 1e-9; ++k) {
+      double m = 0.5 * (a + b);
+      ((Unclamped(l, m) < target) == below_a ? a : b) = m;
+    }
+    levels->push_back(0.5 * (a + b));
+  }
+}
+
+void AddProfileLevels(const DensityProfile& profile, double top, double cutoff_scale_heights,
+                      std::vector<double>* levels) {
+  const double width = profile.layers[0].width_m;
+  if (width > 0.0 && width < top) levels->push_back(width);
+  struct Range {
+    const DensityProfileLayer& layer;
+    double lo, hi;
+  };
+  for (const Range& range : {Range{profile.layers[0], 0.0, std::min(width, top)},
+                             Range{profile.layers[1], std::max(width, 0.0), top}}) {
+    if (range.hi <= range.lo) continue;
+    const DensityProfileLayer& l = range.layer;
+    AddCrossings(l, range.lo, range.hi, 0.0, levels);
+    AddCrossings(l, range.lo, range.hi, 1.0, levels);
+    if (l.exp_term == 0.0 || l.exp_scale_per_m == 0.0) continue;
+    double scale_height = 1.0 / std::abs(l.exp_scale_per_m);
+    bool decaying = l.exp_scale_per_m < 0.0;
+    for (double h = range.lo + 2.0 * scale_height; h < range.hi; h += 2.0 * scale_height) {
+      if (decaying && h - range.lo > cutoff_scale_heights * scale_height) break;
+      levels->push_back(h);
+    }
+  }
+}
+
+std::vector<double> LevelRadii(const AtmosphereParameters& a, double cutoff_scale_heights) {
+  double top = a.top_radius_m - a.bottom_radius_m;
+  std::vector<double> levels = {0.0, top};
+  for (const DensityProfile* p : {&a.rayleigh_density, &a.mie_density, &a.absorption_density})
+    AddProfileLevels(*p, top, cutoff_scale_heights, &levels);
+  std::sort(levels.begin(), levels.end());
+  std::vector<double> radii;
+  for (double h : levels) {
+    // Levels closer than 1 mm would only create empty pieces.
+    if (h < 0.0 || h > top || (!radii.empty() && a.bottom_radius_m + h - radii.back() < 1e-3))
+      continue;
+    radii.push_back(a.bottom_radius_m + h);
+  }
+  radii.back() = a.top_radius_m;
+  return radii;
+}
+
+}  // namespace
+
+Medium::Medium(const AtmosphereParameters& atmosphere)
+    : atmosphere_(atmosphere),
+      mean_rayleigh_(Mean(atmosphere.rayleigh_scattering)),
+      mean_mie_scattering_(Mean(atmosphere.mie_scattering)),
+      mean_mie_extinction_(Mean(atmosphere.mie_extinction)),
+      mean_absorption_(Mean(atmosphere.absorption_extinction)),
+      reference_levels_(LevelRadii(atmosphere, std::numeric_limits<double>::infinity())),
+      monte_carlo_levels_(LevelRadii(atmosphere, 30.0)) {}
+
+Spectrum Medium::OpticalDepth(const Column& c) const {
+  Spectrum tau;
+  for (int i = 0; i < 3; ++i) {
+    tau[i] = atmosphere_.rayleigh_scattering[i] * c.rayleigh +
+             atmosphere_.mie_extinction[i] * c.mie + atmosphere_.absorption_extinction[i] * c.absorption;
+  }
+  return tau;
+}
+
+Spectrum Medium::Transmittance(const Column& c) const {
+  Spectrum t = OpticalDepth(c);
+  for (double& v : t) v = std::exp(-v);
+  return t;
+}
+
+}  // namespace aerial::reference

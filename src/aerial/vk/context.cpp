@@ -1,0 +1,163 @@
+#include "aerial/vk/context.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+
+#include "aerial/core/error.h"
+
+namespace aerial::vk {
+namespace {
+
+std::atomic<int> g_validation_messages{0};
+
+VKAPI_ATTR VkBool32 VKAPI_CALL OnValidationMessage(
+    VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,
+    const VkDebugUtilsMessengerCallbackDataEXT* data, void*) {
+  ++g_validation_messages;
+  std::fprintf(stderr, "vulkan validation: %s\n", data->pMessage);
+  return VK_FALSE;
+}
+
+bool EnvironmentFlag(const char* name) {
+  const char* value = std::getenv(name);
+  return value != nullptr && std::string(value) != "0" && std::string(value) != "";
+}
+
+std::string Lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  return text;
+}
+
+// A real GPU first: discrete, then integrated, then virtual, then CPU (lavapipe).
+int DeviceRank(::vk::PhysicalDeviceType type) {
+  switch (type) {
+    case ::vk::PhysicalDeviceType::eDiscreteGpu: return 0;
+    case ::vk::PhysicalDeviceType::eIntegratedGpu: return 1;
+    case ::vk::PhysicalDeviceType::eVirtualGpu: return 2;
+    case ::vk::PhysicalDeviceType::eCpu: return 3;
+    default: return 4;
+  }
+}
+
+bool HasLayer(const ::vk::raii::Context& loader, const char* name) {
+  for (const auto& layer : loader.enumerateInstanceLayerProperties())
+    if (std::string(layer.layerName.data()) == name) return true;
+  return false;
+}
+
+}  // namespace
+
+int Context::ValidationMessageCount() { return g_validation_messages.load(); }
+
+Context::Context(const ContextCreateInfo& info) {
+  validation_ = info.validation || EnvironmentFlag("AERIAL_VALIDATION");
+  const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+  if (validation_ && !HasLayer(loader_, kValidationLayer))
+    throw Error("validation layers", kValidationLayer, "installed (package vulkan-validationlayers)");
+
+  std::vector<const char*> layers;
+  std::vector<const char*> extensions;
+  for (const auto& e : info.window_extensions) extensions.push_back(e.c_str());
+  if (validation_) {
+    layers.push_back(kValidationLayer);
+    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  }
+  ::vk::ApplicationInfo app{.pApplicationName = "aerial", .apiVersion = VK_API_VERSION_1_2};
+  instance_ = ::vk::raii::Instance(
+      loader_, ::vk::InstanceCreateInfo{.pApplicationInfo = &app,
+                                        .enabledLayerCount = uint32_t(layers.size()),
+                                        .ppEnabledLayerNames = layers.data(),
+                                        .enabledExtensionCount = uint32_t(extensions.size()),
+                                        .ppEnabledExtensionNames = extensions.data()});
+  if (validation_) {
+    using Severity = ::vk::DebugUtilsMessageSeverityFlagBitsEXT;
+    using Type = ::vk::DebugUtilsMessageTypeFlagBitsEXT;
+    messenger_.emplace(instance_, ::vk::DebugUtilsMessengerCreateInfoEXT{
+                                      .messageSeverity = Severity::eWarning | Severity::eError,
+                                      .messageType = Type::eGeneral | Type::eValidation |
+                                                     Type::ePerformance,
+                                      .pfnUserCallback = &OnValidationMessage});
+  }
+
+  // Device choice: a name given on the command line or in AERIAL_DEVICE, else the best rank.
+  std::string wanted = info.device_name;
+  if (wanted.empty() && std::getenv("AERIAL_DEVICE")) wanted = std::getenv("AERIAL_DEVICE");
+  ::vk::raii::PhysicalDevices devices(instance_);
+  std::string available;
+  int best_rank = 1 << 30;
+  for (auto& candidate : devices) {
+    auto properties = candidate.getProperties();
+    std::string name = properties.deviceName.data();
+    available += (available.empty() ? "" : ", ") + name;
+    bool matches = wanted.empty() || Lowercase(name).find(Lowercase(wanted)) != std::string::npos;
+    int rank = DeviceRank(properties.deviceType);
+    if (matches && rank < best_rank) {
+      best_rank = rank;
+      physical_device_ = std::move(candidate);
+    }
+  }
+  if (!*physical_device_)
+    throw Error("device", wanted.empty() ? "(any)" : wanted, "one of: " + available);
+  timestamp_period_ns_ = physical_device_.getProperties().limits.timestampPeriod;
+
+  auto families = physical_device_.getQueueFamilyProperties();
+  auto wanted_flags = ::vk::QueueFlagBits::eCompute | ::vk::QueueFlagBits::eGraphics;
+  auto family = std::find_if(families.begin(), families.end(), [&](const auto& f) {
+    return (f.queueFlags & wanted_flags) == wanted_flags && f.timestampValidBits > 0;
+  });
+  if (family == families.end())
+    throw Error("device queue", device_name(), "a graphics+compute queue with timestamps");
+  queue_family_ = uint32_t(family - families.begin());
+
+  float priority = 1.0f;
+  ::vk::DeviceQueueCreateInfo queue_info{
+      .queueFamilyIndex = queue_family_, .queueCount = 1, .pQueuePriorities = &priority};
+  std::vector<const char*> device_extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+  if (!info.window_extensions.empty()) device_extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  ::vk::PhysicalDeviceFeatures features{.shaderStorageImageWriteWithoutFormat = VK_TRUE};
+  ::vk::PhysicalDeviceVulkan12Features features12{.hostQueryReset = VK_TRUE};
+  device_ = ::vk::raii::Device(
+      physical_device_, ::vk::DeviceCreateInfo{.pNext = &features12,
+                                               .queueCreateInfoCount = 1,
+                                               .pQueueCreateInfos = &queue_info,
+                                               .enabledExtensionCount = uint32_t(device_extensions.size()),
+                                               .ppEnabledExtensionNames = device_extensions.data(),
+                                               .pEnabledFeatures = &features});
+  queue_ = device_.getQueue(queue_family_, 0);
+  command_pool_ = ::vk::raii::CommandPool(
+      device_, ::vk::CommandPoolCreateInfo{
+                   .flags = ::vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
+                   .queueFamilyIndex = queue_family_});
+}
+
+std::string Context::device_name() const {
+  return physical_device_.getProperties().deviceName.data();
+}
+
+void Context::Submit(const std::function<void(const ::vk::raii::CommandBuffer&)>& record) const {
+  ::vk::raii::CommandBuffers buffers(
+      device_, ::vk::CommandBufferAllocateInfo{.commandPool = *command_pool_,
+                                               .level = ::vk::CommandBufferLevel::ePrimary,
+                                               .commandBufferCount = 1});
+  const auto& cmd = buffers.front();
+  cmd.begin(::vk::CommandBufferBeginInfo{.flags = ::vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
+  record(cmd);
+  cmd.end();
+  ::vk::raii::Fence fence(device_, ::vk::FenceCreateInfo{});
+  ::vk::CommandBuffer raw = *cmd;
+  queue_.submit(::vk::SubmitInfo{.commandBufferCount = 1, .pCommandBuffers = &raw}, *fence);
+  if (device_.waitForFences(*fence, VK_TRUE, UINT64_MAX) != ::vk::Result::eSuccess)
+    throw Error("vkWaitForFences", "timeout", "completion");
+}
+
+uint32_t Context::FindMemoryType(uint32_t type_bits, ::vk::MemoryPropertyFlags properties) const {
+  auto memory = physical_device_.getMemoryProperties();
+  for (uint32_t i = 0; i < memory.memoryTypeCount; ++i) {
+    if ((type_bits & (1u << i)) && (memory.memoryTypes[i].propertyFlags & properties) == properties)
+      return i;
+  }
+  throw Error("memory type", std::to_string(type_bits), "a type with the requested properties");
+}
+
+}  // namespace aerial::vk

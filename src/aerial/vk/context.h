@@ -1,0 +1,59 @@
+#pragma once
+// The Vulkan instance, the chosen device and its one compute+graphics queue. Raw Vulkan stays in
+// src/aerial/vk/; the rest of the program works with Context, Buffer, Image and ComputePipeline.
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <vulkan/vulkan_raii.hpp>
+
+namespace aerial::vk {
+
+struct ContextCreateInfo {
+  // Substring of the device name to pick (case-insensitive); empty: AERIAL_DEVICE or the best.
+  std::string device_name;
+  // Validation layers: on when true or when AERIAL_VALIDATION=1 is set.
+  bool validation = false;
+  // Instance extensions a window system needs (GLFW); the swapchain device extension is then
+  // requested too.
+  std::vector<std::string> window_extensions;
+};
+
+class Context {
+ public:
+  explicit Context(const ContextCreateInfo& info = {});
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  const ::vk::raii::Instance& instance() const { return instance_; }
+  const ::vk::raii::PhysicalDevice& physical_device() const { return physical_device_; }
+  const ::vk::raii::Device& device() const { return device_; }
+  const ::vk::raii::Queue& queue() const { return queue_; }
+  uint32_t queue_family() const { return queue_family_; }
+  std::string device_name() const;
+  bool validation_enabled() const { return validation_; }
+  double timestamp_period_ns() const { return timestamp_period_ns_; }
+
+  // Records commands into a fresh command buffer, submits them and waits for completion.
+  void Submit(const std::function<void(const ::vk::raii::CommandBuffer&)>& record) const;
+
+  uint32_t FindMemoryType(uint32_t type_bits, ::vk::MemoryPropertyFlags properties) const;
+
+  // Number of validation messages (warnings and errors) seen by any context of this process.
+  static int ValidationMessageCount();
+
+ private:
+  ::vk::raii::Context loader_;
+  ::vk::raii::Instance instance_{nullptr};
+  std::optional<::vk::raii::DebugUtilsMessengerEXT> messenger_;
+  ::vk::raii::PhysicalDevice physical_device_{nullptr};
+  ::vk::raii::Device device_{nullptr};
+  ::vk::raii::Queue queue_{nullptr};
+  ::vk::raii::CommandPool command_pool_{nullptr};
+  uint32_t queue_family_ = 0;
+  bool validation_ = false;
+  double timestamp_period_ns_ = 1.0;
+};
+
+}  // namespace aerial::vk

@@ -1,0 +1,151 @@
+#include "aerial/vk/resources.h"
+
+#include <cstring>
+
+#include "aerial/core/error.h"
+
+namespace aerial::vk {
+namespace {
+
+::vk::raii::DeviceMemory Allocate(const Context& context, ::vk::MemoryRequirements requirements,
+                                  ::vk::MemoryPropertyFlags properties) {
+  return ::vk::raii::DeviceMemory(
+      context.device(),
+      ::vk::MemoryAllocateInfo{
+          .allocationSize = requirements.size,
+          .memoryTypeIndex = context.FindMemoryType(requirements.memoryTypeBits, properties)});
+}
+
+const ::vk::ImageSubresourceRange kColorRange{.aspectMask = ::vk::ImageAspectFlagBits::eColor,
+                                               .levelCount = 1,
+                                               .layerCount = 1};
+
+}  // namespace
+
+Buffer::Buffer(const Context& context, const BufferCreateInfo& info)
+    : buffer_(context.device(), ::vk::BufferCreateInfo{.size = info.size, .usage = info.usage}),
+      size_(info.size) {
+  auto properties = info.host_visible ? ::vk::MemoryPropertyFlagBits::eHostVisible |
+                                            ::vk::MemoryPropertyFlagBits::eHostCoherent
+                                      : ::vk::MemoryPropertyFlagBits::eDeviceLocal;
+  memory_ = Allocate(context, buffer_.getMemoryRequirements(), properties);
+  buffer_.bindMemory(*memory_, 0);
+  if (info.host_visible) mapped_ = static_cast<std::byte*>(memory_.mapMemory(0, info.size));
+}
+
+void Buffer::Write(std::span<const std::byte> bytes, ::vk::DeviceSize offset) {
+  if (!mapped_ || offset + bytes.size() > size_)
+    throw Error("buffer write", std::to_string(bytes.size()) + " bytes",
+                "a host-visible buffer of at least " + std::to_string(offset + bytes.size()));
+  std::memcpy(mapped_ + offset, bytes.data(), bytes.size());
+}
+
+Image::Image(const Context& context, const ImageCreateInfo& info)
+    : image_(context.device(),
+             ::vk::ImageCreateInfo{.imageType = info.extent.depth > 1 ? ::vk::ImageType::e3D
+                                                                      : ::vk::ImageType::e2D,
+                                   .format = info.format,
+                                   .extent = info.extent,
+                                   .mipLevels = 1,
+                                   .arrayLayers = 1,
+                                   .samples = ::vk::SampleCountFlagBits::e1,
+                                   .tiling = ::vk::ImageTiling::eOptimal,
+                                   .usage = info.usage,
+                                   .initialLayout = ::vk::ImageLayout::eUndefined}),
+      extent_(info.extent),
+      format_(info.format) {
+  memory_ = Allocate(context, image_.getMemoryRequirements(),
+                     ::vk::MemoryPropertyFlagBits::eDeviceLocal);
+  image_.bindMemory(*memory_, 0);
+  view_ = ::vk::raii::ImageView(
+      context.device(),
+      ::vk::ImageViewCreateInfo{.image = *image_,
+                                .viewType = is_3d() ? ::vk::ImageViewType::e3D
+                                                    : ::vk::ImageViewType::e2D,
+                                .format = info.format,
+                                .subresourceRange = kColorRange});
+}
+
+size_t Image::texel_bytes() const {
+  switch (format_) {
+    case ::vk::Format::eR32G32B32A32Sfloat: return 16;
+    case ::vk::Format::eR16G16B16A16Sfloat: return 8;
+    case ::vk::Format::eR8G8B8A8Unorm:
+    case ::vk::Format::eR8G8B8A8Srgb:
+    case ::vk::Format::eB8G8R8A8Unorm:
+    case ::vk::Format::eB8G8R8A8Srgb:
+    case ::vk::Format::eR32Sfloat:
+    case ::vk::Format::eD32Sfloat: return 4;
+    default: throw Error("image format", ::vk::to_string(format_), "a format aerial knows the size of");
+  }
+}
+
+size_t Image::byte_size() const {
+  return texel_bytes() * extent_.width * extent_.height * extent_.depth;
+}
+
+void Image::InitializeLayout(const ::vk::raii::CommandBuffer& cmd) const {
+  ::vk::ImageMemoryBarrier barrier{.srcAccessMask = {},
+                                   .dstAccessMask = ::vk::AccessFlagBits::eShaderRead |
+                                                    ::vk::AccessFlagBits::eShaderWrite |
+                                                    ::vk::AccessFlagBits::eTransferWrite |
+                                                    ::vk::AccessFlagBits::eTransferRead,
+                                   .oldLayout = ::vk::ImageLayout::eUndefined,
+                                   .newLayout = ::vk::ImageLayout::eGeneral,
+                                   .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                                   .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                                   .image = *image_,
+                                   .subresourceRange = kColorRange};
+  cmd.pipelineBarrier(::vk::PipelineStageFlagBits::eTopOfPipe,
+                      ::vk::PipelineStageFlagBits::eAllCommands, {}, {}, {}, barrier);
+}
+
+void Image::Clear(const ::vk::raii::CommandBuffer& cmd) const {
+  cmd.clearColorImage(*image_, ::vk::ImageLayout::eGeneral,
+                      ::vk::ClearColorValue(std::array<float, 4>{0, 0, 0, 0}), kColorRange);
+}
+
+namespace {
+::vk::BufferImageCopy WholeImageCopy(::vk::Extent3D extent) {
+  return ::vk::BufferImageCopy{
+      .imageSubresource = {.aspectMask = ::vk::ImageAspectFlagBits::eColor, .layerCount = 1},
+      .imageExtent = extent};
+}
+}  // namespace
+
+void Image::CopyToBuffer(const ::vk::raii::CommandBuffer& cmd, const Buffer& buffer) const {
+  cmd.copyImageToBuffer(*image_, ::vk::ImageLayout::eGeneral, buffer.handle(),
+                        WholeImageCopy(extent_));
+}
+
+void Image::CopyFromBuffer(const ::vk::raii::CommandBuffer& cmd, const Buffer& buffer) const {
+  cmd.copyBufferToImage(buffer.handle(), *image_, ::vk::ImageLayout::eGeneral,
+                        WholeImageCopy(extent_));
+}
+
+::vk::raii::Sampler CreateLinearClampSampler(const Context& context) {
+  return ::vk::raii::Sampler(
+      context.device(), ::vk::SamplerCreateInfo{
+                            .magFilter = ::vk::Filter::eLinear,
+                            .minFilter = ::vk::Filter::eLinear,
+                            .mipmapMode = ::vk::SamplerMipmapMode::eNearest,
+                            .addressModeU = ::vk::SamplerAddressMode::eClampToEdge,
+                            .addressModeV = ::vk::SamplerAddressMode::eClampToEdge,
+                            .addressModeW = ::vk::SamplerAddressMode::eClampToEdge,
+                            .maxLod = 0.0f});
+}
+
+void FullBarrier(const ::vk::raii::CommandBuffer& cmd) {
+  ::vk::MemoryBarrier barrier{
+      .srcAccessMask = ::vk::AccessFlagBits::eShaderWrite | ::vk::AccessFlagBits::eTransferWrite,
+      .dstAccessMask = ::vk::AccessFlagBits::eShaderRead | ::vk::AccessFlagBits::eShaderWrite |
+                       ::vk::AccessFlagBits::eTransferRead | ::vk::AccessFlagBits::eTransferWrite |
+                       ::vk::AccessFlagBits::eHostRead};
+  cmd.pipelineBarrier(::vk::PipelineStageFlagBits::eComputeShader |
+                          ::vk::PipelineStageFlagBits::eTransfer,
+                      ::vk::PipelineStageFlagBits::eComputeShader |
+                          ::vk::PipelineStageFlagBits::eTransfer | ::vk::PipelineStageFlagBits::eHost,
+                      {}, barrier, {}, {});
+}
+
+}  // namespace aerial::vk

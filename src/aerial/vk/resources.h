@@ -1,0 +1,74 @@
+#pragma once
+// Buffers, images and samplers with their memory. One allocation per resource: aerial creates a
+// few dozen resources per table set, far below any allocation limit, so no sub-allocator is needed.
+#include <cstddef>
+#include <span>
+
+#include "aerial/vk/context.h"
+
+namespace aerial::vk {
+
+struct BufferCreateInfo {
+  ::vk::DeviceSize size = 0;
+  ::vk::BufferUsageFlags usage;
+  bool host_visible = false;  // mapped for the whole lifetime (uniforms, readback, staging)
+};
+
+class Buffer {
+ public:
+  Buffer(const Context& context, const BufferCreateInfo& info);
+  ::vk::Buffer handle() const { return *buffer_; }
+  ::vk::DeviceSize size() const { return size_; }
+  std::byte* mapped() const { return mapped_; }
+  void Write(std::span<const std::byte> bytes, ::vk::DeviceSize offset = 0);
+
+ private:
+  ::vk::raii::Buffer buffer_;
+  ::vk::raii::DeviceMemory memory_{nullptr};
+  ::vk::DeviceSize size_;
+  std::byte* mapped_ = nullptr;
+};
+
+struct ImageCreateInfo {
+  ::vk::Extent3D extent;  // depth 1: a 2D image
+  ::vk::Format format = ::vk::Format::eR32G32B32A32Sfloat;
+  ::vk::ImageUsageFlags usage = ::vk::ImageUsageFlagBits::eStorage |
+                                ::vk::ImageUsageFlagBits::eSampled |
+                                ::vk::ImageUsageFlagBits::eTransferSrc |
+                                ::vk::ImageUsageFlagBits::eTransferDst;
+};
+
+// Images live in VK_IMAGE_LAYOUT_GENERAL after creation: every table is both written by compute
+// passes and sampled by later ones.
+class Image {
+ public:
+  Image(const Context& context, const ImageCreateInfo& info);
+  ::vk::Image handle() const { return *image_; }
+  ::vk::ImageView view() const { return *view_; }
+  ::vk::Extent3D extent() const { return extent_; }
+  ::vk::Format format() const { return format_; }
+  bool is_3d() const { return extent_.depth > 1; }
+  size_t texel_bytes() const;
+  size_t byte_size() const;
+
+  // Transitions to GENERAL; call once in the first command buffer that uses the image.
+  void InitializeLayout(const ::vk::raii::CommandBuffer& cmd) const;
+  void Clear(const ::vk::raii::CommandBuffer& cmd) const;
+  void CopyToBuffer(const ::vk::raii::CommandBuffer& cmd, const Buffer& buffer) const;
+  void CopyFromBuffer(const ::vk::raii::CommandBuffer& cmd, const Buffer& buffer) const;
+
+ private:
+  ::vk::raii::Image image_;
+  ::vk::raii::DeviceMemory memory_{nullptr};
+  ::vk::raii::ImageView view_{nullptr};
+  ::vk::Extent3D extent_;
+  ::vk::Format format_;
+};
+
+// Linear filtering with clamp-to-edge: the table mappings put every lookup on texel centers.
+::vk::raii::Sampler CreateLinearClampSampler(const Context& context);
+
+// Makes every earlier shader or transfer write visible to every later shader or transfer access.
+void FullBarrier(const ::vk::raii::CommandBuffer& cmd);
+
+}  // namespace aerial::vk
