@@ -46,6 +46,7 @@ layout(std140, set = 0, binding = 0) uniform AtmosphereBlock {
   ivec4 transmittance_size;     // x: mu, y: r.
   ivec4 irradiance_size;        // x: mu_s, y: r.
   ivec4 scattering_size;        // x: r, y: mu, z: mu_s, w: nu (w == 1: the 3D variant).
+  ivec4 density_size;           // the same axes, for the per-order density and multiple scattering.
   ivec4 density_directions;     // x: zenith samples above the horizon, y: below, z: azimuths in [0, pi].
   ivec4 sample_counts;          // x: transmittance steps, y: single and multiple scattering steps,
                                 // z: irradiance zenith samples, w: irradiance azimuth samples.
@@ -55,5 +56,20 @@ float ClampCosine(float mu) { return clamp(mu, -1.0, 1.0); }
 float ClampDistance(float d) { return max(d, 0.0); }
 float ClampRadius(float r) { return clamp(r, atmosphere.bottom_radius, atmosphere.top_radius); }
 float SafeSqrt(float a) { return sqrt(max(a, 0.0)); }
+
+// Integral over one step of length 1 of a function known at both ends, assuming it varies
+// exponentially in between: the logarithmic mean (f1 - f0) / ln(f1 / f0). Along a ray through an
+// exponential atmosphere the scattering integrands are close to exponential, where the plain
+// trapezoid overestimates: with Mie's 1.2 km scale height and 50 steps over a 60 km zenith ray the
+// trapezoid is 8% high, the logarithmic mean exact. Where a value is zero (shadow, ground) or the
+// two ends are nearly equal, the trapezoid is used.
+vec3 ExponentialStepIntegral(vec3 f0, vec3 f1) {
+  vec3 trapezoid = 0.5 * (f0 + f1);
+  vec3 ratio = f1 / max(f0, vec3(1e-37));
+  vec3 use_log = step(1e-30, min(f0, f1)) * step(1e-3, abs(ratio - 1.0));
+  // Where use_log is 0 the denominator is replaced by 1, so the unused branch stays finite.
+  vec3 log_ratio = mix(vec3(1.0), log(max(ratio, vec3(1e-37))), use_log);
+  return mix(trapezoid, (f1 - f0) / log_ratio, use_log);
+}
 
 #endif

@@ -45,7 +45,7 @@ vec3 ComputeIndirectIrradiance(sampler3D single_rayleigh_texture, sampler3D sing
 }
 
 vec3 GetIrradiance(sampler2D irradiance_texture, float r, float mu_s) {
-  return texture(irradiance_texture, GetIrradianceTextureUvFromRMuS(r, mu_s)).rgb;
+  return textureLod(irradiance_texture, GetIrradianceTextureUvFromRMuS(r, mu_s), 0.0).rgb;
 }
 
 #endif

@@ -71,10 +71,12 @@ void GetRMuSFromIrradianceTextureUv(vec2 uv, out float r, out float mu_s) {
   mu_s = ClampCosine(2.0 * x_mu_s - 1.0);
 }
 
-// ---- Scattering table: (u_nu, u_mu_s, u_mu, u_r) in [0,1]^4. ----
+// ---- Scattering tables: (u_nu, u_mu_s, u_mu, u_r) in [0,1]^4. ----
+// `size` is (r, mu, mu_s, nu): atmosphere.scattering_size for the final tables,
+// atmosphere.density_size for the scattering density and multiple scattering of one order.
 // mu_s is mapped through the distance to the top boundary from the ground, normalized so that
 // mu_s_min maps to 0; this spends more texels near the horizon where scattering changes fastest.
-float GetScatteringUMuS(float mu_s) {
+float GetScatteringUMuS(ivec4 size, float mu_s) {
   float H = HorizonDistanceFromGround();
   float d_min = atmosphere.top_radius - atmosphere.bottom_radius;
   float d_max = H;
@@ -82,13 +84,12 @@ float GetScatteringUMuS(float mu_s) {
             (d_max - d_min);
   float D = DistanceToTopAtmosphereBoundary(atmosphere.bottom_radius, atmosphere.mu_s_min);
   float A = (D - d_min) / (d_max - d_min);
-  return GetTextureCoordFromUnitRange(max(1.0 - a / A, 0.0) / (1.0 + a),
-                                      atmosphere.scattering_size.z);
+  return GetTextureCoordFromUnitRange(max(1.0 - a / A, 0.0) / (1.0 + a), size.z);
 }
 
-float GetMuSFromScatteringUMuS(float u_mu_s) {
+float GetMuSFromScatteringUMuS(ivec4 size, float u_mu_s) {
   float H = HorizonDistanceFromGround();
-  float x_mu_s = GetUnitRangeFromTextureCoord(u_mu_s, atmosphere.scattering_size.z);
+  float x_mu_s = GetUnitRangeFromTextureCoord(u_mu_s, size.z);
   float d_min = atmosphere.top_radius - atmosphere.bottom_radius;
   float d_max = H;
   float D = DistanceToTopAtmosphereBoundary(atmosphere.bottom_radius, atmosphere.mu_s_min);
@@ -99,25 +100,25 @@ float GetMuSFromScatteringUMuS(float u_mu_s) {
                   : ClampCosine((H * H - d * d) / (2.0 * atmosphere.bottom_radius * d));
 }
 
-float GetScatteringUR(float r) {
+float GetScatteringUR(ivec4 size, float r) {
   float H = HorizonDistanceFromGround();
   float rho = SafeSqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
-  return GetTextureCoordFromUnitRange(rho / H, atmosphere.scattering_size.x);
+  return GetTextureCoordFromUnitRange(rho / H, size.x);
 }
 
-float GetRFromScatteringUR(float u_r) {
+float GetRFromScatteringUR(ivec4 size, float u_r) {
   float rho = HorizonDistanceFromGround() *
-              GetUnitRangeFromTextureCoord(u_r, atmosphere.scattering_size.x);
+              GetUnitRangeFromTextureCoord(u_r, size.x);
   return sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
 }
 
-vec4 GetScatteringTextureUvwzFromRMuMuSNu(float r, float mu, float mu_s, float nu,
+vec4 GetScatteringTextureUvwzFromRMuMuSNu(ivec4 size, float r, float mu, float mu_s, float nu,
                                           bool ray_r_mu_intersects_ground) {
   float H = HorizonDistanceFromGround();
   float rho = SafeSqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
   float r_mu = r * mu;
   float discriminant = r_mu * r_mu - r * r + atmosphere.bottom_radius * atmosphere.bottom_radius;
-  int half_mu = atmosphere.scattering_size.y / 2;
+  int half_mu = size.y / 2;
   float u_mu;
   if (ray_r_mu_intersects_ground) {
     // Distance to the ground, from r - R (nadir) to rho (horizon).
@@ -133,15 +134,15 @@ vec4 GetScatteringTextureUvwzFromRMuMuSNu(float r, float mu, float mu_s, float n
     float d_max = rho + H;
     u_mu = 0.5 + 0.5 * GetTextureCoordFromUnitRange((d - d_min) / (d_max - d_min), half_mu);
   }
-  return vec4((nu + 1.0) / 2.0, GetScatteringUMuS(mu_s), u_mu, GetScatteringUR(r));
+  return vec4((nu + 1.0) / 2.0, GetScatteringUMuS(size, mu_s), u_mu, GetScatteringUR(size, r));
 }
 
-void GetRMuMuSNuFromScatteringTextureUvwz(vec4 uvwz, out float r, out float mu, out float mu_s,
+void GetRMuMuSNuFromScatteringTextureUvwz(ivec4 size, vec4 uvwz, out float r, out float mu, out float mu_s,
                                           out float nu, out bool ray_r_mu_intersects_ground) {
   float H = HorizonDistanceFromGround();
-  r = GetRFromScatteringUR(uvwz.w);
+  r = GetRFromScatteringUR(size, uvwz.w);
   float rho = SafeSqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
-  int half_mu = atmosphere.scattering_size.y / 2;
+  int half_mu = size.y / 2;
   if (uvwz.z < 0.5) {
     float d_min = r - atmosphere.bottom_radius;
     float d_max = rho;
@@ -155,24 +156,27 @@ void GetRMuMuSNuFromScatteringTextureUvwz(vec4 uvwz, out float r, out float mu, 
     mu = d == 0.0 ? 1.0 : ClampCosine((H * H - rho * rho - d * d) / (2.0 * r * d));
     ray_r_mu_intersects_ground = false;
   }
-  mu_s = GetMuSFromScatteringUMuS(uvwz.y);
+  mu_s = GetMuSFromScatteringUMuS(size, uvwz.y);
   nu = ClampCosine(uvwz.x * 2.0 - 1.0);
+}
+
+bool IsScatteringTexel(ivec4 size, ivec3 texel) {
+  return texel.x < size.z * size.w && texel.y < size.y && texel.z < size.x;
 }
 
 // The texel (x, y, z) of the 3D image that packs the 4D table: x = nu_index * MU_S + mu_s_index.
 // nu samples span [-1, 1] exactly (nu_size texels, end points included); the other axes use texel
 // centers. nu is then clamped to the values that (mu, mu_s) allow.
-void GetRMuMuSNuFromScatteringTexel(ivec3 texel, out float r, out float mu, out float mu_s,
+void GetRMuMuSNuFromScatteringTexel(ivec4 size, ivec3 texel, out float r, out float mu, out float mu_s,
                                     out float nu, out bool ray_r_mu_intersects_ground) {
-  int mu_s_size = atmosphere.scattering_size.z;
-  int nu_size = atmosphere.scattering_size.w;
+  int mu_s_size = size.z;
+  int nu_size = size.w;
   float nu_index = float(texel.x / mu_s_size);
   float mu_s_index = float(texel.x % mu_s_size);
   vec4 uvwz = vec4(nu_size > 1 ? nu_index / float(nu_size - 1) : 0.5,
                    (mu_s_index + 0.5) / float(mu_s_size),
-                   (float(texel.y) + 0.5) / float(atmosphere.scattering_size.y),
-                   (float(texel.z) + 0.5) / float(atmosphere.scattering_size.x));
-  GetRMuMuSNuFromScatteringTextureUvwz(uvwz, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+                   (float(texel.y) + 0.5) / float(size.y), (float(texel.z) + 0.5) / float(size.x));
+  GetRMuMuSNuFromScatteringTextureUvwz(size, uvwz, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
   float spread = sqrt((1.0 - mu * mu) * (1.0 - mu_s * mu_s));
   nu = clamp(nu, mu * mu_s - spread, mu * mu_s + spread);
 }

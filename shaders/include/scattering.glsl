@@ -9,37 +9,43 @@
 
 // Integrand of single scattering at distance d along the ray: transmittance from the camera to the
 // point, times sunlight reaching the point, times the density of each species there.
-void ComputeSingleScatteringIntegrand(sampler2D transmittance_texture, float r, float mu,
-                                      float mu_s, float nu, float d,
+void ComputeSingleScatteringIntegrand(sampler2D transmittance_texture, vec3 origin, float r,
+                                      float mu, float mu_s, float nu, float d,
                                       bool ray_r_mu_intersects_ground, out vec3 rayleigh,
                                       out vec3 mie) {
   float r_d = RadiusAtDistance(r, mu, d);
   float mu_s_d = MuSAtDistance(r, mu_s, nu, d, r_d);
-  vec3 transmittance =
-      GetTransmittance(transmittance_texture, r, mu, d, ray_r_mu_intersects_ground) *
-      GetTransmittanceToSun(transmittance_texture, r_d, mu_s_d);
+  vec3 transmittance = GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
+                                                  ray_r_mu_intersects_ground) *
+                       GetTransmittanceToSun(transmittance_texture, r_d, mu_s_d);
   float altitude = r_d - atmosphere.bottom_radius;
   rayleigh = transmittance * GetProfileDensity(atmosphere.rayleigh_density, altitude);
   mie = transmittance * GetProfileDensity(atmosphere.mie_density, altitude);
 }
 
-// Single scattering (Bruneton 2008 eq. 11 without the phase function), by the trapezoidal rule
-// over the distance to the nearest boundary.
+// Single scattering (Bruneton 2008 eq. 11 without the phase function), integrated over the
+// distance to the nearest boundary in equal steps with ExponentialStepIntegral.
 void ComputeSingleScattering(sampler2D transmittance_texture, float r, float mu, float mu_s,
                              float nu, bool ray_r_mu_intersects_ground, out vec3 rayleigh,
                              out vec3 mie) {
   int steps = atmosphere.sample_counts.y;
   float dx = DistanceToNearestAtmosphereBoundary(r, mu, ray_r_mu_intersects_ground) / float(steps);
+  vec3 origin = GetRayOpticalDepthOrigin(transmittance_texture, r, mu, ray_r_mu_intersects_ground);
   vec3 rayleigh_sum = vec3(0.0);
   vec3 mie_sum = vec3(0.0);
-  for (int i = 0; i <= steps; ++i) {
+  vec3 rayleigh_previous;
+  vec3 mie_previous;
+  ComputeSingleScatteringIntegrand(transmittance_texture, origin, r, mu, mu_s, nu, 0.0,
+                                   ray_r_mu_intersects_ground, rayleigh_previous, mie_previous);
+  for (int i = 1; i <= steps; ++i) {
     vec3 rayleigh_i;
     vec3 mie_i;
-    ComputeSingleScatteringIntegrand(transmittance_texture, r, mu, mu_s, nu, float(i) * dx,
+    ComputeSingleScatteringIntegrand(transmittance_texture, origin, r, mu, mu_s, nu, float(i) * dx,
                                      ray_r_mu_intersects_ground, rayleigh_i, mie_i);
-    float weight = (i == 0 || i == steps) ? 0.5 : 1.0;
-    rayleigh_sum += rayleigh_i * weight;
-    mie_sum += mie_i * weight;
+    rayleigh_sum += ExponentialStepIntegral(rayleigh_previous, rayleigh_i);
+    mie_sum += ExponentialStepIntegral(mie_previous, mie_i);
+    rayleigh_previous = rayleigh_i;
+    mie_previous = mie_i;
   }
   vec3 sun = atmosphere.solar_irradiance.rgb * dx;
   rayleigh = rayleigh_sum * sun * atmosphere.rayleigh_scattering.rgb;
@@ -48,20 +54,47 @@ void ComputeSingleScattering(sampler2D transmittance_texture, float r, float mu,
 
 // Reads a 4D table packed in 3D (x = nu_index * MU_S + mu_s_index), interpolating linearly in nu
 // between two slices; the other three axes use the sampler's trilinear filter. A table with one
-// nu slice is the 3D variant.
-vec3 GetScattering(sampler3D scattering_texture, float r, float mu, float mu_s, float nu,
-                   bool ray_r_mu_intersects_ground) {
-  vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(r, mu, mu_s, nu, ray_r_mu_intersects_ground);
-  float nu_size = float(atmosphere.scattering_size.w);
-  if (atmosphere.scattering_size.w == 1) {
-    return texture(scattering_texture, uvwz.yzw).rgb;
+// nu slice is the 3D variant. The precomputation reads its own intermediate tables this way.
+vec3 GetScatteringAt(sampler3D scattering_texture, ivec4 size, vec4 uvwz) {
+  float nu_size = float(size.w);
+  if (size.w == 1) {
+    return textureLod(scattering_texture, uvwz.yzw, 0.0).rgb;
   }
   float tex_coord_x = uvwz.x * (nu_size - 1.0);
   float tex_x = min(floor(tex_coord_x), nu_size - 2.0);
   float lerp = tex_coord_x - tex_x;
   vec3 uvw0 = vec3((tex_x + uvwz.y) / nu_size, uvwz.z, uvwz.w);
   vec3 uvw1 = vec3((tex_x + 1.0 + uvwz.y) / nu_size, uvwz.z, uvwz.w);
-  return mix(texture(scattering_texture, uvw0).rgb, texture(scattering_texture, uvw1).rgb, lerp);
+  return mix(textureLod(scattering_texture, uvw0, 0.0).rgb,
+             textureLod(scattering_texture, uvw1, 0.0).rgb, lerp);
+}
+
+vec3 GetScattering(sampler3D scattering_texture, ivec4 size, float r, float mu, float mu_s,
+                   float nu, bool ray_r_mu_intersects_ground) {
+  return GetScatteringAt(
+      scattering_texture, size,
+      GetScatteringTextureUvwzFromRMuMuSNu(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground));
+}
+
+// The render-time read of the final tables: as GetScattering, but interpolated exponentially
+// between the two nearest r slices instead of linearly. Scattering falls off roughly exponentially
+// with altitude, and at the default 32 r slices a slice spans 1.6 km of altitude at 10 km (Mie's
+// scale height is 1.2 km) and 3.5 km at 50 km: linear interpolation there overestimates the
+// inscatter seen by a high camera by up to 20% (Mie) and 2.4% (Rayleigh). Where either slice is
+// zero (night side) the interpolation falls back to linear.
+vec3 GetScatteringExponentialInR(sampler3D scattering_texture, ivec4 size, float r, float mu,
+                                 float mu_s, float nu, bool ray_r_mu_intersects_ground) {
+  vec4 uvwz =
+      GetScatteringTextureUvwzFromRMuMuSNu(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+  float r_size = float(size.x);
+  float slice = clamp(uvwz.w * r_size - 0.5, 0.0, r_size - 1.0);
+  float slice0 = min(floor(slice), r_size - 2.0);
+  float t = slice - slice0;
+  vec3 s0 = GetScatteringAt(scattering_texture, size, vec4(uvwz.xyz, (slice0 + 0.5) / r_size));
+  vec3 s1 = GetScatteringAt(scattering_texture, size, vec4(uvwz.xyz, (slice0 + 1.5) / r_size));
+  vec3 use_log = step(1e-30, min(s0, s1));
+  vec3 exponential = exp(mix(log(max(s0, vec3(1e-30))), log(max(s1, vec3(1e-30))), t));
+  return mix(mix(s0, s1, t), exponential, use_log);
 }
 
 // Radiance of scattering order `order` arriving along (r, mu) with the sun at (mu_s, nu): order 1
@@ -71,35 +104,50 @@ vec3 GetScatteringOfOrder(sampler3D single_rayleigh_texture, sampler3D single_mi
                           sampler3D multiple_scattering_texture, float r, float mu, float mu_s,
                           float nu, bool ray_r_mu_intersects_ground, int order) {
   if (order == 1) {
-    vec3 rayleigh = GetScattering(single_rayleigh_texture, r, mu, mu_s, nu,
-                                  ray_r_mu_intersects_ground);
-    vec3 mie = GetScattering(single_mie_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+    vec3 rayleigh = GetScattering(single_rayleigh_texture, atmosphere.scattering_size, r, mu, mu_s,
+                                  nu, ray_r_mu_intersects_ground);
+    vec3 mie = GetScattering(single_mie_texture, atmosphere.scattering_size, r, mu, mu_s, nu,
+                             ray_r_mu_intersects_ground);
     return rayleigh * RayleighPhaseFunction(nu) + mie * MiePhaseFunction(atmosphere.mie_phase_g, nu);
   }
-  return GetScattering(multiple_scattering_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+  return GetScattering(multiple_scattering_texture, atmosphere.density_size, r, mu, mu_s, nu,
+                       ray_r_mu_intersects_ground);
 }
 
 // Multiple scattering of order n (Bruneton 2008 eq. 12 integrated along the ray): the scattering
-// density J of order n, attenuated back to the camera, by the trapezoidal rule.
+// density J of order n, attenuated back to the camera, in equal steps with
+// ExponentialStepIntegral.
+vec3 MultipleScatteringIntegrand(sampler2D transmittance_texture,
+                                 sampler3D scattering_density_texture, vec3 origin, float r,
+                                 float mu, float mu_s, float nu, float d,
+                                 bool ray_r_mu_intersects_ground) {
+  float r_d = RadiusAtDistance(r, mu, d);
+  float mu_d = MuAtDistance(r, mu, d, r_d);
+  float mu_s_d = MuSAtDistance(r, mu_s, nu, d, r_d);
+  return GetScattering(scattering_density_texture, atmosphere.density_size, r_d, mu_d, mu_s_d, nu,
+                       ray_r_mu_intersects_ground) *
+         GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
+                                    ray_r_mu_intersects_ground);
+}
+
 vec3 ComputeMultipleScattering(sampler2D transmittance_texture, sampler3D scattering_density_texture,
                                float r, float mu, float mu_s, float nu,
                                bool ray_r_mu_intersects_ground) {
   int steps = atmosphere.sample_counts.y;
   float dx = DistanceToNearestAtmosphereBoundary(r, mu, ray_r_mu_intersects_ground) / float(steps);
+  vec3 origin = GetRayOpticalDepthOrigin(transmittance_texture, r, mu, ray_r_mu_intersects_ground);
+  vec3 previous = MultipleScatteringIntegrand(transmittance_texture, scattering_density_texture,
+                                              origin, r, mu, mu_s, nu, 0.0,
+                                              ray_r_mu_intersects_ground);
   vec3 radiance_sum = vec3(0.0);
-  for (int i = 0; i <= steps; ++i) {
-    float d_i = float(i) * dx;
-    float r_i = RadiusAtDistance(r, mu, d_i);
-    float mu_i = MuAtDistance(r, mu, d_i, r_i);
-    float mu_s_i = MuSAtDistance(r, mu_s, nu, d_i, r_i);
-    vec3 density = GetScattering(scattering_density_texture, r_i, mu_i, mu_s_i, nu,
-                                 ray_r_mu_intersects_ground);
-    vec3 transmittance =
-        GetTransmittance(transmittance_texture, r, mu, d_i, ray_r_mu_intersects_ground);
-    float weight = (i == 0 || i == steps) ? 0.5 : 1.0;
-    radiance_sum += density * transmittance * (weight * dx);
+  for (int i = 1; i <= steps; ++i) {
+    vec3 current = MultipleScatteringIntegrand(transmittance_texture, scattering_density_texture,
+                                               origin, r, mu, mu_s, nu, float(i) * dx,
+                                               ray_r_mu_intersects_ground);
+    radiance_sum += ExponentialStepIntegral(previous, current);
+    previous = current;
   }
-  return radiance_sum;
+  return radiance_sum * dx;
 }
 
 #endif

@@ -17,8 +17,8 @@ Inscatter GetSkyInscatter(sampler2D transmittance_texture, sampler3D rayleigh_te
   bool ray_r_mu_intersects_ground = RayIntersectsGround(r, mu);
   Inscatter result;
   result.rayleigh =
-      GetScattering(rayleigh_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
-  result.mie = GetScattering(mie_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+      GetScatteringExponentialInR(rayleigh_texture, atmosphere.scattering_size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+  result.mie = GetScatteringExponentialInR(mie_texture, atmosphere.scattering_size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
   result.transmittance =
       ray_r_mu_intersects_ground
           ? GetTransmittance(transmittance_texture, r, mu,
@@ -42,12 +42,12 @@ Inscatter GetSkyInscatterToPoint(sampler2D transmittance_texture, sampler3D rayl
   result.transmittance =
       GetTransmittance(transmittance_texture, r, mu, d, ray_r_mu_intersects_ground);
   result.rayleigh =
-      max(GetScattering(rayleigh_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground) -
-              result.transmittance * GetScattering(rayleigh_texture, r_p, mu_p, mu_s_p, nu,
+      max(GetScatteringExponentialInR(rayleigh_texture, atmosphere.scattering_size, r, mu, mu_s, nu, ray_r_mu_intersects_ground) -
+              result.transmittance * GetScatteringExponentialInR(rayleigh_texture, atmosphere.scattering_size, r_p, mu_p, mu_s_p, nu,
                                                    ray_r_mu_intersects_ground),
           vec3(0.0));
-  result.mie = max(GetScattering(mie_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground) -
-                       result.transmittance * GetScattering(mie_texture, r_p, mu_p, mu_s_p, nu,
+  result.mie = max(GetScatteringExponentialInR(mie_texture, atmosphere.scattering_size, r, mu, mu_s, nu, ray_r_mu_intersects_ground) -
+                       result.transmittance * GetScatteringExponentialInR(mie_texture, atmosphere.scattering_size, r_p, mu_p, mu_s_p, nu,
                                                             ray_r_mu_intersects_ground),
                    vec3(0.0));
   return result;

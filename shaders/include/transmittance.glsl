@@ -13,9 +13,12 @@ vec3 GetExtinction(float r) {
              GetProfileDensity(atmosphere.absorption_density, altitude);
 }
 
-// T = exp(-integral of extinction) from (r, mu) to the top boundary, by the trapezoidal rule
-// (Bruneton 2017 eq. "ComputeOpticalLengthToTopAtmosphereBoundary").
-vec3 ComputeTransmittanceToTopAtmosphereBoundary(float r, float mu) {
+// The transmittance table stores the optical depth tau(r, mu) to the top boundary, and readers
+// exponentiate: bilinear interpolation of tau (nearly linear in the table coordinates) is more
+// accurate than interpolation of T = exp(-tau), which is convex; near the horizon the difference
+// is several tenths of a percent. tau is integrated with the trapezoidal rule (Bruneton 2017
+// "ComputeOpticalLengthToTopAtmosphereBoundary").
+vec3 ComputeOpticalDepthToTopAtmosphereBoundary(float r, float mu) {
   int steps = atmosphere.sample_counts.x;
   float dx = DistanceToTopAtmosphereBoundary(r, mu) / float(steps);
   vec3 optical_depth = vec3(0.0);
@@ -25,28 +28,48 @@ vec3 ComputeTransmittanceToTopAtmosphereBoundary(float r, float mu) {
     float weight = (i == 0 || i == steps) ? 0.5 : 1.0;
     optical_depth += GetExtinction(r_i) * (weight * dx);
   }
-  return exp(-optical_depth);
+  return optical_depth;
+}
+
+vec3 GetOpticalDepthToTopAtmosphereBoundary(sampler2D transmittance_texture, float r, float mu) {
+  return textureLod(transmittance_texture, GetTransmittanceTextureUvFromRMu(r, mu), 0.0).rgb;
 }
 
 vec3 GetTransmittanceToTopAtmosphereBoundary(sampler2D transmittance_texture, float r, float mu) {
-  return texture(transmittance_texture, GetTransmittanceTextureUvFromRMu(r, mu)).rgb;
+  return exp(-GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r, mu));
 }
 
-// Transmittance over the first d meters of a ray, as a ratio of two table values. For rays that hit
-// the ground both values are taken on the reversed ray (-mu), which never hits the ground, so the
-// table is only ever read for rays that reach the top boundary (Bruneton 2017 "GetTransmittance").
-vec3 GetTransmittance(sampler2D transmittance_texture, float r, float mu, float d,
-                      bool ray_r_mu_intersects_ground) {
+// Transmittance over the first d meters of a ray, from the difference of two optical depths to
+// the top boundary. For rays that hit the ground both are taken on the reversed ray (-mu), which
+// never hits the ground, so the table is only read for rays that reach the top boundary (Bruneton
+// 2017 "GetTransmittance").
+//
+// Integrators that march one ray call GetRayOpticalDepthOrigin once and then
+// GetTransmittanceFromOrigin per step: the camera's term does not change along the ray, which
+// halves the table reads of the single and multiple scattering passes.
+vec3 GetRayOpticalDepthOrigin(sampler2D transmittance_texture, float r, float mu,
+                              bool ray_r_mu_intersects_ground) {
+  return GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r,
+                                                ray_r_mu_intersects_ground ? -mu : mu);
+}
+
+vec3 GetTransmittanceFromOrigin(sampler2D transmittance_texture, vec3 origin, float r, float mu,
+                                float d, bool ray_r_mu_intersects_ground) {
   float r_d = RadiusAtDistance(r, mu, d);
   float mu_d = MuAtDistance(r, mu, d, r_d);
   if (ray_r_mu_intersects_ground) {
-    return min(GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r_d, -mu_d) /
-                   GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, -mu),
-               vec3(1.0));
+    vec3 tau_d = GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r_d, -mu_d);
+    return exp(-max(tau_d - origin, vec3(0.0)));
   }
-  return min(GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, mu) /
-                 GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r_d, mu_d),
-             vec3(1.0));
+  vec3 tau_d = GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r_d, mu_d);
+  return exp(-max(origin - tau_d, vec3(0.0)));
+}
+
+vec3 GetTransmittance(sampler2D transmittance_texture, float r, float mu, float d,
+                      bool ray_r_mu_intersects_ground) {
+  vec3 origin = GetRayOpticalDepthOrigin(transmittance_texture, r, mu, ray_r_mu_intersects_ground);
+  return GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
+                                    ray_r_mu_intersects_ground);
 }
 
 // Fraction of the sun disc (angular radius alpha) above the horizon seen from radius r. With x the

@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Pass 4a (orders >= 2): the radiance of order n-1 arriving at each (r, mu_s) of the scattering
+// Pass 4a (orders >= 2): the radiance of order n-1 arriving at each (r, mu_s) of the density
 // table from each direction of the density grid (density_directions.glsl), ground reflection of
 // the order n-2 irradiance included (Bruneton 2017 "ComputeScatteringDensity", inner loop).
 //
@@ -27,9 +27,9 @@ void main() {
   int mu_s_index = int(gl_GlobalInvocationID.y);
   int r_index = int(gl_GlobalInvocationID.z);
   if (direction_index >= direction_count) return;
-  float r = GetRFromScatteringUR((float(r_index) + 0.5) / float(atmosphere.scattering_size.x));
-  float mu_s = GetMuSFromScatteringUMuS((float(mu_s_index) + 0.5) /
-                                        float(atmosphere.scattering_size.z));
+  ivec4 size = atmosphere.density_size;
+  float r = GetRFromScatteringUR(size, (float(r_index) + 0.5) / float(size.x));
+  float mu_s = GetMuSFromScatteringUMuS(size, (float(mu_s_index) + 0.5) / float(size.z));
   vec4 omega_i = GetDensityDirection(r, direction_index);
   vec3 omega_s = vec3(sqrt(max(1.0 - mu_s * mu_s, 0.0)), 0.0, mu_s);
   float nu_i = dot(omega_i.xyz, omega_s);
@@ -46,7 +46,7 @@ void main() {
     radiance += GetTransmittance(transmittance_texture, r, omega_i.z, d, true) *
                 atmosphere.ground_albedo.rgb * (1.0 / PI) * ground_irradiance;
   }
-  int slot = (r_index * atmosphere.scattering_size.z + mu_s_index) * direction_count + direction_index;
+  int slot = (r_index * size.z + mu_s_index) * direction_count + direction_index;
   weighted_radiance[slot] = vec4(radiance * omega_i.w, 0.0);
   if (mu_s_index == 0) directions[r_index * direction_count + direction_index] = omega_i;
 }

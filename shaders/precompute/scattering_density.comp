@@ -3,7 +3,8 @@
 // Pass 4b (orders >= 2): the scattering density J(r, mu, mu_s, nu) of order n (Bruneton 2008
 // eq. 7): the incident radiance of pass 4a convolved with each species' phase function and scaled
 // by its scattering coefficient. One workgroup shares one (r, mu_s, nu) and stages the incident
-// radiance in shared memory; the threads differ only in mu.
+// radiance in shared memory; the threads differ only in mu. The invocation's x is the mu index:
+// CPU implementations (lavapipe) vectorize along local x, so x must be the wide dimension.
 //
 // The discrete phase weights are renormalized to sum to 1 (the phase functions' exact integral):
 // with a finite direction grid Mie's forward peak would otherwise gain or lose energy depending on
@@ -11,7 +12,7 @@
 #include "density_directions.glsl"
 #include "mappings.glsl"
 #include "phase.glsl"
-layout(local_size_x = 1, local_size_y = 64) in;
+layout(local_size_x = 64) in;
 layout(std430, set = 0, binding = 1) readonly buffer IncidentRadiance { vec4 weighted_radiance[]; };
 layout(std430, set = 0, binding = 2) readonly buffer Directions { vec4 directions[]; };
 layout(set = 0, binding = 3) writeonly uniform image3D scattering_density_image;
@@ -21,9 +22,9 @@ shared vec3 shared_radiance[kMaxDirections];
 shared vec4 shared_direction[kMaxDirections];
 
 void main() {
-  ivec3 texel = ivec3(gl_GlobalInvocationID);
+  ivec3 texel = ivec3(gl_GlobalInvocationID.y, gl_GlobalInvocationID.x, gl_GlobalInvocationID.z);
   int direction_count = DensityDirectionCount();
-  int mu_s_size = atmosphere.scattering_size.z;
+  int mu_s_size = atmosphere.density_size.z;
   int mu_s_index = texel.x % mu_s_size;
   int first = (texel.z * mu_s_size + mu_s_index) * direction_count;
   for (int k = int(gl_LocalInvocationIndex); k < direction_count; k += 64) {
@@ -31,11 +32,11 @@ void main() {
     shared_direction[k] = directions[texel.z * direction_count + k];
   }
   barrier();
-  if (texel.y >= atmosphere.scattering_size.y) return;
+  if (!IsScatteringTexel(atmosphere.density_size, texel)) return;
 
   float r, mu, mu_s, nu;
   bool ray_r_mu_intersects_ground;
-  GetRMuMuSNuFromScatteringTexel(texel, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+  GetRMuMuSNuFromScatteringTexel(atmosphere.density_size, texel, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
   // View direction in the sun frame (sun at azimuth 0), and its mirror image under y -> -y.
   float sin_theta = sqrt(max(1.0 - mu * mu, 0.0));
   float sin_theta_s = sqrt(max(1.0 - mu_s * mu_s, 0.0));

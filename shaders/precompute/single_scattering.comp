@@ -11,11 +11,10 @@ layout(set = 0, binding = 4) writeonly uniform image3D rayleigh_accumulator;
 
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
-  if (texel.x >= atmosphere.scattering_size.z * atmosphere.scattering_size.w ||
-      texel.y >= atmosphere.scattering_size.y || texel.z >= atmosphere.scattering_size.x) return;
+  if (!IsScatteringTexel(atmosphere.scattering_size, texel)) return;
   float r, mu, mu_s, nu;
   bool ray_r_mu_intersects_ground;
-  GetRMuMuSNuFromScatteringTexel(texel, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+  GetRMuMuSNuFromScatteringTexel(atmosphere.scattering_size, texel, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
   vec3 rayleigh;
   vec3 mie;
   ComputeSingleScattering(transmittance_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground,

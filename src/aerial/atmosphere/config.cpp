@@ -1,8 +1,10 @@
 #include "aerial/atmosphere/config.h"
 
+#include <toml++/toml.h>
+
 #include <algorithm>
-#include <charconv>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -10,8 +12,6 @@
 #include <memory>
 #include <numbers>
 #include <vector>
-
-#include <toml++/toml.h>
 
 #include "aerial/core/error.h"
 
@@ -43,7 +43,9 @@ std::string FormatDouble(double value) {
 }
 
 std::string FormatSpectrum(const Spectrum& s) {
-  return "[" + FormatDouble(s[0]) + ", " + FormatDouble(s[1]) + ", " + FormatDouble(s[2]) + "]";
+  std::string text = "[";
+  for (size_t i = 0; i < s.size(); ++i) text += (i ? ", " : "") + FormatDouble(s[i]);
+  return text + "]";
 }
 
 // A TOML basic string: quotes, backslashes and control characters escaped.
@@ -102,7 +104,8 @@ class Reader {
       if (std::find(known.begin(), known.end(), key.str()) != known.end()) continue;
       std::string allowed = "a known key; ";
       allowed += prefix.empty() ? "top-level keys are" : "keys in " + prefix + " are";
-      for (size_t i = 0; i < known.size(); ++i) allowed += (i ? ", " : " ") + std::string(known.begin()[i]);
+      for (size_t i = 0; i < known.size(); ++i)
+        allowed += (i ? ", " : " ") + std::string(known.begin()[i]);
       throw Error(Join(prefix, key.str()), NodeText(node), allowed, At(key.source().begin));
     }
   }
@@ -151,9 +154,11 @@ class Reader {
     size_t first = array->size() == 1 ? 1 : 0;
     for (size_t i = 0; i < array->size(); ++i) {
       std::string layer_field = Index(field, i);
-      const toml::table& table = Table(*array->get(i), layer_field, "a layer table {width_m = ..., exp_term = ...}");
-      RejectUnknownKeys(table, layer_field, {"width_m", "exp_term", "exp_scale_per_m",
-                                             "linear_term_per_m", "constant_term"});
+      const toml::table& table =
+          Table(*array->get(i), layer_field, "a layer table {width_m = ..., exp_term = ...}");
+      RejectUnknownKeys(
+          table, layer_field,
+          {"width_m", "exp_term", "exp_scale_per_m", "linear_term_per_m", "constant_term"});
       Layer& layer = profile.layers[first + i];
       for (auto [key, member] : kLayerFields) {
         if (const toml::node* value = table.get(key))
@@ -245,8 +250,8 @@ std::string DensityToToml(const DensityProfile& profile) {
 
 double MuSMinFromMaxSunZenithDeg(double degrees) {
   // cos(d) = -sin(d - 90): d - 90 is exact for d in [90, 180] (Sterbenz), sin(0) = 0 exactly,
-  // and long double keeps the error of pi/6 and pi/2 far below half a double ulp, so 120 and 180
-  // round to exactly -0.5 and -1.
+  // and long double (64-bit mantissa on x86-64, 113 on AArch64 Linux) keeps the error of pi/6
+  // and pi/2 far below half a double ulp, so 120 and 180 round to exactly -0.5 and -1.
   constexpr long double kPi = 3.141592653589793238462643383279502884L;
   long double s = std::sin((static_cast<long double>(degrees) - 90.0L) * kPi / 180.0L);
   return 0.0 - static_cast<double>(s);
@@ -280,10 +285,10 @@ AtmosphereParameters ParseAtmosphereToml(std::string_view text, const std::strin
   }
   Reader r(where);
   AtmosphereParameters a = AtmosphereParameters::Earth();
-  r.RejectUnknownKeys(root, "",
-                      {"name", "wavelengths_nm", "solar_irradiance", "sun_angular_radius_rad",
-                       "bottom_radius_m", "top_radius_m", "ground_albedo", "max_sun_zenith_deg",
-                       "rayleigh", "mie", "ozone"});
+  r.RejectUnknownKeys(
+      root, "",
+      {"name", "wavelengths_nm", "solar_irradiance", "sun_angular_radius_rad", "bottom_radius_m",
+       "top_radius_m", "ground_albedo", "max_sun_zenith_deg", "rayleigh", "mie", "ozone"});
   IfPresent(root, "name", [&](auto& n) { a.name = r.String(n, "name"); });
   IfPresent(root, "wavelengths_nm",
             [&](auto& n) { a.wavelengths_nm = r.ReadSpectrum(n, "wavelengths_nm", "nm"); });
@@ -302,7 +307,8 @@ AtmosphereParameters ParseAtmosphereToml(std::string_view text, const std::strin
   IfPresent(root, "max_sun_zenith_deg", [&](auto& n) {
     // Checked here, in degrees as written; Validate() only sees the cosine.
     double degrees = r.Number(n, "max_sun_zenith_deg", "degrees");
-    if (!(degrees >= 90.0 && degrees <= 180.0)) r.Fail(n, "max_sun_zenith_deg", "[90, 180] degrees");
+    if (!(degrees >= 90.0 && degrees <= 180.0))
+      r.Fail(n, "max_sun_zenith_deg", "[90, 180] degrees");
     a.mu_s_min = MuSMinFromMaxSunZenithDeg(degrees);
   });
   IfPresent(root, "rayleigh", [&](auto& n) {
@@ -311,7 +317,8 @@ AtmosphereParameters ParseAtmosphereToml(std::string_view text, const std::strin
     IfPresent(t, "scattering", [&](auto& m) {
       a.rayleigh_scattering = r.ReadSpectrum(m, "rayleigh.scattering", "m^-1");
     });
-    IfPresent(t, "density", [&](auto& m) { a.rayleigh_density = r.ReadDensity(m, "rayleigh.density"); });
+    IfPresent(t, "density",
+              [&](auto& m) { a.rayleigh_density = r.ReadDensity(m, "rayleigh.density"); });
   });
   IfPresent(root, "mie", [&](auto& n) {
     const toml::table& t = r.Table(n, "mie", "a table ([mie])");
@@ -329,7 +336,8 @@ AtmosphereParameters ParseAtmosphereToml(std::string_view text, const std::strin
     IfPresent(t, "absorption", [&](auto& m) {
       a.absorption_extinction = r.ReadSpectrum(m, "ozone.absorption", "m^-1");
     });
-    IfPresent(t, "density", [&](auto& m) { a.absorption_density = r.ReadDensity(m, "ozone.density"); });
+    IfPresent(t, "density",
+              [&](auto& m) { a.absorption_density = r.ReadDensity(m, "ozone.density"); });
   });
   try {
     Validate(a);
@@ -340,7 +348,8 @@ AtmosphereParameters ParseAtmosphereToml(std::string_view text, const std::strin
 }
 
 AtmosphereParameters LoadAtmosphereFile(const std::filesystem::path& path) {
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                       &std::fclose);
   if (!file) {
     throw Error("atmosphere file", path.string(),
                 std::string("a readable TOML file (") + std::strerror(errno) + ")");
@@ -361,8 +370,8 @@ void Validate(const AtmosphereParameters& a, const std::string& where) {
   const std::string non_negative = ">= 0 and finite";
   CheckSpectrum(a.wavelengths_nm, "wavelengths_nm", 300.0, 1000.0, "[300, 1000] nm", where);
   CheckSpectrum(a.solar_irradiance, "solar_irradiance", 0.0, HUGE_VAL, non_negative, where);
-  Check(a.sun_angular_radius_rad > 0.0 && a.sun_angular_radius_rad <= 0.1,
-        "sun_angular_radius_rad", a.sun_angular_radius_rad, "(0, 0.1] rad", where);
+  Check(a.sun_angular_radius_rad > 0.0 && a.sun_angular_radius_rad <= 0.1, "sun_angular_radius_rad",
+        a.sun_angular_radius_rad, "(0, 0.1] rad", where);
   Check(a.bottom_radius_m > 0.0 && std::isfinite(a.bottom_radius_m), "bottom_radius_m",
         a.bottom_radius_m, "> 0 m and finite", where);
   // The tables parameterize altitude over [bottom, top]; a shell thicker than 1000 km is not an
@@ -386,8 +395,10 @@ void Validate(const AtmosphereParameters& a, const std::string& where) {
   // Extinction = scattering + absorption, and absorption cannot be negative.
   for (size_t i = 0; i < 3; ++i) {
     Check(a.mie_extinction[i] >= a.mie_scattering[i], Reader::Index("mie.extinction", i),
-          a.mie_extinction[i], ">= mie.scattering[" + std::to_string(i) + "] = " +
-          FormatDouble(a.mie_scattering[i]) + " (extinction includes scattering)", where);
+          a.mie_extinction[i],
+          ">= mie.scattering[" + std::to_string(i) + "] = " + FormatDouble(a.mie_scattering[i]) +
+              " (extinction includes scattering)",
+          where);
   }
   // g = +-1 makes the Cornette-Shanks phase function a delta peak (division by zero at theta 0).
   Check(a.mie_phase_g > -1.0 && a.mie_phase_g < 1.0, "mie.phase_g", a.mie_phase_g,

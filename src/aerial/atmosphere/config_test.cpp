@@ -14,11 +14,13 @@
 namespace aerial {
 namespace {
 
-const std::filesystem::path kExamples = std::filesystem::path(AERIAL_SOURCE_DIR) / "examples/atmospheres";
+const std::filesystem::path kExamples =
+    std::filesystem::path(AERIAL_SOURCE_DIR) / "examples/atmospheres";
 
 // Exact comparison of every field: the config must reproduce doubles bit for bit (the cache key
 // is a hash of them), so no tolerance anywhere here.
-void ExpectSameLayer(const DensityProfileLayer& a, const DensityProfileLayer& b, const std::string& what) {
+void ExpectSameLayer(const DensityProfileLayer& a, const DensityProfileLayer& b,
+                     const std::string& what) {
   EXPECT_EQ(a.width_m, b.width_m) << what;
   EXPECT_EQ(a.exp_term, b.exp_term) << what;
   EXPECT_EQ(a.exp_scale_per_m, b.exp_scale_per_m) << what;
@@ -208,7 +210,8 @@ TEST(AtmosphereConfig, EveryInvalidFieldIsNamedInTheError) {
       {"[ozone]\nabsorption = [0.0, -1e-7, 0.0]", "ozone.absorption[1]"},
       {"[ozone]\ndensity = [ { width_m = 25000.0, constant_term = inf }, {} ]",
        "ozone.density[0].constant_term"},
-      {"[ozone]\ndensity = [ {}, { linear_term_per_m = 1.0, units = 2 } ]", "ozone.density[1].units"},
+      {"[ozone]\ndensity = [ {}, { linear_term_per_m = 1.0, units = 2 } ]",
+       "ozone.density[1].units"},
   };
   for (const BadSnippet& bad : kBad) {
     SCOPED_TRACE(bad.toml);

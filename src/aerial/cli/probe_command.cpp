@@ -10,6 +10,7 @@
 
 #include "aerial/cli/commands.h"
 #include "aerial/cli/common_options.h"
+#include "aerial/core/error.h"
 #include "aerial/probe/table_probe.h"
 #include "aerial/reference/reference.h"
 
@@ -50,7 +51,7 @@ void RunProbe(const ProbeOptions& options) {
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
   ValidateViewAngles(options.view, atmosphere);
   if (options.distance_m && (!std::isfinite(*options.distance_m) || *options.distance_m < 0.0))
-    throw Error("--distance-m", std::to_string(*options.distance_m), "a distance >= 0 in meters");
+    throw aerial::Error("--distance-m", std::to_string(*options.distance_m), "a distance >= 0 in meters");
   PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
   RayParameters ray = ToRayParameters(options.view, atmosphere);
 

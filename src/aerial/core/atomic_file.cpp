@@ -42,7 +42,8 @@ void EnsureParentDirectory(const fs::path& path) {
   std::error_code ec;
   fs::create_directories(parent, ec);
   if (ec) Fail(path, "create the directory " + parent.string(), ec.value());
-  if (!fs::is_directory(parent, ec)) Fail(path, "use " + parent.string() + " as a directory", ENOTDIR);
+  if (!fs::is_directory(parent, ec))
+    Fail(path, "use " + parent.string() + " as a directory", ENOTDIR);
 }
 
 // The pid separates concurrent processes; the random part separates threads and reused pids.
@@ -86,7 +87,8 @@ void WriteFileAtomically(const fs::path& path, std::span<const std::byte> bytes)
   try {
     WriteAll(file.fd, bytes.data(), bytes.size(), temporary);
     if (::fsync(file.fd) != 0) Fail(temporary, "sync", errno);
-    // close() can report a deferred write error (NFS, quota), so check it rather than the destructor.
+    // close() can report a deferred write error (NFS, quota), so check it rather than the
+    // destructor.
     int fd = file.fd;
     file.fd = -1;
     if (::close(fd) != 0) Fail(temporary, "close", errno);

@@ -2,7 +2,8 @@
 // Whole-file I/O for outputs that take long to make (table caches, images, reports). A reader
 // must never see half a file, even if the program is killed mid-write or the disk fills up, so
 // every write goes to a temporary in the same directory and is renamed over the target (rename(2)
-// is atomic within one file system). Failures throw aerial::Error naming the path and the OS reason.
+// is atomic within one file system). Failures throw aerial::Error naming the path and the OS
+// reason.
 #include <cstddef>
 #include <filesystem>
 #include <span>

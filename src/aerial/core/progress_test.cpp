@@ -5,7 +5,9 @@
 #include <stdlib.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <memory>
+#include <string>
 
 namespace aerial {
 namespace {
@@ -44,6 +46,9 @@ TEST(Progress, DrawsOnTerminalUnlessQuiet) {
   }
   std::FILE* terminal = std::fopen(::ptsname(master), "w");
   ASSERT_NE(terminal, nullptr);
+  // The test sets the variable itself; the caller's value is put back at the end.
+  const char* saved = std::getenv("AERIAL_NO_PROGRESS");
+  std::string saved_value = saved ? saved : "";
   ::unsetenv("AERIAL_NO_PROGRESS");
   {
     Progress progress("precompute", 2, terminal);
@@ -54,7 +59,11 @@ TEST(Progress, DrawsOnTerminalUnlessQuiet) {
   EXPECT_FALSE(Progress("t", 1, terminal, /*quiet=*/true).enabled());
   ::setenv("AERIAL_NO_PROGRESS", "1", 1);
   EXPECT_FALSE(Progress("t", 1, terminal).enabled());
-  ::unsetenv("AERIAL_NO_PROGRESS");
+  if (saved) {
+    ::setenv("AERIAL_NO_PROGRESS", saved_value.c_str(), 1);
+  } else {
+    ::unsetenv("AERIAL_NO_PROGRESS");
+  }
   std::fclose(terminal);
 
   char buffer[512] = {};

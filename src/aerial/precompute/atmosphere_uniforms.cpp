@@ -41,6 +41,7 @@ AtmosphereUniforms MakeAtmosphereUniforms(const AtmosphereParameters& a,
   u.transmittance_size = {r.transmittance_mu, r.transmittance_r, 0, 0};
   u.irradiance_size = {r.irradiance_mu_s, r.irradiance_r, 0, 0};
   u.scattering_size = {r.scattering_r, r.scattering_mu, r.scattering_mu_s, r.scattering_nu};
+  u.density_size = {s.density_r, s.density_mu, s.density_mu_s, s.density_nu};
   u.density_directions = {s.density_theta_up, s.density_theta_down, s.density_phi, 0};
   u.sample_counts = {s.transmittance_steps, s.ray_steps, s.irradiance_zenith, s.irradiance_azimuth};
   return u;

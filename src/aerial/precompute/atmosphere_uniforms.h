@@ -28,13 +28,14 @@ struct alignas(16) AtmosphereUniforms {
   std::array<int, 4> transmittance_size;
   std::array<int, 4> irradiance_size;
   std::array<int, 4> scattering_size;     // r, mu, mu_s, nu
+  std::array<int, 4> density_size;        // r, mu, mu_s, nu
   std::array<int, 4> density_directions;  // theta up, theta down, phi, unused
   std::array<int, 4> sample_counts;       // transmittance, ray, irradiance zenith, azimuth
 };
 static_assert(offsetof(AtmosphereUniforms, rayleigh_density) == 96);
 static_assert(offsetof(AtmosphereUniforms, bottom_radius) == 96 + 3 * 64);
 static_assert(offsetof(AtmosphereUniforms, transmittance_size) == 96 + 3 * 64 + 32);
-static_assert(sizeof(AtmosphereUniforms) == 96 + 3 * 64 + 32 + 5 * 16);
+static_assert(sizeof(AtmosphereUniforms) == 96 + 3 * 64 + 32 + 6 * 16);
 
 AtmosphereUniforms MakeAtmosphereUniforms(const AtmosphereParameters& atmosphere,
                                           const PrecomputeOptions& options);

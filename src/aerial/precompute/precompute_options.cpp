@@ -20,6 +20,10 @@ PrecomputeOptions PrecomputeOptions::Small(LutVariant variant) {
   options.resolution = {.transmittance_mu = 128, .transmittance_r = 32, .irradiance_mu_s = 32,
                         .irradiance_r = 8, .scattering_r = 16, .scattering_mu = 64,
                         .scattering_mu_s = 16, .scattering_nu = variant == LutVariant::k4D ? 8 : 1};
+  options.samples.density_r = 16;
+  options.samples.density_mu = 32;
+  options.samples.density_mu_s = 16;
+  options.samples.density_nu = options.resolution.scattering_nu;
   options.samples.density_theta_up = 12;
   options.samples.density_theta_down = 4;
   options.samples.density_phi = 12;
@@ -60,6 +64,13 @@ void PrecomputeOptions::Validate() const {
   CheckRange("density zenith cells above the horizon", s.density_theta_up, 2, 128);
   CheckRange("density zenith cells below the horizon", s.density_theta_down, 1, 128);
   CheckRange("density azimuth cells", s.density_phi, 1, 128);
+  CheckRange("density r", s.density_r, 2, 512);
+  CheckRange("density mu", s.density_mu, 4, 1024);
+  if (s.density_mu % 2 != 0)
+    throw Error("density mu", std::to_string(s.density_mu), "an even number (split at the horizon)");
+  CheckRange("density mu_s", s.density_mu_s, 2, 512);
+  CheckRange("density nu", s.density_nu, variant == LutVariant::k3D ? 1 : 2,
+             variant == LutVariant::k3D ? 1 : 64);
   // The density pass stages the direction grid in 32 KiB of shared memory (kMaxDirections).
   CheckRange("density directions", (s.density_theta_up + s.density_theta_down) * s.density_phi, 1, 1024);
 }
@@ -71,7 +82,8 @@ uint64_t PrecomputeOptions::Hash() const {
                         resolution.scattering_mu, resolution.scattering_mu_s, resolution.scattering_nu,
                         samples.transmittance_steps, samples.ray_steps, samples.irradiance_zenith,
                         samples.irradiance_azimuth, samples.density_theta_up,
-                        samples.density_theta_down, samples.density_phi};
+                        samples.density_theta_down, samples.density_phi, samples.density_r,
+                        samples.density_mu, samples.density_mu_s, samples.density_nu};
   uint64_t h = 1469598103934665603ull;
   for (int v : values) {
     unsigned char bytes[sizeof(int)];

@@ -33,6 +33,13 @@ struct SampleCounts {
   int density_theta_up = 16;       // density grid: zenith cells above the horizon
   int density_theta_down = 8;      // zenith cells below the horizon
   int density_phi = 16;            // azimuth cells over [0, pi] (mirrored to [0, 2 pi])
+  // Resolution of the per-order scattering density and multiple scattering tables. Both are
+  // smooth (the density is a convolution with the phase functions), so they use half the table's
+  // mu resolution; the Rayleigh table receives them resampled at full resolution.
+  int density_r = 32;
+  int density_mu = 64;
+  int density_mu_s = 32;
+  int density_nu = 8;
 };
 
 struct PrecomputeOptions {

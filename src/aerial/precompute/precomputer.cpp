@@ -29,9 +29,11 @@ struct Pipelines {
                             {kUniform, kSampled, kSampled, kSampled, kStorageImage, kStorageImage},
                             sizeof(int)),
         multiple_scattering(c, "precompute/multiple_scattering.comp",
-                            {kUniform, kSampled, kSampled, kStorageImage, kStorageImage}) {}
+                            {kUniform, kSampled, kSampled, kStorageImage}),
+        accumulate(c, "precompute/accumulate_multiple_scattering.comp",
+                   {kUniform, kSampled, kStorageImage}) {}
   vk::ComputePipeline transmittance, direct_irradiance, single_scattering, incident_radiance,
-      scattering_density, indirect_irradiance, multiple_scattering;
+      scattering_density, indirect_irradiance, multiple_scattering, accumulate;
 };
 
 // Intermediate tables that only live during the precomputation.
@@ -39,8 +41,8 @@ struct Scratch {
   Scratch(const vk::Context& c, const AtmosphereTables& tables)
       : delta_irradiance(c, {.extent = tables.irradiance().extent()}),
         delta_rayleigh(c, {.extent = tables.rayleigh().extent()}),
-        delta_multiple(c, {.extent = tables.rayleigh().extent()}),
-        density(c, {.extent = tables.rayleigh().extent()}),
+        delta_multiple(c, {.extent = DensityExtent(tables)}),
+        density(c, {.extent = DensityExtent(tables)}),
         incident_radiance(c, {.size = IncidentBytes(tables), .usage = ::vk::BufferUsageFlagBits::eStorageBuffer}),
         directions(c, {.size = DirectionBytes(tables), .usage = ::vk::BufferUsageFlagBits::eStorageBuffer}) {
     // Half-precision tables are accumulated in float32 and converted once at the end.
@@ -49,16 +51,20 @@ struct Scratch {
       mie_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.mie().extent()});
     }
   }
+  static ::vk::Extent3D DensityExtent(const AtmosphereTables& t) {
+    const SampleCounts& s = t.options().samples;
+    return {uint32_t(s.density_nu * s.density_mu_s), uint32_t(s.density_mu), uint32_t(s.density_r)};
+  }
   static size_t DirectionCount(const AtmosphereTables& t) {
     const SampleCounts& s = t.options().samples;
     return size_t(s.density_theta_up + s.density_theta_down) * s.density_phi;
   }
   static size_t IncidentBytes(const AtmosphereTables& t) {
-    const TableResolution& r = t.options().resolution;
-    return DirectionCount(t) * r.scattering_r * r.scattering_mu_s * 16;
+    const SampleCounts& s = t.options().samples;
+    return DirectionCount(t) * s.density_r * s.density_mu_s * 16;
   }
   static size_t DirectionBytes(const AtmosphereTables& t) {
-    return DirectionCount(t) * t.options().resolution.scattering_r * 16;
+    return DirectionCount(t) * t.options().samples.density_r * 16;
   }
 
   vk::Image delta_irradiance, delta_rayleigh, delta_multiple, density;
@@ -85,8 +91,8 @@ void BlitConvert(const ::vk::raii::CommandBuffer& cmd, const vk::Image& from, co
 }  // namespace
 
 int PrecomputePassCount(const PrecomputeOptions& options) {
-  // transmittance, direct irradiance, single scattering, then 4 passes per order >= 2.
-  return 3 + 4 * (options.orders - 1);
+  // transmittance, direct irradiance, single scattering, then 5 passes per order >= 2.
+  return 3 + 5 * (options.orders - 1);
 }
 
 std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progress) {
@@ -100,8 +106,9 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   const vk::Buffer& uniforms = tables.uniform_buffer();
   ::vk::Sampler sampler = tables.sampler();
   auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
-  const TableResolution& res = tables.options().resolution;
+  const SampleCounts& samples = tables.options().samples;
   ::vk::Extent3D scattering_threads = tables.rayleigh().extent();
+  ::vk::Extent3D density_threads = Scratch::DensityExtent(tables);
 
   // Each pass is its own submission so that the progress bar advances as the GPU finishes it.
   auto run = [&](const std::string& label, auto&& record) {
@@ -152,7 +159,7 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   });
   // Step 4: for each order n >= 2, the scattering density J_n (from the order n-1 radiance and
   // the order n-2 ground irradiance), the ground irradiance of order n-1, and the order n
-  // scattering S_n, added to the Rayleigh table.
+  // scattering S_n (at the density resolution), then added to the Rayleigh table.
   for (int order = 2; order <= tables.options().orders; ++order) {
     std::string suffix = " (order " + std::to_string(order) + ")";
     run("incident radiance" + suffix, [&](const auto& cmd) {
@@ -161,15 +168,15 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
                 sampled(scratch.delta_rayleigh), sampled(mie), sampled(scratch.delta_multiple),
                 sampled(scratch.delta_irradiance), vk::StorageBufferSlot{&scratch.incident_radiance},
                 vk::StorageBufferSlot{&scratch.directions}},
-          {uint32_t(Scratch::DirectionCount(tables)), uint32_t(res.scattering_mu_s),
-           uint32_t(res.scattering_r)},
+          {uint32_t(Scratch::DirectionCount(tables)), uint32_t(samples.density_mu_s),
+           uint32_t(samples.density_r)},
           {64, 1, 1}, &order);
     });
     run("scattering density" + suffix, [&](const auto& cmd) {
       pipelines.scattering_density.Dispatch(
           cmd, {vk::UniformBufferSlot{&uniforms}, vk::StorageBufferSlot{&scratch.incident_radiance},
                 vk::StorageBufferSlot{&scratch.directions}, vk::StorageImageSlot{&scratch.density}},
-          scattering_threads, {1, 64, 1});
+          {density_threads.height, density_threads.width, density_threads.depth}, {64, 1, 1});
     });
     int radiance_order = order - 1;
     run("indirect irradiance" + suffix, [&](const auto& cmd) {
@@ -182,9 +189,13 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
     run("multiple scattering" + suffix, [&](const auto& cmd) {
       pipelines.multiple_scattering.Dispatch(
           cmd, {vk::UniformBufferSlot{&uniforms}, sampled(tables.transmittance()),
-                sampled(scratch.density), vk::StorageImageSlot{&scratch.delta_multiple},
-                vk::StorageImageSlot{&rayleigh}},
-          scattering_threads, {8, 8, 1});
+                sampled(scratch.density), vk::StorageImageSlot{&scratch.delta_multiple}},
+          density_threads, {8, 8, 1});
+    });
+    run("accumulate" + suffix, [&](const auto& cmd) {
+      pipelines.accumulate.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, sampled(scratch.delta_multiple),
+                                          vk::StorageImageSlot{&rayleigh}},
+                                    scattering_threads, {8, 8, 1});
     });
   }
   if (scratch.rayleigh_f32) {

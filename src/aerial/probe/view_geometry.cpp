@@ -1,5 +1,6 @@
 #include "aerial/probe/view_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>

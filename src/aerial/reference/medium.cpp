@@ -28,8 +28,8 @@ void AddCrossings(const DensityProfileLayer& l, double lo, double hi, double tar
   }
 }
 
-void AddProfileLevels(const DensityProfile& profile, double top, double cutoff_scale_heights,
-                      std::vector<double>* levels) {
+void AddProfileLevels(const DensityProfile& profile, double top, double spacing_scale_heights,
+                      double cutoff_scale_heights, std::vector<double>* levels) {
   const double width = profile.layers[0].width_m;
   if (width > 0.0 && width < top) levels->push_back(width);
   struct Range {
@@ -45,18 +45,20 @@ void AddProfileLevels(const DensityProfile& profile, double top, double cutoff_s
     if (l.exp_term == 0.0 || l.exp_scale_per_m == 0.0) continue;
     double scale_height = 1.0 / std::abs(l.exp_scale_per_m);
     bool decaying = l.exp_scale_per_m < 0.0;
-    for (double h = range.lo + 2.0 * scale_height; h < range.hi; h += 2.0 * scale_height) {
+    double step = spacing_scale_heights * scale_height;
+    for (double h = range.lo + step; h < range.hi; h += step) {
       if (decaying && h - range.lo > cutoff_scale_heights * scale_height) break;
       levels->push_back(h);
     }
   }
 }
 
-std::vector<double> LevelRadii(const AtmosphereParameters& a, double cutoff_scale_heights) {
+std::vector<double> LevelRadii(const AtmosphereParameters& a, double spacing_scale_heights,
+                               double cutoff_scale_heights) {
   double top = a.top_radius_m - a.bottom_radius_m;
   std::vector<double> levels = {0.0, top};
   for (const DensityProfile* p : {&a.rayleigh_density, &a.mie_density, &a.absorption_density})
-    AddProfileLevels(*p, top, cutoff_scale_heights, &levels);
+    AddProfileLevels(*p, top, spacing_scale_heights, cutoff_scale_heights, &levels);
   std::sort(levels.begin(), levels.end());
   std::vector<double> radii;
   for (double h : levels) {
@@ -74,11 +76,10 @@ std::vector<double> LevelRadii(const AtmosphereParameters& a, double cutoff_scal
 Medium::Medium(const AtmosphereParameters& atmosphere)
     : atmosphere_(atmosphere),
       mean_rayleigh_(Mean(atmosphere.rayleigh_scattering)),
-      mean_mie_scattering_(Mean(atmosphere.mie_scattering)),
       mean_mie_extinction_(Mean(atmosphere.mie_extinction)),
       mean_absorption_(Mean(atmosphere.absorption_extinction)),
-      reference_levels_(LevelRadii(atmosphere, std::numeric_limits<double>::infinity())),
-      monte_carlo_levels_(LevelRadii(atmosphere, 30.0)) {}
+      reference_levels_(LevelRadii(atmosphere, 2.0, std::numeric_limits<double>::infinity())),
+      monte_carlo_levels_(LevelRadii(atmosphere, 4.0, 30.0)) {}
 
 Spectrum Medium::OpticalDepth(const Column& c) const {
   Spectrum tau;

@@ -1,9 +1,10 @@
 #pragma once
 // Optical depth along rays by direct quadrature, tau = integral of beta_e(h(s)) ds with
-// beta_e = beta_R rho_R + beta_M,ext rho_M + beta_O rho_O, and transmittance T = exp(-tau)
-// (Bruneton 2008, eq. 4-5). The ray is cut where it crosses a level of Medium::level_radii or
-// reaches its lowest point; on each piece every density is smooth and a fixed Gauss-Legendre rule
-// (8 points for kReference, 4 for kMonteCarlo) integrates the three column densities at once.
+// beta_e = beta_R rho_R + beta_M,ext rho_M + beta_O rho_O, and transmittance T = exp(-tau) (what
+// Bruneton 2017's ComputeTransmittanceToTopAtmosphereBoundary approximates with 500 steps). The
+// ray is cut where it crosses a level of Medium::level_radii or reaches its lowest point; on each
+// piece every density is smooth and a fixed Gauss-Legendre rule (8 points for kReference, 4 for
+// kMonteCarlo) integrates the three column densities at once.
 #include <vector>
 
 #include "aerial/reference/geometry.h"

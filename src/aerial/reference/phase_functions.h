@@ -7,13 +7,13 @@
 
 namespace aerial::reference {
 
-// Rayleigh: 3 / (16 pi) (1 + nu^2) (Bruneton 2008, eq. 2).
+// Rayleigh: 3 / (16 pi) (1 + nu^2) (Bruneton 2017's RayleighPhaseFunction).
 inline double RayleighPhaseFunction(double nu) {
   return 3.0 / (16.0 * std::numbers::pi) * (1.0 + nu * nu);
 }
 
 // Cornette-Shanks: 3 / (8 pi) (1 - g^2) / (2 + g^2) (1 + nu^2) / (1 + g^2 - 2 g nu)^(3/2)
-// (Bruneton 2008, eq. 4; Bruneton 2017's MiePhaseFunction).
+// (Cornette & Shanks 1992; Bruneton 2017's MiePhaseFunction).
 inline double CornetteShanksPhaseFunction(double g, double nu) {
   double k = 3.0 / (8.0 * std::numbers::pi) * (1.0 - g * g) / (2.0 + g * g);
   return k * (1.0 + nu * nu) / std::pow(1.0 + g * g - 2.0 * g * nu, 1.5);

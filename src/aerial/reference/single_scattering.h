@@ -1,7 +1,6 @@
 #pragma once
-// Single scattering by deterministic adaptive quadrature along the view ray (Bruneton 2008,
-// eq. 7, without the phase functions, per species as in Bruneton 2017's
-// ComputeSingleScatteringIntegrand):
+// Single scattering by deterministic adaptive quadrature along the view ray, without the phase
+// functions and per species as in Bruneton 2017's ComputeSingleScattering(Integrand):
 //   S_R = int_0^D T(x, p) beta_R rho_R(p) T_sun(p) f(p) E_sun ds,  S_M likewise with beta_M,sca,
 // where T_sun is the transmittance from p to the top towards the sun's centre and f the visible
 // fraction of the solar disc (geometry.h). The integrand has kinks where the ray crosses a
@@ -12,7 +11,7 @@
 namespace aerial::reference {
 
 struct SingleScattering {
-  Spectrum rayleigh{};  // without phase function, W/m^2/nm/sr per unit phase.
+  Spectrum rayleigh{};  // W/m^2/nm; times a phase function (1/sr) gives radiance.
   Spectrum mie{};
 };
 

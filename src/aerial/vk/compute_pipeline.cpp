@@ -56,17 +56,17 @@ void ComputePipeline::Dispatch(const ::vk::raii::CommandBuffer& cmd, const std::
   for (uint32_t i = 0; i < slots.size(); ++i) {
     ::vk::WriteDescriptorSet write{.dstBinding = i, .descriptorCount = 1, .descriptorType = slot_types_[i]};
     if (auto* u = std::get_if<UniformBufferSlot>(&slots[i])) {
-      buffer_infos[i] = {.buffer = u->buffer->handle(), .range = VK_WHOLE_SIZE};
+      buffer_infos[i] = ::vk::DescriptorBufferInfo{.buffer = u->buffer->handle(), .range = VK_WHOLE_SIZE};
       write.pBufferInfo = &buffer_infos[i];
     } else if (auto* s = std::get_if<StorageBufferSlot>(&slots[i])) {
-      buffer_infos[i] = {.buffer = s->buffer->handle(), .range = VK_WHOLE_SIZE};
+      buffer_infos[i] = ::vk::DescriptorBufferInfo{.buffer = s->buffer->handle(), .range = VK_WHOLE_SIZE};
       write.pBufferInfo = &buffer_infos[i];
     } else if (auto* t = std::get_if<SampledImageSlot>(&slots[i])) {
-      image_infos[i] = {.sampler = t->sampler, .imageView = t->image->view(),
+      image_infos[i] = ::vk::DescriptorImageInfo{.sampler = t->sampler, .imageView = t->image->view(),
                         .imageLayout = ::vk::ImageLayout::eGeneral};
       write.pImageInfo = &image_infos[i];
     } else {
-      image_infos[i] = {.imageView = std::get<StorageImageSlot>(slots[i]).image->view(),
+      image_infos[i] = ::vk::DescriptorImageInfo{.imageView = std::get<StorageImageSlot>(slots[i]).image->view(),
                         .imageLayout = ::vk::ImageLayout::eGeneral};
       write.pImageInfo = &image_infos[i];
     }

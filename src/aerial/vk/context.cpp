@@ -70,13 +70,14 @@ Context::Context(const ContextCreateInfo& info) {
                                         .ppEnabledLayerNames = layers.data(),
                                         .enabledExtensionCount = uint32_t(extensions.size()),
                                         .ppEnabledExtensionNames = extensions.data()});
+  // Performance hints (e.g. GENERAL layouts on copies, which aerial uses on purpose) are not
+  // validation errors; warnings and errors of the general and validation kinds all count.
   if (validation_) {
     using Severity = ::vk::DebugUtilsMessageSeverityFlagBitsEXT;
     using Type = ::vk::DebugUtilsMessageTypeFlagBitsEXT;
     messenger_.emplace(instance_, ::vk::DebugUtilsMessengerCreateInfoEXT{
                                       .messageSeverity = Severity::eWarning | Severity::eError,
-                                      .messageType = Type::eGeneral | Type::eValidation |
-                                                     Type::ePerformance,
+                                      .messageType = Type::eGeneral | Type::eValidation,
                                       .pfnUserCallback = &OnValidationMessage});
   }
 

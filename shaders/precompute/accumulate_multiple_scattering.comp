@@ -1,0 +1,24 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Pass 7 (orders >= 2): adds the order-n multiple scattering to the Rayleigh table, divided by the
+// Rayleigh phase so that render-time lookups multiply one phase back in (Bruneton 2017
+// "ComputeMultipleScatteringTexture": multiple scattering is nearly isotropic, and this keeps the
+// Rayleigh/Mie split without a third table). The order-n table is read at each texel's own
+// parameters, which also resamples it from the density resolution to the table resolution.
+#include "scattering.glsl"
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(set = 0, binding = 1) uniform sampler3D delta_multiple_scattering_texture;
+layout(set = 0, binding = 2, rgba32f) uniform image3D rayleigh_accumulator;
+
+void main() {
+  ivec3 texel = ivec3(gl_GlobalInvocationID);
+  if (!IsScatteringTexel(atmosphere.scattering_size, texel)) return;
+  float r, mu, mu_s, nu;
+  bool ray_r_mu_intersects_ground;
+  GetRMuMuSNuFromScatteringTexel(atmosphere.scattering_size, texel, r, mu, mu_s, nu,
+                                 ray_r_mu_intersects_ground);
+  vec3 radiance = GetScattering(delta_multiple_scattering_texture, atmosphere.density_size, r, mu,
+                                mu_s, nu, ray_r_mu_intersects_ground);
+  imageStore(rayleigh_accumulator, texel,
+             imageLoad(rayleigh_accumulator, texel) + vec4(radiance / RayleighPhaseFunction(nu), 0.0));
+}

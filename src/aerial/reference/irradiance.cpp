@@ -1,0 +1,43 @@
+#include "aerial/reference/irradiance.h"
+
+#include <numbers>
+
+#include "aerial/reference/geometry.h"
+#include "aerial/reference/optical_depth.h"
+#include "aerial/reference/path_tracer.h"
+
+namespace aerial::reference {
+
+Spectrum ComputeDirectIrradiance(const Medium& medium, Accuracy accuracy, double r, double mu_s) {
+  const AtmosphereParameters& a = medium.atmosphere();
+  double average_cosine = SunAverageCosine(mu_s, a.sun_angular_radius_rad);
+  if (average_cosine == 0.0) return {};
+  Spectrum t = ComputeTransmittanceToSun(medium, accuracy, r, mu_s);
+  return {a.solar_irradiance[0] * t[0] * average_cosine, a.solar_irradiance[1] * t[1] * average_cosine,
+          a.solar_irradiance[2] * t[2] * average_cosine};
+}
+
+OrderEstimates EstimateSkyIrradianceOrders(const Medium& medium, double r, double mu_s, int max_order,
+                                           const MonteCarloOptions& options) {
+  const Vec3 x{0.0, 0.0, r}, normal{0.0, 0.0, 1.0};
+  const Vec3 sun{SafeSqrt(1.0 - mu_s * mu_s), 0.0, mu_s};
+  return RunChunks(options, max_order, [&](int, Rng& rng, std::vector<Spectrum>& sums) {
+    PathTracer tracer(medium, sun, 1, max_order);
+    Strata strata(rng);
+    for (int i = 0; i < kChunkPaths; ++i) {
+      // E = int L cos dw, estimated as L(w) cos(w) / pdf(w) = pi L(w) (cos / pi) / pdf(w).
+      Vec3 w;
+      Spectrum cos_over_pdf = tracer.SampleSurfaceDirection(normal, rng.Uniform(), strata.Sample2D(i, rng), &w);
+      double u_choice = rng.Uniform(), u_distance = strata.Sample1D(i, rng);
+      if (!(cos_over_pdf[0] > 0.0)) continue;
+      PathVertex v;
+      Spectrum weight;
+      if (!tracer.SampleSegment(x, w, u_choice, u_distance, &v, &weight)) continue;
+      Spectrum beta;
+      for (int c = 0; c < 3; ++c) beta[c] = std::numbers::pi * cos_over_pdf[c] * weight[c];
+      tracer.Continue(v, beta, 1, rng, nullptr, sums);
+    }
+  });
+}
+
+}  // namespace aerial::reference

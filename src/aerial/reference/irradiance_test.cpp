@@ -1,0 +1,80 @@
+#include "aerial/reference/irradiance.h"
+
+#include <gtest/gtest.h>
+
+#include "aerial/reference/geometry.h"
+#include "aerial/reference/optical_depth.h"
+#include "aerial/reference/phase_functions.h"
+#include "aerial/reference/quadrature.h"
+#include "aerial/reference/single_scattering.h"
+#include "aerial/reference/test_atmospheres.h"
+
+namespace aerial::reference {
+namespace {
+
+// Direct irradiance at the ground under an exponential layer: with the sun at the zenith,
+// E_sun exp(-beta H (1 - exp(-(Rt - R)/H))) (closed form, 1e-9 as for transmittance); with the
+// disc centre on the horizon, the average cosine alpha / 4 times the horizon ray's transmittance;
+// with the whole disc below the horizon, 0.
+TEST(DirectIrradiance, MatchesClosedFormsAndDiscAverageCosine) {
+  AtmosphereParameters a = testing::ExponentialRayleigh();
+  Medium medium(a);
+  const double R = a.bottom_radius_m, H = 8000.0, alpha = a.sun_angular_radius_rad;
+  Spectrum zenith = ComputeDirectIrradiance(medium, Accuracy::kReference, R, 1.0);
+  Spectrum horizon = ComputeDirectIrradiance(medium, Accuracy::kReference, R, 0.0);
+  Spectrum t_horizon = ComputeTransmittance(medium, Accuracy::kReference, R, 0.0,
+                                            DistanceToOuterSphere(R, 0.0, a.top_radius_m));
+  Spectrum below = ComputeDirectIrradiance(medium, Accuracy::kReference, R, -1.01 * alpha);
+  for (int c = 0; c < 3; ++c) {
+    double tau = a.rayleigh_scattering[c] * H * -std::expm1(-(a.top_radius_m - R) / H);
+    EXPECT_NEAR(zenith[c] / (a.solar_irradiance[c] * std::exp(-tau)), 1.0, 1e-9);
+    EXPECT_NEAR(horizon[c] / (a.solar_irradiance[c] * t_horizon[c] * alpha / 4.0), 1.0, 1e-12);
+    EXPECT_EQ(below[c], 0.0);
+  }
+}
+
+// Order 1 of the path-traced sky irradiance must equal the hemisphere integral of the
+// deterministic single scattering, E_1 = int_0^2pi int_0^1 L_1(mu, phi) mu dmu dphi with
+// L_1 = S_R P_R(nu). Rayleigh only, so L_1 is smooth: adaptive Gauss-Kronrod in mu (1e-5) times a
+// 12-point trapezoid in phi over [0, pi] (symmetric, periodic: spectrally accurate, < 1e-6).
+// Tolerance: 4 standard errors plus 1e-4 (the Monte Carlo transmittance, medium.h).
+TEST(SkyIrradiance, OrderOneMatchesHemisphereIntegralOfSingleScattering) {
+  AtmosphereParameters a = testing::ExponentialRayleigh();
+  Medium medium(a);
+  const double r = a.bottom_radius_m + 500.0, mu_s = 0.6;
+  const int azimuths = 12;
+  auto radiance_times_mu = [&](double mu) {
+    Values<3> out{};
+    for (int j = 0; j <= azimuths; ++j) {
+      double phi = M_PI * j / azimuths, weight = (j == 0 || j == azimuths ? 0.5 : 1.0) * 2.0 * M_PI / azimuths;
+      double nu = mu * mu_s + std::sqrt((1.0 - mu * mu) * (1.0 - mu_s * mu_s)) * std::cos(phi);
+      SingleScattering s = ComputeSingleScattering(medium, r, mu, mu_s, nu,
+                                                   DistanceToOuterSphere(r, mu, a.top_radius_m), 1e-6);
+      for (int c = 0; c < 3; ++c) out[c] += weight * mu * s.rayleigh[c] * RayleighPhaseFunction(nu);
+    }
+    return out;
+  };
+  Values<3> expected = IntegrateAdaptive<3>(radiance_times_mu, {0.0, 0.1, 1.0}, 1e-5);
+  OrderEstimates e = EstimateSkyIrradianceOrders(medium, r, mu_s, 1, {32768, 1, 0});
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(e.orders[1].value[c], expected[c], 4.0 * e.orders[1].std_error[c] + 1e-4 * expected[c]) << c;
+    EXPECT_LT(e.orders[1].std_error[c], 3e-3 * expected[c]);
+  }
+}
+
+// Sky irradiance orders are positive and, in Earth's atmosphere, each smaller than the
+// previous beyond 4 standard errors (as for radiance, multiple_scattering_test.cpp).
+TEST(SkyIrradiance, OrdersArePositiveAndDecrease) {
+  Medium medium(AtmosphereParameters::Earth());
+  OrderEstimates e = EstimateSkyIrradianceOrders(medium, medium.bottom_radius(), 0.7, 3, {4096, 1, 0});
+  for (int c = 0; c < 3; ++c) {
+    for (int k = 1; k <= 3; ++k) EXPECT_GT(e.orders[k].value[c], 0.0);
+    for (int k = 2; k <= 3; ++k) {
+      EXPECT_LT(e.orders[k].value[c] + 4.0 * e.orders[k].std_error[c],
+                e.orders[k - 1].value[c] - 4.0 * e.orders[k - 1].std_error[c]);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace aerial::reference

@@ -1,0 +1,110 @@
+#include "aerial/reference/monte_carlo.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <numeric>
+#include <thread>
+
+namespace aerial::reference {
+namespace {
+
+uint64_t SplitMix64(uint64_t& state) {
+  uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
+uint64_t RotateLeft(uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
+
+template <size_t N>
+void Shuffle(std::array<uint16_t, N>& perm, Rng& rng) {
+  std::iota(perm.begin(), perm.end(), 0);
+  for (size_t i = N - 1; i > 0; --i) std::swap(perm[i], perm[rng.Next() % (i + 1)]);
+}
+
+}  // namespace
+
+Rng::Rng(uint64_t seed, uint64_t stream) {
+  uint64_t state = seed ^ SplitMix64(stream);
+  for (uint64_t& word : s_) word = SplitMix64(state);
+}
+
+uint64_t Rng::Next() {
+  uint64_t result = RotateLeft(s_[1] * 5, 7) * 9;
+  uint64_t t = s_[1] << 17;
+  s_[2] ^= s_[0];
+  s_[3] ^= s_[1];
+  s_[1] ^= s_[2];
+  s_[0] ^= s_[3];
+  s_[2] ^= t;
+  s_[3] = RotateLeft(s_[3], 45);
+  return result;
+}
+
+Strata::Strata(Rng& rng) {
+  Shuffle(perm_1d_, rng);
+  Shuffle(perm_2d_, rng);
+}
+
+double Strata::Sample1D(int path, Rng& rng) const {
+  return (perm_1d_[path] + rng.Uniform()) / kChunkPaths;
+}
+
+std::array<double, 2> Strata::Sample2D(int path, Rng& rng) const {
+  int cell = perm_2d_[path];
+  return {(cell % 16 + rng.Uniform()) / 16.0, (cell / 16 + rng.Uniform()) / 16.0};
+}
+
+OrderEstimates RunChunks(const MonteCarloOptions& options, int max_order, const ChunkTracer& trace) {
+  const int chunks = std::max(2, (options.paths_per_query + kChunkPaths - 1) / kChunkPaths);
+  const int threads = std::clamp<int>(
+      options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency()),
+      1, chunks);
+  // means[c][k]: chunk c's mean order-k contribution.
+  std::vector<std::vector<Spectrum>> means(chunks);
+  std::atomic<int> next_chunk{0};
+  auto worker = [&] {
+    for (int c; (c = next_chunk.fetch_add(1)) < chunks;) {
+      Rng rng(options.seed, static_cast<uint64_t>(c));
+      std::vector<Spectrum> sums(max_order + 1, Spectrum{});
+      trace(c, rng, sums);
+      for (Spectrum& s : sums)
+        for (double& v : s) v /= kChunkPaths;
+      means[c] = std::move(sums);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+
+  // Mean and standard error of the mean over the independent chunk means, in chunk order so that
+  // the rounding does not depend on scheduling.
+  auto estimate = [&](auto chunk_value) {
+    Estimate e;
+    for (int i = 0; i < 3; ++i) {
+      double sum = 0.0, sum_sq = 0.0;
+      for (int c = 0; c < chunks; ++c) sum += chunk_value(c)[i];
+      double mean = sum / chunks;
+      for (int c = 0; c < chunks; ++c) sum_sq += std::pow(chunk_value(c)[i] - mean, 2);
+      e.value[i] = mean;
+      e.std_error[i] = std::sqrt(sum_sq / (static_cast<double>(chunks) * (chunks - 1)));
+    }
+    return e;
+  };
+  OrderEstimates result;
+  result.orders.resize(max_order + 1);
+  for (int k = 1; k <= max_order; ++k)
+    result.orders[k] = estimate([&](int c) { return means[c][k]; });
+  result.total = estimate([&](int c) {
+    Spectrum s{};
+    for (int k = 1; k <= max_order; ++k)
+      for (int i = 0; i < 3; ++i) s[i] += means[c][k][i];
+    return s;
+  });
+  return result;
+}
+
+}  // namespace aerial::reference

@@ -1,0 +1,75 @@
+#pragma once
+// The path tracer behind orders >= 2 (and the sky irradiance). A path is a chain of vertices,
+// each an atmospheric scattering or a Lambertian ground reflection; each vertex raises the
+// scattering order by one. At the k-th vertex, next-event estimation towards the sun adds the
+// order-k contribution:
+//  - atmosphere: beta * sum_species beta_s rho P(w_in . sun) * E_sun T_sun f (f: visible disc);
+//  - ground:     beta * albedo / pi * E_0 (direct irradiance, irradiance.h).
+// Then the path continues, up to max_order vertices:
+//  - direction: one sample from a mixture of the local phase lobes about w_in (Rayleigh exactly,
+//    Cornette-Shanks through Henyey-Greenstein) or of the cosine lobe at the ground, and, with
+//    probability 0.2 (if Mie's g > 0.3), of a Henyey-Greenstein lobe about the sun, which the
+//    Mie forward peak of the next vertex's next-event estimate favours. Weight: f(w) / (mixture pdf of w).
+//  - distance: if the ray hits the ground, the ground vertex is chosen with a probability that
+//    balances the expected ground and atmosphere contributions; otherwise a scattering point on
+//    the segment is drawn by DistanceSampler (forced scattering: paths never escape). The weight
+//    is T / (probability x pdf).
+// This is an unbiased estimator of the recursion that Bruneton 2017 evaluates with tables
+// (ComputeScatteringDensity, ComputeIndirectIrradiance, ComputeMultipleScattering), with the sun
+// as a directional source of irradiance E_sun f.
+#include <array>
+#include <vector>
+
+#include "aerial/reference/distance_sampler.h"
+#include "aerial/reference/medium.h"
+#include "aerial/reference/monte_carlo.h"
+#include "aerial/reference/optical_depth.h"
+#include "aerial/reference/vec3.h"
+
+namespace aerial::reference {
+
+struct PathVertex {
+  Vec3 p;       // world position (planet centre at the origin).
+  Vec3 w_in;    // direction of travel of the path into the vertex (from the camera side).
+  bool ground;  // Lambertian ground reflection, else atmospheric scattering.
+};
+
+// Not thread-safe (scratch storage): one per thread.
+class PathTracer {
+ public:
+  // Contributions of orders below first_order are not computed (their next-event estimates are
+  // skipped), orders above max_order not traced.
+  PathTracer(const Medium& medium, Vec3 sun, int first_order, int max_order);
+
+  // Continues a path whose order-th vertex is v, reached with throughput beta, adding each order's
+  // contribution to sums[order]. first_u, if given, is the (stratified) 2D sample of the first
+  // direction.
+  void Continue(PathVertex v, Spectrum beta, int order, Rng& rng,
+                const std::array<double, 2>* first_u, std::vector<Spectrum>& sums);
+
+  // Samples the next vertex along the ray from p in direction w; *weight gets T / probability.
+  // Returns false for an empty segment.
+  bool SampleSegment(Vec3 p, Vec3 w, double u_choice, double u_distance, PathVertex* next,
+                     Spectrum* weight);
+
+  // Sample a direction w from the mixture of the local lobe (the phase functions about v.w_in, or
+  // the cosine about `normal`) and the sun lobe, and return f(w) / pdf(w), with f the
+  // phase-weighted scattering coefficient sum_species beta_s rho P(w_in . w) (atmosphere) or
+  // cos / pi (surface; the albedo is the caller's).
+  Spectrum SampleAtmosphereDirection(const PathVertex& v, const Densities& d, double u_lobe,
+                                     std::array<double, 2> u, Vec3* w) const;
+  Spectrum SampleSurfaceDirection(Vec3 normal, double u_lobe, std::array<double, 2> u, Vec3* w) const;
+
+ private:
+  Spectrum AtmosphereNextEvent(const PathVertex& v, const Densities& d) const;
+  Spectrum GroundNextEvent(const PathVertex& v) const;
+
+  const Medium& medium_;
+  Vec3 sun_;
+  int first_order_, max_order_;
+  double sun_lobe_;  // mixture probability of the sun lobe.
+  RayColumns columns_;
+  DistanceSampler distances_;
+};
+
+}  // namespace aerial::reference

@@ -1,0 +1,134 @@
+#include "aerial/reference/reference.h"
+
+#include <sstream>
+
+#include "aerial/core/error.h"
+#include "aerial/reference/geometry.h"
+#include "aerial/reference/irradiance.h"
+#include "aerial/reference/multiple_scattering.h"
+#include "aerial/reference/optical_depth.h"
+#include "aerial/reference/phase_functions.h"
+
+namespace aerial::reference {
+namespace {
+
+constexpr const char* kWhere = "aerial::reference";
+constexpr double kRadiusRounding = 1e-3;  // m: what rounding may add to a radius.
+constexpr double kCosineRounding = 1e-12;
+
+std::string Text(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+// Written as !(in range) so that NaN fails too.
+double CheckCosine(const char* field, double v) {
+  if (!(std::abs(v) <= 1.0 + kCosineRounding)) throw Error(field, Text(v), "[-1, 1]", kWhere);
+  return ClampCosine(v);
+}
+
+void CheckOrders(int orders) {
+  if (orders < 1) throw Error("orders", std::to_string(orders), ">= 1", kWhere);
+}
+
+void CheckOptions(const MonteCarloOptions& options) {
+  if (options.paths_per_query < 1)
+    throw Error("paths_per_query", std::to_string(options.paths_per_query), ">= 1", kWhere);
+  if (options.threads < 0) throw Error("threads", std::to_string(options.threads), ">= 0 (0: all cores)", kWhere);
+}
+
+double CheckDistance(double d) {
+  if (!(d >= 0.0)) throw Error("distance_m", Text(d), ">= 0 (or INFINITY)", kWhere);
+  return d;
+}
+
+const AtmosphereParameters& CheckAtmosphere(const AtmosphereParameters& a) {
+  if (!(a.bottom_radius_m > 0.0 && a.top_radius_m > a.bottom_radius_m))
+    throw Error("top_radius_m", Text(a.top_radius_m), "> bottom_radius_m > 0", kWhere);
+  if (!(a.sun_angular_radius_rad > 0.0 && a.sun_angular_radius_rad < 0.5))
+    throw Error("sun_angular_radius_rad", Text(a.sun_angular_radius_rad), "(0, 0.5)", kWhere);
+  if (!(std::abs(a.mie_phase_g) < 1.0)) throw Error("mie_phase_g", Text(a.mie_phase_g), "(-1, 1)", kWhere);
+  return a;
+}
+
+}  // namespace
+
+Reference::Reference(const AtmosphereParameters& atmosphere) : medium_(CheckAtmosphere(atmosphere)) {}
+
+double Reference::CheckRadius(double r) const {
+  double bottom = medium_.bottom_radius(), top = medium_.top_radius();
+  if (!(r >= bottom - kRadiusRounding && r <= top + kRadiusRounding)) {
+    throw Error("r", Text(r), "[" + Text(bottom) + ", " + Text(top) + "] m (bottom to top radius)", kWhere);
+  }
+  return std::clamp(r, bottom, top);
+}
+
+double Reference::DistanceToBoundary(double r, double mu) const {
+  r = CheckRadius(r);
+  mu = CheckCosine("mu", mu);
+  return RayIntersectsGround(r, mu) ? DistanceToInnerSphere(r, mu, medium_.bottom_radius())
+                                    : DistanceToOuterSphere(r, mu, medium_.top_radius());
+}
+
+bool Reference::RayIntersectsGround(double r, double mu) const {
+  return RayIntersectsInnerSphere(CheckRadius(r), CheckCosine("mu", mu), medium_.bottom_radius());
+}
+
+Spectrum Reference::Transmittance(double r, double mu, double distance_m) const {
+  double length = std::min(CheckDistance(distance_m), DistanceToBoundary(r, mu));
+  return ComputeTransmittance(medium_, Accuracy::kReference, CheckRadius(r), CheckCosine("mu", mu), length);
+}
+
+Spectrum Reference::TransmittanceToBoundary(double r, double mu) const {
+  return Transmittance(r, mu, INFINITY);
+}
+
+SingleScattering Reference::ComputeSingleScattering(double r, double mu, double mu_s, double nu,
+                                                    double distance_m) const {
+  double length = std::min(CheckDistance(distance_m), DistanceToBoundary(r, mu));
+  r = CheckRadius(r);
+  mu = CheckCosine("mu", mu);
+  mu_s = CheckCosine("mu_s", mu_s);
+  nu = ClampNu(mu, mu_s, CheckCosine("nu", nu));
+  return reference::ComputeSingleScattering(medium_, r, mu, mu_s, nu, length);
+}
+
+Estimate Reference::ComputeRadiance(double r, double mu, double mu_s, double nu, int orders,
+                                    double distance_m, const MonteCarloOptions& options) const {
+  CheckOrders(orders);
+  CheckOptions(options);
+  SingleScattering single = ComputeSingleScattering(r, mu, mu_s, nu, distance_m);
+  double length = std::min(CheckDistance(distance_m), DistanceToBoundary(r, mu));
+  r = CheckRadius(r);
+  mu = CheckCosine("mu", mu);
+  mu_s = CheckCosine("mu_s", mu_s);
+  nu = ClampNu(mu, mu_s, CheckCosine("nu", nu));
+  Estimate result;
+  if (orders >= 2) result = EstimateRadianceOrders(medium_, r, mu, mu_s, nu, length, 2, orders, options).total;
+  double phase_r = RayleighPhase(nu), phase_m = MiePhase(nu);
+  for (int c = 0; c < 3; ++c) result.value[c] += single.rayleigh[c] * phase_r + single.mie[c] * phase_m;
+  return result;
+}
+
+Spectrum Reference::ComputeDirectIrradiance(double r, double mu_s) const {
+  return reference::ComputeDirectIrradiance(medium_, Accuracy::kReference, CheckRadius(r),
+                                            CheckCosine("mu_s", mu_s));
+}
+
+Estimate Reference::ComputeSkyIrradiance(double r, double mu_s, int orders,
+                                         const MonteCarloOptions& options) const {
+  CheckOrders(orders);
+  CheckOptions(options);
+  return EstimateSkyIrradianceOrders(medium_, CheckRadius(r), CheckCosine("mu_s", mu_s), orders, options)
+      .total;
+}
+
+double Reference::RayleighPhase(double nu) { return RayleighPhaseFunction(CheckCosine("nu", nu)); }
+
+double Reference::MiePhase(double nu) const {
+  return CornetteShanksPhaseFunction(medium_.atmosphere().mie_phase_g, CheckCosine("nu", nu));
+}
+
+}  // namespace aerial::reference

@@ -1,0 +1,46 @@
+#include "gpu_fixture.h"
+
+#include <map>
+#include <memory>
+
+namespace aerial::testing {
+
+vk::Context& SharedContext() {
+  static vk::Context context(vk::ContextCreateInfo{.validation = true});
+  return context;
+}
+
+namespace {
+const AtmosphereTables& Tables(const PrecomputeOptions& options) {
+  static std::map<uint64_t, LoadedTables> loaded;
+  auto it = loaded.find(options.Hash());
+  if (it == loaded.end()) {
+    it = loaded.emplace(options.Hash(), LoadOrPrecompute(SharedContext(), AtmosphereParameters::Earth(),
+                                                         options, {.quiet = true}))
+             .first;
+  }
+  return *it->second.tables;
+}
+}  // namespace
+
+const AtmosphereTables& FullTables(int orders) {
+  PrecomputeOptions options;
+  options.orders = orders;
+  return Tables(options);
+}
+
+const AtmosphereTables& SmallTables(LutVariant variant) {
+  return Tables(PrecomputeOptions::Small(variant));
+}
+
+void GpuTest::SetUp() {
+  SharedContext();
+  validation_messages_before_ = vk::Context::ValidationMessageCount();
+}
+
+void GpuTest::TearDown() {
+  EXPECT_EQ(vk::Context::ValidationMessageCount(), validation_messages_before_)
+      << "the Vulkan validation layers reported messages during this test";
+}
+
+}  // namespace aerial::testing

@@ -1,0 +1,29 @@
+#pragma once
+// Shared GPU state for the cross-module tests: one Vulkan context with validation on, and table
+// sets that are precomputed once and then read from the test cache (AERIAL_CACHE_DIR, set by
+// CTest), since every test runs in its own process. Every GPU test derives from GpuTest, which
+// fails the test if the validation layers printed anything while it ran.
+#include <gtest/gtest.h>
+
+#include "aerial/precompute/table_store.h"
+#include "aerial/vk/context.h"
+
+namespace aerial::testing {
+
+vk::Context& SharedContext();
+
+// Default resolutions (256x64, 64x16, R32 MU128 MU_S32 NU8), float32, `orders` orders.
+const AtmosphereTables& FullTables(int orders = 4);
+// Quarter-size tables for tests that check structure rather than accuracy.
+const AtmosphereTables& SmallTables(LutVariant variant = LutVariant::k4D);
+
+class GpuTest : public ::testing::Test {
+ protected:
+  void SetUp() override;
+  void TearDown() override;
+
+ private:
+  int validation_messages_before_ = 0;
+};
+
+}  // namespace aerial::testing
