@@ -48,8 +48,9 @@ layout(std140, set = 0, binding = 0) uniform AtmosphereBlock {
   ivec4 scattering_size;        // x: r, y: mu, z: mu_s, w: nu (w == 1: the 3D variant).
   ivec4 density_size;           // the same axes, for the per-order density and multiple scattering.
   ivec4 density_directions;     // x: zenith samples above the horizon, y: below, z: azimuths in [0, pi].
-  ivec4 sample_counts;          // x: transmittance steps, y: single and multiple scattering steps,
+  ivec4 sample_counts;          // x: transmittance steps, y: single scattering steps,
                                 // z: irradiance zenith samples, w: irradiance azimuth samples.
+  ivec4 multiple_scattering_steps;  // x: steps per ray of the multiple scattering pass.
 } atmosphere;
 
 float ClampCosine(float mu) { return clamp(mu, -1.0, 1.0); }

@@ -1,26 +1,44 @@
 // Ray geometry inside a spherical shell (Bruneton 2017, functions.glsl section "Distance to the top
 // and bottom atmosphere boundaries"). A ray starts at radius r with cos(view zenith) = mu.
+//
+// Precision near the horizon. The textbook discriminant r^2 (mu^2 - 1) + R^2 subtracts numbers of
+// order 4e13 m^2 that cancel at the horizon; in float32 that leaves an absolute error of ~1e7 m^2,
+// i.e. kilometers in the distance to the ground, and the horizon texels of the tables then land on
+// the wrong texel or the wrong half of the mu axis: the classic horizon line. Writing r^2 - R^2 as
+// (r - R)(r + R), where r - R is exact (Sterbenz), brings the error down to that of rho^2 itself.
 #ifndef AERIAL_GEOMETRY_GLSL
 #define AERIAL_GEOMETRY_GLSL
 #include "definitions.glsl"
 
-// d = -r mu + sqrt(r^2 (mu^2 - 1) + R_top^2): the positive root of |x + d v| = R_top.
+// r^2 - R_bottom^2 = rho^2, the squared distance to the horizon, without cancellation.
+float SquaredHorizonDistance(float r) {
+  return max((r - atmosphere.bottom_radius) * (r + atmosphere.bottom_radius), 0.0);
+}
+
+// R_top^2 - r^2, without cancellation.
+float SquaredTopBoundaryFromRadius(float r) {
+  return (atmosphere.top_radius - r) * (atmosphere.top_radius + r);
+}
+
+// d = -r mu + sqrt(r^2 mu^2 + R_top^2 - r^2): the positive root of |x + d v| = R_top.
 float DistanceToTopAtmosphereBoundary(float r, float mu) {
-  float discriminant = r * r * (mu * mu - 1.0) + atmosphere.top_radius * atmosphere.top_radius;
+  float discriminant = r * r * mu * mu + SquaredTopBoundaryFromRadius(r);
   return ClampDistance(-r * mu + SafeSqrt(discriminant));
 }
 
-// d = -r mu - sqrt(r^2 (mu^2 - 1) + R_bottom^2): the nearer root of |x + d v| = R_bottom.
+// Discriminant of |x + d v| = R_bottom: r^2 mu^2 - (r^2 - R_bottom^2).
+float GroundDiscriminant(float r, float mu) {
+  return r * r * mu * mu - SquaredHorizonDistance(r);
+}
+
+// d = -r mu - sqrt(discriminant): the nearer root of |x + d v| = R_bottom.
 float DistanceToBottomAtmosphereBoundary(float r, float mu) {
-  float discriminant =
-      r * r * (mu * mu - 1.0) + atmosphere.bottom_radius * atmosphere.bottom_radius;
-  return ClampDistance(-r * mu - SafeSqrt(discriminant));
+  return ClampDistance(-r * mu - SafeSqrt(GroundDiscriminant(r, mu)));
 }
 
 // The ray hits the ground when it points down and the discriminant is non-negative.
 bool RayIntersectsGround(float r, float mu) {
-  return mu < 0.0 && r * r * (mu * mu - 1.0) +
-                             atmosphere.bottom_radius * atmosphere.bottom_radius >= 0.0;
+  return mu < 0.0 && GroundDiscriminant(r, mu) >= 0.0;
 }
 
 float DistanceToNearestAtmosphereBoundary(float r, float mu, bool ray_r_mu_intersects_ground) {

@@ -26,14 +26,13 @@ float GetUnitRangeFromTextureCoord(float u, int size) {
 
 // H: distance to the top boundary of a horizontal ray from the ground.
 float HorizonDistanceFromGround() {
-  return sqrt(atmosphere.top_radius * atmosphere.top_radius -
-              atmosphere.bottom_radius * atmosphere.bottom_radius);
+  return sqrt(SquaredHorizonDistance(atmosphere.top_radius));
 }
 
 // ---- Transmittance table: x = d/d_max mapping of mu, y = rho/H mapping of r. ----
 vec2 GetTransmittanceTextureUvFromRMu(float r, float mu) {
   float H = HorizonDistanceFromGround();
-  float rho = SafeSqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
+  float rho = sqrt(SquaredHorizonDistance(r));
   float d = DistanceToTopAtmosphereBoundary(r, mu);
   float d_min = atmosphere.top_radius - r;
   float d_max = rho + H;
@@ -52,7 +51,8 @@ void GetRMuFromTransmittanceTextureUv(vec2 uv, out float r, out float mu) {
   float d_min = atmosphere.top_radius - r;
   float d_max = rho + H;
   float d = d_min + x_mu * (d_max - d_min);
-  mu = d == 0.0 ? 1.0 : (H * H - rho * rho - d * d) / (2.0 * r * d);
+  // H^2 - rho^2 = R_top^2 - r^2, taken without cancellation.
+  mu = d == 0.0 ? 1.0 : (SquaredTopBoundaryFromRadius(r) - d * d) / (2.0 * r * d);
   mu = ClampCosine(mu);
 }
 
@@ -102,7 +102,7 @@ float GetMuSFromScatteringUMuS(ivec4 size, float u_mu_s) {
 
 float GetScatteringUR(ivec4 size, float r) {
   float H = HorizonDistanceFromGround();
-  float rho = SafeSqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
+  float rho = sqrt(SquaredHorizonDistance(r));
   return GetTextureCoordFromUnitRange(rho / H, size.x);
 }
 
@@ -115,9 +115,9 @@ float GetRFromScatteringUR(ivec4 size, float u_r) {
 vec4 GetScatteringTextureUvwzFromRMuMuSNu(ivec4 size, float r, float mu, float mu_s, float nu,
                                           bool ray_r_mu_intersects_ground) {
   float H = HorizonDistanceFromGround();
-  float rho = SafeSqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
+  float rho = sqrt(SquaredHorizonDistance(r));
   float r_mu = r * mu;
-  float discriminant = r_mu * r_mu - r * r + atmosphere.bottom_radius * atmosphere.bottom_radius;
+  float discriminant = GroundDiscriminant(r, mu);
   int half_mu = size.y / 2;
   float u_mu;
   if (ray_r_mu_intersects_ground) {
@@ -129,7 +129,7 @@ vec4 GetScatteringTextureUvwzFromRMuMuSNu(ivec4 size, float r, float mu, float m
                            d_max == d_min ? 0.0 : (d - d_min) / (d_max - d_min), half_mu);
   } else {
     // Distance to the top boundary, from R_top - r (zenith) to rho + H (horizon).
-    float d = -r_mu + SafeSqrt(discriminant + H * H);
+    float d = DistanceToTopAtmosphereBoundary(r, mu);
     float d_min = atmosphere.top_radius - r;
     float d_max = rho + H;
     u_mu = 0.5 + 0.5 * GetTextureCoordFromUnitRange((d - d_min) / (d_max - d_min), half_mu);
@@ -141,7 +141,7 @@ void GetRMuMuSNuFromScatteringTextureUvwz(ivec4 size, vec4 uvwz, out float r, ou
                                           out float nu, out bool ray_r_mu_intersects_ground) {
   float H = HorizonDistanceFromGround();
   r = GetRFromScatteringUR(size, uvwz.w);
-  float rho = SafeSqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
+  float rho = sqrt(SquaredHorizonDistance(r));
   int half_mu = size.y / 2;
   if (uvwz.z < 0.5) {
     float d_min = r - atmosphere.bottom_radius;
@@ -153,7 +153,7 @@ void GetRMuMuSNuFromScatteringTextureUvwz(ivec4 size, vec4 uvwz, out float r, ou
     float d_min = atmosphere.top_radius - r;
     float d_max = rho + H;
     float d = d_min + (d_max - d_min) * GetUnitRangeFromTextureCoord(2.0 * uvwz.z - 1.0, half_mu);
-    mu = d == 0.0 ? 1.0 : ClampCosine((H * H - rho * rho - d * d) / (2.0 * r * d));
+    mu = d == 0.0 ? 1.0 : ClampCosine((SquaredTopBoundaryFromRadius(r) - d * d) / (2.0 * r * d));
     ray_r_mu_intersects_ground = false;
   }
   mu_s = GetMuSFromScatteringUMuS(size, uvwz.y);
@@ -162,6 +162,11 @@ void GetRMuMuSNuFromScatteringTextureUvwz(ivec4 size, vec4 uvwz, out float r, ou
 
 bool IsScatteringTexel(ivec4 size, ivec3 texel) {
   return texel.x < size.z * size.w && texel.y < size.y && texel.z < size.x;
+}
+
+// The nu a texel stands for on the table's nu axis, before clamping to what (mu, mu_s) allow.
+float GetScatteringTexelNominalNu(ivec4 size, ivec3 texel) {
+  return size.w > 1 ? 2.0 * float(texel.x / size.z) / float(size.w - 1) - 1.0 : 0.0;
 }
 
 // The texel (x, y, z) of the 3D image that packs the 4D table: x = nu_index * MU_S + mu_s_index.

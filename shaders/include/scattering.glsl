@@ -133,7 +133,7 @@ vec3 MultipleScatteringIntegrand(sampler2D transmittance_texture,
 vec3 ComputeMultipleScattering(sampler2D transmittance_texture, sampler3D scattering_density_texture,
                                float r, float mu, float mu_s, float nu,
                                bool ray_r_mu_intersects_ground) {
-  int steps = atmosphere.sample_counts.y;
+  int steps = atmosphere.multiple_scattering_steps.x;
   float dx = DistanceToNearestAtmosphereBoundary(r, mu, ray_r_mu_intersects_ground) / float(steps);
   vec3 origin = GetRayOpticalDepthOrigin(transmittance_texture, r, mu, ray_r_mu_intersects_ground);
   vec3 previous = MultipleScatteringIntegrand(transmittance_texture, scattering_density_texture,

@@ -78,7 +78,8 @@ vec3 GetTransmittance(sampler2D transmittance_texture, float r, float mu, float 
 float GetSunVisibleFraction(float r, float mu_s) {
   float sin_theta_h = atmosphere.bottom_radius / r;
   float cos_theta_h = -sqrt(max(1.0 - sin_theta_h * sin_theta_h, 0.0));
-  float x = clamp((mu_s - cos_theta_h) / (sin_theta_h * atmosphere.sun_angular_radius), -1.0, 1.0);
+  float x = (mu_s - cos_theta_h) / (sin_theta_h * atmosphere.sun_angular_radius);
+  if (abs(x) >= 1.0) return x > 0.0 ? 1.0 : 0.0;  // whole disc above or below: skip the asin
   return 0.5 + (x * sqrt(1.0 - x * x) + asin(x)) / PI;
 }
 

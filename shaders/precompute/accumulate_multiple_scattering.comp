@@ -5,6 +5,14 @@
 // "ComputeMultipleScatteringTexture": multiple scattering is nearly isotropic, and this keeps the
 // Rayleigh/Mie split without a third table). The order-n table is read at each texel's own
 // parameters, which also resamples it from the density resolution to the table resolution.
+//
+// The division uses the texel's nominal nu (its place on the nu axis), not the nu it was clamped
+// to. Near mu_s = 1 or mu = +-1 the allowed nu range collapses and every texel of a slice is
+// clamped to nearly the same nu; dividing by P_R of that nu would store values whose nu dependence
+// does not follow the axis, and a lookup that blends such texels with their neighbors (in mu_s or
+// mu) is then off by up to 20% (measured at the horizon, sun zenith 30 degrees). Divided by the
+// nominal phase, the stored values vary smoothly along the axis and the render-time product with
+// P_R(nu) restores the radiance.
 #include "scattering.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 1) uniform sampler3D delta_multiple_scattering_texture;
@@ -19,6 +27,8 @@ void main() {
                                  ray_r_mu_intersects_ground);
   vec3 radiance = GetScattering(delta_multiple_scattering_texture, atmosphere.density_size, r, mu,
                                 mu_s, nu, ray_r_mu_intersects_ground);
+  float nominal_nu = GetScatteringTexelNominalNu(atmosphere.scattering_size, texel);
   imageStore(rayleigh_accumulator, texel,
-             imageLoad(rayleigh_accumulator, texel) + vec4(radiance / RayleighPhaseFunction(nu), 0.0));
+             imageLoad(rayleigh_accumulator, texel) +
+                 vec4(radiance / RayleighPhaseFunction(nominal_nu), 0.0));
 }

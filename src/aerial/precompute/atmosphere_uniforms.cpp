@@ -44,6 +44,7 @@ AtmosphereUniforms MakeAtmosphereUniforms(const AtmosphereParameters& a,
   u.density_size = {s.density_r, s.density_mu, s.density_mu_s, s.density_nu};
   u.density_directions = {s.density_theta_up, s.density_theta_down, s.density_phi, 0};
   u.sample_counts = {s.transmittance_steps, s.ray_steps, s.irradiance_zenith, s.irradiance_azimuth};
+  u.multiple_scattering_steps = {s.multiple_scattering_steps, 0, 0, 0};
   return u;
 }
 

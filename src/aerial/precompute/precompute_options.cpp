@@ -59,6 +59,7 @@ void PrecomputeOptions::Validate() const {
   const SampleCounts& s = samples;
   CheckRange("transmittance steps", s.transmittance_steps, 8, 10000);
   CheckRange("ray steps", s.ray_steps, 4, 1000);
+  CheckRange("multiple scattering steps", s.multiple_scattering_steps, 4, 1000);
   CheckRange("irradiance zenith samples", s.irradiance_zenith, 2, 512);
   CheckRange("irradiance azimuth samples", s.irradiance_azimuth, 2, 1024);
   CheckRange("density zenith cells above the horizon", s.density_theta_up, 2, 128);
@@ -80,7 +81,7 @@ uint64_t PrecomputeOptions::Hash() const {
                         resolution.transmittance_mu, resolution.transmittance_r,
                         resolution.irradiance_mu_s, resolution.irradiance_r, resolution.scattering_r,
                         resolution.scattering_mu, resolution.scattering_mu_s, resolution.scattering_nu,
-                        samples.transmittance_steps, samples.ray_steps, samples.irradiance_zenith,
+                        samples.transmittance_steps, samples.ray_steps, samples.multiple_scattering_steps, samples.irradiance_zenith,
                         samples.irradiance_azimuth, samples.density_theta_up,
                         samples.density_theta_down, samples.density_phi, samples.density_r,
                         samples.density_mu, samples.density_mu_s, samples.density_nu};

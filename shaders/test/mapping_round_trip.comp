@@ -1,0 +1,58 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Test shader: every texel center of each table, mapped to physical parameters and back, must land
+// on itself. Writes the largest error in texel units per table (as float bits: for non-negative
+// floats the unsigned integer order is the float order, so atomicMax works).
+#include "mappings.glsl"
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(std430, set = 0, binding = 1) buffer Errors { uint max_error_bits[4]; };
+layout(push_constant) uniform Table { int table; } test;  // 0 transmittance, 1 irradiance, 2 scattering
+
+void Record(int slot, float error_in_texels) {
+  atomicMax(max_error_bits[slot], floatBitsToUint(abs(error_in_texels)));
+}
+
+void main() {
+  ivec3 texel = ivec3(gl_GlobalInvocationID);
+  if (test.table == 0) {
+    ivec2 size = atmosphere.transmittance_size.xy;
+    if (any(greaterThanEqual(texel.xy, size)) || texel.z > 0) return;
+    vec2 uv = (vec2(texel.xy) + 0.5) / vec2(size);
+    float r, mu;
+    GetRMuFromTransmittanceTextureUv(uv, r, mu);
+    vec2 error = (GetTransmittanceTextureUvFromRMu(r, mu) - uv) * vec2(size);
+    Record(0, max(abs(error.x), abs(error.y)));
+  } else if (test.table == 1) {
+    ivec2 size = atmosphere.irradiance_size.xy;
+    if (any(greaterThanEqual(texel.xy, size)) || texel.z > 0) return;
+    vec2 uv = (vec2(texel.xy) + 0.5) / vec2(size);
+    float r, mu_s;
+    GetRMuSFromIrradianceTextureUv(uv, r, mu_s);
+    vec2 error = (GetIrradianceTextureUvFromRMuS(r, mu_s) - uv) * vec2(size);
+    Record(1, max(abs(error.x), abs(error.y)));
+  } else {
+    ivec4 size = atmosphere.scattering_size;
+    if (!IsScatteringTexel(size, texel)) return;
+    float r, mu, mu_s, nu;
+    bool ground;
+    GetRMuMuSNuFromScatteringTexel(size, texel, r, mu, mu_s, nu, ground);
+    // The first r slice is the ground itself (r = R), where every downward ray has length 0: the
+    // whole ground half of the mu axis maps to mu = -1 and cannot round-trip. Those texels hold
+    // zero scattering by construction.
+    if (texel.z == 0 && ground) return;
+    // nu is clamped to what (mu, mu_s) allow, so only the r, mu and mu_s axes must round-trip; the
+    // nu axis is checked separately on unclamped values.
+    vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, r, mu, mu_s, nu, ground);
+    int mu_s_index = texel.x % size.z;
+    float error_mu_s = (uvwz.y - (float(mu_s_index) + 0.5) / float(size.z)) * float(size.z);
+    float error_mu = (uvwz.z - (float(texel.y) + 0.5) / float(size.y)) * float(size.y);
+    float error_r = (uvwz.w - (float(texel.z) + 0.5) / float(size.x)) * float(size.x);
+    Record(2, max(max(abs(error_mu_s), abs(error_mu)), abs(error_r)));
+    // Away from the two outermost texels, which both stand for the tangent ray itself (mu exactly
+    // at the horizon, where "hits the ground" is a matter of rounding), a texel's half must agree
+    // with the ray it stands for.
+    bool horizon_texel = texel.y == 0 || texel.y == size.y - 1;
+    bool ground_again = RayIntersectsGround(r, mu);
+    Record(3, horizon_texel || ground_again == ground ? 0.0 : 1.0);
+  }
+}

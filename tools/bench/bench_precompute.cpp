@@ -1,0 +1,107 @@
+// aerial_bench_precompute: GPU time of each precompute pass, as medians over several runs in one
+// process. The first Precompute of a process also pays lavapipe's JIT compilation of every
+// pipeline (tens to hundreds of ms per pass), so warm-up runs come first and the first of them is
+// reported apart as the cold time.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <thread>
+
+#include <CLI/CLI.hpp>
+
+#include "aerial/atmosphere/parameters.h"
+#include "aerial/core/atomic_file.h"
+#include "aerial/core/error.h"
+#include "aerial/precompute/atmosphere_tables.h"
+#include "aerial/precompute/precomputer.h"
+#include "aerial/vk/context.h"
+#include "report.h"
+
+namespace {
+
+struct BenchOptions {
+  int runs = 5;
+  int warmup = 1;
+  int orders = 4;
+  bool half = false;
+  std::string lut = "4d";
+  bool small = false;
+  std::string json_file;
+
+  aerial::PrecomputeOptions MakePrecomputeOptions() const {
+    aerial::LutVariant variant = aerial::ParseLutVariant(lut, "--lut");
+    aerial::PrecomputeOptions options =
+        small ? aerial::PrecomputeOptions::Small(variant) : aerial::PrecomputeOptions{};
+    options.variant = variant;
+    // The 3D variant drops nu from the scattering table and from the density grid alike.
+    if (variant == aerial::LutVariant::k3D) options.resolution.scattering_nu = options.samples.density_nu = 1;
+    options.orders = orders;
+    options.precision = half ? aerial::TablePrecision::kFloat16 : aerial::TablePrecision::kFloat32;
+    options.Validate();
+    return options;
+  }
+};
+
+aerial::bench::RunResult RunOnce(const aerial::vk::Context& context, const aerial::PrecomputeOptions& options,
+                                 size_t* table_bytes) {
+  // Fresh tables each run, as a real precompute would allocate them; only the Precompute call
+  // is timed on the wall clock.
+  aerial::AtmosphereTables tables(context, aerial::AtmosphereParameters::Earth(), options);
+  *table_bytes = tables.table_bytes();
+  auto start = std::chrono::steady_clock::now();
+  aerial::bench::RunResult run{.passes = aerial::Precompute(tables, nullptr)};
+  run.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+void Bench(const BenchOptions& cli) {
+  aerial::bench::BenchResult result{.options = cli.MakePrecomputeOptions(), .warmup = cli.warmup};
+  // Fail on an unwritable --json path now rather than after minutes of precomputation.
+  if (!cli.json_file.empty()) aerial::CheckWritable(cli.json_file);
+  // lavapipe runs one worker per core unless LP_NUM_THREADS says otherwise; 1 thread is ~2x slower.
+  if (const char* lp = std::getenv("LP_NUM_THREADS")) {
+    result.threads = std::atoi(lp);
+    result.threads_source = "LP_NUM_THREADS";
+  } else {
+    result.threads = int(std::thread::hardware_concurrency());
+    result.threads_source = "hardware_concurrency; LP_NUM_THREADS unset";
+  }
+  aerial::vk::Context context(aerial::vk::ContextCreateInfo{.device_name = "", .validation = false});
+  result.device = context.device_name();
+  for (int i = 0; i < cli.warmup + cli.runs; ++i) {
+    aerial::bench::RunResult run = RunOnce(context, result.options, &result.table_bytes);
+    bool warming = i < cli.warmup;
+    std::fprintf(stderr, "%s %d: %.1f ms GPU, %.1f ms wall\n", warming ? "warm-up" : "run",
+                 warming ? i + 1 : i - cli.warmup + 1, run.GpuMs(), run.wall_ms);
+    if (i == 0 && warming) result.cold = std::move(run);
+    else if (!warming) result.runs.push_back(std::move(run));
+  }
+  aerial::bench::PrintReport(result, stdout);
+  if (!cli.json_file.empty()) aerial::WriteFileAtomically(cli.json_file, aerial::bench::ReportJson(result));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"aerial_bench_precompute: median GPU time of each precompute pass over several runs"};
+  BenchOptions cli;
+  app.add_option("--runs", cli.runs, "Measured runs (the median is over these)")->check(CLI::Range(1, 1000));
+  app.add_option("--warmup", cli.warmup, "Unmeasured runs first; the first one is reported as the cold time")
+      ->check(CLI::Range(0, 100));
+  app.add_option("--orders", cli.orders, "Scattering orders to precompute")->check(CLI::Range(1, 16));
+  app.add_flag("--half", cli.half, "Store the scattering tables as 16-bit floats");
+  app.add_option("--lut", cli.lut, "Scattering table variant: 4d or 3d")->check(CLI::IsMember({"4d", "3d"}));
+  app.add_flag("--small", cli.small, "Small tables (about 1/16 of the texels), for a quick check");
+  app.add_option("--json", cli.json_file, "Also write the results as JSON to this file");
+  try {
+    app.parse(argc, argv);
+    Bench(cli);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {  // aerial::Error included: its message names field and value
+    std::fprintf(stderr, "aerial_bench_precompute: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,16 @@
+#include "bruneton_2017.h"
+
+#include "pass_stats.h"
+
+namespace aerial::bench {
+
+std::string Bruneton2017Step(const std::string& pass) {
+  std::string kind = PassKind(pass);
+  if (kind == "incident radiance") return "scattering density";
+  if (kind == "accumulate") return "multiple scattering";
+  for (const auto& step : kBruneton2017Steps)
+    if (kind == step.name) return kind;
+  return "";
+}
+
+}  // namespace aerial::bench

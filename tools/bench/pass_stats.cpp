@@ -1,0 +1,43 @@
+#include "pass_stats.h"
+
+#include <algorithm>
+#include <map>
+
+namespace aerial::bench {
+
+double RunResult::GpuMs() const {
+  double total = 0.0;
+  for (const auto& pass : passes) total += pass.milliseconds;
+  return total;
+}
+
+Stats Summarize(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  size_t n = values.size();
+  double median = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+  return {median, values.front(), values.back()};
+}
+
+std::vector<Series> GroupPasses(const std::vector<RunResult>& runs,
+                                const std::function<std::string(const std::string&)>& key) {
+  std::vector<Series> series;
+  std::map<std::string, size_t> index;
+  for (size_t run = 0; run < runs.size(); ++run) {
+    for (const auto& pass : runs[run].passes) {
+      std::string name = key(pass.pass);
+      if (name.empty()) continue;
+      auto [it, added] = index.try_emplace(name, series.size());
+      // Every run executes the same passes, so a key's vector gets one slot per run.
+      if (added) series.push_back({name, std::vector<double>(runs.size(), 0.0)});
+      series[it->second].ms[run] += pass.milliseconds;
+    }
+  }
+  return series;
+}
+
+std::string PassKind(const std::string& pass) {
+  size_t suffix = pass.find(" (order ");
+  return suffix == std::string::npos ? pass : pass.substr(0, suffix);
+}
+
+}  // namespace aerial::bench

@@ -1,0 +1,41 @@
+#pragma once
+// Statistics over repeated precompute runs. The machine is noisy (2 cores shared with other
+// work, lavapipe running the "GPU" on them), so a benchmark reports the median of each pass with
+// its min and max instead of a mean that one disturbed run would drag.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "aerial/vk/gpu_timer.h"
+
+namespace aerial::bench {
+
+// One Precompute call: the GPU time of each pass and the wall-clock time of the whole call (which
+// also covers pipeline creation, allocation and submissions).
+struct RunResult {
+  std::vector<vk::PassTime> passes;
+  double wall_ms = 0.0;
+  double GpuMs() const;
+};
+
+struct Stats {
+  double median = 0.0, min = 0.0, max = 0.0;
+};
+Stats Summarize(std::vector<double> values);  // values must not be empty
+
+// The values of one named quantity, one per run.
+struct Series {
+  std::string name;
+  std::vector<double> ms;
+};
+
+// Sums the pass times of each run by key(pass name), keeping the keys in order of first
+// appearance; passes whose key is empty are left out. Summing within a run before taking the
+// median over runs keeps each run's passes together (a median of sums, not a sum of medians).
+std::vector<Series> GroupPasses(const std::vector<RunResult>& runs,
+                                const std::function<std::string(const std::string&)>& key);
+
+// "scattering density (order 3)" -> "scattering density": the kind of pass, whatever the order.
+std::string PassKind(const std::string& pass);
+
+}  // namespace aerial::bench
