@@ -10,6 +10,7 @@ function(aerial_compile_shaders target shader_dir)
   set(embedded "")
   set(arrays "")
   set(table "")
+  set(spans "")
   foreach(stage ${stages})
     file(RELATIVE_PATH rel ${shader_dir} ${stage})
     string(MAKE_C_IDENTIFIER ${rel} ident)
@@ -25,6 +26,7 @@ function(aerial_compile_shaders target shader_dir)
     list(APPEND embedded ${inc})
     string(APPEND arrays "const uint32_t ${ident}[] = {\n#include \"aerial/shaders/${ident}.inc\"\n};\n")
     string(APPEND table "      {\"${rel}\", ${ident}},\n")
+    string(APPEND spans "std::span<const uint32_t>(${ident}), ")
   endforeach()
   set(registry ${out_dir}/registry.cpp)
   file(GENERATE OUTPUT ${registry} CONTENT
@@ -41,6 +43,13 @@ std::span<const uint32_t> Find(const std::string& name) {
 ${table}  };
   auto it = registry.find(name);
   return it == registry.end() ? std::span<const uint32_t>() : it->second;
+}
+uint64_t Fingerprint() {
+  uint64_t hash = 1469598103934665603ull;
+  for (auto words : {${spans}}) {
+    for (uint32_t word : words) hash = (hash ^ word) * 1099511628211ull;
+  }
+  return hash;
 }
 }  // namespace aerial::shaders
 ")

@@ -66,10 +66,11 @@ float SafeSqrt(float a) { return sqrt(max(a, 0.0)); }
 // two ends are nearly equal, the trapezoid is used.
 vec3 ExponentialStepIntegral(vec3 f0, vec3 f1) {
   vec3 trapezoid = 0.5 * (f0 + f1);
-  vec3 ratio = f1 / max(f0, vec3(1e-37));
-  vec3 use_log = step(1e-30, min(f0, f1)) * step(1e-3, abs(ratio - 1.0));
-  // Where use_log is 0 the denominator is replaced by 1, so the unused branch stays finite.
-  vec3 log_ratio = mix(vec3(1.0), log(max(ratio, vec3(1e-37))), use_log);
+  bvec3 positive = greaterThan(min(f0, f1), vec3(1e-30));
+  vec3 ratio = f1 / max(f0, vec3(1e-30));
+  bvec3 use_log = bvec3(vec3(positive) * step(1e-3, abs(ratio - 1.0)));
+  // Selections, not blends: a blend would multiply the unused branch's inf or NaN by zero.
+  vec3 log_ratio = mix(vec3(1.0), log(max(ratio, vec3(1e-30))), use_log);
   return mix(trapezoid, (f1 - f0) / log_ratio, use_log);
 }
 

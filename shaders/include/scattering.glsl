@@ -92,9 +92,9 @@ vec3 GetScatteringExponentialInR(sampler3D scattering_texture, ivec4 size, float
   float t = slice - slice0;
   vec3 s0 = GetScatteringAt(scattering_texture, size, vec4(uvwz.xyz, (slice0 + 0.5) / r_size));
   vec3 s1 = GetScatteringAt(scattering_texture, size, vec4(uvwz.xyz, (slice0 + 1.5) / r_size));
-  vec3 use_log = step(1e-30, min(s0, s1));
+  bvec3 use_log = greaterThan(min(s0, s1), vec3(1e-30));
   vec3 exponential = exp(mix(log(max(s0, vec3(1e-30))), log(max(s1, vec3(1e-30))), t));
-  return mix(mix(s0, s1, t), exponential, use_log);
+  return mix(mix(s0, s1, t), exponential, use_log);  // a selection: use_log is a bvec3
 }
 
 // Radiance of scattering order `order` arriving along (r, mu) with the sun at (mu_s, nu): order 1

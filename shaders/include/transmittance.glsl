@@ -80,7 +80,8 @@ float GetSunVisibleFraction(float r, float mu_s) {
   float cos_theta_h = -sqrt(max(1.0 - sin_theta_h * sin_theta_h, 0.0));
   float x = (mu_s - cos_theta_h) / (sin_theta_h * atmosphere.sun_angular_radius);
   if (abs(x) >= 1.0) return x > 0.0 ? 1.0 : 0.0;  // whole disc above or below: skip the asin
-  return 0.5 + (x * sqrt(1.0 - x * x) + asin(x)) / PI;
+  // Clamped: near x = -1 the float asin rounds the fraction a few ulps below zero.
+  return clamp(0.5 + (x * sqrt(1.0 - x * x) + asin(x)) / PI, 0.0, 1.0);
 }
 
 // Transmittance of sunlight to radius r, including the part of the sun hidden by the planet.

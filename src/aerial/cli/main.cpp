@@ -2,6 +2,7 @@
 // values, files, Vulkan) arrive here as exceptions, are printed once and turn into exit status 1.
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -15,6 +16,20 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", AERIAL_VERSION);
   aerial::cli::AddPrecomputeCommand(app);
   aerial::cli::AddProbeCommand(app);
+  // CLI11 reports a mistyped command only as "a subcommand is required": name it instead.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string commands;
+    bool known = false;
+    for (const CLI::App* command : app.get_subcommands({})) {
+      commands += (commands.empty() ? "" : ", ") + command->get_name();
+      known = known || command->get_name() == argv[1];
+    }
+    if (!known) {
+      std::fprintf(stderr, "aerial: error: command = %s is invalid; expected one of: %s\n", argv[1],
+                   commands.c_str());
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

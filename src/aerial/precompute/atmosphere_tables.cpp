@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "aerial/core/error.h"
+#include "aerial/vk/shader_registry.h"
 
 namespace aerial {
 namespace {
@@ -53,7 +54,9 @@ size_t AtmosphereTables::table_bytes() const {
 }
 
 TableCacheKey AtmosphereTables::cache_key() const {
-  return {.atmosphere_hash = atmosphere_.Hash(), .options_hash = options_.Hash()};
+  // The shaders are part of the key: tables computed by another build are recomputed.
+  return {.atmosphere_hash = atmosphere_.Hash(),
+          .options_hash = options_.Hash() ^ shaders::Fingerprint()};
 }
 
 namespace {

@@ -6,6 +6,7 @@
 #include "aerial/core/error.h"
 #include "aerial/core/progress.h"
 #include "aerial/precompute/precomputer.h"
+#include "aerial/vk/shader_registry.h"
 
 namespace aerial {
 
@@ -24,7 +25,7 @@ std::filesystem::path CacheFilePath(const std::filesystem::path& dir,
   char name[96];
   std::snprintf(name, sizeof name, "tables-%s-%016llx-%016llx.bin", ToString(options.variant).c_str(),
                 static_cast<unsigned long long>(atmosphere.Hash()),
-                static_cast<unsigned long long>(options.Hash()));
+                static_cast<unsigned long long>(options.Hash() ^ shaders::Fingerprint()));
   return dir / name;
 }
 

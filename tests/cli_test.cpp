@@ -1,0 +1,91 @@
+// The aerial command as users run it: bad input gives a clear message naming the field and a
+// non-zero exit, and the probe prints the JSON keys other tools script against.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace aerial::testing {
+namespace {
+
+struct CommandRun {
+  int exit_code;
+  std::string out;
+  std::string err;
+};
+
+CommandRun RunAerial(const std::string& arguments) {
+  std::string err_file = std::filesystem::temp_directory_path() / ("aerial-cli-" + std::to_string(::getpid()));
+  std::string command = std::string(AERIAL_EXE) + " " + arguments + " 2>" + err_file;
+  CommandRun run{};
+  FILE* pipe = ::popen(command.c_str(), "r");
+  std::array<char, 4096> buffer;
+  size_t n;
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) run.out.append(buffer.data(), n);
+  int status = ::pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream err(err_file);
+  run.err.assign(std::istreambuf_iterator<char>(err), {});
+  std::filesystem::remove(err_file);
+  return run;
+}
+
+const std::string kProbe =
+    "probe --small-tables --quiet --altitude-m 1 --view-zenith-deg 45 --sun-zenith-deg 30 --azimuth-deg 0";
+
+TEST(Cli, ProbePrintsEveryKeyForEachWavelength) {
+  CommandRun run = RunAerial(kProbe + " --distance-m 10000");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  auto json = nlohmann::json::parse(run.out);
+  ASSERT_EQ(json["wavelengths_nm"].size(), 3u);
+  for (const char* key : {"sky_radiance", "transmittance", "sun_irradiance", "sky_irradiance",
+                          "solar_radiance", "radiance_to_point", "transmittance_to_point"}) {
+    ASSERT_TRUE(json.contains(key)) << key;
+    ASSERT_EQ(json[key].size(), 3u) << key;
+    for (double v : json[key]) EXPECT_TRUE(std::isfinite(v) && v >= 0.0) << key;
+  }
+}
+
+struct BadInput {
+  std::string arguments;
+  std::string must_mention;
+};
+
+class CliRejects : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(CliRejects, WithMessageAndNonZeroExit) {
+  CommandRun run = RunAerial(GetParam().arguments);
+  EXPECT_NE(run.exit_code, 0) << GetParam().arguments;
+  EXPECT_NE(run.err.find(GetParam().must_mention), std::string::npos)
+      << "stderr does not mention \"" << GetParam().must_mention << "\":\n" << run.err;
+  EXPECT_TRUE(run.out.empty() || run.out.find('{') == std::string::npos) << "no JSON on failure";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadValues, CliRejects,
+    ::testing::Values(
+        BadInput{"probe --altitude-m -5 --view-zenith-deg 45 --sun-zenith-deg 30 --azimuth-deg 0", "--altitude-m"},
+        BadInput{"probe --altitude-m 70000 --view-zenith-deg 45 --sun-zenith-deg 30 --azimuth-deg 0", "--altitude-m"},
+        BadInput{"probe --altitude-m 0 --view-zenith-deg 200 --sun-zenith-deg 30 --azimuth-deg 0", "--view-zenith-deg"},
+        BadInput{"probe --altitude-m 0 --view-zenith-deg 45 --sun-zenith-deg -1 --azimuth-deg 0", "--sun-zenith-deg"},
+        BadInput{"probe --altitude-m 0 --view-zenith-deg 45 --sun-zenith-deg 30", "--azimuth-deg"},
+        BadInput{"probe --altitude-m 0 --view-zenith-deg 45 --sun-zenith-deg 30 --azimuth-deg 0 --distance-m -3", "--distance-m"},
+        BadInput{"probe --altitude-m 0 --view-zenith-deg 45 --sun-zenith-deg 30 --azimuth-deg 0 --lut 5d", "--lut"},
+        BadInput{"probe --altitude-m 0 --view-zenith-deg 45 --sun-zenith-deg 30 --azimuth-deg 0 --atmosphere /nonexistent/earth.toml", "/nonexistent/earth.toml"},
+        BadInput{"precompute --orders 0", "--orders"},
+        BadInput{"precompute --atmosphere " AERIAL_SOURCE_DIR "/tests/data/bad_mie_g.toml", "mie.phase_g"},
+        BadInput{"precompute --atmosphere " AERIAL_SOURCE_DIR "/tests/data/unknown_key.toml", "rayleigh.scatterring"},
+        BadInput{"no-such-command", "no-such-command"}),
+    [](const ::testing::TestParamInfo<BadInput>& info) { return "case" + std::to_string(info.index); });
+
+}  // namespace
+}  // namespace aerial::testing

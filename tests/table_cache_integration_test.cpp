@@ -1,0 +1,95 @@
+// The table cache end to end: tables read back from the cache equal the computed ones, and a
+// damaged, truncated or foreign file is detected, reported and rebuilt instead of used.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+#include "aerial/precompute/table_store.h"
+#include "gpu_fixture.h"
+
+namespace aerial::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+class TableCacheIntegration : public GpuTest {
+ protected:
+  void SetUp() override {
+    GpuTest::SetUp();
+    dir_ = fs::temp_directory_path() / ("aerial-cache-test-" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+  }
+  void TearDown() override {
+    fs::remove_all(dir_);
+    GpuTest::TearDown();
+  }
+  LoadedTables Load(const AtmosphereParameters& atmosphere = AtmosphereParameters::Earth()) {
+    return LoadOrPrecompute(SharedContext(), atmosphere, PrecomputeOptions::Small(),
+                            {.cache_dir = dir_, .quiet = true});
+  }
+  fs::path dir_;
+};
+
+TEST_F(TableCacheIntegration, RoundTripGivesIdenticalTables) {
+  LoadedTables computed = Load();
+  ASSERT_FALSE(computed.from_cache);
+  LoadedTables cached = Load();
+  ASSERT_TRUE(cached.from_cache);
+  TableCache a = computed.tables->Download();
+  TableCache b = cached.tables->Download();
+  ASSERT_EQ(a.tables.size(), b.tables.size());
+  for (size_t i = 0; i < a.tables.size(); ++i)
+    EXPECT_TRUE(a.tables[i].texels == b.tables[i].texels) << a.tables[i].name;
+}
+
+void FlipByte(const fs::path& file, std::streamoff offset) {
+  std::fstream stream(file, std::ios::in | std::ios::out | std::ios::binary);
+  stream.seekg(offset);
+  char c = 0;
+  stream.read(&c, 1);
+  c = char(c ^ 0x5a);
+  stream.seekp(offset);
+  stream.write(&c, 1);
+}
+
+TEST_F(TableCacheIntegration, FlippedByteIsDetectedAndRebuilt) {
+  LoadedTables first = Load();
+  FlipByte(first.cache_file, std::streamoff(fs::file_size(first.cache_file) / 2));
+  ::testing::internal::CaptureStderr();
+  LoadedTables second = Load();
+  std::string log = ::testing::internal::GetCapturedStderr();
+  EXPECT_FALSE(second.from_cache);
+  EXPECT_NE(log.find("ignoring table cache"), std::string::npos) << log;
+  EXPECT_TRUE(Load().from_cache) << "the rebuilt file is valid again";
+}
+
+TEST_F(TableCacheIntegration, TruncatedFileIsDetectedAndRebuilt) {
+  LoadedTables first = Load();
+  fs::resize_file(first.cache_file, fs::file_size(first.cache_file) - 1000);
+  ::testing::internal::CaptureStderr();
+  LoadedTables second = Load();
+  ::testing::internal::GetCapturedStderr();
+  EXPECT_FALSE(second.from_cache);
+}
+
+TEST_F(TableCacheIntegration, FileFromAnotherParameterSetIsNotUsed) {
+  LoadedTables earth = Load();
+  AtmosphereParameters hazy = AtmosphereParameters::Earth();
+  hazy.mie_scattering = {8e-6, 8e-6, 8e-6};
+  hazy.mie_extinction = {9e-6, 9e-6, 9e-6};
+  // Another parameter set gets its own file name; a file renamed into its place (as a stale or
+  // foreign cache would be) carries the wrong key in its header and is rejected.
+  fs::path hazy_file = CacheFilePath(dir_, hazy, PrecomputeOptions::Small());
+  fs::copy_file(earth.cache_file, hazy_file);
+  ::testing::internal::CaptureStderr();
+  LoadedTables loaded = Load(hazy);
+  std::string log = ::testing::internal::GetCapturedStderr();
+  EXPECT_FALSE(loaded.from_cache);
+  EXPECT_NE(log.find("cache key"), std::string::npos) << log;
+}
+
+}  // namespace
+}  // namespace aerial::testing
