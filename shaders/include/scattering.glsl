@@ -76,6 +76,30 @@ vec3 GetScattering(sampler3D scattering_texture, ivec4 size, float r, float mu, 
       GetScatteringTextureUvwzFromRMuMuSNu(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground));
 }
 
+// The precomputation's read of its per-order tables (scattering density, multiple scattering),
+// which hold values at each texel's clamped nu (GetRMuMuSNuFromScatteringTexel). Near the end of
+// the allowed nu range the outer of the two nu slices holds the value at the range's end, not at
+// its place on the axis; the weight between the slices is taken between where their values really
+// are. Without this, the forward Mie peak of the density is smeared toward the middle of the range
+// and the multiple scattering seen toward the sun is too low by several percent.
+vec3 GetScatteringClampedNu(sampler3D scattering_texture, ivec4 size, float r, float mu,
+                            float mu_s, float nu, bool ray_r_mu_intersects_ground) {
+  vec4 uvwz =
+      GetScatteringTextureUvwzFromRMuMuSNu(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+  if (size.w == 1) return GetScatteringAt(scattering_texture, size, uvwz);
+  float nu_size = float(size.w);
+  float tex_x = min(floor(uvwz.x * (nu_size - 1.0)), nu_size - 2.0);
+  float spread = sqrt(max((1.0 - mu * mu) * (1.0 - mu_s * mu_s), 0.0));
+  float nu0 = clamp(2.0 * tex_x / (nu_size - 1.0) - 1.0, mu * mu_s - spread, mu * mu_s + spread);
+  float nu1 =
+      clamp(2.0 * (tex_x + 1.0) / (nu_size - 1.0) - 1.0, mu * mu_s - spread, mu * mu_s + spread);
+  float lerp = nu1 > nu0 ? clamp((nu - nu0) / (nu1 - nu0), 0.0, 1.0) : 0.5;
+  vec3 uvw0 = vec3((tex_x + uvwz.y) / nu_size, uvwz.z, uvwz.w);
+  vec3 uvw1 = vec3((tex_x + 1.0 + uvwz.y) / nu_size, uvwz.z, uvwz.w);
+  return mix(textureLod(scattering_texture, uvw0, 0.0).rgb,
+             textureLod(scattering_texture, uvw1, 0.0).rgb, lerp);
+}
+
 // The render-time read of the final tables: as GetScattering, but interpolated exponentially
 // between the two nearest r slices instead of linearly. Scattering falls off roughly exponentially
 // with altitude, and at the default 32 r slices a slice spans 1.6 km of altitude at 10 km (Mie's
@@ -110,8 +134,8 @@ vec3 GetScatteringOfOrder(sampler3D single_rayleigh_texture, sampler3D single_mi
                              ray_r_mu_intersects_ground);
     return rayleigh * RayleighPhaseFunction(nu) + mie * MiePhaseFunction(atmosphere.mie_phase_g, nu);
   }
-  return GetScattering(multiple_scattering_texture, atmosphere.density_size, r, mu, mu_s, nu,
-                       ray_r_mu_intersects_ground);
+  return GetScatteringClampedNu(multiple_scattering_texture, atmosphere.density_size, r, mu, mu_s,
+                                nu, ray_r_mu_intersects_ground);
 }
 
 // Multiple scattering of order n (Bruneton 2008 eq. 12 integrated along the ray): the scattering
@@ -124,8 +148,8 @@ vec3 MultipleScatteringIntegrand(sampler2D transmittance_texture,
   float r_d = RadiusAtDistance(r, mu, d);
   float mu_d = MuAtDistance(r, mu, d, r_d);
   float mu_s_d = MuSAtDistance(r, mu_s, nu, d, r_d);
-  return GetScattering(scattering_density_texture, atmosphere.density_size, r_d, mu_d, mu_s_d, nu,
-                       ray_r_mu_intersects_ground) *
+  return GetScatteringClampedNu(scattering_density_texture, atmosphere.density_size, r_d, mu_d,
+                                mu_s_d, nu, ray_r_mu_intersects_ground) *
          GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
                                     ray_r_mu_intersects_ground);
 }

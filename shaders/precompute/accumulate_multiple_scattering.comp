@@ -25,7 +25,7 @@ void main() {
   bool ray_r_mu_intersects_ground;
   GetRMuMuSNuFromScatteringTexel(atmosphere.scattering_size, texel, r, mu, mu_s, nu,
                                  ray_r_mu_intersects_ground);
-  vec3 radiance = GetScattering(delta_multiple_scattering_texture, atmosphere.density_size, r, mu,
+  vec3 radiance = GetScatteringClampedNu(delta_multiple_scattering_texture, atmosphere.density_size, r, mu,
                                 mu_s, nu, ray_r_mu_intersects_ground);
   float nominal_nu = GetScatteringTexelNominalNu(atmosphere.scattering_size, texel);
   imageStore(rayleigh_accumulator, texel,

@@ -16,7 +16,9 @@ void AddPrecomputeCommand(CLI::App& app) {
     AtmosphereParameters atmosphere = options->LoadAtmosphere();
     PrecomputeOptions precompute = options->MakePrecomputeOptions();
     auto context = options->MakeContext();
-    LoadedTables loaded = LoadOrPrecompute(*context, atmosphere, precompute, options->MakeStoreOptions());
+    TableStoreOptions store = options->MakeStoreOptions();
+    store.require_cache_write = true;
+    LoadedTables loaded = LoadOrPrecompute(*context, atmosphere, precompute, store);
     std::printf("device: %s\ntables: %s (%s)\n", context->device_name().c_str(),
                 loaded.tables->options().Describe().c_str(), atmosphere.name.c_str());
     std::printf("table memory: %.2f MiB\n", double(loaded.tables->table_bytes()) / (1 << 20));

@@ -92,7 +92,7 @@ void RunProbe(const ProbeOptions& options) {
 
 void AddProbeCommand(CLI::App& app) {
   auto options = std::make_shared<ProbeOptions>();
-  CLI::App* command = app.add_subcommand("probe", "Print the sky for one camera and view ray as JSON");
+  CLI::App* command = app.add_subcommand("probe", "Print the sky seen by one camera along one ray, as JSON");
   options->tables.AddTo(*command);
   command->add_option("--altitude-m", options->view.altitude_m, "Camera altitude above the ground (m)")
       ->required();

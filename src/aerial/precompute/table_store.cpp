@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "aerial/core/atomic_file.h"
 #include "aerial/core/error.h"
 #include "aerial/core/progress.h"
 #include "aerial/precompute/precomputer.h"
@@ -47,10 +48,20 @@ LoadedTables LoadOrPrecompute(const vk::Context& context, const AtmosphereParame
       std::fprintf(stderr, "aerial: ignoring table cache (%s); recomputing\n", e.what());
     }
   }
+  bool write_cache = store.write_cache;
+  if (write_cache) {
+    try {
+      CheckWritable(loaded.cache_file);
+    } catch (const Error& e) {
+      if (store.require_cache_write) throw;
+      std::fprintf(stderr, "aerial: not caching the tables (%s)\n", e.what());
+      write_cache = false;
+    }
+  }
   Progress progress("precompute " + ToString(options.variant), PrecomputePassCount(options), stderr,
                     store.quiet);
   loaded.pass_times = Precompute(*loaded.tables, &progress);
-  if (store.write_cache) WriteTableCache(loaded.cache_file, loaded.tables->Download());
+  if (write_cache) WriteTableCache(loaded.cache_file, loaded.tables->Download());
   return loaded;
 }
 

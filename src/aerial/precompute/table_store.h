@@ -15,6 +15,9 @@ struct TableStoreOptions {
   std::filesystem::path cache_dir;  // empty: DefaultCacheDirectory()
   bool read_cache = true;           // false: always precompute (still writes the cache)
   bool write_cache = true;
+  // true: an unwritable cache is an error, reported before any work (aerial precompute --out);
+  // false: it is reported and the tables are used without being cached.
+  bool require_cache_write = false;
   bool quiet = false;               // no progress bar, no cache notes
 };
 
