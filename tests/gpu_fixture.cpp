@@ -23,8 +23,8 @@ const AtmosphereTables& Tables(const PrecomputeOptions& options) {
 }
 }  // namespace
 
-const AtmosphereTables& FullTables(int orders) {
-  PrecomputeOptions options;
+const AtmosphereTables& FullTables(int orders, LutVariant variant) {
+  PrecomputeOptions options = PrecomputeOptions::Default(variant);
   options.orders = orders;
   return Tables(options);
 }

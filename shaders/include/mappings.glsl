@@ -183,7 +183,8 @@ void GetRMuMuSNuFromScatteringTexel(ivec4 size, ivec3 texel, out float r, out fl
                    (float(texel.y) + 0.5) / float(size.y), (float(texel.z) + 0.5) / float(size.x));
   GetRMuMuSNuFromScatteringTextureUvwz(size, uvwz, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
   float spread = sqrt((1.0 - mu * mu) * (1.0 - mu_s * mu_s));
-  nu = clamp(nu, mu * mu_s - spread, mu * mu_s + spread);
+  // A 3D table has no nu: its texels stand for every azimuth; mu mu_s is the azimuthal mean.
+  nu = nu_size > 1 ? clamp(nu, mu * mu_s - spread, mu * mu_s + spread) : mu * mu_s;
 }
 
 #endif

@@ -7,6 +7,18 @@
 #include "phase.glsl"
 #include "transmittance.glsl"
 
+// The 3D tables (Elek 2009; Hillaire 2016) drop nu. Their one assumption: along a view ray the
+// sun keeps the zenith angle it has at the camera, as in a plane-parallel atmosphere, instead of
+// mu_s_d = (r mu_s + d nu) / r_d. Everything that depended on nu through the geometry then
+// depends on (r, mu, mu_s) only; what is lost is the sun setting along the ray, i.e. the Earth's
+// shadow cast on the atmosphere, and the sun's changing elevation over long (near-horizontal)
+// paths. Phase functions still use each ray's true nu.
+bool TablesDropNu() { return atmosphere.scattering_size.w == 1; }
+
+float SunCosineAlongRay(float r, float mu_s, float nu, float d, float r_d) {
+  return TablesDropNu() ? mu_s : MuSAtDistance(r, mu_s, nu, d, r_d);
+}
+
 // Integrand of single scattering at distance d along the ray: transmittance from the camera to the
 // point, times sunlight reaching the point, times the density of each species there.
 void ComputeSingleScatteringIntegrand(sampler2D transmittance_texture, vec3 origin, float r,
@@ -14,7 +26,7 @@ void ComputeSingleScatteringIntegrand(sampler2D transmittance_texture, vec3 orig
                                       bool ray_r_mu_intersects_ground, out vec3 rayleigh,
                                       out vec3 mie) {
   float r_d = RadiusAtDistance(r, mu, d);
-  float mu_s_d = MuSAtDistance(r, mu_s, nu, d, r_d);
+  float mu_s_d = SunCosineAlongRay(r, mu_s, nu, d, r_d);
   vec3 transmittance = GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
                                                   ray_r_mu_intersects_ground) *
                        GetTransmittanceToSun(transmittance_texture, r_d, mu_s_d);
@@ -147,7 +159,7 @@ vec3 MultipleScatteringIntegrand(sampler2D transmittance_texture,
                                  bool ray_r_mu_intersects_ground) {
   float r_d = RadiusAtDistance(r, mu, d);
   float mu_d = MuAtDistance(r, mu, d, r_d);
-  float mu_s_d = MuSAtDistance(r, mu_s, nu, d, r_d);
+  float mu_s_d = SunCosineAlongRay(r, mu_s, nu, d, r_d);
   return GetScatteringClampedNu(scattering_density_texture, atmosphere.density_size, r_d, mu_d,
                                 mu_s_d, nu, ray_r_mu_intersects_ground) *
          GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,

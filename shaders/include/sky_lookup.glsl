@@ -11,14 +11,32 @@ struct Inscatter {
   vec3 transmittance;  // over the same segment
 };
 
+// The Rayleigh inscatter without phase. In 4D the table already holds the multiple scattering
+// divided by P_R; in 3D its own table is added here divided by P_R of the query's nu, so that the
+// caller's product with P_R(nu) restores it exactly (it is then isotropic in azimuth, which is the
+// 3D approximation).
+vec3 GetRayleighScattering(sampler3D rayleigh_texture, sampler3D multiple_texture, float r,
+                           float mu, float mu_s, float nu, bool ray_r_mu_intersects_ground) {
+  vec3 rayleigh = GetScatteringExponentialInR(rayleigh_texture, atmosphere.scattering_size, r, mu,
+                                              mu_s, nu, ray_r_mu_intersects_ground);
+  if (TablesDropNu()) {
+    rayleigh += GetScatteringExponentialInR(multiple_texture, atmosphere.scattering_size, r, mu,
+                                            mu_s, nu, ray_r_mu_intersects_ground) /
+                RayleighPhaseFunction(nu);
+  }
+  return rayleigh;
+}
+
 // Inscatter along the whole view ray (r, mu), to the ground or the top of the atmosphere.
 Inscatter GetSkyInscatter(sampler2D transmittance_texture, sampler3D rayleigh_texture,
-                          sampler3D mie_texture, float r, float mu, float mu_s, float nu) {
+                          sampler3D mie_texture, sampler3D multiple_texture, float r, float mu,
+                          float mu_s, float nu) {
   bool ray_r_mu_intersects_ground = RayIntersectsGround(r, mu);
   Inscatter result;
-  result.rayleigh =
-      GetScatteringExponentialInR(rayleigh_texture, atmosphere.scattering_size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
-  result.mie = GetScatteringExponentialInR(mie_texture, atmosphere.scattering_size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+  result.rayleigh = GetRayleighScattering(rayleigh_texture, multiple_texture, r, mu, mu_s, nu,
+                                          ray_r_mu_intersects_ground);
+  result.mie = GetScatteringExponentialInR(mie_texture, atmosphere.scattering_size, r, mu, mu_s,
+                                           nu, ray_r_mu_intersects_ground);
   result.transmittance =
       ray_r_mu_intersects_ground
           ? GetTransmittance(transmittance_texture, r, mu,
@@ -31,8 +49,8 @@ Inscatter GetSkyInscatter(sampler2D transmittance_texture, sampler3D rayleigh_te
 // eq. 16). Both lookups use the camera ray's ground flag, so they read the same half of the table
 // even when rounding puts p on the other side of the horizon.
 Inscatter GetSkyInscatterToPoint(sampler2D transmittance_texture, sampler3D rayleigh_texture,
-                                 sampler3D mie_texture, float r, float mu, float mu_s, float nu,
-                                 float d) {
+                                 sampler3D mie_texture, sampler3D multiple_texture, float r,
+                                 float mu, float mu_s, float nu, float d) {
   bool ray_r_mu_intersects_ground = RayIntersectsGround(r, mu);
   d = min(d, DistanceToNearestAtmosphereBoundary(r, mu, ray_r_mu_intersects_ground));
   float r_p = RadiusAtDistance(r, mu, d);
@@ -42,13 +60,17 @@ Inscatter GetSkyInscatterToPoint(sampler2D transmittance_texture, sampler3D rayl
   result.transmittance =
       GetTransmittance(transmittance_texture, r, mu, d, ray_r_mu_intersects_ground);
   result.rayleigh =
-      max(GetScatteringExponentialInR(rayleigh_texture, atmosphere.scattering_size, r, mu, mu_s, nu, ray_r_mu_intersects_ground) -
-              result.transmittance * GetScatteringExponentialInR(rayleigh_texture, atmosphere.scattering_size, r_p, mu_p, mu_s_p, nu,
-                                                   ray_r_mu_intersects_ground),
+      max(GetRayleighScattering(rayleigh_texture, multiple_texture, r, mu, mu_s, nu,
+                                ray_r_mu_intersects_ground) -
+              result.transmittance * GetRayleighScattering(rayleigh_texture, multiple_texture, r_p,
+                                                           mu_p, mu_s_p, nu,
+                                                           ray_r_mu_intersects_ground),
           vec3(0.0));
-  result.mie = max(GetScatteringExponentialInR(mie_texture, atmosphere.scattering_size, r, mu, mu_s, nu, ray_r_mu_intersects_ground) -
-                       result.transmittance * GetScatteringExponentialInR(mie_texture, atmosphere.scattering_size, r_p, mu_p, mu_s_p, nu,
-                                                            ray_r_mu_intersects_ground),
+  result.mie = max(GetScatteringExponentialInR(mie_texture, atmosphere.scattering_size, r, mu, mu_s,
+                                               nu, ray_r_mu_intersects_ground) -
+                       result.transmittance *
+                           GetScatteringExponentialInR(mie_texture, atmosphere.scattering_size, r_p,
+                                                       mu_p, mu_s_p, nu, ray_r_mu_intersects_ground),
                    vec3(0.0));
   return result;
 }

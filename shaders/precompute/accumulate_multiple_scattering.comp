@@ -1,9 +1,11 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Pass 7 (orders >= 2): adds the order-n multiple scattering to the Rayleigh table, divided by the
-// Rayleigh phase so that render-time lookups multiply one phase back in (Bruneton 2017
+// Pass 7 (orders >= 2): adds the order-n multiple scattering to the final tables. 4D: to the
+// Rayleigh table, divided by the Rayleigh phase so that render-time lookups multiply one phase
+// back in (Bruneton 2017
 // "ComputeMultipleScatteringTexture": multiple scattering is nearly isotropic, and this keeps the
-// Rayleigh/Mie split without a third table). The order-n table is read at each texel's own
+// Rayleigh/Mie split without a third table). 3D: a table has no nu to divide by, so the orders are
+// summed in a table of their own (see sky_lookup.glsl). The order-n table is read at each texel's own
 // parameters, which also resamples it from the density resolution to the table resolution.
 //
 // The division uses the texel's nominal nu (its place on the nu axis), not the nu it was clamped
@@ -16,7 +18,8 @@
 #include "scattering.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 1) uniform sampler3D delta_multiple_scattering_texture;
-layout(set = 0, binding = 2, rgba32f) uniform image3D rayleigh_accumulator;
+// 4D: the Rayleigh table; 3D: the multiple scattering table.
+layout(set = 0, binding = 2, rgba32f) uniform image3D accumulator;
 
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
@@ -27,8 +30,13 @@ void main() {
                                  ray_r_mu_intersects_ground);
   vec3 radiance = GetScatteringClampedNu(delta_multiple_scattering_texture, atmosphere.density_size, r, mu,
                                 mu_s, nu, ray_r_mu_intersects_ground);
+  if (TablesDropNu()) {
+    // 3D: the table of multiple scattering takes the radiance as it is.
+    imageStore(accumulator, texel, imageLoad(accumulator, texel) + vec4(radiance, 0.0));
+    return;
+  }
   float nominal_nu = GetScatteringTexelNominalNu(atmosphere.scattering_size, texel);
-  imageStore(rayleigh_accumulator, texel,
-             imageLoad(rayleigh_accumulator, texel) +
+  imageStore(accumulator, texel,
+             imageLoad(accumulator, texel) +
                  vec4(radiance / RayleighPhaseFunction(nominal_nu), 0.0));
 }

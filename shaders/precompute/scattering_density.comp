@@ -18,35 +18,17 @@ layout(std430, set = 0, binding = 2) readonly buffer Directions { vec4 direction
 layout(set = 0, binding = 3) writeonly uniform image3D scattering_density_image;
 
 const int kMaxDirections = 1024;
+const int kMaxRings = 256;
 shared vec3 shared_radiance[kMaxDirections];
 shared vec4 shared_direction[kMaxDirections];
+// 3D tables: per zenith ring of the grid, rgb = sum of L dw over the full circle, a = its solid
+// angle (both halves: the radiance field is mirror-symmetric).
+shared vec4 shared_ring[kMaxRings];
 
-void main() {
-  ivec3 texel = ivec3(gl_GlobalInvocationID.y, gl_GlobalInvocationID.x, gl_GlobalInvocationID.z);
-  int direction_count = DensityDirectionCount();
-  int mu_s_size = atmosphere.density_size.z;
-  int mu_s_index = texel.x % mu_s_size;
-  int first = (texel.z * mu_s_size + mu_s_index) * direction_count;
-  for (int k = int(gl_LocalInvocationIndex); k < direction_count; k += 64) {
-    shared_radiance[k] = weighted_radiance[first + k].rgb;
-    shared_direction[k] = directions[texel.z * direction_count + k];
-  }
-  barrier();
-  if (!IsScatteringTexel(atmosphere.density_size, texel)) return;
-
-  float r, mu, mu_s, nu;
-  bool ray_r_mu_intersects_ground;
-  GetRMuMuSNuFromScatteringTexel(atmosphere.density_size, texel, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
-  // View direction in the sun frame (sun at azimuth 0), and its mirror image under y -> -y.
-  float sin_theta = sqrt(max(1.0 - mu * mu, 0.0));
-  float sin_theta_s = sqrt(max(1.0 - mu_s * mu_s, 0.0));
-  float cos_phi = sin_theta * sin_theta_s > 0.0
-                      ? clamp((nu - mu * mu_s) / (sin_theta * sin_theta_s), -1.0, 1.0)
-                      : 1.0;
-  vec3 omega = vec3(sin_theta * cos_phi, sin_theta * sqrt(max(1.0 - cos_phi * cos_phi, 0.0)), mu);
-  vec3 omega_mirror = vec3(omega.x, -omega.y, omega.z);
-
+// 4D: J for the view direction omega (sun frame), summing the grid and its mirror image.
+void ConvolveWithPhases(vec3 omega, int direction_count, out vec3 rayleigh, out vec3 mie) {
   float g = atmosphere.mie_phase_g;
+  vec3 omega_mirror = vec3(omega.x, -omega.y, omega.z);
   vec3 rayleigh_sum = vec3(0.0);
   vec3 mie_sum = vec3(0.0);
   float rayleigh_norm = 0.0;
@@ -62,11 +44,91 @@ void main() {
     rayleigh_norm += omega_i.w * rayleigh_phase;
     mie_norm += omega_i.w * mie_phase;
   }
+  rayleigh = rayleigh_sum / rayleigh_norm;
+  mie = mie_sum / mie_norm;
+}
+
+// 3D (Elek 2009): J averaged over the view azimuth around the zenith, since the table has no nu.
+// The average of P(omega . omega_i) over the azimuth of omega depends only on the two zenith
+// angles, so the grid collapses to its zenith rings and each ring needs one averaged phase,
+// P_bar(mu, mu_i) = 1/pi integral_0^pi P(mu mu_i + sin sin_i cos psi) dpsi (midpoint rule).
+void ConvolveWithAveragedPhases(float mu, int ring_count, out vec3 rayleigh, out vec3 mie) {
+  const int kAzimuths = 16;
+  float g = atmosphere.mie_phase_g;
+  float sin_theta = sqrt(max(1.0 - mu * mu, 0.0));
+  vec3 rayleigh_sum = vec3(0.0);
+  vec3 mie_sum = vec3(0.0);
+  float rayleigh_norm = 0.0;
+  float mie_norm = 0.0;
+  for (int m = 0; m < ring_count; ++m) {
+    float mu_i = shared_direction[m * atmosphere.density_directions.z].z;
+    float sin_theta_i = sqrt(max(1.0 - mu_i * mu_i, 0.0));
+    float rayleigh_phase = 0.0;
+    float mie_phase = 0.0;
+    for (int j = 0; j < kAzimuths; ++j) {
+      float c = mu * mu_i + sin_theta * sin_theta_i * cos((float(j) + 0.5) * PI / float(kAzimuths));
+      rayleigh_phase += RayleighPhaseFunction(c);
+      mie_phase += MiePhaseFunction(g, c);
+    }
+    rayleigh_sum += shared_ring[m].rgb * rayleigh_phase;
+    mie_sum += shared_ring[m].rgb * mie_phase;
+    rayleigh_norm += shared_ring[m].a * rayleigh_phase;
+    mie_norm += shared_ring[m].a * mie_phase;
+  }
+  rayleigh = rayleigh_sum / rayleigh_norm;
+  mie = mie_sum / mie_norm;
+}
+
+void main() {
+  ivec3 texel = ivec3(gl_GlobalInvocationID.y, gl_GlobalInvocationID.x, gl_GlobalInvocationID.z);
+  int direction_count = DensityDirectionCount();
+  int phi_count = atmosphere.density_directions.z;
+  int ring_count = direction_count / phi_count;
+  bool drop_nu = atmosphere.density_size.w == 1;
+  int mu_s_size = atmosphere.density_size.z;
+  int mu_s_index = texel.x % mu_s_size;
+  int first = (texel.z * mu_s_size + mu_s_index) * direction_count;
+  for (int k = int(gl_LocalInvocationIndex); k < direction_count; k += 64) {
+    shared_radiance[k] = weighted_radiance[first + k].rgb;
+    shared_direction[k] = directions[texel.z * direction_count + k];
+  }
+  barrier();
+  if (drop_nu) {
+    for (int m = int(gl_LocalInvocationIndex); m < ring_count; m += 64) {
+      vec4 ring = vec4(0.0);
+      for (int j = 0; j < phi_count; ++j) {
+        int k = m * phi_count + j;
+        ring += vec4(shared_radiance[k], shared_direction[k].w);
+      }
+      shared_ring[m] = 2.0 * ring;
+    }
+    barrier();
+  }
+  if (!IsScatteringTexel(atmosphere.density_size, texel)) return;
+
+  float r, mu, mu_s, nu;
+  bool ray_r_mu_intersects_ground;
+  GetRMuMuSNuFromScatteringTexel(atmosphere.density_size, texel, r, mu, mu_s, nu,
+                                 ray_r_mu_intersects_ground);
+  vec3 rayleigh;
+  vec3 mie;
+  if (drop_nu) {
+    ConvolveWithAveragedPhases(mu, ring_count, rayleigh, mie);
+  } else {
+    // View direction in the sun frame (sun at azimuth 0).
+    float sin_theta = sqrt(max(1.0 - mu * mu, 0.0));
+    float sin_theta_s = sqrt(max(1.0 - mu_s * mu_s, 0.0));
+    float cos_phi = sin_theta * sin_theta_s > 0.0
+                        ? clamp((nu - mu * mu_s) / (sin_theta * sin_theta_s), -1.0, 1.0)
+                        : 1.0;
+    vec3 omega =
+        vec3(sin_theta * cos_phi, sin_theta * sqrt(max(1.0 - cos_phi * cos_phi, 0.0)), mu);
+    ConvolveWithPhases(omega, direction_count, rayleigh, mie);
+  }
   float altitude = r - atmosphere.bottom_radius;
   vec3 density =
       atmosphere.rayleigh_scattering.rgb * GetProfileDensity(atmosphere.rayleigh_density, altitude) *
-          rayleigh_sum / rayleigh_norm +
-      atmosphere.mie_scattering.rgb * GetProfileDensity(atmosphere.mie_density, altitude) * mie_sum /
-          mie_norm;
+          rayleigh +
+      atmosphere.mie_scattering.rgb * GetProfileDensity(atmosphere.mie_density, altitude) * mie;
   imageStore(scattering_density_image, texel, vec4(density, 0.0));
 }

@@ -31,11 +31,8 @@ struct BenchOptions {
 
   aerial::PrecomputeOptions MakePrecomputeOptions() const {
     aerial::LutVariant variant = aerial::ParseLutVariant(lut, "--lut");
-    aerial::PrecomputeOptions options =
-        small ? aerial::PrecomputeOptions::Small(variant) : aerial::PrecomputeOptions{};
-    options.variant = variant;
-    // The 3D variant drops nu from the scattering table and from the density grid alike.
-    if (variant == aerial::LutVariant::k3D) options.resolution.scattering_nu = options.samples.density_nu = 1;
+    aerial::PrecomputeOptions options = small ? aerial::PrecomputeOptions::Small(variant)
+                                              : aerial::PrecomputeOptions::Default(variant);
     options.orders = orders;
     options.precision = half ? aerial::TablePrecision::kFloat16 : aerial::TablePrecision::kFloat32;
     options.Validate();

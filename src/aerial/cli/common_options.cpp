@@ -25,12 +25,8 @@ AtmosphereParameters TableOptions::LoadAtmosphere() const {
 
 PrecomputeOptions TableOptions::MakePrecomputeOptions() const {
   LutVariant variant = ParseLutVariant(lut, "--lut");
-  PrecomputeOptions options = small_tables ? PrecomputeOptions::Small(variant) : PrecomputeOptions{};
-  options.variant = variant;
-  if (variant == LutVariant::k3D) {
-    options.resolution.scattering_nu = 1;
-    options.samples.density_nu = 1;
-  }
+  PrecomputeOptions options =
+      small_tables ? PrecomputeOptions::Small(variant) : PrecomputeOptions::Default(variant);
   options.orders = orders;
   options.precision = half_precision ? TablePrecision::kFloat16 : TablePrecision::kFloat32;
   options.Validate();

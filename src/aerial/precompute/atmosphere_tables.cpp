@@ -40,17 +40,23 @@ AtmosphereTables::AtmosphereTables(const vk::Context& context,
       rayleigh_(context, {.extent = ScatteringExtent(options.resolution),
                           .format = ScatteringFormat(options.precision)}),
       mie_(context, {.extent = ScatteringExtent(options.resolution),
-                     .format = ScatteringFormat(options.precision)}) {
+                     .format = ScatteringFormat(options.precision)}),
+      multiple_(context, {.extent = options.variant == LutVariant::k3D
+                                        ? ScatteringExtent(options.resolution)
+                                        : ::vk::Extent3D{1, 1, 1},
+                          .format = ScatteringFormat(options.precision)}) {
   uniform_buffer_.Write(std::as_bytes(std::span(&uniforms_, 1)));
   context_.Submit([&](const auto& cmd) {
-    for (const vk::Image* image : {&transmittance_, &irradiance_, &rayleigh_, &mie_})
+    for (const vk::Image* image : {&transmittance_, &irradiance_, &rayleigh_, &mie_, &multiple_}) {
       image->InitializeLayout(cmd);
+    }
+    multiple_.Clear(cmd);  // stays zero in 4D
   });
 }
 
 size_t AtmosphereTables::table_bytes() const {
   return transmittance_.byte_size() + irradiance_.byte_size() + rayleigh_.byte_size() +
-         mie_.byte_size();
+         mie_.byte_size() + (options_.variant == LutVariant::k3D ? multiple_.byte_size() : 0);
 }
 
 TableCacheKey AtmosphereTables::cache_key() const {
@@ -78,7 +84,8 @@ TableCache AtmosphereTables::Download() const {
   cache.description = atmosphere_.name + ": " + options_.Describe();
   for (NamedImage table : {NamedImage{"transmittance", &transmittance_},
                            NamedImage{"irradiance", &irradiance_}, NamedImage{"rayleigh", &rayleigh_},
-                           NamedImage{"mie", &mie_}}) {
+                           NamedImage{"mie", &mie_},
+                           NamedImage{"multiple", &multiple_}}) {
     vk::Buffer staging(context_, {.size = table.image->byte_size(),
                                   .usage = ::vk::BufferUsageFlagBits::eTransferDst,
                                   .host_visible = true});
@@ -98,7 +105,8 @@ TableCache AtmosphereTables::Download() const {
 void AtmosphereTables::Upload(const TableCache& cache) {
   for (NamedImage table : {NamedImage{"transmittance", &transmittance_},
                            NamedImage{"irradiance", &irradiance_}, NamedImage{"rayleigh", &rayleigh_},
-                           NamedImage{"mie", &mie_}}) {
+                           NamedImage{"mie", &mie_},
+                           NamedImage{"multiple", &multiple_}}) {
     const CachedTable* cached = nullptr;
     for (const auto& t : cache.tables)
       if (t.name == table.name) cached = &t;

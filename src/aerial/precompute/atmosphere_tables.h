@@ -1,8 +1,10 @@
 #pragma once
 // The precomputed tables on the GPU, for either variant, behind one interface: transmittance
-// T(r, mu), ground irradiance E(r, mu_s), and Rayleigh (single + multiple / P_R) and Mie (single)
-// scattering without phase, 4D packed in 3D (x = nu * MU_S + mu_s) or 3D (nu dropped). Shaders
-// read them through shaders/include/sky_lookup.glsl whatever the variant.
+// T(r, mu), ground irradiance E(r, mu_s), and Rayleigh and Mie scattering without phase, 4D packed
+// in 3D (x = nu * MU_S + mu_s) or 3D (nu dropped). Multiple scattering is folded into the Rayleigh
+// table as S_n / P_R(nu) in 4D; a 3D table has no nu to divide by, so there it has a table of its
+// own ("multiple", 1x1x1 and unused in 4D) that lookups add as S_n / P_R(nu) of the query.
+// Shaders read them through shaders/include/sky_lookup.glsl whatever the variant.
 #include <memory>
 
 #include "aerial/atmosphere/parameters.h"
@@ -30,6 +32,7 @@ class AtmosphereTables {
   const vk::Image& irradiance() const { return irradiance_; }
   const vk::Image& rayleigh() const { return rayleigh_; }
   const vk::Image& mie() const { return mie_; }
+  const vk::Image& multiple() const { return multiple_; }
 
   // GPU memory of the four tables, in bytes.
   size_t table_bytes() const;
@@ -50,6 +53,7 @@ class AtmosphereTables {
   vk::Image irradiance_;
   vk::Image rayleigh_;
   vk::Image mie_;
+  vk::Image multiple_;
 };
 
 }  // namespace aerial

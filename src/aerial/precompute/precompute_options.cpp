@@ -14,6 +14,16 @@ LutVariant ParseLutVariant(const std::string& text, const std::string& field) {
   throw Error(field, text, "4d or 3d");
 }
 
+PrecomputeOptions PrecomputeOptions::Default(LutVariant variant) {
+  PrecomputeOptions options;
+  options.variant = variant;
+  if (variant == LutVariant::k3D) {
+    options.resolution.scattering_nu = 1;
+    options.samples.density_nu = 1;
+  }
+  return options;
+}
+
 PrecomputeOptions PrecomputeOptions::Small(LutVariant variant) {
   PrecomputeOptions options;
   options.variant = variant;

@@ -52,6 +52,8 @@ struct PrecomputeOptions {
   TableResolution resolution;
   SampleCounts samples;
 
+  // The default tables of a variant (the 3D variant has one nu slice in every table).
+  static PrecomputeOptions Default(LutVariant variant = LutVariant::k4D);
   // Small tables for quick tests; same shape, roughly 1/16 of the texels.
   static PrecomputeOptions Small(LutVariant variant = LutVariant::k4D);
 

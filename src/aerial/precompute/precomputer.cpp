@@ -49,6 +49,7 @@ struct Scratch {
     if (tables.rayleigh().format() != ::vk::Format::eR32G32B32A32Sfloat) {
       rayleigh_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.rayleigh().extent()});
       mie_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.mie().extent()});
+      multiple_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.multiple().extent()});
     }
   }
   static ::vk::Extent3D DensityExtent(const AtmosphereTables& t) {
@@ -69,7 +70,7 @@ struct Scratch {
 
   vk::Image delta_irradiance, delta_rayleigh, delta_multiple, density;
   vk::Buffer incident_radiance, directions;
-  std::optional<vk::Image> rayleigh_f32, mie_f32;
+  std::optional<vk::Image> rayleigh_f32, mie_f32, multiple_f32;
 };
 
 ::vk::Extent3D Extent2D(const vk::Image& image) { return image.extent(); }
@@ -103,6 +104,10 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   std::vector<vk::PassTime> times;
   const vk::Image& rayleigh = scratch.rayleigh_f32 ? *scratch.rayleigh_f32 : tables.rayleigh();
   const vk::Image& mie = scratch.mie_f32 ? *scratch.mie_f32 : tables.mie();
+  const vk::Image& multiple = scratch.multiple_f32 ? *scratch.multiple_f32 : tables.multiple();
+  // 4D folds each order into the Rayleigh table; 3D keeps them in their own table.
+  const vk::Image& multiple_accumulator =
+      tables.options().variant == LutVariant::k4D ? rayleigh : multiple;
   const vk::Buffer& uniforms = tables.uniform_buffer();
   ::vk::Sampler sampler = tables.sampler();
   auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
@@ -130,6 +135,8 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
     if (scratch.rayleigh_f32) {
       scratch.rayleigh_f32->InitializeLayout(cmd);
       scratch.mie_f32->InitializeLayout(cmd);
+      scratch.multiple_f32->InitializeLayout(cmd);
+      scratch.multiple_f32->Clear(cmd);
     }
     // The irradiance table accumulates indirect orders only; it starts at zero.
     tables.irradiance().Clear(cmd);
@@ -194,7 +201,7 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
     });
     run("accumulate" + suffix, [&](const auto& cmd) {
       pipelines.accumulate.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, sampled(scratch.delta_multiple),
-                                          vk::StorageImageSlot{&rayleigh}},
+                                          vk::StorageImageSlot{&multiple_accumulator}},
                                     scattering_threads, {8, 8, 1});
     });
   }
@@ -202,6 +209,7 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
     context.Submit([&](const auto& cmd) {
       BlitConvert(cmd, *scratch.rayleigh_f32, tables.rayleigh());
       BlitConvert(cmd, *scratch.mie_f32, tables.mie());
+      BlitConvert(cmd, *scratch.multiple_f32, tables.multiple());
       vk::FullBarrier(cmd);
     });
   }
