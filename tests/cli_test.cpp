@@ -60,6 +60,8 @@ struct BadInput {
   std::string must_mention;
 };
 
+void PrintTo(const BadInput& input, std::ostream* out) { *out << input.arguments; }
+
 class CliRejects : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(CliRejects, WithMessageAndNonZeroExit) {

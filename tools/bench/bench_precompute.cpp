@@ -1,12 +1,14 @@
 // aerial_bench_precompute: GPU time of each precompute pass, as medians over several runs in one
 // process. The first Precompute of a process also pays lavapipe's JIT compilation of every
 // pipeline (tens to hundreds of ms per pass), so warm-up runs come first and the first of them is
-// reported apart as the cold time.
+// reported apart as the cold time. --lut both (the default) measures the 4D and 3D variants in
+// one process, their runs interleaved so that both see the same machine noise, and compares them.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <thread>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -16,6 +18,7 @@
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/precompute/precomputer.h"
 #include "aerial/vk/context.h"
+#include "comparison.h"
 #include "report.h"
 
 namespace {
@@ -25,12 +28,16 @@ struct BenchOptions {
   int warmup = 1;
   int orders = 4;
   bool half = false;
-  std::string lut = "4d";
+  std::string lut = "both";
   bool small = false;
   std::string json_file;
 
-  aerial::PrecomputeOptions MakePrecomputeOptions() const {
-    aerial::LutVariant variant = aerial::ParseLutVariant(lut, "--lut");
+  std::vector<std::string> Variants() const {
+    return lut == "both" ? std::vector<std::string>{"4d", "3d"} : std::vector<std::string>{lut};
+  }
+
+  aerial::PrecomputeOptions MakePrecomputeOptions(const std::string& lut_name) const {
+    aerial::LutVariant variant = aerial::ParseLutVariant(lut_name, "--lut");
     aerial::PrecomputeOptions options = small ? aerial::PrecomputeOptions::Small(variant)
                                               : aerial::PrecomputeOptions::Default(variant);
     options.orders = orders;
@@ -53,29 +60,48 @@ aerial::bench::RunResult RunOnce(const aerial::vk::Context& context, const aeria
 }
 
 void Bench(const BenchOptions& cli) {
-  aerial::bench::BenchResult result{.options = cli.MakePrecomputeOptions(), .warmup = cli.warmup};
+  // One result per variant, all with the same settings; their runs are interleaved below.
+  std::vector<aerial::bench::BenchResult> results;
+  for (const std::string& lut : cli.Variants())
+    results.push_back({.options = cli.MakePrecomputeOptions(lut), .warmup = cli.warmup});
   // Fail on an unwritable --json path now rather than after minutes of precomputation.
   if (!cli.json_file.empty()) aerial::CheckWritable(cli.json_file);
-  // lavapipe runs one worker per core unless LP_NUM_THREADS says otherwise; 1 thread is ~2x slower.
-  if (const char* lp = std::getenv("LP_NUM_THREADS")) {
-    result.threads = std::atoi(lp);
-    result.threads_source = "LP_NUM_THREADS";
-  } else {
-    result.threads = int(std::thread::hardware_concurrency());
-    result.threads_source = "hardware_concurrency; LP_NUM_THREADS unset";
-  }
   aerial::vk::Context context(aerial::vk::ContextCreateInfo{.device_name = "", .validation = false});
-  result.device = context.device_name();
-  for (int i = 0; i < cli.warmup + cli.runs; ++i) {
-    aerial::bench::RunResult run = RunOnce(context, result.options, &result.table_bytes);
-    bool warming = i < cli.warmup;
-    std::fprintf(stderr, "%s %d: %.1f ms GPU, %.1f ms wall\n", warming ? "warm-up" : "run",
-                 warming ? i + 1 : i - cli.warmup + 1, run.GpuMs(), run.wall_ms);
-    if (i == 0 && warming) result.cold = std::move(run);
-    else if (!warming) result.runs.push_back(std::move(run));
+  for (auto& result : results) {
+    // lavapipe runs one worker per core unless LP_NUM_THREADS says otherwise; 1 thread is ~2x slower.
+    if (const char* lp = std::getenv("LP_NUM_THREADS")) {
+      result.threads = std::atoi(lp);
+      result.threads_source = "LP_NUM_THREADS";
+    } else {
+      result.threads = int(std::thread::hardware_concurrency());
+      result.threads_source = "hardware_concurrency; LP_NUM_THREADS unset";
+    }
+    result.device = context.device_name();
   }
-  aerial::bench::PrintReport(result, stdout);
-  if (!cli.json_file.empty()) aerial::WriteFileAtomically(cli.json_file, aerial::bench::ReportJson(result));
+  for (int i = 0; i < cli.warmup + cli.runs; ++i) {
+    bool warming = i < cli.warmup;
+    for (auto& result : results) {
+      aerial::bench::RunResult run = RunOnce(context, result.options, &result.table_bytes);
+      std::fprintf(stderr, "%s %d (%s): %.1f ms GPU, %.1f ms wall\n", warming ? "warm-up" : "run",
+                   warming ? i + 1 : i - cli.warmup + 1, aerial::ToString(result.options.variant).c_str(),
+                   run.GpuMs(), run.wall_ms);
+      if (i == 0 && warming) result.cold = std::move(run);
+      else if (!warming) result.runs.push_back(std::move(run));
+    }
+  }
+  if (results.size() == 1) {
+    aerial::bench::PrintReport(results[0], stdout);
+    if (!cli.json_file.empty()) aerial::WriteFileAtomically(cli.json_file, aerial::bench::ReportJson(results[0]));
+    return;
+  }
+  for (const auto& result : results) {
+    std::printf("=== %s tables ===\n", aerial::ToString(result.options.variant).c_str());
+    aerial::bench::PrintReport(result, stdout);
+    std::printf("\n");
+  }
+  aerial::bench::PrintComparison(results[0], results[1], stdout);
+  if (!cli.json_file.empty())
+    aerial::WriteFileAtomically(cli.json_file, aerial::bench::ComparisonJson(results[0], results[1]));
 }
 
 }  // namespace
@@ -88,7 +114,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 100));
   app.add_option("--orders", cli.orders, "Scattering orders to precompute")->check(CLI::Range(1, 16));
   app.add_flag("--half", cli.half, "Store the scattering tables as 16-bit floats");
-  app.add_option("--lut", cli.lut, "Scattering table variant: 4d or 3d")->check(CLI::IsMember({"4d", "3d"}));
+  app.add_option("--lut", cli.lut, "Scattering table variant: 4d, 3d, or both (interleaved runs, compared)")
+      ->check(CLI::IsMember({"both", "4d", "3d"}));
   app.add_flag("--small", cli.small, "Small tables (about 1/16 of the texels), for a quick check");
   app.add_option("--json", cli.json_file, "Also write the results as JSON to this file");
   try {

@@ -11,6 +11,18 @@ double RunResult::GpuMs() const {
   return total;
 }
 
+std::vector<double> GpuTotals(const std::vector<RunResult>& runs) {
+  std::vector<double> values;
+  for (const auto& run : runs) values.push_back(run.GpuMs());
+  return values;
+}
+
+std::vector<double> WallTotals(const std::vector<RunResult>& runs) {
+  std::vector<double> values;
+  for (const auto& run : runs) values.push_back(run.wall_ms);
+  return values;
+}
+
 Stats Summarize(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   size_t n = values.size();

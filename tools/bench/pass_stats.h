@@ -18,6 +18,10 @@ struct RunResult {
   double GpuMs() const;
 };
 
+// One value per run: the summed GPU time of its passes, or its wall-clock time.
+std::vector<double> GpuTotals(const std::vector<RunResult>& runs);
+std::vector<double> WallTotals(const std::vector<RunResult>& runs);
+
 struct Stats {
   double median = 0.0, min = 0.0, max = 0.0;
 };

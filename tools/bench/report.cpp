@@ -1,19 +1,9 @@
 #include "report.h"
 
-#include <nlohmann/json.hpp>
-
 #include "bruneton_2017.h"
 
 namespace aerial::bench {
 namespace {
-
-std::vector<double> Totals(const std::vector<RunResult>& runs, double (*of)(const RunResult&)) {
-  std::vector<double> values;
-  for (const auto& run : runs) values.push_back(of(run));
-  return values;
-}
-double GpuOf(const RunResult& run) { return run.GpuMs(); }
-double WallOf(const RunResult& run) { return run.wall_ms; }
 
 std::string Identity(const std::string& pass) { return pass; }
 // Passes that run once (transmittance, single scattering...) already have their row above.
@@ -48,7 +38,7 @@ std::optional<Speedup> CompareWithBruneton2017(const BenchResult& result) {
   // the same tables as Bruneton's measurement (4D, float32, 4 orders, the field's sizes).
   if (result.options.Describe() != PrecomputeOptions{}.Describe()) return std::nullopt;
   Speedup speedup{.total = kBruneton2017TotalSeconds * 1000.0 /
-                           Summarize(Totals(result.runs, GpuOf)).median};
+                           Summarize(GpuTotals(result.runs)).median};
   std::vector<Series> ours = GroupPasses(result.runs, Bruneton2017Step);
   for (const auto& step : kBruneton2017Steps)
     for (const auto& s : ours)
@@ -70,8 +60,8 @@ void PrintReport(const BenchResult& r, std::FILE* out) {
   std::fprintf(out, "\n  %-40s %10s %10s %10s\n", "GPU time per pass", "median ms", "min ms", "max ms");
   for (const auto& s : GroupPasses(r.runs, Identity)) PrintRow(out, s.name, Summarize(s.ms));
   for (const auto& s : GroupPasses(r.runs, KindAllOrders)) PrintRow(out, s.name, Summarize(s.ms));
-  PrintRow(out, "total GPU", Summarize(Totals(r.runs, GpuOf)));
-  PrintRow(out, "wall (Precompute call)", Summarize(Totals(r.runs, WallOf)));
+  PrintRow(out, "total GPU", Summarize(GpuTotals(r.runs)));
+  PrintRow(out, "wall (Precompute call)", Summarize(WallTotals(r.runs)));
 
   std::fprintf(out, "\nBruneton 2017 (OpenGL on llvmpipe, shared/design.md): %.1f s total;", kBruneton2017TotalSeconds);
   for (const auto& step : kBruneton2017Steps)
@@ -91,7 +81,7 @@ void PrintReport(const BenchResult& r, std::FILE* out) {
                     "accumulate; direct irradiance counts in the total only)\n");
 }
 
-std::string ReportJson(const BenchResult& r) {
+nlohmann::json ReportDoc(const BenchResult& r) {
   nlohmann::json doc = {
       {"device", r.device},
       {"tables", r.options.Describe()},
@@ -101,8 +91,8 @@ std::string ReportJson(const BenchResult& r) {
       {"runs", r.runs.size()},
       {"passes", SeriesJson(GroupPasses(r.runs, Identity))},
       {"kinds", SeriesJson(GroupPasses(r.runs, PassKind))},
-      {"total_gpu", StatsJson(Summarize(Totals(r.runs, GpuOf)))},
-      {"wall", StatsJson(Summarize(Totals(r.runs, WallOf)))},
+      {"total_gpu", StatsJson(Summarize(GpuTotals(r.runs)))},
+      {"wall", StatsJson(Summarize(WallTotals(r.runs)))},
   };
   doc["cold"] = r.cold ? nlohmann::json{{"gpu_ms", r.cold->GpuMs()}, {"wall_ms", r.cold->wall_ms}}
                        : nlohmann::json(nullptr);
@@ -112,7 +102,9 @@ std::string ReportJson(const BenchResult& r) {
     for (const auto& [name, ratio] : speedup->steps) steps[name] = ratio;
     doc["speedup_vs_bruneton_2017"] = {{"total", speedup->total}, {"steps", steps}};
   }
-  return doc.dump(2) + "\n";
+  return doc;
 }
+
+std::string ReportJson(const BenchResult& r) { return ReportDoc(r).dump(2) + "\n"; }
 
 }  // namespace aerial::bench

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "aerial/precompute/precompute_options.h"
 #include "pass_stats.h"
 
@@ -31,6 +33,7 @@ struct Speedup {
 std::optional<Speedup> CompareWithBruneton2017(const BenchResult& result);
 
 void PrintReport(const BenchResult& result, std::FILE* out);
-std::string ReportJson(const BenchResult& result);
+nlohmann::json ReportDoc(const BenchResult& result);
+std::string ReportJson(const BenchResult& result);  // ReportDoc, indented
 
 }  // namespace aerial::bench

@@ -44,6 +44,7 @@ AtmosphereTables::AtmosphereTables(const vk::Context& context,
       multiple_(context, {.extent = options.variant == LutVariant::k3D
                                         ? ScatteringExtent(options.resolution)
                                         : ::vk::Extent3D{1, 1, 1},
+                          .volume = true,
                           .format = ScatteringFormat(options.precision)}) {
   uniform_buffer_.Write(std::as_bytes(std::span(&uniforms_, 1)));
   context_.Submit([&](const auto& cmd) {

@@ -49,7 +49,7 @@ struct Scratch {
     if (tables.rayleigh().format() != ::vk::Format::eR32G32B32A32Sfloat) {
       rayleigh_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.rayleigh().extent()});
       mie_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.mie().extent()});
-      multiple_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.multiple().extent()});
+      multiple_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.multiple().extent(), .volume = true});
     }
   }
   static ::vk::Extent3D DensityExtent(const AtmosphereTables& t) {

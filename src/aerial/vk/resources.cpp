@@ -42,8 +42,9 @@ void Buffer::Write(std::span<const std::byte> bytes, ::vk::DeviceSize offset) {
 
 Image::Image(const Context& context, const ImageCreateInfo& info)
     : image_(context.device(),
-             ::vk::ImageCreateInfo{.imageType = info.extent.depth > 1 ? ::vk::ImageType::e3D
-                                                                      : ::vk::ImageType::e2D,
+             ::vk::ImageCreateInfo{.imageType = info.extent.depth > 1 || info.volume
+                                                    ? ::vk::ImageType::e3D
+                                                    : ::vk::ImageType::e2D,
                                    .format = info.format,
                                    .extent = info.extent,
                                    .mipLevels = 1,
@@ -53,7 +54,8 @@ Image::Image(const Context& context, const ImageCreateInfo& info)
                                    .usage = info.usage,
                                    .initialLayout = ::vk::ImageLayout::eUndefined}),
       extent_(info.extent),
-      format_(info.format) {
+      format_(info.format),
+      volume_(info.extent.depth > 1 || info.volume) {
   memory_ = Allocate(context, image_.getMemoryRequirements(),
                      ::vk::MemoryPropertyFlagBits::eDeviceLocal);
   image_.bindMemory(*memory_, 0);

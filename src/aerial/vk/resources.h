@@ -30,7 +30,8 @@ class Buffer {
 };
 
 struct ImageCreateInfo {
-  ::vk::Extent3D extent;  // depth 1: a 2D image
+  ::vk::Extent3D extent;  // depth 1: a 2D image, unless volume is set
+  bool volume = false;    // a 3D image even with depth 1 (a placeholder for a 3D table)
   ::vk::Format format = ::vk::Format::eR32G32B32A32Sfloat;
   ::vk::ImageUsageFlags usage = ::vk::ImageUsageFlagBits::eStorage |
                                 ::vk::ImageUsageFlagBits::eSampled |
@@ -47,7 +48,7 @@ class Image {
   ::vk::ImageView view() const { return *view_; }
   ::vk::Extent3D extent() const { return extent_; }
   ::vk::Format format() const { return format_; }
-  bool is_3d() const { return extent_.depth > 1; }
+  bool is_3d() const { return volume_; }
   size_t texel_bytes() const;
   size_t byte_size() const;
 
@@ -63,6 +64,7 @@ class Image {
   ::vk::raii::ImageView view_{nullptr};
   ::vk::Extent3D extent_;
   ::vk::Format format_;
+  bool volume_;
 };
 
 // Linear filtering with clamp-to-edge: the table mappings put every lookup on texel centers.

@@ -1,0 +1,29 @@
+#pragma once
+// The 4D and 3D table variants measured in one process, their runs interleaved (run i: 4D then
+// 3D) so that both see the same machine noise: time and memory of each, and the 3D/4D ratios.
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "report.h"
+
+namespace aerial::bench {
+
+// The kind a pass is compared by: "incident radiance" and "scattering density" count together
+// as "density", and "accumulate" with "multiple scattering", the order ignored.
+std::string ComparisonKind(const std::string& pass);
+
+// Ratios 3D / 4D of medians over the runs (< 1: the 3D variant is cheaper).
+struct VariantRatios {
+  double gpu = 0.0, wall = 0.0, memory = 0.0;
+  std::vector<std::pair<std::string, double>> kinds;  // by ComparisonKind, in pass order
+};
+VariantRatios CompareVariants(const BenchResult& lut4d, const BenchResult& lut3d);
+
+void PrintComparison(const BenchResult& lut4d, const BenchResult& lut3d, std::FILE* out);
+// Both variants: "variants" lists one entry each (its ReportDoc plus "variant", "precompute_ms",
+// "wall_ms" and "pass_median_ms"), "ratios" holds CompareVariants.
+std::string ComparisonJson(const BenchResult& lut4d, const BenchResult& lut3d);
+
+}  // namespace aerial::bench
