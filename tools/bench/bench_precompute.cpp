@@ -95,9 +95,9 @@ void Bench(const BenchOptions& cli) {
     return;
   }
   for (const auto& result : results) {
-    std::printf("=== %s tables ===\n", aerial::ToString(result.options.variant).c_str());
+    std::printf("%s=== %s tables ===\n", &result == &results[0] ? "" : "\n",
+                aerial::ToString(result.options.variant).c_str());
     aerial::bench::PrintReport(result, stdout);
-    std::printf("\n");
   }
   aerial::bench::PrintComparison(results[0], results[1], stdout);
   if (!cli.json_file.empty())

@@ -1,5 +1,7 @@
 #include "aerial/cli/common_options.h"
 
+#include <algorithm>
+
 #include "aerial/atmosphere/config.h"
 
 namespace aerial::cli {
@@ -12,6 +14,13 @@ void TableOptions::AddTo(CLI::App& command) {
   command.add_option("--orders", orders, "Scattering orders to precompute (1-16)")->check(CLI::Range(1, 16));
   command.add_flag("--half", half_precision, "Store the scattering tables as 16-bit floats");
   command.add_flag("--small-tables", small_tables, "Quarter-resolution tables (tests, quick looks)");
+  command.add_option("--transmittance-size", transmittance_size, "Transmittance table MU,R (default 256,64)")
+      ->delimiter(',')->expected(2);
+  command.add_option("--irradiance-size", irradiance_size, "Irradiance table MU_S,R (default 64,16)")
+      ->delimiter(',')->expected(2);
+  command.add_option("--scattering-size", scattering_size,
+                     "Scattering table R,MU,MU_S,NU (default 32,128,32,8; NU must be 1 with --lut 3d)")
+      ->delimiter(',')->expected(4);
   command.add_option("--cache-dir", cache_dir, "Table cache directory (default ~/.cache/aerial)");
   command.add_flag("--no-cache", no_cache, "Recompute the tables even when a cached copy exists");
   command.add_option("--device", device, "Vulkan device to use: part of its name (or AERIAL_DEVICE)");
@@ -27,6 +36,26 @@ PrecomputeOptions TableOptions::MakePrecomputeOptions() const {
   LutVariant variant = ParseLutVariant(lut, "--lut");
   PrecomputeOptions options =
       small_tables ? PrecomputeOptions::Small(variant) : PrecomputeOptions::Default(variant);
+  if (!transmittance_size.empty()) {
+    options.resolution.transmittance_mu = transmittance_size[0];
+    options.resolution.transmittance_r = transmittance_size[1];
+  }
+  if (!irradiance_size.empty()) {
+    options.resolution.irradiance_mu_s = irradiance_size[0];
+    options.resolution.irradiance_r = irradiance_size[1];
+  }
+  if (!scattering_size.empty()) {
+    TableResolution& r = options.resolution;
+    r.scattering_r = scattering_size[0];
+    r.scattering_mu = scattering_size[1];
+    r.scattering_mu_s = scattering_size[2];
+    r.scattering_nu = scattering_size[3];
+    // The per-order tables follow: same r, mu_s and nu, half the mu (precompute_options.h).
+    options.samples.density_r = r.scattering_r;
+    options.samples.density_mu = std::max(4, (r.scattering_mu / 4) * 2);
+    options.samples.density_mu_s = r.scattering_mu_s;
+    options.samples.density_nu = r.scattering_nu;
+  }
   options.orders = orders;
   options.precision = half_precision ? TablePrecision::kFloat16 : TablePrecision::kFloat32;
   options.Validate();

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -19,6 +20,9 @@ struct TableOptions {
   int orders = 4;
   bool half_precision = false;
   bool small_tables = false;
+  std::vector<int> transmittance_size;  // mu, r
+  std::vector<int> irradiance_size;     // mu_s, r
+  std::vector<int> scattering_size;     // r, mu, mu_s, nu
   std::filesystem::path cache_dir;
   bool no_cache = false;
   std::string device;
