@@ -56,9 +56,13 @@ void GetRMuFromTransmittanceTextureUv(vec2 uv, out float r, out float mu) {
   mu = ClampCosine(mu);
 }
 
-// ---- Irradiance table: linear in r and mu_s. ----
+// ---- Irradiance table: linear in mu_s, rho/H in r. ----
+// Bruneton 2017 maps r linearly; the sky irradiance changes fastest near the ground (Mie's 1.2 km
+// scale height), where a linear axis of 16 texels puts 4 km between the first two: interpolated at
+// 1 km the red irradiance was 7% high. rho = sqrt(r^2 - R^2), as on the scattering tables, puts
+// texels at 0, 0.27, 1.1, 2.4 km... for the same cost.
 vec2 GetIrradianceTextureUvFromRMuS(float r, float mu_s) {
-  float x_r = (r - atmosphere.bottom_radius) / (atmosphere.top_radius - atmosphere.bottom_radius);
+  float x_r = sqrt(SquaredHorizonDistance(r)) / HorizonDistanceFromGround();
   float x_mu_s = mu_s * 0.5 + 0.5;
   return vec2(GetTextureCoordFromUnitRange(x_mu_s, atmosphere.irradiance_size.x),
               GetTextureCoordFromUnitRange(x_r, atmosphere.irradiance_size.y));
@@ -67,7 +71,8 @@ vec2 GetIrradianceTextureUvFromRMuS(float r, float mu_s) {
 void GetRMuSFromIrradianceTextureUv(vec2 uv, out float r, out float mu_s) {
   float x_mu_s = GetUnitRangeFromTextureCoord(uv.x, atmosphere.irradiance_size.x);
   float x_r = GetUnitRangeFromTextureCoord(uv.y, atmosphere.irradiance_size.y);
-  r = atmosphere.bottom_radius + x_r * (atmosphere.top_radius - atmosphere.bottom_radius);
+  float rho = x_r * HorizonDistanceFromGround();
+  r = sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
   mu_s = ClampCosine(2.0 * x_mu_s - 1.0);
 }
 

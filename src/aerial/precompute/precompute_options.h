@@ -32,7 +32,7 @@ struct SampleCounts {
   // integrated exponentially: 32 steps change the 4-order sky by < 0.1% against 200.
   int multiple_scattering_steps = 32;
   int irradiance_zenith = 32;
-  int irradiance_azimuth = 64;
+  int irradiance_azimuth = 32;     // over [0, pi], mirrored (Bruneton: 64 over [0, 2 pi])
   int density_theta_up = 16;       // density grid: zenith cells above the horizon
   int density_theta_down = 8;      // zenith cells below the horizon
   int density_phi = 16;            // azimuth cells over [0, pi] (mirrored to [0, 2 pi])
