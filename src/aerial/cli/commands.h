@@ -6,5 +6,6 @@ namespace aerial::cli {
 
 void AddPrecomputeCommand(CLI::App& app);
 void AddProbeCommand(CLI::App& app);
+void AddRenderCommand(CLI::App& app);
 
 }  // namespace aerial::cli

@@ -63,7 +63,8 @@ Context::Context(const ContextCreateInfo& info) {
     layers.push_back(kValidationLayer);
     extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   }
-  ::vk::ApplicationInfo app{.pApplicationName = "aerial", .apiVersion = VK_API_VERSION_1_2};
+  // Vulkan 1.3 for dynamic rendering; lavapipe (Mesa 22.3) and current GPU drivers have it.
+  ::vk::ApplicationInfo app{.pApplicationName = "aerial", .apiVersion = VK_API_VERSION_1_3};
   instance_ = ::vk::raii::Instance(
       loader_, ::vk::InstanceCreateInfo{.pApplicationInfo = &app,
                                         .enabledLayerCount = uint32_t(layers.size()),
@@ -117,7 +118,8 @@ Context::Context(const ContextCreateInfo& info) {
   std::vector<const char*> device_extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
   if (!info.window_extensions.empty()) device_extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
   ::vk::PhysicalDeviceFeatures features{.shaderStorageImageWriteWithoutFormat = VK_TRUE};
-  ::vk::PhysicalDeviceVulkan12Features features12{.hostQueryReset = VK_TRUE};
+  ::vk::PhysicalDeviceVulkan13Features features13{.dynamicRendering = VK_TRUE};
+  ::vk::PhysicalDeviceVulkan12Features features12{.pNext = &features13, .hostQueryReset = VK_TRUE};
   device_ = ::vk::raii::Device(
       physical_device_, ::vk::DeviceCreateInfo{.pNext = &features12,
                                                .queueCreateInfoCount = 1,

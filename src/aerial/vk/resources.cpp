@@ -16,9 +16,14 @@ namespace {
           .memoryTypeIndex = context.FindMemoryType(requirements.memoryTypeBits, properties)});
 }
 
-const ::vk::ImageSubresourceRange kColorRange{.aspectMask = ::vk::ImageAspectFlagBits::eColor,
-                                               .levelCount = 1,
-                                               .layerCount = 1};
+::vk::ImageAspectFlags AspectOf(::vk::Format format) {
+  return format == ::vk::Format::eD32Sfloat ? ::vk::ImageAspectFlagBits::eDepth
+                                            : ::vk::ImageAspectFlagBits::eColor;
+}
+
+::vk::ImageSubresourceRange WholeRange(::vk::Format format) {
+  return {.aspectMask = AspectOf(format), .levelCount = 1, .layerCount = 1};
+}
 
 }  // namespace
 
@@ -65,7 +70,7 @@ Image::Image(const Context& context, const ImageCreateInfo& info)
                                 .viewType = is_3d() ? ::vk::ImageViewType::e3D
                                                     : ::vk::ImageViewType::e2D,
                                 .format = info.format,
-                                .subresourceRange = kColorRange});
+                                .subresourceRange = WholeRange(info.format)});
 }
 
 size_t Image::texel_bytes() const {
@@ -88,41 +93,38 @@ size_t Image::byte_size() const {
 
 void Image::InitializeLayout(const ::vk::raii::CommandBuffer& cmd) const {
   ::vk::ImageMemoryBarrier barrier{.srcAccessMask = {},
-                                   .dstAccessMask = ::vk::AccessFlagBits::eShaderRead |
-                                                    ::vk::AccessFlagBits::eShaderWrite |
-                                                    ::vk::AccessFlagBits::eTransferWrite |
-                                                    ::vk::AccessFlagBits::eTransferRead,
+                                   .dstAccessMask = ::vk::AccessFlagBits::eMemoryRead |
+                                                    ::vk::AccessFlagBits::eMemoryWrite,
                                    .oldLayout = ::vk::ImageLayout::eUndefined,
                                    .newLayout = ::vk::ImageLayout::eGeneral,
                                    .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
                                    .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
                                    .image = *image_,
-                                   .subresourceRange = kColorRange};
+                                   .subresourceRange = WholeRange(format_)};
   cmd.pipelineBarrier(::vk::PipelineStageFlagBits::eTopOfPipe,
                       ::vk::PipelineStageFlagBits::eAllCommands, {}, {}, {}, barrier);
 }
 
 void Image::Clear(const ::vk::raii::CommandBuffer& cmd) const {
   cmd.clearColorImage(*image_, ::vk::ImageLayout::eGeneral,
-                      ::vk::ClearColorValue(std::array<float, 4>{0, 0, 0, 0}), kColorRange);
+                      ::vk::ClearColorValue(std::array<float, 4>{0, 0, 0, 0}), WholeRange(format_));
 }
 
 namespace {
-::vk::BufferImageCopy WholeImageCopy(::vk::Extent3D extent) {
-  return ::vk::BufferImageCopy{
-      .imageSubresource = {.aspectMask = ::vk::ImageAspectFlagBits::eColor, .layerCount = 1},
-      .imageExtent = extent};
+::vk::BufferImageCopy WholeImageCopy(::vk::Extent3D extent, ::vk::Format format) {
+  return ::vk::BufferImageCopy{.imageSubresource = {.aspectMask = AspectOf(format), .layerCount = 1},
+                               .imageExtent = extent};
 }
 }  // namespace
 
 void Image::CopyToBuffer(const ::vk::raii::CommandBuffer& cmd, const Buffer& buffer) const {
   cmd.copyImageToBuffer(*image_, ::vk::ImageLayout::eGeneral, buffer.handle(),
-                        WholeImageCopy(extent_));
+                        WholeImageCopy(extent_, format_));
 }
 
 void Image::CopyFromBuffer(const ::vk::raii::CommandBuffer& cmd, const Buffer& buffer) const {
   cmd.copyBufferToImage(buffer.handle(), *image_, ::vk::ImageLayout::eGeneral,
-                        WholeImageCopy(extent_));
+                        WholeImageCopy(extent_, format_));
 }
 
 ::vk::raii::Sampler CreateLinearClampSampler(const Context& context) {
@@ -138,15 +140,13 @@ void Image::CopyFromBuffer(const ::vk::raii::CommandBuffer& cmd, const Buffer& b
 }
 
 void FullBarrier(const ::vk::raii::CommandBuffer& cmd) {
+  // Everything before against everything after: passes are few and large, so finer barriers would
+  // buy nothing on lavapipe and little on a GPU.
   ::vk::MemoryBarrier barrier{
-      .srcAccessMask = ::vk::AccessFlagBits::eShaderWrite | ::vk::AccessFlagBits::eTransferWrite,
-      .dstAccessMask = ::vk::AccessFlagBits::eShaderRead | ::vk::AccessFlagBits::eShaderWrite |
-                       ::vk::AccessFlagBits::eTransferRead | ::vk::AccessFlagBits::eTransferWrite |
-                       ::vk::AccessFlagBits::eHostRead};
-  cmd.pipelineBarrier(::vk::PipelineStageFlagBits::eComputeShader |
-                          ::vk::PipelineStageFlagBits::eTransfer,
-                      ::vk::PipelineStageFlagBits::eComputeShader |
-                          ::vk::PipelineStageFlagBits::eTransfer | ::vk::PipelineStageFlagBits::eHost,
+      .srcAccessMask = ::vk::AccessFlagBits::eMemoryWrite,
+      .dstAccessMask = ::vk::AccessFlagBits::eMemoryRead | ::vk::AccessFlagBits::eMemoryWrite};
+  cmd.pipelineBarrier(::vk::PipelineStageFlagBits::eAllCommands,
+                      ::vk::PipelineStageFlagBits::eAllCommands | ::vk::PipelineStageFlagBits::eHost,
                       {}, barrier, {}, {});
 }
 

@@ -1,0 +1,44 @@
+#include "froxel/froxel_volume.h"
+
+namespace aerial {
+namespace {
+
+// float32: the exporter writes the volume exactly as computed, and at 32^3 the size is irrelevant.
+vk::ImageCreateInfo FroxelImage(const FroxelGrid& grid) {
+  return {.extent = {uint32_t(grid.width), uint32_t(grid.height), uint32_t(grid.depth)},
+          .volume = true};
+}
+
+}  // namespace
+
+FroxelVolume::FroxelVolume(const vk::Context& context, const FroxelGrid& grid)
+    : grid_(grid),
+      rayleigh_(context, FroxelImage(grid)),
+      mie_(context, FroxelImage(grid)),
+      transmittance_(context, FroxelImage(grid)),
+      pipeline_(context, "frame/froxel.comp",
+                {vk::kUniform, vk::kUniform, vk::kSampled, vk::kSampled, vk::kSampled, vk::kSampled,
+                 vk::kStorageImage, vk::kStorageImage, vk::kStorageImage}) {
+  grid.Validate();
+  context.Submit([&](const auto& cmd) {
+    for (const vk::Image* image : {&rayleigh_, &mie_, &transmittance_}) image->InitializeLayout(cmd);
+  });
+}
+
+void FroxelVolume::Build(const ::vk::raii::CommandBuffer& cmd, const AtmosphereTables& tables,
+                         const vk::Buffer& frame_uniforms) const {
+  ::vk::Sampler sampler = tables.sampler();
+  pipeline_.Dispatch(cmd,
+                     {vk::UniformBufferSlot{&tables.uniform_buffer()},
+                      vk::UniformBufferSlot{&frame_uniforms},
+                      vk::SampledImageSlot{&tables.transmittance(), sampler},
+                      vk::SampledImageSlot{&tables.rayleigh(), sampler},
+                      vk::SampledImageSlot{&tables.mie(), sampler},
+                      vk::SampledImageSlot{&tables.multiple(), sampler},
+                      vk::StorageImageSlot{&rayleigh_}, vk::StorageImageSlot{&mie_},
+                      vk::StorageImageSlot{&transmittance_}},
+                     {uint32_t(grid_.width), uint32_t(grid_.height), uint32_t(grid_.depth)},
+                     {8, 8, 1});
+}
+
+}  // namespace aerial

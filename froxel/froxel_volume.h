@@ -1,0 +1,29 @@
+#pragma once
+// The per-frame froxel volume on the GPU: three 3D images (Rayleigh inscatter, Mie inscatter,
+// transmittance; phase-free) filled by shaders/frame/froxel.comp from the precomputed tables.
+#include "aerial/precompute/atmosphere_tables.h"
+#include "aerial/vk/compute_pipeline.h"
+#include "froxel/froxel_grid.h"
+
+namespace aerial {
+
+class FroxelVolume {
+ public:
+  FroxelVolume(const vk::Context& context, const FroxelGrid& grid);
+
+  // Records the froxel pass. frame_uniforms: the FrameBlock buffer of this frame.
+  void Build(const ::vk::raii::CommandBuffer& cmd, const AtmosphereTables& tables,
+             const vk::Buffer& frame_uniforms) const;
+
+  const FroxelGrid& grid() const { return grid_; }
+  const vk::Image& rayleigh() const { return rayleigh_; }
+  const vk::Image& mie() const { return mie_; }
+  const vk::Image& transmittance() const { return transmittance_; }
+
+ private:
+  FroxelGrid grid_;
+  vk::Image rayleigh_, mie_, transmittance_;
+  vk::ComputePipeline pipeline_;
+};
+
+}  // namespace aerial

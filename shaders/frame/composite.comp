@@ -1,0 +1,46 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Composite pass, per pixel: nu from the pixel's own view ray, the Rayleigh and Cornette-Shanks
+// phase functions, and L = L_surface T + I_R P_R(nu) + I_M P_M(nu) with (I_R, I_M, T) read from
+// the froxel volume at the pixel's distance (or, in per-pixel mode, straight from the tables).
+// Sky pixels take the inscatter along the whole ray from the tables, plus the sun disc.
+#include "froxel.glsl"
+#include "frame.glsl"
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
+layout(set = 0, binding = 3) uniform sampler3D rayleigh_texture;
+layout(set = 0, binding = 4) uniform sampler3D mie_texture;
+layout(set = 0, binding = 5) uniform sampler3D multiple_texture;
+layout(set = 0, binding = 6) uniform sampler3D rayleigh_froxels;
+layout(set = 0, binding = 7) uniform sampler3D mie_froxels;
+layout(set = 0, binding = 8) uniform sampler3D transmittance_froxels;
+layout(set = 0, binding = 9, rgba32f) uniform readonly image2D surface_image;  // a < 0: sky
+layout(set = 0, binding = 10) writeonly uniform image2D output_image;
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(pixel, ivec2(frame.viewport.xy)))) return;
+  vec2 uv = (vec2(pixel) + 0.5) / frame.viewport.xy;
+  vec3 ray = ViewRayFromScreen(uv);
+  float r, mu, mu_s, nu;
+  GetCameraRayParameters(ray, r, mu, mu_s, nu);
+  vec4 surface = imageLoad(surface_image, pixel);
+  vec3 radiance;
+  if (surface.a < 0.0) {
+    Inscatter sky = GetSkyInscatter(transmittance_texture, rayleigh_texture, mie_texture,
+                                    multiple_texture, r, mu, mu_s, nu);
+    radiance = ApplyPhaseFunctions(sky, nu);
+    // The sun disc at its true angular size, seen through the atmosphere.
+    if (nu > cos(atmosphere.sun_angular_radius) && !RayIntersectsGround(r, mu))
+      radiance += GetSolarRadiance() * sky.transmittance;
+  } else {
+    Inscatter segment =
+        frame.froxel_size.w == 1
+            ? GetSkyInscatterToPoint(transmittance_texture, rayleigh_texture, mie_texture,
+                                     multiple_texture, r, mu, mu_s, nu, surface.a)
+            : SampleFroxels(rayleigh_froxels, mie_froxels, transmittance_froxels, uv, surface.a,
+                            float(frame.froxel_size.z), frame.froxel_depth.x);
+    radiance = surface.rgb * segment.transmittance + ApplyPhaseFunctions(segment, nu);
+  }
+  imageStore(output_image, pixel, vec4(radiance, 1.0));
+}

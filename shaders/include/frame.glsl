@@ -1,0 +1,36 @@
+// Per-frame camera and sun, shared by the froxel, raster and composite passes. Positions in the
+// shaders are camera-relative world vectors (x east, y north, z up, meters), which keeps them
+// precise in float; the atmosphere lookups use the camera's planet-centered position.
+#ifndef AERIAL_FRAME_GLSL
+#define AERIAL_FRAME_GLSL
+#include "definitions.glsl"
+
+// Mirrored by aerial::FrameUniforms (src/aerial/render/frame_uniforms.h).
+layout(std140, set = 0, binding = 1) uniform FrameBlock {
+  mat4 view_projection;          // camera-relative world -> clip (reversed Z, infinite far)
+  mat4 inverse_view_projection;  // clip -> camera-relative world
+  vec4 camera_scene_position;    // xyz: camera in the scene frame (to make vertices relative)
+  vec4 camera_planet_position;   // xyz: camera relative to the planet center
+  vec4 sun_direction;            // xyz: unit vector toward the sun
+  ivec4 froxel_size;             // x, y, z: froxel grid; w: 1 = aerial perspective per pixel
+  vec4 froxel_depth;             // x: far distance of the last slice (m)
+  vec4 viewport;                 // x, y: size in pixels
+} frame;
+
+// Unit view ray (camera-relative world) through a point of the screen, uv in [0,1]^2.
+vec3 ViewRayFromScreen(vec2 uv) {
+  vec4 clip = vec4(uv * 2.0 - 1.0, 0.5, 1.0);
+  vec4 world = frame.inverse_view_projection * clip;
+  return normalize(world.xyz / world.w);
+}
+
+// The (r, mu, mu_s, nu) of a ray from the camera, for the table lookups.
+void GetCameraRayParameters(vec3 ray, out float r, out float mu, out float mu_s, out float nu) {
+  vec3 x = frame.camera_planet_position.xyz;
+  r = length(x);
+  mu = dot(x, ray) / r;
+  mu_s = dot(x, frame.sun_direction.xyz) / r;
+  nu = dot(ray, frame.sun_direction.xyz);
+}
+
+#endif

@@ -1,0 +1,44 @@
+// The froxel volume: a grid aligned with the camera frustum, x and y across the screen, z along
+// the view distance. Slice k's texel center stands for the distance
+//   d_k = far * ((k + 0.5) / D)^2,
+// a quadratic distribution (Hillaire 2020): near slices are thin (31 m at the default 32 slices
+// over 128 km) where aerial perspective changes fastest relative to the distance and where
+// nearby objects need it resolved, far slices are long (8 km) where it changes slowly. The
+// inverse, w = sqrt(d / far), puts any distance on the texture's z axis with texel centers at the
+// d_k. Each froxel holds, from the camera to d_k along its center ray, Rayleigh and Mie inscatter
+// WITHOUT phase and the transmittance: phases are applied per pixel.
+#ifndef AERIAL_FROXEL_GLSL
+#define AERIAL_FROXEL_GLSL
+#include "sky_lookup.glsl"
+
+float FroxelSliceDistance(float slice_center, float slices, float far_distance) {
+  float s = slice_center / slices;
+  return far_distance * s * s;
+}
+
+float FroxelDepthCoordinate(float distance, float far_distance) {
+  return sqrt(max(distance, 0.0) / far_distance);
+}
+
+// Trilinear read at a screen position and a distance. Below the first slice center the values
+// are blended toward the empty segment (no inscatter, full transmittance), since the sampler
+// would otherwise clamp to the first slice.
+Inscatter SampleFroxels(sampler3D rayleigh_froxels, sampler3D mie_froxels,
+                        sampler3D transmittance_froxels, vec2 uv, float distance,
+                        float slices, float far_distance) {
+  vec3 uvw = vec3(uv, FroxelDepthCoordinate(distance, far_distance));
+  Inscatter result;
+  result.rayleigh = textureLod(rayleigh_froxels, uvw, 0.0).rgb;
+  result.mie = textureLod(mie_froxels, uvw, 0.0).rgb;
+  result.transmittance = textureLod(transmittance_froxels, uvw, 0.0).rgb;
+  float first = FroxelSliceDistance(0.5, slices, far_distance);
+  if (distance < first) {
+    float t = distance / first;
+    result.rayleigh *= t;
+    result.mie *= t;
+    result.transmittance = mix(vec3(1.0), result.transmittance, t);
+  }
+  return result;
+}
+
+#endif

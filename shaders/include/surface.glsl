@@ -1,0 +1,23 @@
+// Lighting of opaque and transparent surfaces by the sun (through the transmittance table, with
+// the visible part of its disc) and the sky (through the irradiance table, cosine-weighted for a
+// tilted normal as in Bruneton 2017 "GetSunAndSkyIrradiance"). Lambertian: L = albedo / pi * E.
+#ifndef AERIAL_SURFACE_GLSL
+#define AERIAL_SURFACE_GLSL
+#include "frame.glsl"
+#include "sky_lookup.glsl"
+
+vec3 ShadeLambertian(sampler2D transmittance_texture, sampler2D irradiance_texture,
+                     vec3 relative_position, vec3 normal, vec3 albedo) {
+  vec3 point = frame.camera_planet_position.xyz + relative_position;
+  float r = length(point);
+  vec3 up = point / r;
+  vec3 sun = frame.sun_direction.xyz;
+  float mu_s = dot(up, sun);
+  vec3 sun_irradiance = atmosphere.solar_irradiance.rgb *
+                        GetTransmittanceToSun(transmittance_texture, r, mu_s) *
+                        max(dot(normal, sun), 0.0);
+  vec3 sky_irradiance = GetIrradiance(irradiance_texture, r, mu_s) * (1.0 + dot(normal, up)) * 0.5;
+  return albedo * (1.0 / PI) * (sun_irradiance + sky_irradiance);
+}
+
+#endif

@@ -1,0 +1,22 @@
+#pragma once
+// OpenEXR encoding in memory. Encoding to bytes rather than to a path lets the caller write the
+// file atomically (WriteFileAtomically), so a failed or killed export never leaves half an EXR.
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "aerial/image/image.h"
+
+namespace aerial {
+
+// Scanline EXR with 32-bit FLOAT channels R, G, B, A (not half: half keeps 11 bits of mantissa
+// and overflows at 65504, too coarse for radiance used as reference data). ZIP compression is
+// lossless, so the floats come back bit-identical.
+std::vector<std::byte> EncodeExr(const ImageRgbF& image);
+
+// Decodes any EXR that has R, G and B channels; a missing A reads as 1 (opaque), and half
+// channels are widened to float. where names the source in errors (usually the path).
+ImageRgbF DecodeExr(std::span<const std::byte> bytes, const std::string& where);
+
+}  // namespace aerial

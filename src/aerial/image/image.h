@@ -1,0 +1,37 @@
+#pragma once
+// The one in-memory image every output path shares: linear radiance as 32-bit floats, so the
+// renderer hands over exactly what it computed and each format decides how to encode it (EXR
+// keeps the floats, PNG tone maps them).
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace aerial {
+
+// Linear radiance, row-major, top row first, 4 floats (R, G, B, A) per pixel. A is coverage,
+// stored straight (not premultiplied into RGB); set it to 1 for an opaque sky.
+struct ImageRgbF {
+  int width = 0, height = 0;
+  std::vector<float> rgba;
+
+  float* pixel(int x, int y) { return rgba.data() + Offset(x, y); }
+  const float* pixel(int x, int y) const { return rgba.data() + Offset(x, y); }
+
+ private:
+  size_t Offset(int x, int y) const {
+    return (static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)) * 4;
+  }
+};
+
+// Largest side an image may have: the maxImageDimension2D of current desktop GPUs, so the
+// renderer could not have made anything larger. A bigger value is a units or parsing mistake,
+// and would ask for gigabytes (16 bytes per pixel).
+inline constexpr int kMaxImageSide = 16384;
+
+// Throws Error("image size", "WxH", ...) unless both sides are in 1..kMaxImageSide. where names
+// the source (a path) when there is one.
+void CheckImageSize(int width, int height, const std::string& where = "");
+// Also requires rgba to hold exactly 4 * width * height floats, so encoders never read past it.
+void CheckImageSize(const ImageRgbF& image);
+
+}  // namespace aerial

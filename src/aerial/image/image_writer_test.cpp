@@ -1,0 +1,100 @@
+#include "aerial/image/image_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <functional>
+#include <string>
+
+#include "aerial/core/error.h"
+#include "aerial/image/scratch_dir_test_util.h"
+
+namespace aerial {
+namespace {
+namespace fs = std::filesystem;
+
+ImageRgbF Grey(int width, int height) {
+  return ImageRgbF{width, height, std::vector<float>(size_t{4} * width * height, 0.5f)};
+}
+
+// Runs f, which must throw aerial::Error, and returns it.
+Error Thrown(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e;
+  }
+  ADD_FAILURE() << "expected aerial::Error";
+  return Error("", "", "");
+}
+
+bool Mentions(const Error& e, const fs::path& path) {
+  return std::string(e.what()).find(path.string()) != std::string::npos;
+}
+
+class ImageWriter : public ScratchDirTest {};
+
+TEST_F(ImageWriter, FormatFromExtensionIgnoresCase) {
+  EXPECT_EQ(ImageFormatFromPath("a/b.exr"), ImageFormat::kExr);
+  EXPECT_EQ(ImageFormatFromPath("b.ExR"), ImageFormat::kExr);
+  EXPECT_EQ(ImageFormatFromPath("b.png"), ImageFormat::kPng);
+  EXPECT_EQ(ImageFormatFromPath("b.PNG"), ImageFormat::kPng);
+}
+
+TEST_F(ImageWriter, UnknownExtensionNamesOutAndWritesNothing) {
+  for (const fs::path& path : {dir_ / "sky.jpg", dir_ / "sky", dir_ / "exr"}) {
+    const Error e = Thrown([&] { WriteImage(path, Grey(2, 2), {}); });
+    EXPECT_EQ(e.field(), "--out");
+    EXPECT_EQ(e.value(), path.string());
+    EXPECT_EQ(Thrown([&] { CheckImageOutputPath(path); }).field(), "--out");
+  }
+  EXPECT_TRUE(Entries().empty());
+}
+
+// /proc refuses new entries even to root, so this fails on every machine.
+TEST_F(ImageWriter, UnwritableDirectoryNamesPathAndLeavesNothing) {
+  const fs::path path = "/proc/aerial-nope/x.exr";
+  EXPECT_TRUE(Mentions(Thrown([&] { CheckImageOutputPath(path); }), path));
+  EXPECT_TRUE(Mentions(Thrown([&] { WriteImage(path, Grey(2, 2), {}); }), path));
+  EXPECT_TRUE(Mentions(Thrown([&] { WriteImage("/proc/aerial-nope/x.png", Grey(2, 2), {}); }),
+                       "/proc/aerial-nope/x.png"));
+  EXPECT_FALSE(fs::exists("/proc/aerial-nope"));
+}
+
+TEST_F(ImageWriter, ParentIsRegularFileNamesPathAndLeavesNothing) {
+  std::ofstream(dir_ / "file") << "not a directory";
+  for (const char* name : {"x.exr", "x.png"}) {
+    const fs::path path = dir_ / "file" / name;
+    EXPECT_TRUE(Mentions(Thrown([&] { CheckImageOutputPath(path); }), path));
+    EXPECT_TRUE(Mentions(Thrown([&] { WriteImage(path, Grey(2, 2), {}); }), path));
+  }
+  EXPECT_EQ(Entries(), std::vector<std::string>{"file"});
+}
+
+TEST_F(ImageWriter, AbsurdSizeIsRejectedBeforeWriting) {
+  for (const auto& [w, h] : {std::pair{0, 4}, {4, -1}, {16385, 1}, {1, 16385}}) {
+    ImageRgbF image{w, h, {}};
+    EXPECT_EQ(Thrown([&] { WriteImage(dir_ / "sky.exr", image, {}); }).field(), "image size");
+    EXPECT_EQ(Thrown([&] { WriteImage(dir_ / "sky.png", image, {}); }).field(), "image size");
+  }
+  // Right sides but a buffer too short for them: reading it would run off the end.
+  ImageRgbF short_buffer{4, 4, std::vector<float>(4 * 4 * 3)};
+  EXPECT_EQ(Thrown([&] { WriteImage(dir_ / "sky.exr", short_buffer, {}); }).field(),
+            "image size");
+  EXPECT_TRUE(Entries().empty());
+}
+
+TEST_F(ImageWriter, FailedWriteKeepsPreviousFile) {
+  WriteImage(dir_ / "sky.exr", Grey(3, 2), {});
+  EXPECT_THROW(WriteImage(dir_ / "sky.exr", ImageRgbF{0, 0, {}}, {}), Error);
+  EXPECT_EQ(ReadExr(dir_ / "sky.exr").width, 3);
+  EXPECT_EQ(Entries(), std::vector<std::string>{"sky.exr"});
+}
+
+TEST_F(ImageWriter, CheckCreatesMissingParent) {
+  CheckImageOutputPath(dir_ / "new" / "sky.png");
+  EXPECT_EQ(Entries(), std::vector<std::string>{"new"});
+}
+
+}  // namespace
+}  // namespace aerial

@@ -1,0 +1,23 @@
+#pragma once
+// Linear radiance to 8-bit display values, for PNG previews. EXR output skips this entirely and
+// keeps the radiance, so nothing quantitative should ever be read from a PNG.
+#include <cstdint>
+#include <vector>
+
+#include "aerial/image/image.h"
+
+namespace aerial {
+
+struct ToneMapOptions {
+  // Radiance multiplier applied before the curve. The filmic curve reaches mid grey near 0.18,
+  // so exposure should map the scene's typical radiance to roughly that.
+  double exposure = 1.0;
+};
+
+// Per channel: exposure, then the ACES filmic fit (Narkowicz 2015), then the sRGB OETF
+// (IEC 61966-2-1), rounded to 8 bits. Alpha is coverage, not light: it is only clamped to [0, 1]
+// and scaled. Returns RGBA8, row-major, top row first. Throws Error("image size") on a malformed
+// image and Error("exposure") unless exposure is finite and > 0.
+std::vector<uint8_t> ToneMapToSrgb8(const ImageRgbF& image, const ToneMapOptions& options);
+
+}  // namespace aerial

@@ -1,0 +1,27 @@
+#pragma once
+// The std140 per-frame block of shaders/include/frame.glsl (FrameBlock): camera, sun, froxel grid.
+#include <array>
+
+#include "aerial/scene/scene.h"
+#include "froxel/froxel_grid.h"
+
+namespace aerial {
+
+enum class AerialMode { kFroxel, kPerPixel };
+
+struct alignas(16) FrameUniforms {
+  std::array<float, 16> view_projection;          // column-major, camera-relative world -> clip
+  std::array<float, 16> inverse_view_projection;
+  std::array<float, 4> camera_scene_position;
+  std::array<float, 4> camera_planet_position;
+  std::array<float, 4> sun_direction;
+  std::array<int, 4> froxel_size;                 // w: 1 = aerial perspective per pixel
+  std::array<float, 4> froxel_depth;              // x: far distance
+  std::array<float, 4> viewport;
+};
+static_assert(sizeof(FrameUniforms) == 2 * 64 + 6 * 16);
+
+FrameUniforms MakeFrameUniforms(const Scene& scene, double planet_radius_m, int width, int height,
+                                const FroxelGrid& froxels, AerialMode mode);
+
+}  // namespace aerial

@@ -1,0 +1,140 @@
+#include "aerial/render/renderer.h"
+
+#include <cstring>
+
+#include "aerial/core/error.h"
+
+namespace aerial {
+namespace {
+
+vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std::string& fragment,
+                                            std::vector<::vk::DescriptorType> slots, bool blended) {
+  return {.vertex_shader = vertex,
+          .fragment_shader = fragment,
+          .slot_types = std::move(slots),
+          .vertex_stride = sizeof(Vertex),
+          .attributes = {{::vk::Format::eR32G32B32Sfloat, offsetof(Vertex, position)},
+                         {::vk::Format::eR32G32B32Sfloat, offsetof(Vertex, normal)},
+                         {::vk::Format::eR32G32B32Sfloat, offsetof(Vertex, albedo)},
+                         {::vk::Format::eR32Sfloat, offsetof(Vertex, opacity)}},
+          .color_formats = {::vk::Format::eR32G32B32A32Sfloat},
+          .depth_format = ::vk::Format::eD32Sfloat,
+          .depth_write = !blended,
+          .alpha_blend = blended};
+}
+
+vk::ImageCreateInfo Target(const RenderOptions& o, ::vk::Format format, ::vk::ImageUsageFlags usage) {
+  return {.extent = {uint32_t(o.width), uint32_t(o.height), 1}, .format = format, .usage = usage};
+}
+
+}  // namespace
+
+void RenderOptions::Validate() const {
+  CheckImageSize(width, height, "--width/--height");
+  froxels.Validate();
+}
+
+using vk::kSampled;
+using vk::kStorageImage;
+using vk::kUniform;
+
+Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const RenderOptions& options)
+    : tables_(tables),
+      options_((options.Validate(), options)),
+      geometry_(tables.context(), scene),
+      froxels_(tables.context(), options.froxels),
+      frame_buffer_(tables.context(), {.size = sizeof(FrameUniforms),
+                                       .usage = ::vk::BufferUsageFlagBits::eUniformBuffer,
+                                       .host_visible = true}),
+      surface_(tables.context(), Target(options, ::vk::Format::eR32G32B32A32Sfloat,
+                                        ::vk::ImageUsageFlagBits::eColorAttachment |
+                                            ::vk::ImageUsageFlagBits::eStorage)),
+      depth_(tables.context(), Target(options, ::vk::Format::eD32Sfloat,
+                                      ::vk::ImageUsageFlagBits::eDepthStencilAttachment)),
+      output_(tables.context(), Target(options, ::vk::Format::eR32G32B32A32Sfloat,
+                                       ::vk::ImageUsageFlagBits::eColorAttachment |
+                                           ::vk::ImageUsageFlagBits::eStorage |
+                                           ::vk::ImageUsageFlagBits::eTransferSrc)),
+      opaque_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/opaque.frag",
+                                             {kUniform, kUniform, kSampled, kSampled}, false)),
+      transparent_(tables.context(),
+                   MeshPipeline("frame/transparent.vert", "frame/transparent.frag",
+                                {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled,
+                                 kSampled, kSampled, kSampled, kSampled},
+                                true)),
+      composite_(tables.context(), "frame/composite.comp",
+                 {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled, kSampled,
+                  kSampled, kStorageImage, kStorageImage}),
+      timer_(std::make_unique<vk::GpuTimer>(tables.context())) {
+  tables.context().Submit([&](const auto& cmd) {
+    for (const vk::Image* image : {&surface_, &depth_, &output_}) image->InitializeLayout(cmd);
+  });
+}
+
+Renderer::~Renderer() = default;
+
+std::vector<vk::PassTime> Renderer::Render(const Scene& scene) {
+  frame_uniforms_ = MakeFrameUniforms(scene, tables_.atmosphere().bottom_radius_m, options_.width,
+                                      options_.height, options_.froxels, options_.mode);
+  frame_buffer_.Write(std::as_bytes(std::span(&frame_uniforms_, 1)));
+  geometry_.SortTransparent(scene.camera.position);
+  ::vk::Sampler sampler = tables_.sampler();
+  auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
+  vk::Slot atmosphere = vk::UniformBufferSlot{&tables_.uniform_buffer()};
+  vk::Slot frame = vk::UniformBufferSlot{&frame_buffer_};
+  tables_.context().Submit([&](const ::vk::raii::CommandBuffer& cmd) {
+    timer_->Reset(cmd);
+    if (options_.mode == AerialMode::kFroxel) {
+      timer_->Begin(cmd, "froxel build");
+      froxels_.Build(cmd, tables_, frame_buffer_);
+      timer_->End(cmd);
+    }
+    timer_->Begin(cmd, "opaque raster");
+    // Sky pixels keep distance -1; reversed Z clears depth to 0 (infinitely far).
+    opaque_.Draw(cmd, {.colors = {&surface_}, .clear_colors = {std::array<float, 4>{0, 0, 0, -1}},
+                       .depth = &depth_, .clear_depth = 0.0f},
+                 {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.irradiance())},
+                 geometry_.opaque_vertices(), geometry_.opaque_indices(), geometry_.opaque_index_count());
+    timer_->End(cmd);
+    vk::FullBarrier(cmd);
+    timer_->Begin(cmd, "composite");
+    composite_.Dispatch(cmd,
+                        {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.rayleigh()),
+                         sampled(tables_.mie()), sampled(tables_.multiple()),
+                         sampled(froxels_.rayleigh()), sampled(froxels_.mie()),
+                         sampled(froxels_.transmittance()), vk::StorageImageSlot{&surface_},
+                         vk::StorageImageSlot{&output_}},
+                        {uint32_t(options_.width), uint32_t(options_.height), 1}, {8, 8, 1});
+    timer_->End(cmd);
+    vk::FullBarrier(cmd);
+    timer_->Begin(cmd, "transparent raster");
+    if (geometry_.transparent_index_count() > 0) {
+      transparent_.Draw(cmd, {.colors = {&output_}, .clear_colors = {std::nullopt}, .depth = &depth_},
+                        {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.irradiance()),
+                         sampled(tables_.rayleigh()), sampled(tables_.mie()), sampled(tables_.multiple()),
+                         sampled(froxels_.rayleigh()), sampled(froxels_.mie()),
+                         sampled(froxels_.transmittance())},
+                        geometry_.transparent_vertices(), geometry_.transparent_indices(),
+                        geometry_.transparent_index_count());
+    }
+    timer_->End(cmd);
+    vk::FullBarrier(cmd);
+  });
+  return timer_->Collect();
+}
+
+ImageRgbF Renderer::ReadOutput() const {
+  vk::Buffer readback(tables_.context(), {.size = output_.byte_size(),
+                                          .usage = ::vk::BufferUsageFlagBits::eTransferDst,
+                                          .host_visible = true});
+  tables_.context().Submit([&](const auto& cmd) {
+    output_.CopyToBuffer(cmd, readback);
+    vk::FullBarrier(cmd);
+  });
+  ImageRgbF image{options_.width, options_.height, {}};
+  image.rgba.resize(size_t(options_.width) * options_.height * 4);
+  std::memcpy(image.rgba.data(), readback.mapped(), image.rgba.size() * sizeof(float));
+  return image;
+}
+
+}  // namespace aerial

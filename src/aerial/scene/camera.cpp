@@ -1,0 +1,54 @@
+#include "aerial/scene/camera.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace aerial {
+namespace {
+double Radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+}  // namespace
+
+glm::dvec3 DirectionFromZenithAzimuth(double zenith_deg, double azimuth_deg) {
+  double zenith = Radians(zenith_deg), azimuth = Radians(azimuth_deg);
+  return {std::sin(zenith) * std::sin(azimuth), std::sin(zenith) * std::cos(azimuth),
+          std::cos(zenith)};
+}
+
+glm::dvec3 Sun::Direction() const { return DirectionFromZenithAzimuth(zenith_deg, azimuth_deg); }
+
+glm::dvec3 Forward(const Camera& camera) {
+  return DirectionFromZenithAzimuth(90.0 - camera.pitch_deg, camera.yaw_deg);
+}
+
+glm::dvec3 Right(const Camera& camera) {
+  double yaw = Radians(camera.yaw_deg);
+  return {std::cos(yaw), -std::sin(yaw), 0.0};
+}
+
+glm::dvec3 Up(const Camera& camera) { return glm::cross(Right(camera), Forward(camera)); }
+
+glm::dmat4 ViewMatrix(const Camera& camera) {
+  glm::dvec3 right = Right(camera), up = Up(camera), back = -Forward(camera);
+  glm::dmat4 view(1.0);  // glm is column-major: view[column][row]
+  for (int i = 0; i < 3; ++i) {
+    view[i][0] = right[i];
+    view[i][1] = up[i];
+    view[i][2] = back[i];
+  }
+  view[3][0] = -glm::dot(right, camera.position);
+  view[3][1] = -glm::dot(up, camera.position);
+  view[3][2] = -glm::dot(back, camera.position);
+  return view;
+}
+
+glm::dmat4 ProjectionMatrix(const Camera& camera, double aspect) {
+  double f = 1.0 / std::tan(Radians(camera.vertical_fov_deg) / 2.0);
+  glm::dmat4 projection(0.0);
+  projection[0][0] = f / aspect;
+  projection[1][1] = -f;
+  projection[3][2] = camera.near_m;  // clip.z = near
+  projection[2][3] = -1.0;           // clip.w = -z_view
+  return projection;
+}
+
+}  // namespace aerial

@@ -1,0 +1,117 @@
+#include "aerial/scene/camera.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace aerial {
+namespace {
+
+// Matrices are doubles built from sines and cosines of the angles: results are exact to a few
+// ulps, so 1e-9 is a tolerance for rounding, not for approximation.
+constexpr double kEps = 1e-9;
+
+glm::dvec3 Ndc(const Camera& camera, double aspect, const glm::dvec3& world) {
+  glm::dvec4 clip = ProjectionMatrix(camera, aspect) * ViewMatrix(camera) * glm::dvec4(world, 1);
+  return glm::dvec3(clip) / clip.w;
+}
+
+Camera Tilted(double yaw, double pitch) {
+  Camera camera;
+  camera.position = {1200.0, -300.0, 45.0};
+  camera.yaw_deg = yaw;
+  camera.pitch_deg = pitch;
+  camera.vertical_fov_deg = 50.0;
+  camera.near_m = 0.5;
+  return camera;
+}
+
+TEST(CameraMatrices, PointStraightAheadProjectsToImageCenter) {
+  for (double yaw : {0.0, 37.0, 90.0, 200.0, -45.0}) {
+    for (double pitch : {-90.0, -30.0, 0.0, 4.0, 89.0, 90.0}) {
+      Camera camera = Tilted(yaw, pitch);
+      glm::dvec3 ndc = Ndc(camera, 16.0 / 9.0, camera.position + 5000.0 * Forward(camera));
+      EXPECT_NEAR(ndc.x, 0.0, kEps) << "yaw " << yaw << " pitch " << pitch;
+      EXPECT_NEAR(ndc.y, 0.0, kEps) << "yaw " << yaw << " pitch " << pitch;
+    }
+  }
+}
+
+TEST(CameraMatrices, ReversedZPutsFarPointsAtSmallerDepth) {
+  Camera camera = Tilted(30.0, 5.0);
+  auto depth = [&](double distance) {
+    return Ndc(camera, 1.5, camera.position + distance * Forward(camera)).z;
+  };
+  EXPECT_NEAR(depth(camera.near_m), 1.0, kEps);  // the near plane maps to 1
+  double previous = depth(camera.near_m);
+  for (double distance : {1.0, 30.0, 300.0, 1e4, 1e5, 1e7}) {
+    double d = depth(distance);
+    EXPECT_LT(d, previous) << distance;
+    EXPECT_GT(d, 0.0) << distance;  // no far plane: nothing is clipped at depth 0
+    EXPECT_NEAR(d, camera.near_m / distance, kEps) << distance;
+    previous = d;
+  }
+}
+
+TEST(CameraMatrices, UpIsTopAndRightIsRightInVulkanClipSpace) {
+  Camera camera = Tilted(120.0, -10.0);
+  glm::dvec3 ahead = camera.position + 100.0 * Forward(camera);
+  EXPECT_LT(Ndc(camera, 1.0, ahead + 10.0 * Up(camera)).y, 0.0);  // Vulkan's y points down
+  EXPECT_GT(Ndc(camera, 1.0, ahead + 10.0 * Right(camera)).x, 0.0);
+}
+
+TEST(CameraMatrices, FieldOfViewEdgesMapToNdcEdges) {
+  Camera camera = Tilted(10.0, 20.0);
+  double half = camera.vertical_fov_deg / 2.0 * std::numbers::pi / 180.0, aspect = 16.0 / 9.0;
+  glm::dvec3 top = Forward(camera) * std::cos(half) + Up(camera) * std::sin(half);
+  EXPECT_NEAR(Ndc(camera, aspect, camera.position + 700.0 * top).y, -1.0, kEps);
+  // Horizontally the half-width is aspect * tan(fov / 2) at unit distance.
+  glm::dvec3 side = Forward(camera) + Right(camera) * (aspect * std::tan(half));
+  EXPECT_NEAR(Ndc(camera, aspect, camera.position + 700.0 * side).x, 1.0, kEps);
+}
+
+TEST(CameraBasis, OrthonormalRightHandedWithHorizontalRight) {
+  for (double pitch : {-90.0, -5.0, 0.0, 60.0, 90.0}) {
+    Camera camera = Tilted(250.0, pitch);
+    glm::dvec3 f = Forward(camera), r = Right(camera), u = Up(camera);
+    EXPECT_NEAR(glm::length(f), 1.0, kEps);
+    EXPECT_NEAR(glm::length(r), 1.0, kEps);
+    EXPECT_NEAR(glm::length(u), 1.0, kEps);
+    EXPECT_NEAR(glm::dot(f, r), 0.0, kEps);
+    EXPECT_NEAR(glm::dot(f, u), 0.0, kEps);
+    EXPECT_NEAR(r.z, 0.0, kEps);  // no roll
+    EXPECT_NEAR(glm::distance(glm::cross(r, u), -f), 0.0, kEps);
+    EXPECT_GE(u.z, -kEps);  // the image is never upside down
+  }
+}
+
+TEST(CameraBasis, YawIsCompassAzimuthAndPitchIsElevation) {
+  Camera camera;
+  camera.yaw_deg = 0.0;
+  EXPECT_NEAR(glm::distance(Forward(camera), glm::dvec3(0, 1, 0)), 0.0, kEps);  // north
+  camera.yaw_deg = 90.0;
+  EXPECT_NEAR(glm::distance(Forward(camera), glm::dvec3(1, 0, 0)), 0.0, kEps);  // east
+  camera.pitch_deg = 30.0;
+  EXPECT_NEAR(Forward(camera).z, 0.5, kEps);  // sin 30
+}
+
+TEST(CameraView, MapsCameraToOriginAndForwardToMinusZ) {
+  Camera camera = Tilted(75.0, 12.0);
+  glm::dmat4 view = ViewMatrix(camera);
+  glm::dvec4 eye = view * glm::dvec4(camera.position, 1.0);
+  EXPECT_NEAR(glm::length(glm::dvec3(eye)), 0.0, 1e-9 * glm::length(camera.position));
+  glm::dvec4 forward = view * glm::dvec4(Forward(camera), 0.0);
+  EXPECT_NEAR(glm::distance(glm::dvec3(forward), glm::dvec3(0, 0, -1)), 0.0, kEps);
+}
+
+TEST(CameraSun, DirectionFollowsZenithAndCompassAzimuth) {
+  EXPECT_NEAR(glm::distance(Sun{0.0, 123.0}.Direction(), glm::dvec3(0, 0, 1)), 0.0, kEps);
+  EXPECT_NEAR(glm::distance(Sun{90.0, 0.0}.Direction(), glm::dvec3(0, 1, 0)), 0.0, kEps);
+  EXPECT_NEAR(glm::distance(Sun{90.0, 90.0}.Direction(), glm::dvec3(1, 0, 0)), 0.0, kEps);
+  EXPECT_LT((Sun{96.0, 270.0}.Direction().z), 0.0);  // set
+  EXPECT_LT((Sun{96.0, 270.0}.Direction().x), 0.0);  // in the west
+}
+
+}  // namespace
+}  // namespace aerial

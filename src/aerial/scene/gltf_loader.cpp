@@ -1,0 +1,301 @@
+#include "aerial/scene/gltf_loader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <utility>
+#include <vector>
+
+#include "aerial/core/error.h"
+#include "aerial/scene/tiny_gltf_config.h"
+
+namespace aerial {
+namespace {
+
+// glTF y-up to the world's z-up: (x, y, z) -> (x, -z, y), a +90 degree turn about x.
+const glm::dmat4 kYUpToZUp(1, 0, 0, 0,   // image of x (columns)
+                           0, 0, 1, 0,   // image of y
+                           0, -1, 0, 0,  // image of z
+                           0, 0, 0, 1);
+
+std::string ModeName(int mode) {
+  static const char* kNames[] = {"POINTS",    "LINES",          "LINE_LOOP",   "LINE_STRIP",
+                                 "TRIANGLES", "TRIANGLE_STRIP", "TRIANGLE_FAN"};
+  std::string name = mode >= 0 && mode < 7 ? kNames[mode] : "unknown";
+  return name + " (" + std::to_string(mode) + ")";
+}
+
+// Reads accessors with every index and byte range checked, so a malformed file is an Error and
+// never an out-of-bounds read.
+class GltfReader {
+ public:
+  GltfReader(const tinygltf::Model& model, std::string where)
+      : model_(model), where_(std::move(where)) {}
+
+  [[noreturn]] void Fail(const std::string& field, const std::string& value,
+                         const std::string& allowed) const {
+    throw Error(field, value, allowed, where_);
+  }
+
+  std::vector<glm::dvec3> ReadVec3(int accessor_index, const std::string& field) const {
+    const tinygltf::Accessor& a = Get(accessor_index, field);
+    if (a.type != TINYGLTF_TYPE_VEC3 || a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+      Fail(field,
+           "type " + std::to_string(a.type) + ", component type " + std::to_string(a.componentType),
+           "float VEC3");
+    std::vector<glm::dvec3> values(a.count);
+    const unsigned char* data = Data(a, 12, field);
+    size_t stride = static_cast<size_t>(a.ByteStride(model_.bufferViews[a.bufferView]));
+    for (size_t i = 0; i < a.count; ++i) {
+      float xyz[3];
+      std::memcpy(xyz, data + i * stride, sizeof xyz);
+      values[i] = {xyz[0], xyz[1], xyz[2]};
+    }
+    return values;
+  }
+
+  std::vector<uint32_t> ReadIndices(int accessor_index, const std::string& field) const {
+    const tinygltf::Accessor& a = Get(accessor_index, field);
+    size_t size = a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
+                  : a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                  : a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
+                                                                              : 0;
+    if (a.type != TINYGLTF_TYPE_SCALAR || size == 0)
+      Fail(field, "component type " + std::to_string(a.componentType),
+           "SCALAR of unsigned byte, short or int");
+    const unsigned char* data = Data(a, size, field);
+    size_t stride = static_cast<size_t>(a.ByteStride(model_.bufferViews[a.bufferView]));
+    std::vector<uint32_t> indices(a.count);
+    for (size_t i = 0; i < a.count; ++i) {
+      const unsigned char* p = data + i * stride;
+      if (size == 1) indices[i] = *p;
+      if (size == 2) indices[i] = static_cast<uint32_t>(p[0] | p[1] << 8);
+      if (size == 4) std::memcpy(&indices[i], p, 4);  // glTF is little-endian, like x86 and ARM
+    }
+    return indices;
+  }
+
+ private:
+  const tinygltf::Accessor& Get(int index, const std::string& field) const {
+    if (index < 0 || static_cast<size_t>(index) >= model_.accessors.size())
+      Fail(field, std::to_string(index),
+           "an accessor index below " + std::to_string(model_.accessors.size()));
+    const tinygltf::Accessor& a = model_.accessors[index];
+    if (a.sparse.isSparse) Fail(field, "a sparse accessor", "a plain accessor");
+    return a;
+  }
+
+  // The accessor's first element, after checking that all count elements of element_size bytes
+  // lie inside its buffer view and the view inside its buffer.
+  const unsigned char* Data(const tinygltf::Accessor& a, size_t element_size,
+                            const std::string& field) const {
+    if (a.bufferView < 0 || static_cast<size_t>(a.bufferView) >= model_.bufferViews.size())
+      Fail(field + ".bufferView", std::to_string(a.bufferView), "an existing buffer view");
+    const tinygltf::BufferView& view = model_.bufferViews[a.bufferView];
+    if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model_.buffers.size())
+      Fail(field + ".buffer", std::to_string(view.buffer), "an existing buffer");
+    const tinygltf::Buffer& buffer = model_.buffers[view.buffer];
+    int stride = a.ByteStride(view);
+    if (stride < static_cast<int>(element_size))
+      Fail(field + ".byteStride", std::to_string(stride), ">= the element size");
+    size_t needed = a.count == 0 ? 0 : a.byteOffset + (a.count - 1) * stride + element_size;
+    if (view.byteOffset + view.byteLength > buffer.data.size() || needed > view.byteLength) {
+      Fail(field,
+           std::to_string(a.count) + " elements from byte " +
+               std::to_string(view.byteOffset + a.byteOffset),
+           "data inside its buffer view and buffer (" + std::to_string(buffer.data.size()) +
+               " bytes)");
+    }
+    return buffer.data.data() + view.byteOffset + a.byteOffset;
+  }
+
+  const tinygltf::Model& model_;
+  std::string where_;
+};
+
+glm::dmat4 LocalTransform(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major both
+  glm::dmat4 transform(1.0);
+  if (node.translation.size() == 3)
+    transform[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
+  if (node.rotation.size() == 4) {
+    // glTF stores quaternions as (x, y, z, w); glm's constructor takes w first.
+    glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+    transform *= glm::mat4_cast(glm::normalize(q));
+  }
+  if (node.scale.size() == 3)
+    transform = glm::scale(transform, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+  return transform;
+}
+
+struct Material {
+  glm::vec3 albedo{1.0f};
+  float opacity = 1.0f;
+  bool blend = false;
+};
+
+Material MaterialOf(const tinygltf::Model& model, int index) {
+  Material material;
+  if (index < 0 || static_cast<size_t>(index) >= model.materials.size()) return material;
+  const tinygltf::Material& m = model.materials[index];
+  const std::vector<double>& color = m.pbrMetallicRoughness.baseColorFactor;
+  if (color.size() == 4) {
+    for (int i = 0; i < 3; ++i)
+      material.albedo[i] = static_cast<float>(std::clamp(color[i], 0.0, 1.0));
+    material.opacity = static_cast<float>(std::clamp(color[3], 0.0, 1.0));
+  }
+  material.blend = m.alphaMode == "BLEND";
+  if (!material.blend) material.opacity = 1.0f;
+  return material;
+}
+
+glm::vec3 SafeNormalize(const glm::dvec3& v) {
+  double length = glm::length(v);
+  return length > 0.0 ? glm::vec3(v / length) : glm::vec3(0.0f, 0.0f, 1.0f);
+}
+
+// Appends one primitive, transformed by to_world (node transforms and the axis change).
+void AppendPrimitive(const GltfReader& reader, const tinygltf::Primitive& primitive,
+                     const Material& material, const glm::dmat4& to_world, const std::string& field,
+                     Mesh& mesh) {
+  if (primitive.mode != TINYGLTF_MODE_TRIANGLES)
+    reader.Fail(field + ".mode", ModeName(primitive.mode), "TRIANGLES (4)");
+  auto position = primitive.attributes.find("POSITION");
+  if (position == primitive.attributes.end())
+    reader.Fail(field + ".attributes", "no POSITION", "a POSITION attribute");
+  std::vector<glm::dvec3> positions = reader.ReadVec3(position->second, field + ".POSITION");
+  std::vector<uint32_t> indices;
+  if (primitive.indices >= 0) {
+    indices = reader.ReadIndices(primitive.indices, field + ".indices");
+  } else {
+    indices.resize(positions.size());
+    for (size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<uint32_t>(i);
+  }
+  if (indices.size() % 3 != 0)
+    reader.Fail(field + ".indices", std::to_string(indices.size()) + " indices", "a multiple of 3");
+  for (uint32_t index : indices) {
+    if (index >= positions.size())
+      reader.Fail(field + ".indices", std::to_string(index),
+                  "below the vertex count " + std::to_string(positions.size()));
+  }
+
+  for (glm::dvec3& p : positions) p = glm::dvec3(to_world * glm::dvec4(p, 1.0));
+  // A mirroring transform turns counter-clockwise triangles clockwise (glTF 2.0 spec, 3.7.4).
+  glm::dmat3 linear(to_world);
+  bool mirrored = glm::determinant(linear) < 0.0;
+  if (mirrored)
+    for (size_t i = 0; i < indices.size(); i += 3) std::swap(indices[i + 1], indices[i + 2]);
+
+  auto normal = primitive.attributes.find("NORMAL");
+  if (normal != primitive.attributes.end()) {
+    std::vector<glm::dvec3> normals = reader.ReadVec3(normal->second, field + ".NORMAL");
+    if (normals.size() != positions.size())
+      reader.Fail(field + ".NORMAL", std::to_string(normals.size()) + " normals",
+                  std::to_string(positions.size()) + ", one per POSITION");
+    // Normals transform by the inverse transpose, which keeps them perpendicular to surfaces
+    // under non-uniform scale.
+    glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
+    uint32_t first = static_cast<uint32_t>(mesh.vertices.size());
+    for (size_t i = 0; i < positions.size(); ++i) {
+      mesh.vertices.push_back({glm::vec3(positions[i]), SafeNormalize(normal_matrix * normals[i]),
+                               material.albedo, material.opacity});
+    }
+    for (uint32_t index : indices) mesh.indices.push_back(first + index);
+    return;
+  }
+  // No normals: each triangle gets its own vertices carrying its face normal.
+  for (size_t i = 0; i < indices.size(); i += 3) {
+    const glm::dvec3 &a = positions[indices[i]], &b = positions[indices[i + 1]],
+                     &c = positions[indices[i + 2]];
+    glm::vec3 face = SafeNormalize(glm::cross(b - a, c - a));
+    for (const glm::dvec3* p : {&a, &b, &c}) {
+      mesh.indices.push_back(static_cast<uint32_t>(mesh.vertices.size()));
+      mesh.vertices.push_back({glm::vec3(*p), face, material.albedo, material.opacity});
+    }
+  }
+}
+
+void AppendMesh(const GltfReader& reader, const tinygltf::Model& model, int mesh_index,
+                const glm::dmat4& to_world, Mesh& mesh) {
+  std::string field = "meshes[" + std::to_string(mesh_index) + "]";
+  if (mesh_index < 0 || static_cast<size_t>(mesh_index) >= model.meshes.size())
+    reader.Fail("node mesh", std::to_string(mesh_index), "an existing mesh index");
+  const std::vector<tinygltf::Primitive>& primitives = model.meshes[mesh_index].primitives;
+  for (size_t i = 0; i < primitives.size(); ++i) {
+    Material material = MaterialOf(model, primitives[i].material);
+    mesh.transparent = mesh.transparent || material.blend;
+    AppendPrimitive(reader, primitives[i], material, to_world,
+                    field + ".primitives[" + std::to_string(i) + "]", mesh);
+  }
+}
+
+tinygltf::Model ReadModel(const std::filesystem::path& path) {
+  std::error_code ignored;
+  if (!std::filesystem::is_regular_file(path, ignored))
+    throw Error("glTF file", path.string(), "an existing .gltf or .glb file");
+  tinygltf::TinyGLTF loader;
+  // Textures are not used: accept images without decoding them (no stb_image in this build).
+  loader.SetImageLoader([](tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                           const unsigned char*, int, void*) { return true; },
+                        nullptr);
+  tinygltf::Model model;
+  std::string error, warning;
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  bool ok = extension == ".glb" ? loader.LoadBinaryFromFile(&model, &error, &warning, path.string())
+                                : loader.LoadASCIIFromFile(&model, &error, &warning, path.string());
+  if (!ok) {
+    while (!error.empty() && error.back() == '\n') error.pop_back();
+    throw Error("glTF file", path.string(), "valid glTF 2.0 (" + error + ")");
+  }
+  return model;
+}
+
+}  // namespace
+
+Mesh LoadGltfMesh(const std::filesystem::path& path, const std::string& name) {
+  tinygltf::Model model = ReadModel(path);
+  GltfReader reader(model, path.string());
+  Mesh mesh;
+  mesh.name = name;
+
+  if (model.scenes.empty()) {
+    // A file without scenes holds a library of meshes: take each once, untransformed.
+    for (size_t i = 0; i < model.meshes.size(); ++i)
+      AppendMesh(reader, model, static_cast<int>(i), kYUpToZUp, mesh);
+  } else {
+    size_t scene = model.defaultScene >= 0 ? static_cast<size_t>(model.defaultScene) : 0;
+    if (scene >= model.scenes.size())
+      reader.Fail("scene", std::to_string(scene), "an existing scene index");
+    // Depth-first over the node hierarchy; a valid glTF is a forest, so a path longer than the
+    // node count means a cycle.
+    struct Pending {
+      int node;
+      glm::dmat4 parent;
+      size_t depth;
+    };
+    std::vector<Pending> pending;
+    for (int root : model.scenes[scene].nodes) pending.push_back({root, kYUpToZUp, 0});
+    while (!pending.empty()) {
+      Pending p = pending.back();
+      pending.pop_back();
+      if (p.node < 0 || static_cast<size_t>(p.node) >= model.nodes.size())
+        reader.Fail("node", std::to_string(p.node), "an existing node index");
+      if (p.depth > model.nodes.size())
+        reader.Fail("nodes", "a cycle through node " + std::to_string(p.node), "a tree");
+      const tinygltf::Node& node = model.nodes[p.node];
+      glm::dmat4 transform = p.parent * LocalTransform(node);
+      if (node.mesh >= 0) AppendMesh(reader, model, node.mesh, transform, mesh);
+      for (int child : node.children) pending.push_back({child, transform, p.depth + 1});
+    }
+  }
+  if (mesh.indices.empty())
+    reader.Fail("triangles", "0", "at least one triangle in the default scene");
+  return mesh;
+}
+
+}  // namespace aerial

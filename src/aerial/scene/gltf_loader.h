@@ -1,0 +1,28 @@
+#pragma once
+// glTF 2.0 models (.gltf with embedded or external buffers, or .glb) as one Mesh in the world
+// frame's axes (scene.h).
+//
+// Everything the default scene (or scene 0, or with no scenes every mesh once) draws is merged:
+// all primitives of all meshes of its nodes, each node's transform (matrix, or translation x
+// rotation x scale) composed down the hierarchy. glTF is y-up with models facing +z; it is turned
+// to z-up by (x, y, z) -> (x, -z, y), a rotation, so up becomes +z and a model's front faces -y
+// (toward a camera looking north at it).
+//
+// Only what a Lambertian, per-vertex renderer uses is read: POSITION (required, float vec3),
+// NORMAL (float vec3; when absent, each triangle gets its face normal, so hard edges stay hard)
+// and the material's baseColorFactor (linear RGB by the glTF spec) as albedo, its alpha as
+// opacity when alphaMode is BLEND (then the mesh is transparent) and 1 otherwise. Textures,
+// vertex colors, skins and morph targets are ignored. Only TRIANGLES primitives are accepted.
+//
+// Errors throw aerial::Error with the path as where: a missing or unparsable file, a primitive
+// of another mode (naming it), a missing POSITION, out-of-range data, or no triangles at all.
+#include <filesystem>
+#include <string>
+
+#include "aerial/scene/scene.h"
+
+namespace aerial {
+
+Mesh LoadGltfMesh(const std::filesystem::path& path, const std::string& name);
+
+}  // namespace aerial

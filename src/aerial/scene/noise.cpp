@@ -1,0 +1,48 @@
+#include "aerial/scene/noise.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace aerial {
+
+uint32_t Hash(uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x7feb352dU;
+  x ^= x >> 15;
+  x *= 0x846ca68bU;
+  x ^= x >> 16;
+  return x;
+}
+
+uint32_t Hash(uint32_t a, uint32_t b, uint32_t c) {
+  // Chain the inputs through the finalizer so (a, b, c) and (b, a, c) differ.
+  return Hash(a ^ Hash(b ^ Hash(c + 0x9e3779b9U)));
+}
+
+double UnitFromHash(uint32_t h) { return static_cast<double>(h >> 8) / 16777216.0; }
+
+namespace {
+
+double Fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
+
+// Dot product of the lattice point's unit gradient with the offset to it.
+double Corner(int64_t ix, int64_t iy, uint32_t seed, double dx, double dy) {
+  uint32_t h = Hash(static_cast<uint32_t>(ix), static_cast<uint32_t>(iy), seed);
+  double angle = 2.0 * std::numbers::pi * UnitFromHash(h);
+  return std::cos(angle) * dx + std::sin(angle) * dy;
+}
+
+}  // namespace
+
+double GradientNoise(double x, double y, uint32_t seed) {
+  double fx = std::floor(x), fy = std::floor(y);
+  auto ix = static_cast<int64_t>(fx), iy = static_cast<int64_t>(fy);
+  double dx = x - fx, dy = y - fy;
+  double u = Fade(dx), v = Fade(dy);
+  double bottom = Corner(ix, iy, seed, dx, dy) * (1 - u) + Corner(ix + 1, iy, seed, dx - 1, dy) * u;
+  double top = Corner(ix, iy + 1, seed, dx, dy - 1) * (1 - u) +
+               Corner(ix + 1, iy + 1, seed, dx - 1, dy - 1) * u;
+  return bottom * (1 - v) + top * v;
+}
+
+}  // namespace aerial

@@ -1,0 +1,69 @@
+#pragma once
+// What the renderer draws: meshes, one camera and the sun, in one world frame.
+//
+// World frame. A local east-north-up frame on the ground at the scene origin: x east, y north,
+// z up, in meters. The planet is a sphere of radius R (the atmosphere's bottom_radius_m) centered
+// at (0, 0, -R), so the ground at the origin is z = 0 and it falls away as z = sqrt(R^2 - d^2) - R
+// (about -d^2 / 2R) at horizontal distance d. "Altitude" is |p - center| - R, the height above that
+// sphere (the sea-level ground), not above the terrain mesh.
+//
+// Angles are in degrees. Azimuths are compass bearings measured in the horizontal plane of the
+// origin: 0 = north (+y), 90 = east (+x), clockwise seen from above. Zenith angles are measured
+// from +z. The sun is at infinity, so one direction serves every point of the scene; at 100 km
+// from the origin the local vertical tilts by 100 km / R = 0.9 degrees from +z, which the
+// atmosphere model accounts for when it works from r and mu_s at each point.
+//
+// Meshes. Positions are world positions (float: a 100 km scene keeps ~8 mm resolution), normals
+// are unit length and triangles wind counter-clockwise seen from the side the normals point to.
+// Albedo is linear RGB reflectance in [0, 1]. Opaque meshes have opacity 1 at every vertex;
+// transparent ones (glass, a balloon, particles) have 0 < opacity < 1 and must be blended after
+// the opaque pass, each fragment attenuated by the aerial perspective between it and the camera.
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+namespace aerial {
+
+struct Vertex {
+  glm::vec3 position;  // world frame, m
+  glm::vec3 normal;    // unit length
+  glm::vec3 albedo;    // linear RGB in [0, 1]
+  float opacity;       // 1 for opaque meshes; in (0, 1) for transparent ones
+};
+
+struct Mesh {
+  std::string name;
+  std::vector<Vertex> vertices;
+  std::vector<uint32_t> indices;  // triangle list, 3 per triangle
+  bool transparent = false;
+};
+
+// A pinhole camera. yaw_deg is the compass azimuth of the view direction, pitch_deg its elevation
+// above the horizontal plane of the world frame (+90 looks straight up). There is no roll: the
+// image's right edge stays horizontal. near_m is the near clipping plane; there is no far plane
+// (see ProjectionMatrix in camera.h).
+struct Camera {
+  glm::dvec3 position{0, 0, 2};
+  double yaw_deg = 0, pitch_deg = 0, vertical_fov_deg = 60, near_m = 0.5;
+};
+
+struct Sun {
+  double zenith_deg = 30, azimuth_deg = 180;
+  // Unit vector toward the sun: (sin z sin a, sin z cos a, cos z) for zenith z and azimuth a.
+  glm::dvec3 Direction() const;
+};
+
+struct Scene {
+  std::vector<Mesh> meshes;
+  Camera camera;
+  Sun sun;
+  std::string name;
+};
+
+// The built-in scene (default_scene.cpp): a procedural terrain with mountains 5-80 km away, opaque
+// landmarks named "landmark_<d>km" at d = 1, 2, 5, 10, 20 and 40 km, and transparent glass panes,
+// a balloon and a particle cloud; camera and sun from the "noon" preset (presets.h).
+Scene BuildDefaultScene(double planet_radius_m);
+
+}  // namespace aerial

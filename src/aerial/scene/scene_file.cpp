@@ -1,0 +1,194 @@
+#include "aerial/scene/scene_file.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <vector>
+
+#include "aerial/core/error.h"
+#include "aerial/scene/gltf_loader.h"
+#include "aerial/scene/presets.h"
+#include "aerial/scene/scene_limits.h"
+#include "aerial/scene/terrain.h"
+#include "aerial/scene/toml_reader.h"
+
+namespace aerial {
+namespace {
+
+// Applies one optional key: calls read(node) if the key is present.
+template <typename F>
+void IfPresent(const toml::table& table, std::string_view key, F read) {
+  if (const toml::node* node = table.get(key)) read(*node);
+}
+
+void ReadCamera(const TomlReader& r, const toml::table& t, double planet_radius_m, Camera& camera) {
+  r.RejectUnknownKeys(t, "camera", {"position_m", "yaw_deg", "pitch_deg", "fov_deg", "near_m"});
+  IfPresent(t, "position_m", [&](const toml::node& n) {
+    std::vector<double> p = r.Numbers(n, "camera.position_m", 3, 3, "m");
+    camera.position = {p[0], p[1], p[2]};
+    CheckCameraPosition(camera.position, planet_radius_m, "camera.position_m", r.At(n));
+  });
+  IfPresent(t, "yaw_deg", [&](const toml::node& n) {
+    camera.yaw_deg = r.Number(n, "camera.yaw_deg", "degrees");
+    CheckAzimuthDeg(camera.yaw_deg, "camera.yaw_deg", r.At(n));
+  });
+  IfPresent(t, "pitch_deg", [&](const toml::node& n) {
+    camera.pitch_deg = r.Number(n, "camera.pitch_deg", "degrees");
+    CheckPitchDeg(camera.pitch_deg, "camera.pitch_deg", r.At(n));
+  });
+  IfPresent(t, "fov_deg", [&](const toml::node& n) {
+    camera.vertical_fov_deg = r.Number(n, "camera.fov_deg", "degrees");
+    CheckFovDeg(camera.vertical_fov_deg, "camera.fov_deg", r.At(n));
+  });
+  IfPresent(t, "near_m", [&](const toml::node& n) {
+    camera.near_m = r.Number(n, "camera.near_m", "m");
+    CheckNearM(camera.near_m, "camera.near_m", r.At(n));
+  });
+}
+
+void ReadSun(const TomlReader& r, const toml::table& t, Sun& sun) {
+  r.RejectUnknownKeys(t, "sun", {"zenith_deg", "azimuth_deg"});
+  IfPresent(t, "zenith_deg", [&](const toml::node& n) {
+    sun.zenith_deg = r.Number(n, "sun.zenith_deg", "degrees");
+    CheckZenithDeg(sun.zenith_deg, "sun.zenith_deg", r.At(n));
+  });
+  IfPresent(t, "azimuth_deg", [&](const toml::node& n) {
+    sun.azimuth_deg = r.Number(n, "sun.azimuth_deg", "degrees");
+    CheckAzimuthDeg(sun.azimuth_deg, "sun.azimuth_deg", r.At(n));
+  });
+}
+
+// Scale, then turn about z by yaw clockwise seen from above (a model's +y goes to compass
+// azimuth yaw), then move the origin to anchor.
+void Place(Mesh& mesh, const glm::dvec3& anchor, double scale, double yaw_deg) {
+  double yaw = yaw_deg * std::numbers::pi / 180.0, c = std::cos(yaw), s = std::sin(yaw);
+  glm::dmat3 turn(c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0);  // columns: images of x, y, z
+  for (Vertex& v : mesh.vertices) {
+    v.position = glm::vec3(anchor + turn * (scale * glm::dvec3(v.position)));
+    v.normal = glm::vec3(turn * glm::dvec3(v.normal));
+  }
+}
+
+Mesh ReadMesh(const TomlReader& r, const toml::node& node, const std::string& field,
+              const std::filesystem::path& base_dir, double planet_radius_m) {
+  const toml::table& t = r.Table(node, field);
+  r.RejectUnknownKeys(t, field,
+                      {"gltf", "position_m", "scale", "yaw_deg", "transparent", "opacity"});
+  const toml::node* gltf = t.get("gltf");
+  if (!gltf) {
+    throw Error(TomlReader::Join(field, "gltf"), "", "the path of a .gltf or .glb file",
+                r.At(node));
+  }
+  std::filesystem::path path = base_dir / r.String(*gltf, TomlReader::Join(field, "gltf"));
+
+  glm::dvec3 anchor(0.0);
+  double scale = 1.0, yaw_deg = 0.0, opacity = 1.0;
+  std::optional<bool> transparent;
+  IfPresent(t, "position_m", [&](const toml::node& n) {
+    std::string name = TomlReader::Join(field, "position_m");
+    std::vector<double> p = r.Numbers(n, name, 2, 3, "m");
+    for (size_t i = 0; i < p.size(); ++i)
+      if (!std::isfinite(p[i]))
+        r.Fail(*n.as_array()->get(i), TomlReader::Index(name, i), "a finite number (m)");
+    anchor = p.size() == 3 ? glm::dvec3(p[0], p[1], p[2])
+                           : SurfacePoint(p[0], p[1], TerrainHeightM(p[0], p[1]), planet_radius_m);
+  });
+  IfPresent(t, "scale", [&](const toml::node& n) {
+    scale = r.Number(n, TomlReader::Join(field, "scale"), "");
+    if (!(scale > 0.0 && std::isfinite(scale)))
+      r.Fail(n, TomlReader::Join(field, "scale"), "> 0 and finite");
+  });
+  IfPresent(t, "yaw_deg", [&](const toml::node& n) {
+    yaw_deg = r.Number(n, TomlReader::Join(field, "yaw_deg"), "degrees");
+    CheckAzimuthDeg(yaw_deg, TomlReader::Join(field, "yaw_deg"), r.At(n));
+  });
+  IfPresent(t, "transparent", [&](const toml::node& n) {
+    transparent = r.Bool(n, TomlReader::Join(field, "transparent"));
+  });
+  IfPresent(t, "opacity", [&](const toml::node& n) {
+    std::string name = TomlReader::Join(field, "opacity");
+    opacity = r.Number(n, name, "");
+    if (!(opacity > 0.0 && opacity <= 1.0)) r.Fail(n, name, "(0, 1]");
+    if (opacity < 1.0 && transparent == false)
+      r.Fail(n, name, "1 when " + TomlReader::Join(field, "transparent") + " = false");
+  });
+
+  Mesh mesh;
+  try {
+    mesh = LoadGltfMesh(path, path.stem().string());
+  } catch (const Error& e) {
+    throw Error(TomlReader::Join(field, "gltf"), path.string(), e.field() + ": " + e.allowed(),
+                r.At(*gltf));
+  }
+  mesh.transparent = transparent.value_or(mesh.transparent || opacity < 1.0);
+  for (Vertex& v : mesh.vertices)
+    v.opacity = mesh.transparent ? static_cast<float>(v.opacity * opacity) : 1.0f;
+  Place(mesh, anchor, scale, yaw_deg);
+  return mesh;
+}
+
+}  // namespace
+
+Scene ParseSceneToml(std::string_view text, const std::string& where,
+                     const std::filesystem::path& base_dir, double planet_radius_m) {
+  TomlReader r(where);
+  toml::table root = r.Parse(text);
+  r.RejectUnknownKeys(root, "", {"preset", "camera", "sun", "mesh"});
+  // Everything is read and checked on the preset's view and the extra meshes first, and the
+  // built-in scene (a ~150k-vertex terrain) is built only once the file is known to be valid.
+  Scene view;
+  std::string preset = "noon";
+  IfPresent(root, "preset", [&](const toml::node& n) {
+    preset = r.String(n, "preset");
+    try {
+      ApplyPresetView(view, preset, planet_radius_m);
+    } catch (const Error& e) {
+      r.Fail(n, "preset", e.allowed());
+    }
+  });
+  if (!root.get("preset")) ApplyPresetView(view, preset, planet_radius_m);
+  IfPresent(root, "camera", [&](const toml::node& n) {
+    ReadCamera(r, r.Table(n, "camera"), planet_radius_m, view.camera);
+  });
+  IfPresent(root, "sun", [&](const toml::node& n) { ReadSun(r, r.Table(n, "sun"), view.sun); });
+  IfPresent(root, "mesh", [&](const toml::node& n) {
+    const toml::array* meshes = n.as_array();
+    if (!meshes) r.Fail(n, "mesh", "an array of tables ([[mesh]])");
+    for (size_t i = 0; i < meshes->size(); ++i) {
+      view.meshes.push_back(
+          ReadMesh(r, *meshes->get(i), TomlReader::Index("mesh", i), base_dir, planet_radius_m));
+    }
+  });
+
+  Scene scene = BuildDefaultScene(planet_radius_m);
+  scene.camera = view.camera;
+  scene.sun = view.sun;
+  scene.name = view.name;
+  for (Mesh& mesh : view.meshes) scene.meshes.push_back(std::move(mesh));
+  return scene;
+}
+
+Scene LoadSceneFile(const std::filesystem::path& path, double planet_radius_m) {
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                       &std::fclose);
+  std::string text;
+  if (file) {
+    char chunk[4096];
+    size_t got;
+    while ((got = std::fread(chunk, 1, sizeof chunk, file.get())) > 0) text.append(chunk, got);
+  }
+  // Reading a directory opens fine and fails in fread (EISDIR).
+  if (!file || std::ferror(file.get())) {
+    throw Error("scene file", path.string(),
+                std::string("a readable TOML file (") + std::strerror(errno) + ")");
+  }
+  Scene scene = ParseSceneToml(text, path.string(), path.parent_path(), planet_radius_m);
+  scene.name = path.stem().string();
+  return scene;
+}
+
+}  // namespace aerial

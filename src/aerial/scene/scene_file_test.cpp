@@ -1,0 +1,158 @@
+#include "aerial/scene/scene_file.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "aerial/core/error.h"
+#include "aerial/scene/terrain.h"
+
+#ifndef AERIAL_SOURCE_DIR
+#define AERIAL_SOURCE_DIR "."
+#endif
+
+namespace aerial {
+namespace {
+
+constexpr double kR = 6360e3;
+const std::filesystem::path kExamples =
+    std::filesystem::path(AERIAL_SOURCE_DIR) / "examples/scenes";
+
+// Built once: the terrain takes most of a second.
+const Scene& Builtin() {
+  static const Scene scene = BuildDefaultScene(kR);
+  return scene;
+}
+
+Scene Parse(const std::string& text) { return ParseSceneToml(text, "test.toml", kExamples, kR); }
+
+// Parsing must fail with an Error naming field, located at test.toml:line.
+void ExpectError(const std::string& text, const std::string& field, int line) {
+  try {
+    Parse(text);
+    ADD_FAILURE() << "no error for:\n" << text;
+  } catch (const Error& e) {
+    EXPECT_EQ(e.field(), field) << text << "\n" << e.what();
+    EXPECT_EQ(e.where().rfind("test.toml:" + std::to_string(line) + ":", 0), 0u) << text << "\n"
+                                                                                 << e.what();
+    EXPECT_FALSE(e.allowed().empty()) << e.what();
+  }
+}
+
+TEST(SceneFile, DefaultExampleIsTheBuiltInScene) {
+  Scene file = LoadSceneFile(kExamples / "default.toml", kR);
+  const Scene& built = Builtin();
+  EXPECT_EQ(file.name, "default");
+  EXPECT_EQ(file.meshes.size(), built.meshes.size());
+  // Exact: the file spells out the preset's values, and TOML decimals like 4.0 are exact.
+  EXPECT_EQ(file.camera.position, built.camera.position);
+  EXPECT_EQ(file.camera.yaw_deg, built.camera.yaw_deg);
+  EXPECT_EQ(file.camera.pitch_deg, built.camera.pitch_deg);
+  EXPECT_EQ(file.camera.vertical_fov_deg, built.camera.vertical_fov_deg);
+  EXPECT_EQ(file.camera.near_m, built.camera.near_m);
+  EXPECT_EQ(file.sun.zenith_deg, built.sun.zenith_deg);
+  EXPECT_EQ(file.sun.azimuth_deg, built.sun.azimuth_deg);
+}
+
+TEST(SceneFile, GltfExamplePlacesItsMeshes) {
+  Scene scene = LoadSceneFile(kExamples / "with-gltf.toml", kR);
+  const Scene& base = Builtin();
+  ASSERT_EQ(scene.meshes.size(), base.meshes.size() + 2);
+  EXPECT_EQ(scene.camera.pitch_deg, 3.0);
+  EXPECT_EQ(scene.sun.zenith_deg, 55.0);  // from the afternoon preset
+
+  const Mesh& on_ground = scene.meshes[scene.meshes.size() - 2];
+  EXPECT_EQ(on_ground.name, "cube");
+  EXPECT_FALSE(on_ground.transparent);
+  EXPECT_EQ(on_ground.indices.size(), 36u);
+  // position_m = [x, y]: the cube's base (its origin) is on the terrain there. The cube is 10 m,
+  // scaled by 3; float rounding of ~500 m coordinates is well under 1 mm.
+  double bottom = HUGE_VAL, top = -HUGE_VAL;
+  for (const Vertex& v : on_ground.vertices) {
+    bottom = std::min<double>(bottom, v.position.z);
+    top = std::max<double>(top, v.position.z);
+    EXPECT_EQ(v.opacity, 1.0f);
+  }
+  glm::dvec3 ground = SurfacePoint(-180.0, 450.0, TerrainHeightM(-180.0, 450.0), kR);
+  EXPECT_NEAR(bottom, ground.z, 1e-3);
+  EXPECT_NEAR(top - bottom, 30.0, 1e-3);
+
+  const Mesh& floating = scene.meshes.back();
+  EXPECT_TRUE(floating.transparent);
+  for (const Vertex& v : floating.vertices) EXPECT_FLOAT_EQ(v.opacity, 0.4f);
+}
+
+TEST(SceneFile, EmptyFileIsTheNoonPreset) {
+  Scene scene = Parse("");
+  EXPECT_EQ(scene.name, "noon");
+  EXPECT_EQ(scene.sun.zenith_deg, Builtin().sun.zenith_deg);
+}
+
+TEST(SceneFile, EachInvalidFieldIsNamedWithItsLine) {
+  ExpectError("preset = \"dusk\"", "preset", 1);
+  ExpectError("preset = 3", "preset", 1);
+  ExpectError("[camera]\nfov_deg = 170", "camera.fov_deg", 2);
+  ExpectError("[camera]\nfov_deg = 1", "camera.fov_deg", 2);
+  ExpectError("[camera]\nnear_m = 0", "camera.near_m", 2);
+  ExpectError("[camera]\nnear_m = inf", "camera.near_m", 2);
+  ExpectError("[camera]\npitch_deg = 90.5", "camera.pitch_deg", 2);
+  ExpectError("[camera]\nyaw_deg = nan", "camera.yaw_deg", 2);
+  ExpectError("[camera]\nyaw_deg = \"north\"", "camera.yaw_deg", 2);
+  ExpectError("[camera]\n\nposition_m = [0, 0, 100001]", "camera.position_m", 3);
+  ExpectError("[camera]\nposition_m = [0, 0, -501]", "camera.position_m", 2);
+  ExpectError("[camera]\nposition_m = [0, 0]", "camera.position_m", 2);
+  ExpectError("[camera]\nposition_m = [0, nan, 2]", "camera.position_m[1]", 2);
+  ExpectError("[sun]\nzenith_deg = -0.1", "sun.zenith_deg", 2);
+  ExpectError("[sun]\nzenith_deg = 180.5", "sun.zenith_deg", 2);
+  ExpectError("[sun]\nazimuth_deg = inf", "sun.azimuth_deg", 2);
+  ExpectError("camera = 3", "camera", 1);
+  ExpectError("mesh = 3", "mesh", 1);
+  const std::string cube = "[[mesh]]\ngltf = \"cube.gltf\"\n";
+  ExpectError(cube + "scale = 0", "mesh[0].scale", 3);
+  ExpectError(cube + "scale = -2", "mesh[0].scale", 3);
+  ExpectError(cube + "opacity = 0", "mesh[0].opacity", 3);
+  ExpectError(cube + "opacity = 1.5", "mesh[0].opacity", 3);
+  ExpectError(cube + "transparent = false\nopacity = 0.5", "mesh[0].opacity", 4);
+  ExpectError(cube + "transparent = 1", "mesh[0].transparent", 3);
+  ExpectError(cube + "position_m = [1, 2, 3, 4]", "mesh[0].position_m", 3);
+  ExpectError(cube + "position_m = [1, inf]", "mesh[0].position_m[1]", 3);
+  ExpectError(cube + "yaw_deg = nan", "mesh[0].yaw_deg", 3);
+  ExpectError(cube + "[[mesh]]\nscale = 2", "mesh[1].gltf", 3);
+  ExpectError("[[mesh]]\ngltf = \"missing.glb\"", "mesh[0].gltf", 2);
+}
+
+TEST(SceneFile, MissingGltfNamesThePath) {
+  try {
+    Parse("[[mesh]]\ngltf = \"missing.glb\"");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.value(), (kExamples / "missing.glb").string());
+    EXPECT_NE(std::string(e.what()).find("missing.glb"), std::string::npos);
+  }
+}
+
+TEST(SceneFile, UnknownKeysAreRejected) {
+  ExpectError("presets = \"noon\"", "presets", 1);
+  ExpectError("[camera]\nfov = 50", "camera.fov", 2);
+  ExpectError("[sun]\nelevation_deg = 10", "sun.elevation_deg", 2);
+  ExpectError("[[mesh]]\ngltf = \"cube.gltf\"\nrotation = 3", "mesh[0].rotation", 3);
+  try {
+    Parse("[camera]\nfov = 50");
+  } catch (const Error& e) {
+    EXPECT_NE(e.allowed().find("fov_deg"), std::string::npos) << "lists the known keys";
+  }
+}
+
+TEST(SceneFile, SyntaxErrorsHaveALine) { ExpectError("[camera\nfov_deg = 50", "TOML syntax", 1); }
+
+TEST(SceneFile, MissingFileNamesThePath) {
+  try {
+    LoadSceneFile(kExamples / "no-such-scene.toml", kR);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(e.value().find("no-such-scene.toml"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace aerial

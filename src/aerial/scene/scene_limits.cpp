@@ -1,0 +1,57 @@
+#include "aerial/scene/scene_limits.h"
+
+#include <charconv>
+#include <cmath>
+
+#include "aerial/core/error.h"
+
+namespace aerial {
+namespace {
+
+void Check(bool ok, double value, const std::string& field, const std::string& allowed,
+           const std::string& where) {
+  if (!ok) throw Error(field, FormatNumber(value), allowed, where);
+}
+
+}  // namespace
+
+std::string FormatNumber(double value) {
+  char buffer[64];
+  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+
+void CheckCameraPosition(const glm::dvec3& p, double planet_radius_m, const std::string& field,
+                         const std::string& where) {
+  const char* axes[] = {"[0]", "[1]", "[2]"};
+  for (int i = 0; i < 3; ++i)
+    Check(std::isfinite(p[i]), p[i], field + axes[i], "a finite number (m)", where);
+  double altitude = glm::length(p - glm::dvec3(0.0, 0.0, -planet_radius_m)) - planet_radius_m;
+  if (!(altitude >= -500.0 && altitude <= 100e3)) {
+    throw Error(field,
+                "[" + FormatNumber(p.x) + ", " + FormatNumber(p.y) + ", " + FormatNumber(p.z) +
+                    "] (altitude " + FormatNumber(altitude) + " m)",
+                "an altitude above the planet's sphere in [-500, 100000] m", where);
+  }
+}
+
+void CheckAzimuthDeg(double degrees, const std::string& field, const std::string& where) {
+  Check(std::isfinite(degrees), degrees, field, "a finite angle (degrees)", where);
+}
+
+void CheckPitchDeg(double degrees, const std::string& field, const std::string& where) {
+  Check(degrees >= -90.0 && degrees <= 90.0, degrees, field, "[-90, 90] degrees", where);
+}
+
+void CheckFovDeg(double degrees, const std::string& field, const std::string& where) {
+  Check(degrees > 1.0 && degrees < 170.0, degrees, field, "(1, 170) degrees, open", where);
+}
+
+void CheckNearM(double meters, const std::string& field, const std::string& where) {
+  Check(meters > 0.0 && std::isfinite(meters), meters, field, "> 0 m and finite", where);
+}
+
+void CheckZenithDeg(double degrees, const std::string& field, const std::string& where) {
+  Check(degrees >= 0.0 && degrees <= 180.0, degrees, field, "[0, 180] degrees", where);
+}
+
+}  // namespace aerial

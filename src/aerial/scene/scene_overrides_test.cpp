@@ -1,0 +1,54 @@
+#include "aerial/scene/scene_overrides.h"
+
+#include <gtest/gtest.h>
+
+#include "aerial/core/error.h"
+
+namespace aerial {
+namespace {
+
+constexpr double kR = 6360e3;
+
+TEST(SceneOverrides, SetValuesReplaceAndOthersStay) {
+  Scene scene;
+  Camera before = scene.camera;
+  SceneOverrides overrides;
+  overrides.camera_yaw_deg = 90.0;
+  overrides.sun_zenith_deg = 91.0;
+  ApplyOverrides(scene, overrides, kR);
+  EXPECT_EQ(scene.camera.yaw_deg, 90.0);
+  EXPECT_EQ(scene.sun.zenith_deg, 91.0);
+  EXPECT_EQ(scene.camera.position, before.position);
+  EXPECT_EQ(scene.camera.pitch_deg, before.pitch_deg);
+  EXPECT_EQ(scene.camera.vertical_fov_deg, before.vertical_fov_deg);
+}
+
+// Each invalid value is named by its option, and nothing is applied.
+TEST(SceneOverrides, InvalidValuesAreNamedAndNothingChanges) {
+  struct Case {
+    SceneOverrides overrides;
+    std::string field;
+  };
+  std::vector<Case> cases(6);
+  cases[0] = {{.camera_position_m = glm::dvec3(0, 0, 2e5)}, "--camera-position-m"};
+  cases[1] = {{.camera_yaw_deg = NAN}, "--camera-yaw-deg"};
+  cases[2] = {{.camera_pitch_deg = -91.0}, "--camera-pitch-deg"};
+  cases[3] = {{.camera_fov_deg = 0.5}, "--camera-fov-deg"};
+  cases[4] = {{.sun_zenith_deg = 200.0}, "--sun-zenith-deg"};
+  cases[5] = {{.sun_azimuth_deg = INFINITY}, "--sun-azimuth-deg"};
+  for (Case& c : cases) {
+    c.overrides.camera_yaw_deg = c.overrides.camera_yaw_deg.value_or(45.0);  // a valid change
+    Scene scene;
+    try {
+      ApplyOverrides(scene, c.overrides, kR);
+      ADD_FAILURE() << c.field << ": no error";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.field(), c.field);
+      EXPECT_EQ(e.where(), "command line");
+    }
+    EXPECT_EQ(scene.camera.yaw_deg, Camera{}.yaw_deg) << c.field << ": applied before failing";
+  }
+}
+
+}  // namespace
+}  // namespace aerial

@@ -1,0 +1,153 @@
+#include "aerial/scene/terrain.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "aerial/scene/noise.h"
+
+namespace aerial {
+namespace {
+
+double SmoothStep(double edge0, double edge1, double x) {
+  double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+// Musgrave's ridged multifractal ("Texturing and Modeling", 3rd ed., ch. 16): 1 - |noise| turns
+// the noise's zero crossings into sharp crests, squaring narrows them, and weighting each octave
+// by the previous one puts fine detail on the crests and leaves the valleys smooth. Six octaves
+// from an 18 km wavelength down to ~560 m, about the mesh spacing 30 km out. Each octave is
+// rotated by 37 degrees so the lattices of successive octaves do not line up. Result in [0, 1].
+double RidgedMultifractal(double x, double y) {
+  constexpr int kOctaves = 6;
+  constexpr double kGradientNoiseMax = 0.7071;  // sqrt(2)/2, the 2D extreme
+  const double c = std::cos(0.6458), s = std::sin(0.6458);
+  double frequency = 1.0 / 18000.0, amplitude = 1.0, weight = 1.0, sum = 0.0, total = 0.0;
+  for (int octave = 0; octave < kOctaves; ++octave) {
+    double n = GradientNoise(x * frequency, y * frequency, 101 + octave) / kGradientNoiseMax;
+    double ridge = 1.0 - std::min(std::fabs(n), 1.0);
+    ridge *= ridge * weight;
+    weight = std::clamp(2.0 * ridge, 0.0, 1.0);
+    sum += ridge * amplitude;
+    total += amplitude;
+    double rotated_x = c * x - s * y;
+    y = s * x + c * y;
+    x = rotated_x;
+    frequency *= 2.0;
+    amplitude *= 0.5;
+  }
+  return sum / total;
+}
+
+// Where mountains may rise, in [0, 1]: not within 2.5 km of the camera's valley floor, fully from
+// 7 km, fading out from 85 km to the terrain's edge, and held low in a corridor along +y (north,
+// the default view direction) so the landmarks stand in the open and mountains close its far end
+// at 50-60 km. The corridor half-width is 600 m + 0.1 y (about 6 degrees seen from the origin),
+// its walls rise over 1.5 km + 0.1 y beyond that.
+double MountainMask(double x, double y) {
+  double d = std::hypot(x, y);
+  double mask = SmoothStep(2500.0, 7000.0, d) * (1.0 - SmoothStep(85e3, kTerrainRadiusM, d));
+  if (y > 0.0) {
+    double half_width = 600.0 + 0.1 * y, wall = 1500.0 + 0.1 * y;
+    double lateral = SmoothStep(half_width, half_width + wall, std::fabs(x));
+    double far_end = SmoothStep(48e3, 60e3, y);
+    mask *= std::max(lateral, far_end);
+  }
+  return mask;
+}
+
+// Linear albedos (0.1-0.2, like grass, soil and rock in the ASTER/ECOSTRESS spectral library at
+// visible wavelengths) and fresh-ish snow at 0.75.
+constexpr glm::dvec3 kGrass{0.10, 0.14, 0.07}, kRock{0.18, 0.17, 0.15}, kSnow{0.75, 0.76, 0.80};
+
+// Grass low, rock above ~1 km and on steep slopes (cos slope < 0.8, steeper than 37 degrees),
+// snow above ~2.5 km where the slope holds it (cos slope > 0.7).
+glm::dvec3 TerrainAlbedo(double height_m, double cos_slope) {
+  double rock = std::max(SmoothStep(600.0, 1600.0, height_m), SmoothStep(0.85, 0.7, cos_slope));
+  double snow = SmoothStep(2400.0, 2700.0, height_m) * SmoothStep(0.55, 0.75, cos_slope);
+  return glm::mix(glm::mix(kGrass, kRock, rock), kSnow, snow);
+}
+
+glm::dvec3 TerrainPoint(double x, double y, double planet_radius_m) {
+  return SurfacePoint(x, y, TerrainHeightM(x, y), planet_radius_m);
+}
+
+}  // namespace
+
+double TerrainHeightM(double x, double y) {
+  double d = std::hypot(x, y);
+  // The valley floor: flat at the camera, rising 4 m per km (faster than the planet's curvature
+  // drop d / R = 0.16 m per km at 25 km) so the corridor floor stays above the camera's horizon,
+  // with 30 m gentle hills from 300 m out.
+  double hills = 30.0 * GradientNoise(x / 1500.0, y / 1500.0, 7) * SmoothStep(300.0, 3000.0, d);
+  double floor = 0.004 * d + hills;
+  double ridges = RidgedMultifractal(x, y);
+  return floor + MountainMask(x, y) * 3000.0 * ridges * ridges;
+}
+
+glm::dvec3 SurfacePoint(double x, double y, double height_m, double planet_radius_m) {
+  const double r = planet_radius_m;
+  glm::dvec3 up{x / r, y / r, std::sqrt(std::max(0.0, r * r - x * x - y * y)) / r};
+  return glm::dvec3(0.0, 0.0, -r) + (r + height_m) * up;
+}
+
+GroundFrame GroundFrameAt(double x, double y, double planet_radius_m) {
+  GroundFrame frame;
+  frame.origin = TerrainPoint(x, y, planet_radius_m);
+  frame.up = glm::normalize(frame.origin - glm::dvec3(0.0, 0.0, -planet_radius_m));
+  frame.east = glm::normalize(glm::cross(glm::dvec3(0, 1, 0), frame.up));
+  frame.north = glm::cross(frame.up, frame.east);
+  return frame;
+}
+
+Mesh BuildTerrainMesh(double planet_radius_m) {
+  const double R = planet_radius_m;
+  const double dtheta = 2.0 * std::numbers::pi / kTerrainSegments;
+  std::vector<double> radii{0.0};
+  while (radii.back() < kTerrainRadiusM)
+    radii.push_back(std::min(kTerrainRadiusM,
+                             radii.back() + std::max(kTerrainMinStepM, radii.back() * dtheta)));
+
+  Mesh mesh;
+  mesh.name = "terrain";
+  // Normals by central differences of the surface over the local grid spacing, so shading sees
+  // the same detail as the geometry (a smaller step would show sub-cell noise as shimmer).
+  auto add_vertex = [&](double x, double y, double step) {
+    glm::dvec3 p = TerrainPoint(x, y, R);
+    glm::dvec3 dx = TerrainPoint(x + step, y, R) - TerrainPoint(x - step, y, R);
+    glm::dvec3 dy = TerrainPoint(x, y + step, R) - TerrainPoint(x, y - step, R);
+    glm::dvec3 normal = glm::normalize(glm::cross(dx, dy));
+    glm::dvec3 up = glm::normalize(p - glm::dvec3(0.0, 0.0, -R));
+    double height = glm::length(p - glm::dvec3(0.0, 0.0, -R)) - R;
+    mesh.vertices.push_back({glm::vec3(p), glm::vec3(normal),
+                             glm::vec3(TerrainAlbedo(height, glm::dot(normal, up))), 1.0f});
+  };
+  add_vertex(0.0, 0.0, kTerrainMinStepM);
+  for (size_t ring = 1; ring < radii.size(); ++ring) {
+    double step = radii[ring] - radii[ring - 1];
+    for (int j = 0; j < kTerrainSegments; ++j) {
+      double azimuth = j * dtheta;  // compass: clockwise from north seen from above
+      add_vertex(radii[ring] * std::sin(azimuth), radii[ring] * std::cos(azimuth), step);
+    }
+  }
+
+  // Segment j to j + 1 runs clockwise seen from above (compass azimuth), so these orders are
+  // counter-clockwise seen from above: the triangles face up, like their normals.
+  auto index = [](size_t ring, int j) {
+    return static_cast<uint32_t>(1 + (ring - 1) * kTerrainSegments + j % kTerrainSegments);
+  };
+  for (int j = 0; j < kTerrainSegments; ++j)
+    mesh.indices.insert(mesh.indices.end(), {0u, index(1, j + 1), index(1, j)});
+  for (size_t ring = 1; ring + 1 < radii.size(); ++ring) {
+    for (int j = 0; j < kTerrainSegments; ++j) {
+      uint32_t a = index(ring, j), b = index(ring, j + 1);
+      uint32_t c = index(ring + 1, j), d = index(ring + 1, j + 1);
+      mesh.indices.insert(mesh.indices.end(), {a, b, c, b, d, c});
+    }
+  }
+  return mesh;
+}
+
+}  // namespace aerial

@@ -1,0 +1,45 @@
+#pragma once
+// What compute and graphics pipelines share: a pipeline layout of one push-descriptor set plus push
+// constants, pushing the descriptors of a list of slots, and shader modules from the embedded
+// SPIR-V.
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "aerial/vk/resources.h"
+
+namespace aerial::vk {
+
+struct UniformBufferSlot { const Buffer* buffer; };
+struct StorageBufferSlot { const Buffer* buffer; };
+struct SampledImageSlot { const Image* image; ::vk::Sampler sampler; };
+struct StorageImageSlot { const Image* image; };
+using Slot = std::variant<UniformBufferSlot, StorageBufferSlot, SampledImageSlot, StorageImageSlot>;
+
+// Descriptor types for slot lists, shorter to read in pass tables.
+inline constexpr auto kUniform = ::vk::DescriptorType::eUniformBuffer;
+inline constexpr auto kStorageBuffer = ::vk::DescriptorType::eStorageBuffer;
+inline constexpr auto kSampled = ::vk::DescriptorType::eCombinedImageSampler;
+inline constexpr auto kStorageImage = ::vk::DescriptorType::eStorageImage;
+
+// Binding i of set 0 has slot_types[i]; push constants, if any, start at offset 0.
+struct PushDescriptorLayout {
+  PushDescriptorLayout(const Context& context, std::vector<::vk::DescriptorType> slot_types,
+                       uint32_t push_constant_bytes, ::vk::ShaderStageFlags stages);
+
+  // Pushes slots[i] to binding i and the push constants (when the layout has them).
+  void Push(const ::vk::raii::CommandBuffer& cmd, ::vk::PipelineBindPoint bind_point,
+            const std::vector<Slot>& slots, const void* push_constants,
+            const std::string& pipeline_name) const;
+
+  std::vector<::vk::DescriptorType> slot_types;
+  uint32_t push_constant_bytes;
+  ::vk::ShaderStageFlags stages;
+  ::vk::raii::DescriptorSetLayout set_layout{nullptr};
+  ::vk::raii::PipelineLayout layout{nullptr};
+};
+
+// Throws aerial::Error when the name is not one of shaders/.
+::vk::raii::ShaderModule CreateShaderModule(const Context& context, const std::string& shader);
+
+}  // namespace aerial::vk
