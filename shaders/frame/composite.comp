@@ -34,12 +34,16 @@ void main() {
     if (nu > cos(atmosphere.sun_angular_radius) && !RayIntersectsGround(r, mu))
       radiance += GetSolarRadiance() * sky.transmittance;
   } else {
-    Inscatter segment =
-        frame.froxel_size.w == 1
-            ? GetSkyInscatterToPoint(transmittance_texture, rayleigh_texture, mie_texture,
-                                     multiple_texture, r, mu, mu_s, nu, surface.a)
-            : SampleFroxels(rayleigh_froxels, mie_froxels, transmittance_froxels, uv, surface.a,
-                            float(frame.froxel_size.z), frame.froxel_depth.x);
+    // An if, not a ?: compilers may evaluate both sides of a select, and the per-pixel path is the
+    // expensive one. The condition is uniform over the dispatch.
+    Inscatter segment;
+    if (frame.froxel_size.w == 1) {
+      segment = GetSkyInscatterToPoint(transmittance_texture, rayleigh_texture, mie_texture,
+                                       multiple_texture, r, mu, mu_s, nu, surface.a);
+    } else {
+      segment = SampleFroxels(rayleigh_froxels, mie_froxels, transmittance_froxels, uv, surface.a,
+                              float(frame.froxel_size.z), frame.froxel_depth.x);
+    }
     radiance = surface.rgb * segment.transmittance + ApplyPhaseFunctions(segment, nu);
   }
   imageStore(output_image, pixel, vec4(radiance, 1.0));

@@ -127,6 +127,7 @@ vec3 GetScatteringExponentialInR(sampler3D scattering_texture, ivec4 size, float
   float slice0 = min(floor(slice), r_size - 2.0);
   float t = slice - slice0;
   vec3 s0 = GetScatteringAt(scattering_texture, size, vec4(uvwz.xyz, (slice0 + 0.5) / r_size));
+  if (t == 0.0) return s0;  // on a slice (a camera on the ground): uniform over a frame's pixels
   vec3 s1 = GetScatteringAt(scattering_texture, size, vec4(uvwz.xyz, (slice0 + 1.5) / r_size));
   bvec3 use_log = greaterThan(min(s0, s1), vec3(1e-30));
   vec3 exponential = exp(mix(log(max(s0, vec3(1e-30))), log(max(s1, vec3(1e-30))), t));

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "aerial/core/error.h"
+#include "aerial/scene/gltf_accessors.h"
 #include "aerial/scene/tiny_gltf_config.h"
 
 namespace aerial {
@@ -27,94 +28,6 @@ std::string ModeName(int mode) {
   std::string name = mode >= 0 && mode < 7 ? kNames[mode] : "unknown";
   return name + " (" + std::to_string(mode) + ")";
 }
-
-// Reads accessors with every index and byte range checked, so a malformed file is an Error and
-// never an out-of-bounds read.
-class GltfReader {
- public:
-  GltfReader(const tinygltf::Model& model, std::string where)
-      : model_(model), where_(std::move(where)) {}
-
-  [[noreturn]] void Fail(const std::string& field, const std::string& value,
-                         const std::string& allowed) const {
-    throw Error(field, value, allowed, where_);
-  }
-
-  std::vector<glm::dvec3> ReadVec3(int accessor_index, const std::string& field) const {
-    const tinygltf::Accessor& a = Get(accessor_index, field);
-    if (a.type != TINYGLTF_TYPE_VEC3 || a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
-      Fail(field,
-           "type " + std::to_string(a.type) + ", component type " + std::to_string(a.componentType),
-           "float VEC3");
-    std::vector<glm::dvec3> values(a.count);
-    const unsigned char* data = Data(a, 12, field);
-    size_t stride = static_cast<size_t>(a.ByteStride(model_.bufferViews[a.bufferView]));
-    for (size_t i = 0; i < a.count; ++i) {
-      float xyz[3];
-      std::memcpy(xyz, data + i * stride, sizeof xyz);
-      values[i] = {xyz[0], xyz[1], xyz[2]};
-    }
-    return values;
-  }
-
-  std::vector<uint32_t> ReadIndices(int accessor_index, const std::string& field) const {
-    const tinygltf::Accessor& a = Get(accessor_index, field);
-    size_t size = a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
-                  : a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
-                  : a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
-                                                                              : 0;
-    if (a.type != TINYGLTF_TYPE_SCALAR || size == 0)
-      Fail(field, "component type " + std::to_string(a.componentType),
-           "SCALAR of unsigned byte, short or int");
-    const unsigned char* data = Data(a, size, field);
-    size_t stride = static_cast<size_t>(a.ByteStride(model_.bufferViews[a.bufferView]));
-    std::vector<uint32_t> indices(a.count);
-    for (size_t i = 0; i < a.count; ++i) {
-      const unsigned char* p = data + i * stride;
-      if (size == 1) indices[i] = *p;
-      if (size == 2) indices[i] = static_cast<uint32_t>(p[0] | p[1] << 8);
-      if (size == 4) std::memcpy(&indices[i], p, 4);  // glTF is little-endian, like x86 and ARM
-    }
-    return indices;
-  }
-
- private:
-  const tinygltf::Accessor& Get(int index, const std::string& field) const {
-    if (index < 0 || static_cast<size_t>(index) >= model_.accessors.size())
-      Fail(field, std::to_string(index),
-           "an accessor index below " + std::to_string(model_.accessors.size()));
-    const tinygltf::Accessor& a = model_.accessors[index];
-    if (a.sparse.isSparse) Fail(field, "a sparse accessor", "a plain accessor");
-    return a;
-  }
-
-  // The accessor's first element, after checking that all count elements of element_size bytes
-  // lie inside its buffer view and the view inside its buffer.
-  const unsigned char* Data(const tinygltf::Accessor& a, size_t element_size,
-                            const std::string& field) const {
-    if (a.bufferView < 0 || static_cast<size_t>(a.bufferView) >= model_.bufferViews.size())
-      Fail(field + ".bufferView", std::to_string(a.bufferView), "an existing buffer view");
-    const tinygltf::BufferView& view = model_.bufferViews[a.bufferView];
-    if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model_.buffers.size())
-      Fail(field + ".buffer", std::to_string(view.buffer), "an existing buffer");
-    const tinygltf::Buffer& buffer = model_.buffers[view.buffer];
-    int stride = a.ByteStride(view);
-    if (stride < static_cast<int>(element_size))
-      Fail(field + ".byteStride", std::to_string(stride), ">= the element size");
-    size_t needed = a.count == 0 ? 0 : a.byteOffset + (a.count - 1) * stride + element_size;
-    if (view.byteOffset + view.byteLength > buffer.data.size() || needed > view.byteLength) {
-      Fail(field,
-           std::to_string(a.count) + " elements from byte " +
-               std::to_string(view.byteOffset + a.byteOffset),
-           "data inside its buffer view and buffer (" + std::to_string(buffer.data.size()) +
-               " bytes)");
-    }
-    return buffer.data.data() + view.byteOffset + a.byteOffset;
-  }
-
-  const tinygltf::Model& model_;
-  std::string where_;
-};
 
 glm::dmat4 LocalTransform(const tinygltf::Node& node) {
   if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major both

@@ -16,8 +16,9 @@
 // Meshes. Positions are world positions (float: a 100 km scene keeps ~8 mm resolution), normals
 // are unit length and triangles wind counter-clockwise seen from the side the normals point to.
 // Albedo is linear RGB reflectance in [0, 1]. Opaque meshes have opacity 1 at every vertex;
-// transparent ones (glass, a balloon, particles) have 0 < opacity < 1 and must be blended after
-// the opaque pass, each fragment attenuated by the aerial perspective between it and the camera.
+// transparent ones (glass, a balloon, particles; opacity in (0, 1], below 1 in the built-in scene)
+// must be blended after the opaque pass, each fragment attenuated and in-scattered by the air
+// between it and the camera like an opaque one.
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <string>
@@ -29,7 +30,7 @@ struct Vertex {
   glm::vec3 position;  // world frame, m
   glm::vec3 normal;    // unit length
   glm::vec3 albedo;    // linear RGB in [0, 1]
-  float opacity;       // 1 for opaque meshes; in (0, 1) for transparent ones
+  float opacity;       // 1 for opaque meshes; in (0, 1] for transparent ones
 };
 
 struct Mesh {

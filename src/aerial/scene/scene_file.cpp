@@ -121,8 +121,11 @@ Mesh ReadMesh(const TomlReader& r, const toml::node& node, const std::string& fi
   try {
     mesh = LoadGltfMesh(path, path.stem().string());
   } catch (const Error& e) {
-    throw Error(TomlReader::Join(field, "gltf"), path.string(), e.field() + ": " + e.allowed(),
-                r.At(*gltf));
+    // The loader's own field ("meshes[0].primitives[1].mode") and value go into the message.
+    std::string problem = e.value() == path.string() ? e.allowed()
+                                                     : "a loadable glTF; its " + e.field() + " = " +
+                                                           e.value() + ", expected " + e.allowed();
+    throw Error(TomlReader::Join(field, "gltf"), path.string(), problem, r.At(*gltf));
   }
   mesh.transparent = transparent.value_or(mesh.transparent || opacity < 1.0);
   for (Vertex& v : mesh.vertices)
