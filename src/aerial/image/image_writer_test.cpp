@@ -91,9 +91,15 @@ TEST_F(ImageWriter, FailedWriteKeepsPreviousFile) {
   EXPECT_EQ(Entries(), std::vector<std::string>{"sky.exr"});
 }
 
-TEST_F(ImageWriter, CheckCreatesMissingParent) {
-  CheckImageOutputPath(dir_ / "new" / "sky.png");
-  EXPECT_EQ(Entries(), std::vector<std::string>{"new"});
+// A mistyped output directory is an error naming the path, and nothing is created.
+TEST_F(ImageWriter, MissingParentDirectoryIsAnErrorAndNothingIsCreated) {
+  try {
+    CheckImageOutputPath(dir_ / "new" / "sky.png");
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("new"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(Entries().empty());
 }
 
 }  // namespace
