@@ -65,7 +65,9 @@ void PrintTo(const BadInput& input, std::ostream* out) { *out << input.arguments
 class CliRejects : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(CliRejects, WithMessageAndNonZeroExit) {
+  std::filesystem::remove("/tmp/aerial-cli-test.png");
   CommandRun run = RunAerial(GetParam().arguments);
+  EXPECT_FALSE(std::filesystem::exists("/tmp/aerial-cli-test.png")) << "no partial output";
   EXPECT_NE(run.exit_code, 0) << GetParam().arguments;
   EXPECT_NE(run.err.find(GetParam().must_mention), std::string::npos)
       << "stderr does not mention \"" << GetParam().must_mention << "\":\n" << run.err;
@@ -87,6 +89,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"precompute --small-tables --quiet --out /proc/aerial-cannot-write", "/proc/aerial-cannot-write"},
         BadInput{"precompute --atmosphere " AERIAL_SOURCE_DIR "/tests/data/bad_mie_g.toml", "mie.phase_g"},
         BadInput{"precompute --atmosphere " AERIAL_SOURCE_DIR "/tests/data/unknown_key.toml", "rayleigh.scatterring"},
+        BadInput{"render --preset no-such-preset --out /tmp/aerial-cli-test.png", "no-such-preset"},
+        BadInput{"render --width 0 --height 10 --out /tmp/aerial-cli-test.png", "--width"},
+        BadInput{"render --width 100000 --height 10 --out /tmp/aerial-cli-test.png", "--width"},
+        BadInput{"render --froxels 32x32 --out /tmp/aerial-cli-test.png", "--froxels"},
+        BadInput{"render --out /nonexistent-aerial-dir/x.png", "/nonexistent-aerial-dir"},
+        BadInput{"render --out /tmp/aerial-cli-test.jpg", "--out"},
+        BadInput{"render --scene " AERIAL_SOURCE_DIR "/tests/data/bad_scene.toml --out /tmp/aerial-cli-test.png", "camera.fov_deg"},
         BadInput{"no-such-command", "no-such-command"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return "case" + std::to_string(info.index); });
 

@@ -51,5 +51,37 @@ TEST_F(Render, FroxelMatchesPerPixel) {
   EXPECT_LT(rmse, 0.02);
 }
 
+// The Mie halo is centered on the sun: with the sun just above the horizon ahead of the camera,
+// the sky luminance a few degrees left and right of the projected sun position is the same (the
+// halo is symmetric about the sun), and the brightest pixel is the sun itself.
+TEST_F(Render, SunHaloIsCenteredOnTheSun) {
+  const AtmosphereTables& tables = FullTables();
+  Scene scene = BuildPreset("noon", tables.atmosphere().bottom_radius_m);
+  scene.meshes.clear();  // sky only
+  scene.sun = {.zenith_deg = 80.0, .azimuth_deg = 0.0};
+  scene.camera.yaw_deg = 0.0;
+  scene.camera.pitch_deg = 10.0;
+  Renderer renderer(tables, scene, {.width = kWidth, .height = kHeight});
+  renderer.Render(scene);
+  ImageRgbF image = renderer.ReadOutput();
+  // The sun is straight ahead horizontally: its column is the image's middle.
+  auto luminance = [&](int x, int y) {
+    const float* p = image.pixel(x, y);
+    return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+  };
+  int brightest_x = 0, brightest_y = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x)
+      if (luminance(x, y) > luminance(brightest_x, brightest_y)) brightest_x = x, brightest_y = y;
+  EXPECT_NEAR(brightest_x, kWidth / 2, 1) << "the sun disc is at the middle column";
+  for (int dx : {4, 12, 30}) {
+    double left = luminance(kWidth / 2 - 1 - dx, brightest_y);
+    double right = luminance(kWidth / 2 + dx, brightest_y);
+    // Symmetric pixels about the sun's column (the middle falls between pixels 159 and 160); 1%
+    // covers the froxel interpolation, which is not involved for sky pixels, and float rounding.
+    EXPECT_NEAR(left / right, 1.0, 0.01) << "halo at " << dx << " px";
+  }
+}
+
 }  // namespace
 }  // namespace aerial::testing

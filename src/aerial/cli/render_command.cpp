@@ -27,6 +27,8 @@ struct RenderCommandOptions {
   std::string aerial = "froxel";
   bool timings = false;
   std::filesystem::path out;
+  std::vector<double> camera_position_m;  // x, y, z
+  SceneOverrides overrides;
 };
 
 void RunRender(const RenderCommandOptions& options) {
@@ -43,6 +45,12 @@ void RunRender(const RenderCommandOptions& options) {
                     ? BuildPreset(options.preset.empty() ? "noon" : options.preset,
                                   atmosphere.bottom_radius_m)
                     : LoadSceneFile(options.scene_file, atmosphere.bottom_radius_m);
+  SceneOverrides overrides = options.overrides;
+  if (!options.camera_position_m.empty()) {
+    overrides.camera_position_m = glm::dvec3(options.camera_position_m[0], options.camera_position_m[1],
+                                             options.camera_position_m[2]);
+  }
+  ApplyOverrides(scene, overrides, atmosphere.bottom_radius_m);
   auto context = options.tables.MakeContext();
   LoadedTables loaded = LoadOrPrecompute(*context, atmosphere, options.tables.MakePrecomputeOptions(),
                                          options.tables.MakeStoreOptions());
@@ -78,6 +86,14 @@ void AddRenderCommand(CLI::App& app) {
   command->add_option("--aerial", options->aerial, "Aerial perspective: froxel or per-pixel")
       ->check(CLI::IsMember({"froxel", "per-pixel"}));
   command->add_flag("--timings", options->timings, "Print the GPU time of each pass");
+  command->add_option("--camera-position-m", options->camera_position_m,
+                      "Camera position x,y,z in the scene frame (m; x east, y north, z up)")
+      ->delimiter(',')->expected(3);
+  command->add_option("--camera-yaw-deg", options->overrides.camera_yaw_deg, "Camera compass azimuth (deg)");
+  command->add_option("--camera-pitch-deg", options->overrides.camera_pitch_deg, "Camera elevation (deg)");
+  command->add_option("--camera-fov-deg", options->overrides.camera_fov_deg, "Vertical field of view (deg)");
+  command->add_option("--sun-zenith-deg", options->overrides.sun_zenith_deg, "Sun zenith angle (deg)");
+  command->add_option("--sun-azimuth-deg", options->overrides.sun_azimuth_deg, "Sun compass azimuth (deg)");
   command->add_option("--out", options->out, "Output image, .exr (linear) or .png (sRGB)")->required();
   command->callback([options] { RunRender(*options); });
 }
