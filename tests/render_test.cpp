@@ -4,7 +4,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
 
+#include "aerial/image/image_writer.h"
+#include "aerial/probe/table_probe.h"
 #include "aerial/render/renderer.h"
 #include "aerial/scene/presets.h"
 #include "gpu_fixture.h"
@@ -48,6 +53,8 @@ TEST_F(Render, FroxelMatchesPerPixel) {
   }
   double rmse = std::sqrt(sum_squared / sum_reference);
   std::printf("froxel vs per-pixel: relative RMSE %.4f%%, worst pixel %.2f%%\n", 100 * rmse, 100 * worst);
+  // Measured 0.17% (worst pixel 3.4%, at a mountain silhouette where the froxel's trilinear read
+  // mixes depths) at 32x32x32 in daylight; the issue aims at <= 2%.
   EXPECT_LT(rmse, 0.02);
 }
 
@@ -80,6 +87,127 @@ TEST_F(Render, SunHaloIsCenteredOnTheSun) {
     // Symmetric pixels about the sun's column (the middle falls between pixels 159 and 160); 1%
     // covers the froxel interpolation, which is not involved for sky pixels, and float rounding.
     EXPECT_NEAR(left / right, 1.0, 0.01) << "halo at " << dx << " px";
+  }
+}
+
+double RelativeRmse(const ImageRgbF& a, const ImageRgbF& b, const std::vector<bool>* mask = nullptr) {
+  double sum_squared = 0.0, sum_reference = 0.0;
+  for (size_t p = 0; p < a.rgba.size() / 4; ++p) {
+    if (mask && !(*mask)[p]) continue;
+    for (int c = 0; c < 3; ++c) {
+      double x = a.rgba[4 * p + c], y = b.rgba[4 * p + c];
+      sum_squared += (x - y) * (x - y);
+      sum_reference += y * y;
+    }
+  }
+  return std::sqrt(sum_squared / sum_reference);
+}
+
+// Small golden images of two presets, stored as EXR (tests/data/golden). The tolerance is 1%
+// relative RMSE: lavapipe is deterministic, so this leaves room for other drivers' rounding and
+// texture filtering while catching any change of the physics or the passes. Rebuild them with
+// AERIAL_UPDATE_GOLDEN=1 after an intended change, and say why in the commit.
+TEST_F(Render, MatchesGoldenImages) {
+  for (const char* preset : {"noon", "sunset"}) {
+    const AtmosphereTables& tables = FullTables();
+    Scene scene = BuildPreset(preset, tables.atmosphere().bottom_radius_m);
+    Renderer renderer(tables, scene, {.width = 96, .height = 54});
+    renderer.Render(scene);
+    ImageRgbF image = renderer.ReadOutput();
+    std::filesystem::path golden =
+        std::filesystem::path(AERIAL_SOURCE_DIR) / "tests/data/golden" / (std::string(preset) + ".exr");
+    if (std::getenv("AERIAL_UPDATE_GOLDEN")) WriteImage(golden, image, {});
+    double rmse = RelativeRmse(image, ReadExr(golden));
+    std::printf("%s against its golden image: relative RMSE %.4f%%\n", preset, 100 * rmse);
+    EXPECT_LT(rmse, 0.01) << preset;
+  }
+}
+
+// Transparent objects read the froxels per vertex: over the pixels they cover, the image matches
+// the per-pixel path within a bound. Measured on the noon preset (balloon, panes, particle cloud).
+TEST_F(Render, TransparentPerVertexMatchesPerPixel) {
+  const AtmosphereTables& tables = FullTables();
+  Scene scene = BuildPreset("noon", tables.atmosphere().bottom_radius_m);
+  Scene opaque_only = scene;
+  std::erase_if(opaque_only.meshes, [](const Mesh& m) { return m.transparent; });
+  auto render = [&](const Scene& s, AerialMode mode) {
+    Renderer renderer(tables, s, {.width = kWidth, .height = kHeight, .mode = mode});
+    renderer.Render(s);
+    return renderer.ReadOutput();
+  };
+  ImageRgbF with = render(scene, AerialMode::kFroxel);
+  ImageRgbF without = render(opaque_only, AerialMode::kFroxel);
+  ImageRgbF per_pixel = render(scene, AerialMode::kPerPixel);
+  std::vector<bool> covered(with.rgba.size() / 4);
+  size_t count = 0;
+  for (size_t p = 0; p < covered.size(); ++p) {
+    covered[p] = std::memcmp(&with.rgba[4 * p], &without.rgba[4 * p], 3 * sizeof(float)) != 0;
+    count += covered[p];
+  }
+  ASSERT_GT(count, 100u) << "transparent objects cover pixels";
+  double rmse = RelativeRmse(with, per_pixel, &covered);
+  std::printf("transparent per-vertex vs per-pixel: relative RMSE %.4f%% over %zu pixels\n", 100 * rmse, count);
+  EXPECT_LT(rmse, 0.02);
+}
+
+// An object at a known distance gets the transmittance the probe gives for that distance: the
+// froxel transmittance read at the 10 km landmark's screen position and distance, against
+// ProbeTables' transmittance_to_point along the same ray. 1%: trilinear froxel interpolation over
+// slices 3.4 km apart at 10 km, for a quantity that changes by ~10% over 10 km.
+TEST_F(Render, FroxelTransmittanceAtTheLandmarkMatchesTheProbe) {
+  const AtmosphereTables& tables = FullTables();
+  Scene scene = BuildPreset("noon", tables.atmosphere().bottom_radius_m);
+  const Mesh* landmark = nullptr;
+  for (const Mesh& m : scene.meshes) if (m.name == "landmark_10km") landmark = &m;
+  ASSERT_NE(landmark, nullptr);
+  glm::dvec3 center(0.0);
+  for (const Vertex& v : landmark->vertices) center += glm::dvec3(v.position) / double(landmark->vertices.size());
+  Renderer renderer(tables, scene, {.width = kWidth, .height = kHeight});
+  renderer.Render(scene);
+  // The froxel volume, read back and sampled on the CPU the way the shader does.
+  const FroxelVolume& froxels = renderer.froxels();
+  const vk::Image& volume = froxels.transmittance();
+  vk::Buffer readback(tables.context(), {.size = volume.byte_size(),
+                                         .usage = ::vk::BufferUsageFlagBits::eTransferDst,
+                                         .host_visible = true});
+  tables.context().Submit([&](const auto& cmd) { volume.CopyToBuffer(cmd, readback); vk::FullBarrier(cmd); });
+  const float* texels = reinterpret_cast<const float*>(readback.mapped());
+  const FroxelGrid& grid = froxels.grid();
+  glm::dvec3 relative = center - scene.camera.position;
+  double distance = glm::length(relative);
+  glm::dvec3 ray = relative / distance;
+  // Screen position from the frame's view-projection (column-major floats).
+  const auto& m = renderer.frame_uniforms().view_projection;
+  glm::dvec4 clip(0.0);
+  for (int row = 0; row < 4; ++row)
+    clip[row] = m[0 * 4 + row] * relative.x + m[1 * 4 + row] * relative.y + m[2 * 4 + row] * relative.z + m[3 * 4 + row];
+  double u = clip.x / clip.w * 0.5 + 0.5, v = clip.y / clip.w * 0.5 + 0.5;
+  double coords[3] = {u * grid.width - 0.5, v * grid.height - 0.5, grid.DepthCoordinate(distance) * grid.depth - 0.5};
+  int sizes[3] = {grid.width, grid.height, grid.depth};
+  Spectrum froxel{0, 0, 0};
+  for (int corner = 0; corner < 8; ++corner) {
+    int index[3];
+    double weight = 1.0;
+    for (int axis = 0; axis < 3; ++axis) {
+      double c = std::clamp(coords[axis], 0.0, double(sizes[axis] - 1));
+      int i0 = std::min(int(std::floor(c)), sizes[axis] - 2);
+      double t = c - i0;
+      int bit = (corner >> axis) & 1;
+      index[axis] = i0 + bit;
+      weight *= bit ? t : 1.0 - t;
+    }
+    size_t texel = ((size_t(index[2]) * grid.height + index[1]) * grid.width + index[0]) * 4;
+    for (int c = 0; c < 3; ++c) froxel[c] += weight * texels[texel + c];
+  }
+  glm::dvec3 planet_position = scene.camera.position + glm::dvec3(0, 0, tables.atmosphere().bottom_radius_m);
+  double r = glm::length(planet_position);
+  glm::dvec3 sun = scene.sun.Direction();
+  ProbeQuery query{{r, glm::dot(planet_position, ray) / r, glm::dot(planet_position, sun) / r, glm::dot(ray, sun)},
+                   distance};
+  Spectrum probe = ProbeTables(tables, std::span(&query, 1)).front().transmittance_to_point;
+  for (int c = 0; c < 3; ++c) {
+    std::printf("channel %d: froxel %.5f probe %.5f\n", c, froxel[c], probe[c]);
+    EXPECT_NEAR(froxel[c] / probe[c], 1.0, 0.01);
   }
 }
 

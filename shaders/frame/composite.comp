@@ -3,9 +3,11 @@
 // Composite pass, per pixel: nu from the pixel's own view ray, the Rayleigh and Cornette-Shanks
 // phase functions, and L = L_surface T + I_R P_R(nu) + I_M P_M(nu) with (I_R, I_M, T) read from
 // the froxel volume at the pixel's distance (or, in per-pixel mode, straight from the tables).
-// Sky pixels take the inscatter along the whole ray from the tables, plus the sun disc.
+// Sky pixels take the inscatter along the whole ray from the tables, plus the sun disc; pixels
+// whose ray meets the planet beyond the scene's geometry see the bare ground (ground albedo).
 #include "froxel.glsl"
 #include "frame.glsl"
+#include "surface.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
 layout(set = 0, binding = 3) uniform sampler3D rayleigh_texture;
@@ -16,6 +18,7 @@ layout(set = 0, binding = 7) uniform sampler3D mie_froxels;
 layout(set = 0, binding = 8) uniform sampler3D transmittance_froxels;
 layout(set = 0, binding = 9, rgba32f) uniform readonly image2D surface_image;  // a < 0: sky
 layout(set = 0, binding = 10) writeonly uniform image2D output_image;
+layout(set = 0, binding = 11) uniform sampler2D irradiance_texture;
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -30,9 +33,15 @@ void main() {
     Inscatter sky = GetSkyInscatter(transmittance_texture, rayleigh_texture, mie_texture,
                                     multiple_texture, r, mu, mu_s, nu);
     radiance = ApplyPhaseFunctions(sky, nu);
-    // The sun disc at its true angular size, seen through the atmosphere.
-    if (nu > cos(atmosphere.sun_angular_radius) && !RayIntersectsGround(r, mu))
+    if (RayIntersectsGround(r, mu)) {
+      vec3 ground = ray * DistanceToBottomAtmosphereBoundary(r, mu);
+      vec3 normal = normalize(frame.camera_planet_position.xyz + ground);
+      radiance += sky.transmittance * ShadeLambertian(transmittance_texture, irradiance_texture,
+                                                      ground, normal, atmosphere.ground_albedo.rgb);
+    } else if (nu > cos(atmosphere.sun_angular_radius)) {
+      // The sun disc at its true angular size, seen through the atmosphere.
       radiance += GetSolarRadiance() * sky.transmittance;
+    }
   } else {
     // An if, not a ?: compilers may evaluate both sides of a select, and the per-pixel path is the
     // expensive one. The condition is uniform over the dispatch.

@@ -64,7 +64,7 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
                                 true)),
       composite_(tables.context(), "frame/composite.comp",
                  {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled, kSampled,
-                  kSampled, kStorageImage, kStorageImage}),
+                  kSampled, kStorageImage, kStorageImage, kSampled}),
       timer_(std::make_unique<vk::GpuTimer>(tables.context())) {
   tables.context().Submit([&](const auto& cmd) {
     for (const vk::Image* image : {&surface_, &depth_, &output_}) image->InitializeLayout(cmd);
@@ -103,7 +103,7 @@ std::vector<vk::PassTime> Renderer::Render(const Scene& scene) {
                          sampled(tables_.mie()), sampled(tables_.multiple()),
                          sampled(froxels_.rayleigh()), sampled(froxels_.mie()),
                          sampled(froxels_.transmittance()), vk::StorageImageSlot{&surface_},
-                         vk::StorageImageSlot{&output_}},
+                         vk::StorageImageSlot{&output_}, sampled(tables_.irradiance())},
                         {uint32_t(options_.width), uint32_t(options_.height), 1}, {8, 8, 1});
     timer_->End(cmd);
     vk::FullBarrier(cmd);
