@@ -48,7 +48,8 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
                                        .host_visible = true}),
       surface_(tables.context(), Target(options, ::vk::Format::eR32G32B32A32Sfloat,
                                         ::vk::ImageUsageFlagBits::eColorAttachment |
-                                            ::vk::ImageUsageFlagBits::eStorage)),
+                                            ::vk::ImageUsageFlagBits::eStorage |
+                                            ::vk::ImageUsageFlagBits::eTransferSrc)),
       depth_(tables.context(), Target(options, ::vk::Format::eD32Sfloat,
                                       ::vk::ImageUsageFlagBits::eDepthStencilAttachment)),
       output_(tables.context(), Target(options, ::vk::Format::eR32G32B32A32Sfloat,
@@ -123,18 +124,21 @@ std::vector<vk::PassTime> Renderer::Render(const Scene& scene) {
   return timer_->Collect();
 }
 
-ImageRgbF Renderer::ReadOutput() const {
-  vk::Buffer readback(tables_.context(), {.size = output_.byte_size(),
+ImageRgbF Renderer::ReadOutput() const { return Read(output_); }
+ImageRgbF Renderer::ReadSurface() const { return Read(surface_); }
+
+ImageRgbF Renderer::Read(const vk::Image& image) const {
+  vk::Buffer readback(tables_.context(), {.size = image.byte_size(),
                                           .usage = ::vk::BufferUsageFlagBits::eTransferDst,
                                           .host_visible = true});
   tables_.context().Submit([&](const auto& cmd) {
-    output_.CopyToBuffer(cmd, readback);
+    image.CopyToBuffer(cmd, readback);
     vk::FullBarrier(cmd);
   });
-  ImageRgbF image{options_.width, options_.height, {}};
-  image.rgba.resize(size_t(options_.width) * options_.height * 4);
-  std::memcpy(image.rgba.data(), readback.mapped(), image.rgba.size() * sizeof(float));
-  return image;
+  ImageRgbF pixels{options_.width, options_.height, {}};
+  pixels.rgba.resize(size_t(options_.width) * options_.height * 4);
+  std::memcpy(pixels.rgba.data(), readback.mapped(), pixels.rgba.size() * sizeof(float));
+  return pixels;
 }
 
 }  // namespace aerial

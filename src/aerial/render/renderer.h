@@ -37,11 +37,16 @@ class Renderer {
   std::vector<vk::PassTime> Render(const Scene& scene);
 
   ImageRgbF ReadOutput() const;  // linear radiance of the last frame
+  // The opaque pass's target: lit surface radiance before aerial perspective in rgb, distance
+  // from the camera in a (negative where no geometry was drawn).
+  ImageRgbF ReadSurface() const;
   const FroxelVolume& froxels() const { return froxels_; }
   const FrameUniforms& frame_uniforms() const { return frame_uniforms_; }
   const RenderOptions& options() const { return options_; }
 
  private:
+  ImageRgbF Read(const vk::Image& image) const;
+
   const AtmosphereTables& tables_;
   RenderOptions options_;
   SceneGeometry geometry_;
