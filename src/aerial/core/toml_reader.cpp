@@ -140,8 +140,7 @@ double TomlReader::Number(const toml::node& node, const std::string& field,
 }
 
 std::vector<double> TomlReader::Numbers(const toml::node& node, const std::string& field,
-                                        size_t min_size, size_t max_size,
-                                        const std::string& unit) {
+                                        size_t min_size, size_t max_size, const std::string& unit) {
   Remember(node, field);
   std::string count = min_size == max_size
                           ? std::to_string(min_size)

@@ -1,5 +1,6 @@
 #include "aerial/render/renderer.h"
 
+#include <array>
 #include <cstring>
 
 #include "aerial/core/error.h"
@@ -23,6 +24,29 @@ vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std
           .alpha_blend = blended};
 }
 
+vk::GraphicsPipelineCreateInfo CompositePipeline() {
+  using vk::kSampled;
+  using vk::kUniform;
+  return {.vertex_shader = "frame/fullscreen.vert",
+          .fragment_shader = "frame/composite.frag",
+          .slot_types = {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled,
+                         kSampled, kSampled, kSampled, kSampled},
+          .vertex_stride = 16,
+          .attributes = {{::vk::Format::eR32G32B32A32Sfloat, 0}},
+          .color_formats = {::vk::Format::eR32G32B32A32Sfloat}};
+}
+
+vk::Buffer HostBuffer(const vk::Context& context, std::span<const std::byte> bytes,
+                      ::vk::BufferUsageFlags usage) {
+  vk::Buffer buffer(context, {.size = bytes.size(), .usage = usage, .host_visible = true});
+  buffer.Write(bytes);
+  return buffer;
+}
+
+// One triangle covering the screen: (-1,-1), (3,-1), (-1,3) in clip space.
+constexpr std::array<float, 12> kFullscreenTriangle = {-1, -1, 0, 1, 3, -1, 0, 1, -1, 3, 0, 1};
+constexpr std::array<uint32_t, 3> kFullscreenIndices = {0, 1, 2};
+
 vk::ImageCreateInfo Target(const RenderOptions& o, ::vk::Format format, ::vk::ImageUsageFlags usage) {
   return {.extent = {uint32_t(o.width), uint32_t(o.height), 1}, .format = format, .usage = usage};
 }
@@ -35,7 +59,6 @@ void RenderOptions::Validate() const {
 }
 
 using vk::kSampled;
-using vk::kStorageImage;
 using vk::kUniform;
 
 Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const RenderOptions& options)
@@ -48,13 +71,12 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
                                        .host_visible = true}),
       surface_(tables.context(), Target(options, ::vk::Format::eR32G32B32A32Sfloat,
                                         ::vk::ImageUsageFlagBits::eColorAttachment |
-                                            ::vk::ImageUsageFlagBits::eStorage |
+                                            ::vk::ImageUsageFlagBits::eSampled |
                                             ::vk::ImageUsageFlagBits::eTransferSrc)),
       depth_(tables.context(), Target(options, ::vk::Format::eD32Sfloat,
                                       ::vk::ImageUsageFlagBits::eDepthStencilAttachment)),
       output_(tables.context(), Target(options, ::vk::Format::eR32G32B32A32Sfloat,
                                        ::vk::ImageUsageFlagBits::eColorAttachment |
-                                           ::vk::ImageUsageFlagBits::eStorage |
                                            ::vk::ImageUsageFlagBits::eTransferSrc)),
       opaque_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/opaque.frag",
                                              {kUniform, kUniform, kSampled, kSampled}, false)),
@@ -63,9 +85,11 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
                                 {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled,
                                  kSampled, kSampled, kSampled, kSampled},
                                 true)),
-      composite_(tables.context(), "frame/composite.comp",
-                 {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled, kSampled,
-                  kSampled, kStorageImage, kStorageImage, kSampled}),
+      composite_(tables.context(), CompositePipeline()),
+      fullscreen_vertices_(HostBuffer(tables.context(), std::as_bytes(std::span(kFullscreenTriangle)),
+                                      ::vk::BufferUsageFlagBits::eVertexBuffer)),
+      fullscreen_indices_(HostBuffer(tables.context(), std::as_bytes(std::span(kFullscreenIndices)),
+                                     ::vk::BufferUsageFlagBits::eIndexBuffer)),
       timer_(std::make_unique<vk::GpuTimer>(tables.context())) {
   tables.context().Submit([&](const auto& cmd) {
     for (const vk::Image* image : {&surface_, &depth_, &output_}) image->InitializeLayout(cmd);
@@ -99,13 +123,12 @@ std::vector<vk::PassTime> Renderer::Render(const Scene& scene) {
     timer_->End(cmd);
     vk::FullBarrier(cmd);
     timer_->Begin(cmd, "composite");
-    composite_.Dispatch(cmd,
-                        {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.rayleigh()),
-                         sampled(tables_.mie()), sampled(tables_.multiple()),
-                         sampled(froxels_.rayleigh()), sampled(froxels_.mie()),
-                         sampled(froxels_.transmittance()), vk::StorageImageSlot{&surface_},
-                         vk::StorageImageSlot{&output_}, sampled(tables_.irradiance())},
-                        {uint32_t(options_.width), uint32_t(options_.height), 1}, {8, 8, 1});
+    composite_.Draw(cmd, {.colors = {&output_}, .clear_colors = {std::array<float, 4>{0, 0, 0, 1}}},
+                    {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.rayleigh()),
+                     sampled(tables_.mie()), sampled(tables_.multiple()), sampled(froxels_.rayleigh()),
+                     sampled(froxels_.mie()), sampled(froxels_.transmittance()), sampled(surface_),
+                     sampled(tables_.irradiance())},
+                    fullscreen_vertices_, fullscreen_indices_, 3);
     timer_->End(cmd);
     vk::FullBarrier(cmd);
     timer_->Begin(cmd, "transparent raster");

@@ -54,8 +54,8 @@ class Renderer {
   vk::Buffer frame_buffer_;
   FrameUniforms frame_uniforms_{};
   vk::Image surface_, depth_, output_;
-  vk::GraphicsPipeline opaque_, transparent_;
-  vk::ComputePipeline composite_;
+  vk::GraphicsPipeline opaque_, transparent_, composite_;
+  vk::Buffer fullscreen_vertices_, fullscreen_indices_;
   std::unique_ptr<vk::GpuTimer> timer_;
 };
 

@@ -1,65 +1,61 @@
 #include "aerial/scene/scene_file.h"
 
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <memory>
 #include <numbers>
 #include <optional>
 #include <vector>
 
 #include "aerial/core/error.h"
+#include "aerial/core/toml_reader.h"
 #include "aerial/scene/gltf_loader.h"
 #include "aerial/scene/presets.h"
 #include "aerial/scene/scene_limits.h"
 #include "aerial/scene/terrain.h"
-#include "aerial/scene/toml_reader.h"
 
 namespace aerial {
 namespace {
 
-// Applies one optional key: calls read(node) if the key is present.
-template <typename F>
-void IfPresent(const toml::table& table, std::string_view key, F read) {
-  if (const toml::node* node = table.get(key)) read(*node);
+// An optional number key of a [camera] or [sun] table: the member it sets, its unit and its range
+// check (scene_limits.h).
+template <typename T>
+struct NumberKey {
+  const char* key;
+  double T::*member;
+  const char* unit;
+  void (*check)(double value, const std::string& field, const std::string& where);
+};
+
+template <typename T>
+void ReadNumbers(TomlReader& r, const toml::table& t, const std::string& prefix, T& target,
+                 std::initializer_list<NumberKey<T>> keys) {
+  for (const NumberKey<T>& k : keys) {
+    IfPresent(t, k.key, [&](const toml::node& n) {
+      std::string field = TomlReader::Join(prefix, k.key);
+      target.*k.member = r.Number(n, field, k.unit);
+      k.check(target.*k.member, field, r.At(n));
+    });
+  }
 }
 
-void ReadCamera(const TomlReader& r, const toml::table& t, double planet_radius_m, Camera& camera) {
+void ReadCamera(TomlReader& r, const toml::table& t, double planet_radius_m, Camera& camera) {
   r.RejectUnknownKeys(t, "camera", {"position_m", "yaw_deg", "pitch_deg", "fov_deg", "near_m"});
   IfPresent(t, "position_m", [&](const toml::node& n) {
     std::vector<double> p = r.Numbers(n, "camera.position_m", 3, 3, "m");
     camera.position = {p[0], p[1], p[2]};
     CheckCameraPosition(camera.position, planet_radius_m, "camera.position_m", r.At(n));
   });
-  IfPresent(t, "yaw_deg", [&](const toml::node& n) {
-    camera.yaw_deg = r.Number(n, "camera.yaw_deg", "degrees");
-    CheckAzimuthDeg(camera.yaw_deg, "camera.yaw_deg", r.At(n));
-  });
-  IfPresent(t, "pitch_deg", [&](const toml::node& n) {
-    camera.pitch_deg = r.Number(n, "camera.pitch_deg", "degrees");
-    CheckPitchDeg(camera.pitch_deg, "camera.pitch_deg", r.At(n));
-  });
-  IfPresent(t, "fov_deg", [&](const toml::node& n) {
-    camera.vertical_fov_deg = r.Number(n, "camera.fov_deg", "degrees");
-    CheckFovDeg(camera.vertical_fov_deg, "camera.fov_deg", r.At(n));
-  });
-  IfPresent(t, "near_m", [&](const toml::node& n) {
-    camera.near_m = r.Number(n, "camera.near_m", "m");
-    CheckNearM(camera.near_m, "camera.near_m", r.At(n));
-  });
+  ReadNumbers<Camera>(r, t, "camera", camera,
+                      {{"yaw_deg", &Camera::yaw_deg, "degrees", CheckAzimuthDeg},
+                       {"pitch_deg", &Camera::pitch_deg, "degrees", CheckPitchDeg},
+                       {"fov_deg", &Camera::vertical_fov_deg, "degrees", CheckFovDeg},
+                       {"near_m", &Camera::near_m, "m", CheckNearM}});
 }
 
-void ReadSun(const TomlReader& r, const toml::table& t, Sun& sun) {
+void ReadSun(TomlReader& r, const toml::table& t, Sun& sun) {
   r.RejectUnknownKeys(t, "sun", {"zenith_deg", "azimuth_deg"});
-  IfPresent(t, "zenith_deg", [&](const toml::node& n) {
-    sun.zenith_deg = r.Number(n, "sun.zenith_deg", "degrees");
-    CheckZenithDeg(sun.zenith_deg, "sun.zenith_deg", r.At(n));
-  });
-  IfPresent(t, "azimuth_deg", [&](const toml::node& n) {
-    sun.azimuth_deg = r.Number(n, "sun.azimuth_deg", "degrees");
-    CheckAzimuthDeg(sun.azimuth_deg, "sun.azimuth_deg", r.At(n));
-  });
+  ReadNumbers<Sun>(r, t, "sun", sun,
+                   {{"zenith_deg", &Sun::zenith_deg, "degrees", CheckZenithDeg},
+                    {"azimuth_deg", &Sun::azimuth_deg, "degrees", CheckAzimuthDeg}});
 }
 
 // Scale, then turn about z by yaw clockwise seen from above (a model's +y goes to compass
@@ -73,23 +69,23 @@ void Place(Mesh& mesh, const glm::dvec3& anchor, double scale, double yaw_deg) {
   }
 }
 
-Mesh ReadMesh(const TomlReader& r, const toml::node& node, const std::string& field,
+Mesh ReadMesh(TomlReader& r, const toml::node& node, const std::string& field,
               const std::filesystem::path& base_dir, double planet_radius_m) {
+  auto key = [&](std::string_view k) { return TomlReader::Join(field, k); };
   const toml::table& t = r.Table(node, field);
   r.RejectUnknownKeys(t, field,
                       {"gltf", "position_m", "scale", "yaw_deg", "transparent", "opacity"});
   const toml::node* gltf = t.get("gltf");
   if (!gltf) {
-    throw Error(TomlReader::Join(field, "gltf"), "", "the path of a .gltf or .glb file",
-                r.At(node));
+    throw Error(key("gltf"), "", "the path of a .gltf or .glb file", r.At(node));
   }
-  std::filesystem::path path = base_dir / r.String(*gltf, TomlReader::Join(field, "gltf"));
+  std::filesystem::path path = base_dir / r.String(*gltf, key("gltf"));
 
   glm::dvec3 anchor(0.0);
   double scale = 1.0, yaw_deg = 0.0, opacity = 1.0;
   std::optional<bool> transparent;
   IfPresent(t, "position_m", [&](const toml::node& n) {
-    std::string name = TomlReader::Join(field, "position_m");
+    std::string name = key("position_m");
     std::vector<double> p = r.Numbers(n, name, 2, 3, "m");
     for (size_t i = 0; i < p.size(); ++i)
       if (!std::isfinite(p[i]))
@@ -98,23 +94,21 @@ Mesh ReadMesh(const TomlReader& r, const toml::node& node, const std::string& fi
                            : SurfacePoint(p[0], p[1], TerrainHeightM(p[0], p[1]), planet_radius_m);
   });
   IfPresent(t, "scale", [&](const toml::node& n) {
-    scale = r.Number(n, TomlReader::Join(field, "scale"), "");
-    if (!(scale > 0.0 && std::isfinite(scale)))
-      r.Fail(n, TomlReader::Join(field, "scale"), "> 0 and finite");
+    scale = r.Number(n, key("scale"), "");
+    if (!(scale > 0.0 && std::isfinite(scale))) r.Fail(n, key("scale"), "> 0 and finite");
   });
   IfPresent(t, "yaw_deg", [&](const toml::node& n) {
-    yaw_deg = r.Number(n, TomlReader::Join(field, "yaw_deg"), "degrees");
-    CheckAzimuthDeg(yaw_deg, TomlReader::Join(field, "yaw_deg"), r.At(n));
+    yaw_deg = r.Number(n, key("yaw_deg"), "degrees");
+    CheckAzimuthDeg(yaw_deg, key("yaw_deg"), r.At(n));
   });
-  IfPresent(t, "transparent", [&](const toml::node& n) {
-    transparent = r.Bool(n, TomlReader::Join(field, "transparent"));
-  });
+  IfPresent(t, "transparent",
+            [&](const toml::node& n) { transparent = r.Bool(n, key("transparent")); });
   IfPresent(t, "opacity", [&](const toml::node& n) {
-    std::string name = TomlReader::Join(field, "opacity");
+    std::string name = key("opacity");
     opacity = r.Number(n, name, "");
     if (!(opacity > 0.0 && opacity <= 1.0)) r.Fail(n, name, "(0, 1]");
     if (opacity < 1.0 && transparent == false)
-      r.Fail(n, name, "1 when " + TomlReader::Join(field, "transparent") + " = false");
+      r.Fail(n, name, "1 when " + key("transparent") + " = false");
   });
 
   Mesh mesh;
@@ -125,7 +119,7 @@ Mesh ReadMesh(const TomlReader& r, const toml::node& node, const std::string& fi
     std::string problem = e.value() == path.string() ? e.allowed()
                                                      : "a loadable glTF; its " + e.field() + " = " +
                                                            e.value() + ", expected " + e.allowed();
-    throw Error(TomlReader::Join(field, "gltf"), path.string(), problem, r.At(*gltf));
+    throw Error(key("gltf"), path.string(), problem, r.At(*gltf));
   }
   mesh.transparent = transparent.value_or(mesh.transparent || opacity < 1.0);
   for (Vertex& v : mesh.vertices)
@@ -138,7 +132,8 @@ Mesh ReadMesh(const TomlReader& r, const toml::node& node, const std::string& fi
 
 Scene ParseSceneToml(std::string_view text, const std::string& where,
                      const std::filesystem::path& base_dir, double planet_radius_m) {
-  TomlReader r(where);
+  // Floats shown in their shortest form ("50"), as the range checks show them.
+  TomlReader r(where, FormatNumber);
   toml::table root = r.Parse(text);
   r.RejectUnknownKeys(root, "", {"preset", "camera", "sun", "mesh"});
   // Everything is read and checked on the preset's view and the extra meshes first, and the
@@ -176,20 +171,8 @@ Scene ParseSceneToml(std::string_view text, const std::string& where,
 }
 
 Scene LoadSceneFile(const std::filesystem::path& path, double planet_radius_m) {
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                       &std::fclose);
-  std::string text;
-  if (file) {
-    char chunk[4096];
-    size_t got;
-    while ((got = std::fread(chunk, 1, sizeof chunk, file.get())) > 0) text.append(chunk, got);
-  }
-  // Reading a directory opens fine and fails in fread (EISDIR).
-  if (!file || std::ferror(file.get())) {
-    throw Error("scene file", path.string(),
-                std::string("a readable TOML file (") + std::strerror(errno) + ")");
-  }
-  Scene scene = ParseSceneToml(text, path.string(), path.parent_path(), planet_radius_m);
+  Scene scene = ParseSceneToml(ReadTomlFile(path, "scene file"), path.string(), path.parent_path(),
+                               planet_radius_m);
   scene.name = path.stem().string();
   return scene;
 }

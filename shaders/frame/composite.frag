@@ -5,10 +5,11 @@
 // the froxel volume at the pixel's distance (or, in per-pixel mode, straight from the tables).
 // Sky pixels take the inscatter along the whole ray from the tables, plus the sun disc; pixels
 // whose ray meets the planet beyond the scene's geometry see the bare ground (ground albedo).
+// A fragment pass over a full-screen triangle: on a CPU rasterizer this runs far faster than the
+// same work as a compute shader with storage-image access.
 #include "froxel.glsl"
 #include "frame.glsl"
 #include "surface.glsl"
-layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
 layout(set = 0, binding = 3) uniform sampler3D rayleigh_texture;
 layout(set = 0, binding = 4) uniform sampler3D mie_texture;
@@ -16,18 +17,17 @@ layout(set = 0, binding = 5) uniform sampler3D multiple_texture;
 layout(set = 0, binding = 6) uniform sampler3D rayleigh_froxels;
 layout(set = 0, binding = 7) uniform sampler3D mie_froxels;
 layout(set = 0, binding = 8) uniform sampler3D transmittance_froxels;
-layout(set = 0, binding = 9, rgba32f) uniform readonly image2D surface_image;  // a < 0: sky
-layout(set = 0, binding = 10) writeonly uniform image2D output_image;
-layout(set = 0, binding = 11) uniform sampler2D irradiance_texture;
+layout(set = 0, binding = 9) uniform sampler2D surface_texture;  // a < 0: no geometry
+layout(set = 0, binding = 10) uniform sampler2D irradiance_texture;
+layout(location = 0) out vec4 color;
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(pixel, ivec2(frame.viewport.xy)))) return;
-  vec2 uv = (vec2(pixel) + 0.5) / frame.viewport.xy;
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec2 uv = gl_FragCoord.xy / frame.viewport.xy;
   vec3 ray = ViewRayFromScreen(uv);
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
-  vec4 surface = imageLoad(surface_image, pixel);
+  vec4 surface = texelFetch(surface_texture, pixel, 0);
   vec3 radiance;
   if (surface.a < 0.0) {
     Inscatter sky = GetSkyInscatter(transmittance_texture, rayleigh_texture, mie_texture,
@@ -44,7 +44,7 @@ void main() {
     }
   } else {
     // An if, not a ?: compilers may evaluate both sides of a select, and the per-pixel path is the
-    // expensive one. The condition is uniform over the dispatch.
+    // expensive one. The condition is uniform over the pass.
     Inscatter segment;
     if (frame.froxel_size.w == 1) {
       segment = GetSkyInscatterToPoint(transmittance_texture, rayleigh_texture, mie_texture,
@@ -55,5 +55,5 @@ void main() {
     }
     radiance = surface.rgb * segment.transmittance + ApplyPhaseFunctions(segment, nu);
   }
-  imageStore(output_image, pixel, vec4(radiance, 1.0));
+  color = vec4(radiance, 1.0);
 }
