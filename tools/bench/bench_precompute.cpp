@@ -12,6 +12,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bench_main.h"
 #include "aerial/atmosphere/parameters.h"
 #include "aerial/core/atomic_file.h"
 #include "aerial/core/error.h"
@@ -118,14 +119,5 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"both", "4d", "3d"}));
   app.add_flag("--small", cli.small, "Small tables (about 1/16 of the texels), for a quick check");
   app.add_option("--json", cli.json_file, "Also write the results as JSON to this file");
-  try {
-    app.parse(argc, argv);
-    Bench(cli);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  } catch (const std::exception& e) {  // aerial::Error included: its message names field and value
-    std::fprintf(stderr, "aerial_bench_precompute: error: %s\n", e.what());
-    return 1;
-  }
-  return 0;
+  return aerial::bench::ParseAndRun(app, argc, argv, "aerial_bench_precompute", [&] { Bench(cli); });
 }

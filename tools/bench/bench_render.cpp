@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "bench_main.h"
 #include "aerial/atmosphere/parameters.h"
 #include "aerial/core/atomic_file.h"
 #include "aerial/core/error.h"
@@ -153,14 +154,5 @@ int main(int argc, char** argv) {
   app.add_option("--lut", cli.lut, "Scattering table variant")->check(CLI::IsMember({"4d", "3d"}));
   app.add_option("--froxels", cli.froxels, "Froxel grid WxHxD");
   app.add_option("--json", cli.json_file, "Also write the results as JSON to this file");
-  try {
-    app.parse(argc, argv);
-    Bench(cli);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  } catch (const std::exception& e) {  // aerial::Error included: its message names field and value
-    std::fprintf(stderr, "aerial_bench_render: error: %s\n", e.what());
-    return 1;
-  }
-  return 0;
+  return aerial::bench::ParseAndRun(app, argc, argv, "aerial_bench_render", [&] { Bench(cli); });
 }
