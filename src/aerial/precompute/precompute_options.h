@@ -29,7 +29,8 @@ struct SampleCounts {
   int transmittance_steps = 500;
   int ray_steps = 50;              // single scattering, per ray
   // Multiple scattering is a smooth fraction of the sky (20-40% in daylight) and its steps are
-  // integrated exponentially: 32 steps change the 4-order sky by < 0.1% against 200.
+  // integrated exponentially: 32 steps change the 4-order sky by at most 0.28% against 200
+  // (measured over six views from the ground to 50 km, low sun included).
   int multiple_scattering_steps = 32;
   int irradiance_zenith = 32;
   int irradiance_azimuth = 32;     // over [0, pi], mirrored (Bruneton: 64 over [0, 2 pi])
