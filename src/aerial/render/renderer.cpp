@@ -30,7 +30,7 @@ vk::GraphicsPipelineCreateInfo CompositePipeline() {
   return {.vertex_shader = "frame/fullscreen.vert",
           .fragment_shader = "frame/composite.frag",
           .slot_types = {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled,
-                         kSampled, kSampled, kSampled, kSampled},
+                         kSampled, kSampled, kSampled, kSampled, kSampled, kSampled, kSampled},
           .vertex_stride = 16,
           .attributes = {{::vk::Format::eR32G32B32A32Sfloat, 0}},
           .color_formats = {::vk::Format::eR32G32B32A32Sfloat}};
@@ -46,6 +46,14 @@ vk::Buffer HostBuffer(const vk::Context& context, std::span<const std::byte> byt
 // One triangle covering the screen: (-1,-1), (3,-1), (-1,3) in clip space.
 constexpr std::array<float, 12> kFullscreenTriangle = {-1, -1, 0, 1, 3, -1, 0, 1, -1, 3, 0, 1};
 constexpr std::array<uint32_t, 3> kFullscreenIndices = {0, 1, 2};
+
+// The sky-view table's size (Hillaire 2020 uses 192x108): azimuth over [0, pi], zenith split at
+// the horizon (54 rows each side).
+constexpr std::array<int, 2> kSkyViewSize = {192, 108};
+
+vk::ImageCreateInfo SkyViewImage() {
+  return {.extent = {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}};
+}
 
 vk::ImageCreateInfo Target(const RenderOptions& o, ::vk::Format format, ::vk::ImageUsageFlags usage) {
   return {.extent = {uint32_t(o.width), uint32_t(o.height), 1}, .format = format, .usage = usage};
@@ -78,6 +86,13 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       output_(tables.context(), Target(options, ::vk::Format::eR32G32B32A32Sfloat,
                                        ::vk::ImageUsageFlagBits::eColorAttachment |
                                            ::vk::ImageUsageFlagBits::eTransferSrc)),
+      sky_rayleigh_(tables.context(), SkyViewImage()),
+      sky_mie_(tables.context(), SkyViewImage()),
+      sky_transmittance_(tables.context(), SkyViewImage()),
+      sky_view_(tables.context(), "frame/sky_view.comp",
+                {vk::kUniform, vk::kUniform, vk::kSampled, vk::kSampled, vk::kSampled, vk::kSampled,
+                 vk::kStorageImage, vk::kStorageImage, vk::kStorageImage},
+                sizeof(kSkyViewSize)),
       opaque_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/opaque.frag",
                                              {kUniform, kUniform, kSampled, kSampled}, false)),
       transparent_(tables.context(),
@@ -92,7 +107,9 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
                                      ::vk::BufferUsageFlagBits::eIndexBuffer)),
       timer_(std::make_unique<vk::GpuTimer>(tables.context())) {
   tables.context().Submit([&](const auto& cmd) {
-    for (const vk::Image* image : {&surface_, &depth_, &output_}) image->InitializeLayout(cmd);
+    for (const vk::Image* image : {&surface_, &depth_, &output_, &sky_rayleigh_, &sky_mie_,
+                                   &sky_transmittance_})
+      image->InitializeLayout(cmd);
   });
 }
 
@@ -113,6 +130,15 @@ std::vector<vk::PassTime> Renderer::Render(const Scene& scene) {
       timer_->Begin(cmd, "froxel build");
       froxels_.Build(cmd, tables_, frame_buffer_);
       timer_->End(cmd);
+      timer_->Begin(cmd, "sky view");
+      sky_view_.Dispatch(cmd,
+                         {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.rayleigh()),
+                          sampled(tables_.mie()), sampled(tables_.multiple()),
+                          vk::StorageImageSlot{&sky_rayleigh_}, vk::StorageImageSlot{&sky_mie_},
+                          vk::StorageImageSlot{&sky_transmittance_}},
+                         {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}, {8, 8, 1},
+                         kSkyViewSize.data());
+      timer_->End(cmd);
     }
     timer_->Begin(cmd, "opaque raster");
     // Sky pixels keep distance -1; reversed Z clears depth to 0 (infinitely far).
@@ -127,7 +153,8 @@ std::vector<vk::PassTime> Renderer::Render(const Scene& scene) {
                     {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.rayleigh()),
                      sampled(tables_.mie()), sampled(tables_.multiple()), sampled(froxels_.rayleigh()),
                      sampled(froxels_.mie()), sampled(froxels_.transmittance()), sampled(surface_),
-                     sampled(tables_.irradiance())},
+                     sampled(tables_.irradiance()), sampled(sky_rayleigh_), sampled(sky_mie_),
+                     sampled(sky_transmittance_)},
                     fullscreen_vertices_, fullscreen_indices_, 3);
     timer_->End(cmd);
     vk::FullBarrier(cmd);

@@ -1,6 +1,7 @@
 #pragma once
 // One frame, in three steps (shared/design.md, "The pipeline at a glance"):
-//   1. froxel pass: the camera-aligned volume of phase-free inscatter and transmittance;
+//   1. froxel pass: the camera-aligned volume of phase-free inscatter and transmittance, and the
+//      sky-view table: the same for whole view rays, per direction around the camera;
 //   2. opaque raster (lit surface radiance + distance), then the per-pixel composite: phases from
 //      each pixel's own ray, aerial perspective from the froxels (or the tables), sky and sun;
 //   3. transparent raster, back to front, froxels read per vertex, phases per pixel, blended.
@@ -54,6 +55,8 @@ class Renderer {
   vk::Buffer frame_buffer_;
   FrameUniforms frame_uniforms_{};
   vk::Image surface_, depth_, output_;
+  vk::Image sky_rayleigh_, sky_mie_, sky_transmittance_;
+  vk::ComputePipeline sky_view_;
   vk::GraphicsPipeline opaque_, transparent_, composite_;
   vk::Buffer fullscreen_vertices_, fullscreen_indices_;
   std::unique_ptr<vk::GpuTimer> timer_;

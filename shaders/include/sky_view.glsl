@@ -1,0 +1,61 @@
+// The sky-view table (Hillaire 2020, "sky-view LUT"): per frame, the phase-free Rayleigh and Mie
+// inscatter and the transmittance of the whole view ray, for every direction around the camera,
+// so that sky pixels read 3 taps instead of evaluating the 4D lookups. Directions are (azimuth
+// from the sun's vertical plane, zenith angle); the sky is symmetric about that plane, so the
+// azimuth covers [0, pi]. The zenith axis is split at the horizon like the scattering tables' mu
+// axis, each half on its own texel centers, with the square-root mapping of Hillaire 2020 that
+// puts most rows next to the horizon, where the sky changes fastest.
+#ifndef AERIAL_SKY_VIEW_GLSL
+#define AERIAL_SKY_VIEW_GLSL
+#include "frame.glsl"
+#include "mappings.glsl"
+
+// Zenith angle of the horizon seen from radius r.
+float HorizonZenithAngle(float r) {
+  return PI - asin(clamp(atmosphere.bottom_radius / r, 0.0, 1.0));
+}
+
+// (u, v) of a direction: cos_phi relative to the sun's azimuth, theta the zenith angle.
+vec2 GetSkyViewUv(float r, float cos_phi, float theta, ivec2 size) {
+  float theta_h = HorizonZenithAngle(r);
+  float v;
+  if (theta < theta_h) {
+    float x = 1.0 - sqrt(max(1.0 - theta / theta_h, 0.0));  // 0 at the zenith, 1 at the horizon
+    v = 0.5 * GetTextureCoordFromUnitRange(x, size.y / 2);
+  } else {
+    float x = sqrt(clamp((theta - theta_h) / (PI - theta_h), 0.0, 1.0));  // 0 at the horizon
+    v = 0.5 + 0.5 * GetTextureCoordFromUnitRange(x, size.y / 2);
+  }
+  float u = GetTextureCoordFromUnitRange(acos(clamp(cos_phi, -1.0, 1.0)) / PI, size.x);
+  return vec2(u, v);
+}
+
+// The inverse, for the texels of the table: returns (cos_phi, theta).
+vec2 GetSkyViewDirection(float r, vec2 uv, ivec2 size) {
+  float theta_h = HorizonZenithAngle(r);
+  float theta;
+  if (uv.y < 0.5) {
+    float x = GetUnitRangeFromTextureCoord(2.0 * uv.y, size.y / 2);
+    float s = 1.0 - x;
+    theta = theta_h * (1.0 - s * s);
+  } else {
+    float x = GetUnitRangeFromTextureCoord(2.0 * uv.y - 1.0, size.y / 2);
+    theta = theta_h + (PI - theta_h) * x * x;
+  }
+  float phi = PI * GetUnitRangeFromTextureCoord(uv.x, size.x);
+  return vec2(cos(phi), theta);
+}
+
+// The world-space basis of the camera's local frame: up, and the horizontal direction toward the
+// sun (any horizontal direction when the sun is at the zenith).
+void GetSkyViewFrame(out vec3 up, out vec3 toward_sun, out vec3 side) {
+  up = normalize(frame.camera_planet_position.xyz);
+  vec3 sun = frame.sun_direction.xyz;
+  vec3 horizontal = sun - dot(sun, up) * up;
+  toward_sun = dot(horizontal, horizontal) > 1e-12
+                   ? normalize(horizontal)
+                   : normalize(cross(up, abs(up.x) < 0.9 ? vec3(1, 0, 0) : vec3(0, 1, 0)));
+  side = cross(up, toward_sun);
+}
+
+#endif
