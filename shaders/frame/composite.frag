@@ -27,7 +27,7 @@ layout(set = 0, binding = 13) uniform sampler2D transmittance_sky;
 
 // The whole view ray's inscatter: from the sky-view table, or (per-pixel mode) from the tables.
 Inscatter GetPixelSky(vec3 ray, float r, float mu, float mu_s, float nu) {
-  if (frame.froxel_size.w == 1) {
+  if (kAerialPerPixel == 1) {
     return GetSkyInscatter(transmittance_texture, rayleigh_texture, mie_texture, multiple_texture,
                            r, mu, mu_s, nu);
   }
@@ -65,10 +65,8 @@ void main() {
       radiance += GetSolarRadiance() * sky.transmittance;
     }
   } else {
-    // An if, not a ?: compilers may evaluate both sides of a select, and the per-pixel path is the
-    // expensive one. The condition is uniform over the pass.
     Inscatter segment;
-    if (frame.froxel_size.w == 1) {
+    if (kAerialPerPixel == 1) {
       segment = GetSkyInscatterToPoint(transmittance_texture, rayleigh_texture, mie_texture,
                                        multiple_texture, r, mu, mu_s, nu, surface.a);
     } else {

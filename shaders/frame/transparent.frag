@@ -24,7 +24,7 @@ void main() {
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
   Inscatter segment;
-  if (frame.froxel_size.w == 1) {
+  if (kAerialPerPixel == 1) {
     segment = GetSkyInscatterToPoint(transmittance_texture, rayleigh_texture, mie_texture,
                                      multiple_texture, r, mu, mu_s, nu, length(relative_position));
   } else {

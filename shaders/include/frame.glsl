@@ -5,6 +5,10 @@
 #define AERIAL_FRAME_GLSL
 #include "definitions.glsl"
 
+// Aerial perspective per pixel from the tables (1) or from the froxel volume (0): a specialization
+// constant, so the path not taken is compiled out (a CPU rasterizer would run both).
+layout(constant_id = 0) const int kAerialPerPixel = 0;
+
 // Mirrored by aerial::FrameUniforms (src/aerial/render/frame_uniforms.h).
 layout(std140, set = 0, binding = 1) uniform FrameBlock {
   mat4 view_projection;          // camera-relative world -> clip (reversed Z, infinite far)

@@ -8,8 +8,11 @@
 namespace aerial {
 namespace {
 
+int32_t PerPixel(AerialMode mode) { return mode == AerialMode::kPerPixel ? 1 : 0; }
+
 vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std::string& fragment,
-                                            std::vector<::vk::DescriptorType> slots, bool blended) {
+                                            std::vector<::vk::DescriptorType> slots, bool blended,
+                                            AerialMode mode) {
   return {.vertex_shader = vertex,
           .fragment_shader = fragment,
           .slot_types = std::move(slots),
@@ -21,10 +24,11 @@ vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std
           .color_formats = {::vk::Format::eR32G32B32A32Sfloat},
           .depth_format = ::vk::Format::eD32Sfloat,
           .depth_write = !blended,
-          .alpha_blend = blended};
+          .alpha_blend = blended,
+          .specialization = {PerPixel(mode)}};
 }
 
-vk::GraphicsPipelineCreateInfo CompositePipeline() {
+vk::GraphicsPipelineCreateInfo CompositePipeline(AerialMode mode) {
   using vk::kSampled;
   using vk::kUniform;
   return {.vertex_shader = "frame/fullscreen.vert",
@@ -33,7 +37,8 @@ vk::GraphicsPipelineCreateInfo CompositePipeline() {
                          kSampled, kSampled, kSampled, kSampled, kSampled, kSampled, kSampled},
           .vertex_stride = 16,
           .attributes = {{::vk::Format::eR32G32B32A32Sfloat, 0}},
-          .color_formats = {::vk::Format::eR32G32B32A32Sfloat}};
+          .color_formats = {::vk::Format::eR32G32B32A32Sfloat},
+          .specialization = {PerPixel(mode)}};
 }
 
 vk::Buffer HostBuffer(const vk::Context& context, std::span<const std::byte> bytes,
@@ -94,13 +99,14 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
                  vk::kStorageImage, vk::kStorageImage, vk::kStorageImage},
                 sizeof(kSkyViewSize)),
       opaque_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/opaque.frag",
-                                             {kUniform, kUniform, kSampled, kSampled}, false)),
+                                             {kUniform, kUniform, kSampled, kSampled}, false,
+                                             options.mode)),
       transparent_(tables.context(),
                    MeshPipeline("frame/transparent.vert", "frame/transparent.frag",
                                 {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled,
                                  kSampled, kSampled, kSampled, kSampled},
-                                true)),
-      composite_(tables.context(), CompositePipeline()),
+                                true, options.mode)),
+      composite_(tables.context(), CompositePipeline(options.mode)),
       fullscreen_vertices_(HostBuffer(tables.context(), std::as_bytes(std::span(kFullscreenTriangle)),
                                       ::vk::BufferUsageFlagBits::eVertexBuffer)),
       fullscreen_indices_(HostBuffer(tables.context(), std::as_bytes(std::span(kFullscreenIndices)),

@@ -10,11 +10,21 @@ GraphicsPipeline::GraphicsPipeline(const Context& context, const GraphicsPipelin
               ::vk::ShaderStageFlagBits::eVertex | ::vk::ShaderStageFlagBits::eFragment) {
   ::vk::raii::ShaderModule vertex = CreateShaderModule(context, info.vertex_shader);
   ::vk::raii::ShaderModule fragment = CreateShaderModule(context, info.fragment_shader);
+  std::vector<::vk::SpecializationMapEntry> entries;
+  for (uint32_t i = 0; i < info.specialization.size(); ++i)
+    entries.push_back({.constantID = i, .offset = uint32_t(i * sizeof(int32_t)), .size = sizeof(int32_t)});
+  ::vk::SpecializationInfo specialization{.mapEntryCount = uint32_t(entries.size()),
+                                          .pMapEntries = entries.data(),
+                                          .dataSize = info.specialization.size() * sizeof(int32_t),
+                                          .pData = info.specialization.data()};
+  const ::vk::SpecializationInfo* constants = entries.empty() ? nullptr : &specialization;
   std::array<::vk::PipelineShaderStageCreateInfo, 2> stages = {
       ::vk::PipelineShaderStageCreateInfo{.stage = ::vk::ShaderStageFlagBits::eVertex,
-                                          .module = *vertex, .pName = "main"},
+                                          .module = *vertex, .pName = "main",
+                                          .pSpecializationInfo = constants},
       ::vk::PipelineShaderStageCreateInfo{.stage = ::vk::ShaderStageFlagBits::eFragment,
-                                          .module = *fragment, .pName = "main"}};
+                                          .module = *fragment, .pName = "main",
+                                          .pSpecializationInfo = constants}};
   ::vk::VertexInputBindingDescription binding{.binding = 0, .stride = info.vertex_stride,
                                               .inputRate = ::vk::VertexInputRate::eVertex};
   std::vector<::vk::VertexInputAttributeDescription> attributes;

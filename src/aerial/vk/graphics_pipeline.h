@@ -31,6 +31,10 @@ struct GraphicsPipelineCreateInfo {
   ::vk::CompareOp depth_compare = ::vk::CompareOp::eGreater;  // reversed-Z
   bool alpha_blend = false;  // premultiplied: src + (1 - src_alpha) dst
   ::vk::CullModeFlags cull = ::vk::CullModeFlagBits::eNone;
+  // Specialization constants of both stages: constant_id i takes specialization[i]. A CPU
+  // rasterizer executes both sides of every branch its SIMD lanes reach, so choices that are fixed
+  // for a pipeline (aerial perspective per pixel or from froxels) must be constants, not uniforms.
+  std::vector<int32_t> specialization;
 };
 
 struct RenderTargets {
