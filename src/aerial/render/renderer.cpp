@@ -28,16 +28,22 @@ vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std
           .specialization = {PerPixel(mode)}};
 }
 
-vk::GraphicsPipelineCreateInfo CompositePipeline(AerialMode mode) {
-  using vk::kSampled;
-  using vk::kUniform;
+// The composite is two full-screen passes split by the depth buffer (reversed Z, cleared to 0):
+// EQUAL 0 keeps the sky pixels, LESS (0 < stored depth) the pixels with geometry. Each pixel then
+// runs only its own shader; in one shader a CPU rasterizer runs both sides of the branch.
+vk::GraphicsPipelineCreateInfo CompositePipeline(AerialMode mode, const std::string& fragment,
+                                                 ::vk::CompareOp depth_compare, size_t samplers) {
+  std::vector<::vk::DescriptorType> slots = {vk::kUniform, vk::kUniform};
+  slots.insert(slots.end(), samplers, vk::kSampled);
   return {.vertex_shader = "frame/fullscreen.vert",
-          .fragment_shader = "frame/composite.frag",
-          .slot_types = {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled,
-                         kSampled, kSampled, kSampled, kSampled, kSampled, kSampled, kSampled},
+          .fragment_shader = fragment,
+          .slot_types = slots,
           .vertex_stride = 16,
           .attributes = {{::vk::Format::eR32G32B32A32Sfloat, 0}},
           .color_formats = {::vk::Format::eR32G32B32A32Sfloat},
+          .depth_format = ::vk::Format::eD32Sfloat,
+          .depth_write = false,
+          .depth_compare = depth_compare,
           .specialization = {PerPixel(mode)}};
 }
 
@@ -106,7 +112,11 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
                                 {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled,
                                  kSampled, kSampled, kSampled, kSampled},
                                 true, options.mode)),
-      composite_(tables.context(), CompositePipeline(options.mode)),
+      composite_sky_(tables.context(), CompositePipeline(options.mode, "frame/composite_sky.frag",
+                                                         ::vk::CompareOp::eEqual, 8)),
+      composite_surface_(tables.context(),
+                         CompositePipeline(options.mode, "frame/composite_surface.frag",
+                                           ::vk::CompareOp::eLess, 8)),
       fullscreen_vertices_(HostBuffer(tables.context(), std::as_bytes(std::span(kFullscreenTriangle)),
                                       ::vk::BufferUsageFlagBits::eVertexBuffer)),
       fullscreen_indices_(HostBuffer(tables.context(), std::as_bytes(std::span(kFullscreenIndices)),
@@ -155,13 +165,17 @@ std::vector<vk::PassTime> Renderer::Render(const Scene& scene) {
     timer_->End(cmd);
     vk::FullBarrier(cmd);
     timer_->Begin(cmd, "composite");
-    composite_.Draw(cmd, {.colors = {&output_}, .clear_colors = {std::array<float, 4>{0, 0, 0, 1}}},
-                    {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.rayleigh()),
-                     sampled(tables_.mie()), sampled(tables_.multiple()), sampled(froxels_.rayleigh()),
-                     sampled(froxels_.mie()), sampled(froxels_.transmittance()), sampled(surface_),
-                     sampled(tables_.irradiance()), sampled(sky_rayleigh_), sampled(sky_mie_),
-                     sampled(sky_transmittance_)},
-                    fullscreen_vertices_, fullscreen_indices_, 3);
+    composite_sky_.Draw(cmd, {.colors = {&output_}, .clear_colors = {std::array<float, 4>{0, 0, 0, 1}},
+                              .depth = &depth_},
+                        {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.rayleigh()),
+                         sampled(tables_.mie()), sampled(tables_.multiple()), sampled(tables_.irradiance()),
+                         sampled(sky_rayleigh_), sampled(sky_mie_), sampled(sky_transmittance_)},
+                        fullscreen_vertices_, fullscreen_indices_, 3);
+    composite_surface_.Draw(cmd, {.colors = {&output_}, .clear_colors = {std::nullopt}, .depth = &depth_},
+                            {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.rayleigh()),
+                             sampled(tables_.mie()), sampled(tables_.multiple()), sampled(froxels_.rayleigh()),
+                             sampled(froxels_.mie()), sampled(froxels_.transmittance()), sampled(surface_)},
+                            fullscreen_vertices_, fullscreen_indices_, 3);
     timer_->End(cmd);
     vk::FullBarrier(cmd);
     timer_->Begin(cmd, "transparent raster");

@@ -57,7 +57,7 @@ class Renderer {
   vk::Image surface_, depth_, output_;
   vk::Image sky_rayleigh_, sky_mie_, sky_transmittance_;
   vk::ComputePipeline sky_view_;
-  vk::GraphicsPipeline opaque_, transparent_, composite_;
+  vk::GraphicsPipeline opaque_, transparent_, composite_sky_, composite_surface_;
   vk::Buffer fullscreen_vertices_, fullscreen_indices_;
   std::unique_ptr<vk::GpuTimer> timer_;
 };

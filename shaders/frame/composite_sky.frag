@@ -1,0 +1,57 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Composite, sky pixels (the depth test passes only where no geometry was drawn): the inscatter
+// of the whole view ray from the per-frame sky-view table (per-pixel mode: from the tables), with
+// the phase functions from the pixel's own ray, plus the sun disc, or the bare planet where the
+// ray meets the ground beyond the scene's geometry. Sky and geometry pixels are separate passes
+// because a CPU rasterizer runs every branch its 8-wide lanes reach.
+#include "froxel.glsl"
+#include "frame.glsl"
+#include "surface.glsl"
+#include "sky_view.glsl"
+layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
+layout(set = 0, binding = 3) uniform sampler3D rayleigh_texture;
+layout(set = 0, binding = 4) uniform sampler3D mie_texture;
+layout(set = 0, binding = 5) uniform sampler3D multiple_texture;
+layout(set = 0, binding = 6) uniform sampler2D irradiance_texture;
+layout(set = 0, binding = 7) uniform sampler2D rayleigh_sky;
+layout(set = 0, binding = 8) uniform sampler2D mie_sky;
+layout(set = 0, binding = 9) uniform sampler2D transmittance_sky;
+layout(location = 0) out vec4 color;
+
+// The whole view ray's inscatter: from the sky-view table, or (per-pixel mode) from the tables.
+Inscatter GetPixelSky(vec3 ray, float r, float mu, float mu_s, float nu) {
+  if (kAerialPerPixel == 1) {
+    return GetSkyInscatter(transmittance_texture, rayleigh_texture, mie_texture, multiple_texture,
+                           r, mu, mu_s, nu);
+  }
+  vec3 up, toward_sun, side;
+  GetSkyViewFrame(up, toward_sun, side);
+  vec3 horizontal = ray - mu * up;
+  float cos_phi = dot(horizontal, horizontal) > 1e-12 ? dot(normalize(horizontal), toward_sun) : 1.0;
+  vec2 uv = GetSkyViewUv(r, cos_phi, acos(clamp(mu, -1.0, 1.0)), textureSize(rayleigh_sky, 0));
+  Inscatter sky;
+  sky.rayleigh = textureLod(rayleigh_sky, uv, 0.0).rgb;
+  sky.mie = textureLod(mie_sky, uv, 0.0).rgb;
+  sky.transmittance = textureLod(transmittance_sky, uv, 0.0).rgb;
+  return sky;
+}
+
+void main() {
+  vec2 uv = gl_FragCoord.xy / frame.viewport.xy;
+  vec3 ray = ViewRayFromScreen(uv);
+  float r, mu, mu_s, nu;
+  GetCameraRayParameters(ray, r, mu, mu_s, nu);
+  Inscatter sky = GetPixelSky(ray, r, mu, mu_s, nu);
+  vec3 radiance = ApplyPhaseFunctions(sky, nu);
+  if (RayIntersectsGround(r, mu)) {
+    vec3 ground = ray * DistanceToBottomAtmosphereBoundary(r, mu);
+    vec3 normal = normalize(frame.camera_planet_position.xyz + ground);
+    radiance += sky.transmittance * ShadeLambertian(transmittance_texture, irradiance_texture,
+                                                    ground, normal, atmosphere.ground_albedo.rgb);
+  } else if (nu > cos(atmosphere.sun_angular_radius)) {
+    // The sun disc at its true angular size, seen through the atmosphere.
+    radiance += GetSolarRadiance() * sky.transmittance;
+  }
+  color = vec4(radiance, 1.0);
+}
