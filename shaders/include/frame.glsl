@@ -16,7 +16,7 @@ layout(std140, set = 0, binding = 1) uniform FrameBlock {
   vec4 camera_scene_position;    // xyz: camera in the scene frame (to make vertices relative)
   vec4 camera_planet_position;   // xyz: camera relative to the planet center
   vec4 sun_direction;            // xyz: unit vector toward the sun
-  ivec4 froxel_size;             // x, y, z: froxel grid; w: 1 = aerial perspective per pixel
+  ivec4 froxel_size;             // x, y, z: froxel grid (w unused)
   vec4 froxel_depth;             // x: far distance of the last slice (m)
   vec4 viewport;                 // x, y: size in pixels
 } frame;

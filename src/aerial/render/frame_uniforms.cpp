@@ -19,7 +19,7 @@ std::array<float, 4> ToFloat4(const glm::dvec3& v) { return {float(v.x), float(v
 }  // namespace
 
 FrameUniforms MakeFrameUniforms(const Scene& scene, double planet_radius_m, int width, int height,
-                                const FroxelGrid& froxels, AerialMode mode) {
+                                const FroxelGrid& froxels) {
   // Shaders see camera-relative positions, so the view matrix drops the camera's translation.
   Camera at_origin = scene.camera;
   at_origin.position = glm::dvec3(0.0);
@@ -32,7 +32,7 @@ FrameUniforms MakeFrameUniforms(const Scene& scene, double planet_radius_m, int 
   // The planet's center is at (0, 0, -R) in the scene frame.
   u.camera_planet_position = ToFloat4(scene.camera.position + glm::dvec3(0.0, 0.0, planet_radius_m));
   u.sun_direction = ToFloat4(scene.sun.Direction());
-  u.froxel_size = {froxels.width, froxels.height, froxels.depth, mode == AerialMode::kPerPixel ? 1 : 0};
+  u.froxel_size = {froxels.width, froxels.height, froxels.depth, 0};
   u.froxel_depth = {float(froxels.far_m), 0, 0, 0};
   u.viewport = {float(width), float(height), 0, 0};
   return u;

@@ -15,13 +15,13 @@ struct alignas(16) FrameUniforms {
   std::array<float, 4> camera_scene_position;
   std::array<float, 4> camera_planet_position;
   std::array<float, 4> sun_direction;
-  std::array<int, 4> froxel_size;                 // w: 1 = aerial perspective per pixel
+  std::array<int, 4> froxel_size;                 // w unused (the mode is a specialization constant)
   std::array<float, 4> froxel_depth;              // x: far distance
   std::array<float, 4> viewport;
 };
 static_assert(sizeof(FrameUniforms) == 2 * 64 + 6 * 16);
 
 FrameUniforms MakeFrameUniforms(const Scene& scene, double planet_radius_m, int width, int height,
-                                const FroxelGrid& froxels, AerialMode mode);
+                                const FroxelGrid& froxels);
 
 }  // namespace aerial

@@ -133,7 +133,7 @@ Renderer::~Renderer() = default;
 
 std::vector<vk::PassTime> Renderer::Render(const Scene& scene) {
   frame_uniforms_ = MakeFrameUniforms(scene, tables_.atmosphere().bottom_radius_m, options_.width,
-                                      options_.height, options_.froxels, options_.mode);
+                                      options_.height, options_.froxels);
   frame_buffer_.Write(std::as_bytes(std::span(&frame_uniforms_, 1)));
   geometry_.SortTransparent(scene.camera.position);
   ::vk::Sampler sampler = tables_.sampler();
