@@ -60,11 +60,13 @@ size_t AtmosphereTables::table_bytes() const {
          mie_.byte_size() + (options_.variant == LutVariant::k3D ? multiple_.byte_size() : 0);
 }
 
-TableCacheKey AtmosphereTables::cache_key() const {
-  // The shaders are part of the key: tables computed by another build are recomputed.
-  return {.atmosphere_hash = atmosphere_.Hash(),
-          .options_hash = options_.Hash() ^ shaders::Fingerprint()};
+TableCacheKey MakeTableCacheKey(const AtmosphereParameters& atmosphere,
+                                const PrecomputeOptions& options) {
+  return {.atmosphere_hash = atmosphere.Hash(),
+          .options_hash = options.Hash() ^ shaders::Fingerprint()};
 }
+
+TableCacheKey AtmosphereTables::cache_key() const { return MakeTableCacheKey(atmosphere_, options_); }
 
 namespace {
 

@@ -15,6 +15,11 @@
 
 namespace aerial {
 
+// The cache key of tables computed for these parameters by this build: the atmosphere, the
+// options and the shaders (tables computed by another build are recomputed).
+TableCacheKey MakeTableCacheKey(const AtmosphereParameters& atmosphere,
+                                const PrecomputeOptions& options);
+
 class AtmosphereTables {
  public:
   // Allocates the tables (contents undefined until Precompute or Load).

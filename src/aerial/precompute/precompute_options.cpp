@@ -1,6 +1,7 @@
 #include "aerial/precompute/precompute_options.h"
 
 #include <cstring>
+#include <string>
 
 #include "aerial/core/error.h"
 
@@ -46,6 +47,21 @@ void CheckRange(const std::string& field, int value, int low, int high) {
     throw Error(field, std::to_string(value), "an integer in [" + std::to_string(low) + ", " +
                                                   std::to_string(high) + "]");
 }
+// A mu axis is split at the horizon into two equal halves, so its size must be even.
+void CheckMuAxis(const std::string& field, int value) {
+  CheckRange(field, value, 4, 1024);
+  if (value % 2 != 0)
+    throw Error(field, std::to_string(value), "an even number (split at the horizon)");
+}
+
+// A nu axis has exactly one slice in the 3D variant, 2 to 64 in the 4D one.
+void CheckNuAxis(const std::string& field, int value, LutVariant variant) {
+  if (variant == LutVariant::k3D)
+    CheckRange(field + " (3d variant)", value, 1, 1);
+  else
+    CheckRange(field, value, 2, 64);
+}
+
 }  // namespace
 
 void PrecomputeOptions::Validate() const {
@@ -56,14 +72,9 @@ void PrecomputeOptions::Validate() const {
   CheckRange("irradiance width (mu_s)", r.irradiance_mu_s, 4, 4096);
   CheckRange("irradiance height (r)", r.irradiance_r, 2, 4096);
   CheckRange("scattering r", r.scattering_r, 2, 512);
-  CheckRange("scattering mu", r.scattering_mu, 4, 1024);
-  if (r.scattering_mu % 2 != 0)
-    throw Error("scattering mu", std::to_string(r.scattering_mu), "an even number (split at the horizon)");
+  CheckMuAxis("scattering mu", r.scattering_mu);
   CheckRange("scattering mu_s", r.scattering_mu_s, 2, 512);
-  if (variant == LutVariant::k3D)
-    CheckRange("scattering nu (3d variant)", r.scattering_nu, 1, 1);
-  else
-    CheckRange("scattering nu", r.scattering_nu, 2, 64);
+  CheckNuAxis("scattering nu", r.scattering_nu, variant);
   // The 3D image packs nu and mu_s along x: its width is bounded by maxImageDimension3D (>= 2048).
   CheckRange("scattering nu * mu_s", r.scattering_nu * r.scattering_mu_s, 2, 2048);
   const SampleCounts& s = samples;
@@ -76,12 +87,9 @@ void PrecomputeOptions::Validate() const {
   CheckRange("density zenith cells below the horizon", s.density_theta_down, 1, 128);
   CheckRange("density azimuth cells", s.density_phi, 1, 128);
   CheckRange("density r", s.density_r, 2, 512);
-  CheckRange("density mu", s.density_mu, 4, 1024);
-  if (s.density_mu % 2 != 0)
-    throw Error("density mu", std::to_string(s.density_mu), "an even number (split at the horizon)");
+  CheckMuAxis("density mu", s.density_mu);
   CheckRange("density mu_s", s.density_mu_s, 2, 512);
-  CheckRange("density nu", s.density_nu, variant == LutVariant::k3D ? 1 : 2,
-             variant == LutVariant::k3D ? 1 : 64);
+  CheckNuAxis("density nu", s.density_nu, variant);
   // The density pass stages the direction grid in 32 KiB of shared memory (kMaxDirections).
   CheckRange("density directions", (s.density_theta_up + s.density_theta_down) * s.density_phi, 1, 1024);
 }

@@ -7,7 +7,6 @@
 #include "aerial/core/error.h"
 #include "aerial/core/progress.h"
 #include "aerial/precompute/precomputer.h"
-#include "aerial/vk/shader_registry.h"
 
 namespace aerial {
 
@@ -23,10 +22,11 @@ std::filesystem::path DefaultCacheDirectory() {
 std::filesystem::path CacheFilePath(const std::filesystem::path& dir,
                                     const AtmosphereParameters& atmosphere,
                                     const PrecomputeOptions& options) {
+  TableCacheKey key = MakeTableCacheKey(atmosphere, options);
   char name[96];
   std::snprintf(name, sizeof name, "tables-%s-%016llx-%016llx.bin", ToString(options.variant).c_str(),
-                static_cast<unsigned long long>(atmosphere.Hash()),
-                static_cast<unsigned long long>(options.Hash() ^ shaders::Fingerprint()));
+                static_cast<unsigned long long>(key.atmosphere_hash),
+                static_cast<unsigned long long>(key.options_hash));
   return dir / name;
 }
 
