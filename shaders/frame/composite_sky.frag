@@ -1,10 +1,11 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Composite, sky pixels (the depth test passes only where no geometry was drawn): the inscatter
-// of the whole view ray from the per-frame sky-view table (per-pixel mode: from the tables), with
-// the phase functions from the pixel's own ray, plus the sun disc, or the bare planet where the
-// ray meets the ground beyond the scene's geometry. Sky and geometry pixels are separate passes
-// because a CPU rasterizer runs every branch its 8-wide lanes reach.
+// of the whole view ray with the phase functions from the pixel's own ray, plus what lies behind
+// it: the sun disc, or the bare planet where the ray meets the ground beyond the scene's geometry.
+// In froxel mode all of it comes from the per-frame sky-view table (3 bilinear taps); in
+// per-pixel mode, from the tables. Sky and geometry pixels are separate passes because a CPU
+// rasterizer runs every branch its 8-wide lanes reach.
 #include "froxel.glsl"
 #include "frame.glsl"
 #include "surface.glsl"
@@ -16,14 +17,18 @@ layout(set = 0, binding = 5) uniform sampler3D multiple_texture;
 layout(set = 0, binding = 6) uniform sampler2D irradiance_texture;
 layout(set = 0, binding = 7) uniform sampler2D rayleigh_sky;
 layout(set = 0, binding = 8) uniform sampler2D mie_sky;
-layout(set = 0, binding = 9) uniform sampler2D transmittance_sky;
+layout(set = 0, binding = 9) uniform sampler2D background_sky;
 layout(location = 0) out vec4 color;
 
-// The whole view ray's inscatter: from the sky-view table, or (per-pixel mode) from the tables.
+// The whole view ray's inscatter, and in `transmittance` the background through the atmosphere
+// (GetBackgroundThroughAtmosphere): from the sky-view table, or (per-pixel mode) from the tables.
 Inscatter GetPixelSky(vec3 ray, float r, float mu, float mu_s, float nu) {
   if (kAerialPerPixel == 1) {
-    return GetSkyInscatter(transmittance_texture, rayleigh_texture, mie_texture, multiple_texture,
-                           r, mu, mu_s, nu);
+    Inscatter sky = GetSkyInscatter(transmittance_texture, rayleigh_texture, mie_texture,
+                                    multiple_texture, r, mu, mu_s, nu);
+    sky.transmittance = GetBackgroundThroughAtmosphere(transmittance_texture, irradiance_texture,
+                                                       ray, r, mu, sky.transmittance);
+    return sky;
   }
   vec3 up, toward_sun, side;
   GetSkyViewFrame(up, toward_sun, side);
@@ -33,7 +38,7 @@ Inscatter GetPixelSky(vec3 ray, float r, float mu, float mu_s, float nu) {
   Inscatter sky;
   sky.rayleigh = textureLod(rayleigh_sky, uv, 0.0).rgb;
   sky.mie = textureLod(mie_sky, uv, 0.0).rgb;
-  sky.transmittance = textureLod(transmittance_sky, uv, 0.0).rgb;
+  sky.transmittance = textureLod(background_sky, uv, 0.0).rgb;
   return sky;
 }
 
@@ -43,15 +48,5 @@ void main() {
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
   Inscatter sky = GetPixelSky(ray, r, mu, mu_s, nu);
-  vec3 radiance = ApplyPhaseFunctions(sky, nu);
-  if (RayIntersectsGround(r, mu)) {
-    vec3 ground = ray * DistanceToBottomAtmosphereBoundary(r, mu);
-    vec3 normal = normalize(frame.camera_planet_position.xyz + ground);
-    radiance += sky.transmittance * ShadeLambertian(transmittance_texture, irradiance_texture,
-                                                    ground, normal, atmosphere.ground_albedo.rgb);
-  } else if (nu > cos(atmosphere.sun_angular_radius)) {
-    // The sun disc at its true angular size, seen through the atmosphere.
-    radiance += GetSolarRadiance() * sky.transmittance;
-  }
-  color = vec4(radiance, 1.0);
+  color = vec4(ApplyPhaseFunctions(sky, nu) + ShadeBackground(sky.transmittance, r, mu, nu), 1.0);
 }

@@ -20,4 +20,24 @@ vec3 ShadeLambertian(sampler2D transmittance_texture, sampler2D irradiance_textu
   return albedo * (1.0 / PI) * (sun_irradiance + sky_irradiance);
 }
 
+// What a view ray from the camera sees behind the atmosphere, through it: where the ray meets the
+// planet, the lit bare ground times the ray's transmittance; elsewhere the transmittance alone,
+// which the caller turns into the sun disc where the pixel's own ray falls inside it.
+vec3 GetBackgroundThroughAtmosphere(sampler2D transmittance_texture, sampler2D irradiance_texture,
+                                    vec3 ray, float r, float mu, vec3 transmittance) {
+  if (!RayIntersectsGround(r, mu)) return transmittance;
+  vec3 ground = ray * DistanceToBottomAtmosphereBoundary(r, mu);
+  vec3 normal = normalize(frame.camera_planet_position.xyz + ground);
+  return transmittance * ShadeLambertian(transmittance_texture, irradiance_texture, ground, normal,
+                                         atmosphere.ground_albedo.rgb);
+}
+
+// The sky pixel's radiance behind the inscatter: the background above, or on the sun disc (at its
+// true angular size) the sun seen through the atmosphere.
+vec3 ShadeBackground(vec3 background, float r, float mu, float nu) {
+  bool on_sun = !RayIntersectsGround(r, mu) && nu > cos(atmosphere.sun_angular_radius);
+  return RayIntersectsGround(r, mu) ? background
+                                    : (on_sun ? GetSolarRadiance() * background : vec3(0.0));
+}
+
 #endif

@@ -99,10 +99,10 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
                                            ::vk::ImageUsageFlagBits::eTransferSrc)),
       sky_rayleigh_(tables.context(), SkyViewImage()),
       sky_mie_(tables.context(), SkyViewImage()),
-      sky_transmittance_(tables.context(), SkyViewImage()),
+      sky_background_(tables.context(), SkyViewImage()),
       sky_view_(tables.context(), "frame/sky_view.comp",
                 {vk::kUniform, vk::kUniform, vk::kSampled, vk::kSampled, vk::kSampled, vk::kSampled,
-                 vk::kStorageImage, vk::kStorageImage, vk::kStorageImage},
+                 vk::kSampled, vk::kStorageImage, vk::kStorageImage, vk::kStorageImage},
                 sizeof(kSkyViewSize)),
       opaque_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/opaque.frag",
                                              {kUniform, kUniform, kSampled, kSampled}, false,
@@ -124,7 +124,7 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       timer_(std::make_unique<vk::GpuTimer>(tables.context())) {
   tables.context().Submit([&](const auto& cmd) {
     for (const vk::Image* image : {&surface_, &depth_, &output_, &sky_rayleigh_, &sky_mie_,
-                                   &sky_transmittance_})
+                                   &sky_background_})
       image->InitializeLayout(cmd);
   });
 }
@@ -150,8 +150,8 @@ std::vector<vk::PassTime> Renderer::Render(const Scene& scene) {
       sky_view_.Dispatch(cmd,
                          {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.rayleigh()),
                           sampled(tables_.mie()), sampled(tables_.multiple()),
-                          vk::StorageImageSlot{&sky_rayleigh_}, vk::StorageImageSlot{&sky_mie_},
-                          vk::StorageImageSlot{&sky_transmittance_}},
+                          sampled(tables_.irradiance()), vk::StorageImageSlot{&sky_rayleigh_}, vk::StorageImageSlot{&sky_mie_},
+                          vk::StorageImageSlot{&sky_background_}},
                          {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}, {8, 8, 1},
                          kSkyViewSize.data());
       timer_->End(cmd);
@@ -165,11 +165,11 @@ std::vector<vk::PassTime> Renderer::Render(const Scene& scene) {
     timer_->End(cmd);
     vk::FullBarrier(cmd);
     timer_->Begin(cmd, "composite");
-    composite_sky_.Draw(cmd, {.colors = {&output_}, .clear_colors = {std::array<float, 4>{0, 0, 0, 1}},
-                              .depth = &depth_},
+    // No clear: the sky pass and the geometry pass below together write every pixel once.
+    composite_sky_.Draw(cmd, {.colors = {&output_}, .clear_colors = {std::nullopt}, .depth = &depth_},
                         {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.rayleigh()),
                          sampled(tables_.mie()), sampled(tables_.multiple()), sampled(tables_.irradiance()),
-                         sampled(sky_rayleigh_), sampled(sky_mie_), sampled(sky_transmittance_)},
+                         sampled(sky_rayleigh_), sampled(sky_mie_), sampled(sky_background_)},
                         fullscreen_vertices_, fullscreen_indices_, 3);
     composite_surface_.Draw(cmd, {.colors = {&output_}, .clear_colors = {std::nullopt}, .depth = &depth_},
                             {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.rayleigh()),

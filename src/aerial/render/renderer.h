@@ -55,7 +55,7 @@ class Renderer {
   vk::Buffer frame_buffer_;
   FrameUniforms frame_uniforms_{};
   vk::Image surface_, depth_, output_;
-  vk::Image sky_rayleigh_, sky_mie_, sky_transmittance_;
+  vk::Image sky_rayleigh_, sky_mie_, sky_background_;
   vk::ComputePipeline sky_view_;
   vk::GraphicsPipeline opaque_, transparent_, composite_sky_, composite_surface_;
   vk::Buffer fullscreen_vertices_, fullscreen_indices_;
