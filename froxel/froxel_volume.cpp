@@ -37,8 +37,7 @@ void FroxelVolume::Build(const ::vk::raii::CommandBuffer& cmd, const AtmosphereT
                       vk::SampledImageSlot{&tables.multiple(), sampler},
                       vk::StorageImageSlot{&rayleigh_}, vk::StorageImageSlot{&mie_},
                       vk::StorageImageSlot{&transmittance_}},
-                     {uint32_t(grid_.width), uint32_t(grid_.height), uint32_t(grid_.depth)},
-                     {8, 8, 1});
+                     {uint32_t(grid_.width), uint32_t(grid_.height), 1}, {32, 1, 1});
 }
 
 }  // namespace aerial
