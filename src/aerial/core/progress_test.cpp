@@ -1,6 +1,7 @@
 #include "aerial/core/progress.h"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <gtest/gtest.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -66,12 +67,20 @@ TEST(Progress, DrawsOnTerminalUnlessQuiet) {
   }
   std::fclose(terminal);
 
-  char buffer[512] = {};
+  // The pseudo-terminal hands written bytes to its reader asynchronously (a kernel work queue),
+  // so on a loaded machine they may arrive late: wait for them, up to a generous 5 s.
+  std::string text;
   ::fcntl(master, F_SETFL, O_NONBLOCK);
-  ssize_t got = ::read(master, buffer, sizeof buffer - 1);
+  for (int waited_ms = 0; text.find("2/2 irradiance") == std::string::npos && waited_ms < 5000;
+       waited_ms += 50) {
+    pollfd ready{.fd = master, .events = POLLIN, .revents = 0};
+    if (::poll(&ready, 1, 50) <= 0) continue;
+    char buffer[512];
+    ssize_t got = ::read(master, buffer, sizeof buffer);
+    if (got > 0) text.append(buffer, static_cast<size_t>(got));
+  }
   ::close(master);
-  ASSERT_GT(got, 0);
-  std::string text(buffer, static_cast<size_t>(got));
+  ASSERT_FALSE(text.empty());
   EXPECT_NE(text.find("\rprecompute [##########..........] 1/2 transmittance"), std::string::npos)
       << text;
   EXPECT_NE(text.find("\rprecompute [####################] 2/2 irradiance"), std::string::npos)
