@@ -1,5 +1,7 @@
 #include "froxel/froxel_volume.h"
 
+#include <cstring>
+
 namespace aerial {
 namespace {
 
@@ -38,6 +40,23 @@ void FroxelVolume::Build(const ::vk::raii::CommandBuffer& cmd, const AtmosphereT
                       vk::StorageImageSlot{&rayleigh_}, vk::StorageImageSlot{&mie_},
                       vk::StorageImageSlot{&transmittance_}},
                      {uint32_t(grid_.width), uint32_t(grid_.height), 1}, {32, 1, 1});
+}
+
+FroxelTexels FroxelVolume::Read(const vk::Context& context) const {
+  FroxelTexels texels{.grid = grid_};
+  for (auto [image, out] : {std::pair{&rayleigh_, &texels.rayleigh}, std::pair{&mie_, &texels.mie},
+                            std::pair{&transmittance_, &texels.transmittance}}) {
+    vk::Buffer readback(context, {.size = image->byte_size(),
+                                  .usage = ::vk::BufferUsageFlagBits::eTransferDst,
+                                  .host_visible = true});
+    context.Submit([&](const auto& cmd) {
+      image->CopyToBuffer(cmd, readback);
+      vk::FullBarrier(cmd);
+    });
+    out->resize(size_t(grid_.width) * grid_.height * grid_.depth * 4);
+    std::memcpy(out->data(), readback.mapped(), out->size() * sizeof(float));
+  }
+  return texels;
 }
 
 }  // namespace aerial

@@ -4,6 +4,7 @@
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/vk/compute_pipeline.h"
 #include "froxel/froxel_grid.h"
+#include "froxel/froxel_placement.h"
 
 namespace aerial {
 
@@ -19,6 +20,10 @@ class FroxelVolume {
   const vk::Image& rayleigh() const { return rayleigh_; }
   const vk::Image& mie() const { return mie_; }
   const vk::Image& transmittance() const { return transmittance_; }
+
+  // Copies the three images back as computed (RGBA float texels). Call after the frame that
+  // built them has finished (Renderer::Render waits for it).
+  FroxelTexels Read(const vk::Context& context) const;
 
  private:
   FroxelGrid grid_;

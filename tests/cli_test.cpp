@@ -55,6 +55,26 @@ TEST(Cli, ProbePrintsEveryKeyForEachWavelength) {
   }
 }
 
+// export-vdb writes a file Debian's python3-openvdb reads, in froxel space and on a world grid.
+TEST(Cli, ExportVdbWritesTheFroxelVolume) {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() / ("aerial-cli-vdb-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  for (const std::string extra : {"", " --world-grid 8000"}) {
+    std::filesystem::path out = dir / "f.vdb";
+    CommandRun run = RunAerial("export-vdb --small-tables --quiet --froxels 8x4x6" + extra + " --out " + out.string());
+    ASSERT_EQ(run.exit_code, 0) << extra << "\n" << run.err;
+    EXPECT_NE(run.out.find("wrote"), std::string::npos) << run.out;
+    ASSERT_TRUE(std::filesystem::exists(out));
+    EXPECT_GT(std::filesystem::file_size(out), 1000u);
+    std::vector<std::string> leftovers;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+      if (entry.path() != out) leftovers.push_back(entry.path().string());
+    EXPECT_TRUE(leftovers.empty()) << "a temporary was left: " << leftovers.front();
+    std::filesystem::remove(out);
+  }
+  std::filesystem::remove_all(dir);
+}
+
 struct BadInput {
   std::string arguments;
   std::string must_mention;
@@ -65,9 +85,11 @@ void PrintTo(const BadInput& input, std::ostream* out) { *out << input.arguments
 class CliRejects : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(CliRejects, WithMessageAndNonZeroExit) {
-  std::filesystem::remove("/tmp/aerial-cli-test.png");
+  for (const char* output : {"/tmp/aerial-cli-test.png", "/tmp/aerial-cli-test.vdb"})
+    std::filesystem::remove(output);
   CommandRun run = RunAerial(GetParam().arguments);
-  EXPECT_FALSE(std::filesystem::exists("/tmp/aerial-cli-test.png")) << "no partial output";
+  for (const char* output : {"/tmp/aerial-cli-test.png", "/tmp/aerial-cli-test.vdb"})
+    EXPECT_FALSE(std::filesystem::exists(output)) << "no partial output";
   EXPECT_NE(run.exit_code, 0) << GetParam().arguments;
   EXPECT_NE(run.err.find(GetParam().must_mention), std::string::npos)
       << "stderr does not mention \"" << GetParam().must_mention << "\":\n" << run.err;
@@ -96,6 +118,22 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"render --out /nonexistent-aerial-dir/x.png", "/nonexistent-aerial-dir"},
         BadInput{"render --out /tmp/aerial-cli-test.jpg", "--out"},
         BadInput{"render --scene " AERIAL_SOURCE_DIR "/tests/data/bad_scene.toml --out /tmp/aerial-cli-test.png", "camera.fov_deg"},
+        BadInput{"export-vdb --froxels 16x8 --out /tmp/aerial-cli-test.vdb", "--froxels"},
+        BadInput{"export-vdb --froxels 16x8x1 --out /tmp/aerial-cli-test.vdb", "--froxels"},
+        BadInput{"export-vdb --world-grid 0 --out /tmp/aerial-cli-test.vdb", "--world-grid"},
+        BadInput{"export-vdb --world-grid -100 --out /tmp/aerial-cli-test.vdb", "--world-grid"},
+        BadInput{"export-vdb --world-grid 1 --out /tmp/aerial-cli-test.vdb", "--world-grid"},
+        BadInput{"export-vdb --world-grid abc --out /tmp/aerial-cli-test.vdb", "--world-grid"},
+        BadInput{"export-vdb --froxel-far-m 50 --out /tmp/aerial-cli-test.vdb", "--froxel-far-m"},
+        BadInput{"render --froxel-far-m 5e6 --out /tmp/aerial-cli-test.png", "--froxel-far-m"},
+        BadInput{"export-vdb --out /tmp/aerial-cli-test.exr", "--out"},
+        BadInput{"export-vdb --out /nonexistent-aerial-dir/x.vdb", "/nonexistent-aerial-dir"},
+        BadInput{"export-vdb --preset no-such-preset --out /tmp/aerial-cli-test.vdb", "no-such-preset"},
+        BadInput{"export-vdb --camera-fov-deg 500 --out /tmp/aerial-cli-test.vdb", "--camera-fov-deg"},
+        // The output path and --world-grid are checked before the GPU is touched: with a device
+        // that does not exist, the message is still about them.
+        BadInput{"export-vdb --device no-such-gpu --out /nonexistent-aerial-dir/x.vdb", "/nonexistent-aerial-dir"},
+        BadInput{"export-vdb --device no-such-gpu --world-grid 1 --out /tmp/aerial-cli-test.vdb", "--world-grid"},
         BadInput{"no-such-command", "no-such-command"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return "case" + std::to_string(info.index); });
 

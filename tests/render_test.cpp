@@ -189,40 +189,15 @@ TEST_F(Render, FroxelTransmittanceAtTheLandmarkMatchesTheProbe) {
   Renderer renderer(tables, scene, {.width = kWidth, .height = kHeight});
   renderer.Render(scene);
   // The froxel volume, read back and sampled on the CPU the way the shader does.
-  const FroxelVolume& froxels = renderer.froxels();
-  const vk::Image& volume = froxels.transmittance();
-  vk::Buffer readback(tables.context(), {.size = volume.byte_size(),
-                                         .usage = ::vk::BufferUsageFlagBits::eTransferDst,
-                                         .host_visible = true});
-  tables.context().Submit([&](const auto& cmd) { volume.CopyToBuffer(cmd, readback); vk::FullBarrier(cmd); });
-  const float* texels = reinterpret_cast<const float*>(readback.mapped());
-  const FroxelGrid& grid = froxels.grid();
+  FroxelTexels texels = renderer.froxels().Read(tables.context());
   glm::dvec3 relative = center - scene.camera.position;
   double distance = glm::length(relative);
   glm::dvec3 ray = relative / distance;
-  // Screen position from the frame's view-projection (column-major floats).
-  const auto& m = renderer.frame_uniforms().view_projection;
-  glm::dvec4 clip(0.0);
-  for (int row = 0; row < 4; ++row)
-    clip[row] = m[0 * 4 + row] * relative.x + m[1 * 4 + row] * relative.y + m[2 * 4 + row] * relative.z + m[3 * 4 + row];
-  double u = clip.x / clip.w * 0.5 + 0.5, v = clip.y / clip.w * 0.5 + 0.5;
-  double coords[3] = {u * grid.width - 0.5, v * grid.height - 0.5, grid.DepthCoordinate(distance) * grid.depth - 0.5};
-  int sizes[3] = {grid.width, grid.height, grid.depth};
-  Spectrum froxel{0, 0, 0};
-  for (int corner = 0; corner < 8; ++corner) {
-    int index[3];
-    double weight = 1.0;
-    for (int axis = 0; axis < 3; ++axis) {
-      double c = std::clamp(coords[axis], 0.0, double(sizes[axis] - 1));
-      int i0 = std::min(int(std::floor(c)), sizes[axis] - 2);
-      double t = c - i0;
-      int bit = (corner >> axis) & 1;
-      index[axis] = i0 + bit;
-      weight *= bit ? t : 1.0 - t;
-    }
-    size_t texel = ((size_t(index[2]) * grid.height + index[1]) * grid.width + index[0]) * 4;
-    for (int c = 0; c < 3; ++c) froxel[c] += weight * texels[texel + c];
-  }
+  std::optional<FroxelPlacement::ScreenPoint> point =
+      FroxelPlacement(renderer.frame_uniforms(), texels.grid).ToScreen(center);
+  ASSERT_TRUE(point);
+  glm::dvec3 sampled = texels.Read(point->uv, point->distance).transmittance;
+  Spectrum froxel{sampled.x, sampled.y, sampled.z};
   glm::dvec3 planet_position = scene.camera.position + glm::dvec3(0, 0, tables.atmosphere().bottom_radius_m);
   double r = glm::length(planet_position);
   glm::dvec3 sun = scene.sun.Direction();

@@ -104,6 +104,26 @@ void WriteFileAtomically(const fs::path& path, std::string_view text) {
   WriteFileAtomically(path, std::as_bytes(std::span(text.data(), text.size())));
 }
 
+void WriteFileAtomicallyWith(const fs::path& path,
+                             const std::function<void(const fs::path& temporary)>& write) {
+  EnsureParentDirectory(path);
+  const fs::path temporary = TemporaryNameFor(path);
+  try {
+    write(temporary);
+    Fd file{::open(temporary.c_str(), O_WRONLY | O_CLOEXEC)};
+    if (file.fd < 0) Fail(temporary, "open the written temporary", errno);
+    if (::fsync(file.fd) != 0) Fail(temporary, "sync", errno);
+    int fd = file.fd;
+    file.fd = -1;
+    if (::close(fd) != 0) Fail(temporary, "close", errno);
+    if (::rename(temporary.c_str(), path.c_str()) != 0) Fail(path, "rename a file over", errno);
+  } catch (...) {
+    ::unlink(temporary.c_str());
+    throw;
+  }
+  SyncDirectory(ParentOf(path));
+}
+
 std::vector<std::byte> ReadFile(const fs::path& path) {
   Fd file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
   if (file.fd < 0) Fail(path, "open a file for reading", errno);

@@ -1,0 +1,69 @@
+#pragma once
+// One frame's froxel volume as an OpenVDB file (`aerial export-vdb`). See froxel/README.md,
+// "Exporting to OpenVDB", for the file's layout, units and coordinate frame.
+//
+// The froxel pass runs in the real renderer (Renderer::Render on the scene, at a small image of
+// kCaptureWidth x kCaptureHeight: only its 16:9 aspect reaches the froxels) and the three froxel
+// images are read back as computed, float32. Two layouts:
+//  - froxel space (default): voxel (i, j, k) holds froxel (i, j, k) exactly, W x H x D voxels,
+//    with an identity index transform, plus a `froxel_position` grid holding each froxel
+//    center's world position. No OpenVDB transform can place the froxels: their slices are
+//    spherical shells (a distance along each ray), quadratic in k, while OpenVDB's frustum map
+//    has planar slices linear in k.
+//  - world space (--world-grid VOXEL_M): a regular grid in the scene frame, each voxel center
+//    read from the froxels the way the shaders read them (trilinear, SampleFroxels in
+//    shaders/include/froxel.glsl); voxels outside the frustum stay inactive.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "aerial/atmosphere/parameters.h"
+#include "aerial/export/vdb_file.h"
+#include "aerial/precompute/atmosphere_tables.h"
+#include "aerial/render/frame_uniforms.h"
+#include "froxel/froxel_placement.h"
+
+namespace aerial {
+
+inline constexpr int kCaptureWidth = 64;
+inline constexpr int kCaptureHeight = 36;
+// The world grid's bounding box may hold at most this many voxels (2^24: about 0.7 GB at peak).
+inline constexpr int64_t kMaxWorldGridVoxels = int64_t(1) << 24;
+
+// One frame's froxels and what they were computed for.
+struct FroxelFrame {
+  FroxelTexels texels;    // as the GPU computed them
+  FrameUniforms uniforms;  // the frame block the froxel pass read
+  Camera camera;
+  Sun sun;
+  LutVariant lut = LutVariant::k4D;
+  uint64_t atmosphere_hash = 0;      // AtmosphereParameters::Hash()
+  uint64_t table_options_hash = 0;   // PrecomputeOptions::Hash()
+  Spectrum wavelengths_nm{};
+  double planet_radius_m = 0.0;
+
+  FroxelPlacement placement() const { return FroxelPlacement(uniforms, texels.grid); }
+};
+
+// The frame uniforms of the capture, computed on the CPU (for checks before any GPU work).
+FrameUniforms CaptureFrameUniforms(const Scene& scene, double planet_radius_m, const FroxelGrid& grid);
+
+// Renders the scene once and reads its froxels back.
+FroxelFrame CaptureFroxels(const AtmosphereTables& tables, const Scene& scene, const FroxelGrid& grid);
+
+// The .vdb extension (any case), an existing parent directory, and a file can be created there.
+// Throws Error naming --out.
+void CheckVdbOutputPath(const std::filesystem::path& path);
+
+// Throws Error naming --world-grid unless voxel_m is in (0, far_m] and the voxels over the
+// frustum's bounding box number at most kMaxWorldGridVoxels.
+void CheckWorldGrid(double voxel_m, const FroxelPlacement& placement);
+
+// The froxel-space layout and the world-space one (see above).
+VdbVolume MakeFroxelSpaceVolume(const FroxelFrame& frame);
+VdbVolume MakeWorldSpaceVolume(const FroxelFrame& frame, double voxel_m);
+
+// Rec. 709 luma weights on the (680, 550, 440 nm) channels: the scalar inscatter_luminance grid.
+double InscatterLuminance(const float* rayleigh, const float* mie);
+
+}  // namespace aerial

@@ -1,0 +1,240 @@
+// The one translation unit that includes OpenVDB (see vdb_file.h).
+#include "aerial/export/vdb_file.h"
+
+#include <cmath>
+#include <mutex>
+#include <set>
+
+#include <openvdb/openvdb.h>
+
+#include "aerial/core/atomic_file.h"
+#include "aerial/core/error.h"
+
+namespace aerial {
+namespace {
+
+void InitializeOpenVdb() {
+  static std::once_flag once;
+  std::call_once(once, [] { openvdb::initialize(); });
+}
+
+void InsertMetadata(openvdb::MetaMap& map, const VdbMetadata& metadata) {
+  for (const auto& [name, value] : metadata) {
+    std::visit(
+        [&, name = name](const auto& v) {
+          using T = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<T, std::string>) {
+            map.insertMeta(name, openvdb::StringMetadata(v));
+          } else if constexpr (std::is_same_v<T, double>) {
+            map.insertMeta(name, openvdb::DoubleMetadata(v));
+          } else if constexpr (std::is_same_v<T, int64_t>) {
+            map.insertMeta(name, openvdb::Int64Metadata(v));
+          } else if constexpr (std::is_same_v<T, bool>) {
+            map.insertMeta(name, openvdb::BoolMetadata(v));
+          } else if constexpr (std::is_same_v<T, std::array<double, 3>>) {
+            map.insertMeta(name, openvdb::Vec3DMetadata(openvdb::Vec3d(v[0], v[1], v[2])));
+          } else {
+            map.insertMeta(name, openvdb::Vec3IMetadata(openvdb::Vec3i(v[0], v[1], v[2])));
+          }
+        },
+        value);
+  }
+}
+
+// Every metadata type aerial writes, plus the ones OpenVDB adds (float, int32, vec3s widen).
+VdbMetadata ExtractMetadata(const openvdb::MetaMap& map) {
+  VdbMetadata metadata;
+  for (auto it = map.beginMeta(); it != map.endMeta(); ++it) {
+    const openvdb::Metadata& meta = *it->second;
+    const std::string& name = it->first;
+    if (auto* s = dynamic_cast<const openvdb::StringMetadata*>(&meta)) {
+      metadata[name] = s->value();
+    } else if (auto* d = dynamic_cast<const openvdb::DoubleMetadata*>(&meta)) {
+      metadata[name] = d->value();
+    } else if (auto* f = dynamic_cast<const openvdb::FloatMetadata*>(&meta)) {
+      metadata[name] = double(f->value());
+    } else if (auto* i = dynamic_cast<const openvdb::Int64Metadata*>(&meta)) {
+      metadata[name] = int64_t(i->value());
+    } else if (auto* i32 = dynamic_cast<const openvdb::Int32Metadata*>(&meta)) {
+      metadata[name] = int64_t(i32->value());
+    } else if (auto* b = dynamic_cast<const openvdb::BoolMetadata*>(&meta)) {
+      metadata[name] = b->value();
+    } else if (auto* v = dynamic_cast<const openvdb::Vec3DMetadata*>(&meta)) {
+      metadata[name] = std::array<double, 3>{v->value()[0], v->value()[1], v->value()[2]};
+    } else if (auto* vs = dynamic_cast<const openvdb::Vec3SMetadata*>(&meta)) {
+      metadata[name] = std::array<double, 3>{vs->value()[0], vs->value()[1], vs->value()[2]};
+    } else if (auto* vi = dynamic_cast<const openvdb::Vec3IMetadata*>(&meta)) {
+      metadata[name] = std::array<int32_t, 3>{vi->value()[0], vi->value()[1], vi->value()[2]};
+    }
+  }
+  return metadata;
+}
+
+void CheckVolume(const VdbVolume& volume) {
+  if (!(volume.voxel_size_m > 0.0 && std::isfinite(volume.voxel_size_m)))
+    throw Error("VDB voxel size", std::to_string(volume.voxel_size_m), "a finite size > 0");
+  for (double o : volume.origin_m)
+    if (!std::isfinite(o)) throw Error("VDB origin", std::to_string(o), "finite meters");
+  std::set<std::string> names;
+  for (const VdbVolume::Grid& grid : volume.grids) {
+    if (grid.name.empty() || !names.insert(grid.name).second)
+      throw Error("VDB grid name", grid.name, "a unique, non-empty name");
+    if (grid.components != 1 && grid.components != 3)
+      throw Error("VDB grid components", std::to_string(grid.components), "1 or 3", grid.name);
+    if (grid.values.size() != volume.voxels.size() * size_t(grid.components))
+      throw Error("VDB grid values", std::to_string(grid.values.size()),
+                  std::to_string(volume.voxels.size() * grid.components) + " (components x voxels)",
+                  grid.name);
+  }
+}
+
+template <typename GridType, typename Value>
+openvdb::GridBase::Ptr MakeGrid(const VdbVolume& volume, const VdbVolume::Grid& source,
+                                const openvdb::math::Transform::Ptr& transform, Value make_value) {
+  typename GridType::Ptr grid = GridType::create(typename GridType::ValueType(0.0f));
+  grid->setName(source.name);
+  grid->setTransform(transform);
+  grid->setGridClass(openvdb::GRID_UNKNOWN);
+  auto accessor = grid->getAccessor();
+  const float* values = source.values.data();
+  for (size_t n = 0; n < volume.voxels.size(); ++n, values += source.components) {
+    const auto& v = volume.voxels[n];
+    // setValueOn keeps the voxel active even when its value equals the background.
+    accessor.setValueOn(openvdb::Coord(v[0], v[1], v[2]), make_value(values));
+  }
+  InsertMetadata(*grid, volume.grid_metadata);
+  InsertMetadata(*grid, source.metadata);
+  return grid;
+}
+
+template <typename GridType>
+void ReadValues(const GridType& grid, VdbGridData& data, int components) {
+  auto store = [&](const openvdb::Coord& c, const typename GridType::ValueType& value) {
+    int64_t offset = data.Offset(c.x(), c.y(), c.z());
+    if (offset < 0) return;
+    data.active[offset] = 1;
+    for (int k = 0; k < components; ++k) {
+      if constexpr (std::is_same_v<typename GridType::ValueType, float>) {
+        data.values[offset * components + k] = value;
+      } else {
+        data.values[offset * components + k] = value[k];
+      }
+    }
+  };
+  for (auto it = grid.cbeginValueOn(); it; ++it) {
+    if (it.isVoxelValue()) {
+      store(it.getCoord(), *it);
+    } else {
+      // A tile: aerial never writes one, but a file from elsewhere may hold them.
+      openvdb::CoordBBox box;
+      it.getBoundingBox(box);
+      for (auto c = box.begin(); c; ++c) store(*c, *it);
+    }
+  }
+}
+
+}  // namespace
+
+void WriteVdb(const std::filesystem::path& path, const VdbVolume& volume) {
+  CheckVolume(volume);
+  InitializeOpenVdb();
+  openvdb::math::Transform::Ptr transform =
+      openvdb::math::Transform::createLinearTransform(volume.voxel_size_m);
+  transform->postTranslate(openvdb::Vec3d(volume.origin_m[0], volume.origin_m[1], volume.origin_m[2]));
+  openvdb::GridPtrVec grids;
+  for (const VdbVolume::Grid& source : volume.grids) {
+    if (source.components == 3) {
+      grids.push_back(MakeGrid<openvdb::Vec3SGrid>(
+          volume, source, transform, [](const float* v) { return openvdb::Vec3s(v[0], v[1], v[2]); }));
+    } else {
+      grids.push_back(
+          MakeGrid<openvdb::FloatGrid>(volume, source, transform, [](const float* v) { return *v; }));
+    }
+  }
+  openvdb::MetaMap file_metadata;
+  InsertMetadata(file_metadata, volume.file_metadata);
+  WriteFileAtomicallyWith(path, [&](const std::filesystem::path& temporary) {
+    try {
+      openvdb::io::File file(temporary.string());
+      file.write(grids, file_metadata);
+      file.close();
+    } catch (const openvdb::Exception& e) {
+      throw Error("file", path.string(), std::string("a path where we can write a VDB file (") + e.what() + ")");
+    }
+  });
+}
+
+std::array<double, 3> VdbGridData::IndexToWorld(double i, double j, double k) const {
+  const auto& m = index_to_world;
+  return {m[0] * i + m[1] * j + m[2] * k + m[3], m[4] * i + m[5] * j + m[6] * k + m[7],
+          m[8] * i + m[9] * j + m[10] * k + m[11]};
+}
+
+int64_t VdbGridData::Offset(int32_t i, int32_t j, int32_t k) const {
+  if (i < min[0] || j < min[1] || k < min[2] || i > max[0] || j > max[1] || k > max[2]) return -1;
+  int64_t sx = max[0] - min[0] + 1, sy = max[1] - min[1] + 1;
+  return ((int64_t(k) - min[2]) * sy + (j - min[1])) * sx + (i - min[0]);
+}
+
+const VdbGridData* VdbFileData::Find(const std::string& name) const {
+  for (const VdbGridData& grid : grids)
+    if (grid.name == name) return &grid;
+  return nullptr;
+}
+
+VdbFileData ReadVdb(const std::filesystem::path& path) {
+  InitializeOpenVdb();
+  VdbFileData data;
+  try {
+    openvdb::io::File file(path.string());
+    file.open(/*delayLoad=*/false);
+    data.metadata = ExtractMetadata(*file.getMetadata());
+    openvdb::GridPtrVecPtr grids = file.getGrids();
+    file.close();
+    for (const openvdb::GridBase::Ptr& base : *grids) {
+      VdbGridData grid;
+      grid.name = base->getName();
+      grid.type = base->valueType();
+      grid.active_voxels = int64_t(base->activeVoxelCount());
+      grid.metadata = ExtractMetadata(*base);
+      const openvdb::math::Transform& transform = base->transform();
+      grid.linear_transform = transform.isLinear();
+      openvdb::Vec3d origin = transform.indexToWorld(openvdb::Vec3d(0, 0, 0));
+      for (int axis = 0; axis < 3; ++axis) {
+        openvdb::Vec3d unit(0, 0, 0);
+        unit[axis] = 1;
+        openvdb::Vec3d column = transform.indexToWorld(unit) - origin;
+        for (int row = 0; row < 3; ++row) grid.index_to_world[row * 4 + axis] = column[row];
+      }
+      for (int row = 0; row < 3; ++row) grid.index_to_world[row * 4 + 3] = origin[row];
+      openvdb::CoordBBox box = base->evalActiveVoxelBoundingBox();
+      if (grid.active_voxels > 0) {
+        grid.min = {box.min().x(), box.min().y(), box.min().z()};
+        grid.max = {box.max().x(), box.max().y(), box.max().z()};
+      } else {
+        grid.min = {0, 0, 0};
+        grid.max = {-1, -1, -1};
+      }
+      size_t count = grid.active_voxels > 0 ? size_t(box.volume()) : 0;
+      if (auto f = openvdb::GridBase::grid<openvdb::FloatGrid>(base)) {
+        grid.components = 1;
+        grid.values.assign(count, 0.0f);
+        grid.active.assign(count, 0);
+        ReadValues(*f, grid, 1);
+      } else if (auto v = openvdb::GridBase::grid<openvdb::Vec3SGrid>(base)) {
+        grid.components = 3;
+        grid.values.assign(count * 3, 0.0f);
+        grid.active.assign(count, 0);
+        ReadValues(*v, grid, 3);
+      } else {
+        continue;
+      }
+      data.grids.push_back(std::move(grid));
+    }
+  } catch (const openvdb::Exception& e) {
+    throw Error("file", path.string(), std::string("a readable VDB file (") + e.what() + ")");
+  }
+  return data;
+}
+
+}  // namespace aerial

@@ -1,0 +1,436 @@
+// `aerial export-vdb`: the froxel volume of one frame, written to OpenVDB and read back, holds
+// exactly what the GPU computed; every froxel sits where the renderer puts it; the metadata
+// survives; Debian's own OpenVDB Python binding reads the file; bad paths leave nothing behind.
+#include <gtest/gtest.h>
+
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "aerial/core/error.h"
+#include "aerial/export/froxel_export.h"
+#include "aerial/image/scratch_dir_test_util.h"
+#include "aerial/render/renderer.h"
+#include "aerial/scene/presets.h"
+#include "gpu_fixture.h"
+
+namespace aerial::testing {
+namespace {
+
+FroxelGrid TestGrid() {
+  FroxelGrid grid;
+  grid.width = 16;
+  grid.height = 8;
+  grid.depth = 12;
+  return grid;
+}
+
+Scene TestScene(const AtmosphereTables& tables) {
+  Scene scene = BuildPreset("noon", tables.atmosphere().bottom_radius_m);
+  // Off the origin and turned, so that a mix-up of axes or of camera-relative and world
+  // positions cannot pass.
+  scene.camera.position = glm::dvec3(1234.0, -567.0, 350.0);
+  scene.camera.yaw_deg = 35.0;
+  scene.camera.pitch_deg = 8.0;
+  return scene;
+}
+
+// A froxel image read back by the test itself, as render_test does: RGBA floats, x fastest.
+std::vector<float> ReadImage(const vk::Context& context, const vk::Image& image) {
+  vk::Buffer readback(context, {.size = image.byte_size(),
+                                .usage = ::vk::BufferUsageFlagBits::eTransferDst,
+                                .host_visible = true});
+  context.Submit([&](const auto& cmd) {
+    image.CopyToBuffer(cmd, readback);
+    vk::FullBarrier(cmd);
+  });
+  std::vector<float> texels(image.byte_size() / sizeof(float));
+  std::memcpy(texels.data(), readback.mapped(), image.byte_size());
+  return texels;
+}
+
+// The renderer's own placement of froxel (i, j, k), computed here from the frame block as
+// shaders/frame/froxel.comp and shaders/include/frame.glsl do (ViewRayFromScreen,
+// FroxelSliceDistance), independently of froxel_placement.cpp.
+glm::dvec3 RendererFroxelPosition(const FrameUniforms& frame, int i, int j, int k) {
+  const auto& m = frame.inverse_view_projection;
+  int w = frame.froxel_size[0], h = frame.froxel_size[1], d = frame.froxel_size[2];
+  double clip[4] = {2.0 * (i + 0.5) / w - 1.0, 2.0 * (j + 0.5) / h - 1.0, 0.5, 1.0};
+  double world[4] = {0, 0, 0, 0};
+  for (int row = 0; row < 4; ++row)
+    for (int column = 0; column < 4; ++column) world[row] += m[column * 4 + row] * clip[column];
+  glm::dvec3 ray = glm::normalize(glm::dvec3(world[0], world[1], world[2]) / world[3]);
+  double s = (k + 0.5) / d;
+  double distance = frame.froxel_depth[0] * s * s;
+  glm::dvec3 camera(frame.camera_scene_position[0], frame.camera_scene_position[1],
+                    frame.camera_scene_position[2]);
+  return camera + ray * distance;
+}
+
+template <typename T>
+T Meta(const VdbMetadata& metadata, const std::string& key) {
+  auto it = metadata.find(key);
+  if (it == metadata.end()) {
+    ADD_FAILURE() << "missing metadata " << key;
+    return T{};
+  }
+  const T* value = std::get_if<T>(&it->second);
+  if (!value) {
+    ADD_FAILURE() << "metadata " << key << " has another type";
+    return T{};
+  }
+  return *value;
+}
+
+std::string Hex(uint64_t value) {
+  char text[24];
+  std::snprintf(text, sizeof text, "%016" PRIx64, value);
+  return text;
+}
+
+class VdbExport : public GpuTest {
+ protected:
+  void SetUp() override {
+    GpuTest::SetUp();
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = std::filesystem::temp_directory_path() /
+           ("aerial_vdb_test_" + std::to_string(::getpid()) + "_" + info->name());
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::filesystem::remove_all(dir_);
+    GpuTest::TearDown();
+  }
+
+  const AtmosphereTables& tables() const { return SmallTables(); }
+
+  FroxelFrame Capture() const { return CaptureFroxels(tables(), TestScene(tables()), TestGrid()); }
+
+  std::filesystem::path dir_;
+};
+
+// Every value of the three froxel grids, read back through the OpenVDB library, equals the GPU
+// volume bit for bit; the grids are dense W x H x D boxes at index (0, 0, 0).
+TEST_F(VdbExport, RoundTripHoldsTheGpuVolumeExactly) {
+  Scene scene = TestScene(tables());
+  FroxelGrid grid = TestGrid();
+  // The GPU volume as the test reads it from a renderer of its own, at the capture's size.
+  Renderer renderer(tables(), scene, {.width = kCaptureWidth, .height = kCaptureHeight, .froxels = grid});
+  renderer.Render(scene);
+  const FroxelVolume& froxels = renderer.froxels();
+  std::vector<float> gpu[3] = {ReadImage(tables().context(), froxels.rayleigh()),
+                               ReadImage(tables().context(), froxels.mie()),
+                               ReadImage(tables().context(), froxels.transmittance())};
+
+  FroxelFrame frame = CaptureFroxels(tables(), scene, grid);
+  WriteVdb(dir_ / "f.vdb", MakeFroxelSpaceVolume(frame));
+  VdbFileData file = ReadVdb(dir_ / "f.vdb");
+
+  const char* names[3] = {"rayleigh_inscatter", "mie_inscatter", "transmittance"};
+  const int64_t count = int64_t(grid.width) * grid.height * grid.depth;
+  for (int g = 0; g < 3; ++g) {
+    const VdbGridData* data = file.Find(names[g]);
+    ASSERT_NE(data, nullptr) << names[g];
+    EXPECT_EQ(data->type, "vec3s");
+    EXPECT_EQ(data->active_voxels, count) << names[g];
+    EXPECT_EQ(data->min, (std::array<int32_t, 3>{0, 0, 0}));
+    EXPECT_EQ(data->max, (std::array<int32_t, 3>{grid.width - 1, grid.height - 1, grid.depth - 1}));
+    int64_t mismatches = 0, nonzero = 0;
+    for (int k = 0; k < grid.depth; ++k)
+      for (int j = 0; j < grid.height; ++j)
+        for (int i = 0; i < grid.width; ++i) {
+          size_t texel = ((size_t(k) * grid.height + j) * grid.width + i) * 4;
+          int64_t offset = data->Offset(i, j, k);
+          for (int c = 0; c < 3; ++c) {
+            float read = data->values[offset * 3 + c];
+            mismatches += std::memcmp(&read, &gpu[g][texel + c], sizeof(float)) != 0;
+            nonzero += read != 0.0f;
+          }
+        }
+    EXPECT_EQ(mismatches, 0) << names[g];
+    EXPECT_GT(nonzero, count) << names[g] << ": a real volume, not zeros";
+  }
+  const VdbGridData* luminance = file.Find("inscatter_luminance");
+  ASSERT_NE(luminance, nullptr);
+  EXPECT_EQ(luminance->type, "float");
+  EXPECT_EQ(luminance->active_voxels, count);
+  for (int64_t n = 0; n < count; ++n) {
+    float expected = float(InscatterLuminance(&gpu[0][n * 4], &gpu[1][n * 4]));
+    ASSERT_EQ(luminance->values[n], expected) << "voxel " << n;
+  }
+}
+
+// Every froxel center, as the file places it, is where the renderer puts it (1e-4 of its
+// distance from the camera): by the froxel_position grid, and by the camera and slice metadata
+// alone (what a DCC user's script would use).
+TEST_F(VdbExport, EveryFroxelSitsAtTheRenderersWorldPosition) {
+  FroxelFrame frame = Capture();
+  WriteVdb(dir_ / "f.vdb", MakeFroxelSpaceVolume(frame));
+  VdbFileData file = ReadVdb(dir_ / "f.vdb");
+  const VdbGridData* position = file.Find("froxel_position");
+  ASSERT_NE(position, nullptr);
+  const VdbMetadata& meta = position->metadata;
+  auto camera = Meta<std::array<double, 3>>(meta, "camera_position_m");
+  auto forward = Meta<std::array<double, 3>>(meta, "camera_forward");
+  auto up = Meta<std::array<double, 3>>(meta, "camera_up");
+  auto right = Meta<std::array<double, 3>>(meta, "camera_right");
+  double tan_half = std::tan(Meta<double>(meta, "camera_vertical_fov_deg") * M_PI / 360.0);
+  double aspect = Meta<double>(meta, "camera_aspect");
+  std::vector<double> slices;
+  std::stringstream list(Meta<std::string>(meta, "froxel_slice_distance_m"));
+  for (std::string item; std::getline(list, item, ',');) slices.push_back(std::stod(item));
+  FroxelGrid grid = TestGrid();
+  ASSERT_EQ(slices.size(), size_t(grid.depth));
+
+  double worst_grid = 0.0, worst_metadata = 0.0;
+  for (int k = 0; k < grid.depth; ++k)
+    for (int j = 0; j < grid.height; ++j)
+      for (int i = 0; i < grid.width; ++i) {
+        glm::dvec3 expected = RendererFroxelPosition(frame.uniforms, i, j, k);
+        double distance = glm::length(expected - glm::dvec3(camera[0], camera[1], camera[2]));
+        int64_t offset = position->Offset(i, j, k);
+        ASSERT_GE(offset, 0);
+        glm::dvec3 stored(position->values[offset * 3], position->values[offset * 3 + 1],
+                          position->values[offset * 3 + 2]);
+        worst_grid = std::max(worst_grid, glm::length(stored - expected) / distance);
+        // From the metadata: image point (u, v), v down, on the plane one unit ahead.
+        double x = (2.0 * (i + 0.5) / grid.width - 1.0) * tan_half * aspect;
+        double y = (1.0 - 2.0 * (j + 0.5) / grid.height) * tan_half;
+        glm::dvec3 ray = glm::normalize(glm::dvec3(forward[0], forward[1], forward[2]) +
+                                        x * glm::dvec3(right[0], right[1], right[2]) +
+                                        y * glm::dvec3(up[0], up[1], up[2]));
+        glm::dvec3 from_metadata = glm::dvec3(camera[0], camera[1], camera[2]) + ray * slices[k];
+        worst_metadata = std::max(worst_metadata, glm::length(from_metadata - expected) / distance);
+      }
+  std::printf("worst relative placement error: froxel_position %.2e, metadata %.2e\n", worst_grid,
+              worst_metadata);
+  EXPECT_LT(worst_grid, 1e-4);
+  EXPECT_LT(worst_metadata, 1e-4);
+  // The froxel grids' transform is the identity: index space is froxel space.
+  const VdbGridData* rayleigh = file.Find("rayleigh_inscatter");
+  ASSERT_NE(rayleigh, nullptr);
+  EXPECT_TRUE(rayleigh->linear_transform);
+  EXPECT_EQ(rayleigh->index_to_world, (std::array<double, 12>{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}));
+}
+
+// --world-grid: a linear transform (voxel (i, j, k) at voxel * (i, j, k)), and each active voxel
+// holds the froxels read at its center the way the shaders read them; inside the frustum every
+// voxel is active, outside none.
+TEST_F(VdbExport, WorldGridSamplesTheFroxelsAtEachVoxelCenter) {
+  FroxelFrame frame = Capture();
+  const double voxel = 4000.0;
+  WriteVdb(dir_ / "w.vdb", MakeWorldSpaceVolume(frame, voxel));
+  VdbFileData file = ReadVdb(dir_ / "w.vdb");
+  EXPECT_EQ(Meta<std::string>(file.metadata, "grid_space"), "world");
+  EXPECT_EQ(Meta<double>(file.metadata, "world_voxel_size_m"), voxel);
+  const VdbGridData* transmittance = file.Find("transmittance");
+  const VdbGridData* luminance = file.Find("inscatter_luminance");
+  ASSERT_TRUE(transmittance && luminance);
+  ASSERT_TRUE(transmittance->linear_transform);
+  EXPECT_EQ(transmittance->index_to_world,
+            (std::array<double, 12>{voxel, 0, 0, 0, 0, voxel, 0, 0, 0, 0, voxel, 0}));
+  EXPECT_GT(transmittance->active_voxels, 1000);
+  EXPECT_EQ(luminance->active_voxels, transmittance->active_voxels);
+
+  // The screen position and distance of a world point, from the frame's view-projection.
+  const auto& m = frame.uniforms.view_projection;
+  glm::dvec3 camera(frame.uniforms.camera_scene_position[0], frame.uniforms.camera_scene_position[1],
+                    frame.uniforms.camera_scene_position[2]);
+  int64_t active = 0, wrong_activity = 0;
+  double worst = 0.0;
+  for (int32_t z = transmittance->min[2] - 1; z <= transmittance->max[2] + 1; ++z)
+    for (int32_t y = transmittance->min[1] - 1; y <= transmittance->max[1] + 1; ++y)
+      for (int32_t x = transmittance->min[0] - 1; x <= transmittance->max[0] + 1; ++x) {
+        auto world = transmittance->IndexToWorld(x, y, z);
+        glm::dvec3 relative = glm::dvec3(world[0], world[1], world[2]) - camera;
+        double clip[4] = {0, 0, 0, 0};
+        for (int row = 0; row < 4; ++row)
+          clip[row] = m[0 * 4 + row] * relative.x + m[1 * 4 + row] * relative.y +
+                      m[2 * 4 + row] * relative.z + m[3 * 4 + row];
+        double u = clip[0] / clip[3] * 0.5 + 0.5, v = clip[1] / clip[3] * 0.5 + 0.5;
+        double distance = glm::length(relative);
+        bool inside = clip[3] > 0 && u >= 0 && u <= 1 && v >= 0 && v <= 1 && distance <= frame.texels.grid.far_m;
+        int64_t offset = transmittance->Offset(x, y, z);
+        bool is_active = offset >= 0 && transmittance->active[offset];
+        wrong_activity += inside != is_active;
+        if (!is_active || !inside) continue;
+        ++active;
+        FroxelTexels::Sample sample = frame.texels.Read(glm::dvec2(u, v), distance);
+        for (int c = 0; c < 3; ++c) {
+          double read = transmittance->values[offset * 3 + c];
+          worst = std::max(worst, std::abs(read - sample.transmittance[c]) / sample.transmittance[c]);
+        }
+      }
+  EXPECT_EQ(wrong_activity, 0);
+  EXPECT_EQ(active, transmittance->active_voxels);
+  EXPECT_LT(worst, 1e-5);
+}
+
+// The CPU read mirrors the shader's: at a froxel center it returns that froxel's texel, and
+// below the first slice it blends toward the empty segment.
+TEST_F(VdbExport, CpuReadAtFroxelCentersGivesTheTexels) {
+  FroxelFrame frame = Capture();
+  const FroxelGrid& grid = frame.texels.grid;
+  for (int k : {0, 5, grid.depth - 1})
+    for (int j : {0, 3, grid.height - 1})
+      for (int i : {0, 7, grid.width - 1}) {
+        glm::dvec2 uv((i + 0.5) / grid.width, (j + 0.5) / grid.height);
+        FroxelTexels::Sample sample = frame.texels.Read(uv, grid.SliceDistance(k + 0.5));
+        size_t texel = ((size_t(k) * grid.height + j) * grid.width + i) * 4;
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_NEAR(sample.rayleigh[c], frame.texels.rayleigh[texel + c],
+                      1e-6 * std::abs(frame.texels.rayleigh[texel + c]) + 1e-12);
+          EXPECT_NEAR(sample.transmittance[c], frame.texels.transmittance[texel + c], 1e-6);
+        }
+      }
+  FroxelTexels::Sample at_camera = frame.texels.Read(glm::dvec2(0.5, 0.5), 0.0);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ(at_camera.rayleigh[c], 0.0);
+    EXPECT_EQ(at_camera.transmittance[c], 1.0);
+  }
+}
+
+// What the file says about the frame reads back unchanged, on the file and on each grid.
+TEST_F(VdbExport, MetadataRoundTrips) {
+  FroxelFrame frame = Capture();
+  VdbVolume volume = MakeFroxelSpaceVolume(frame);
+  WriteVdb(dir_ / "f.vdb", volume);
+  VdbFileData file = ReadVdb(dir_ / "f.vdb");
+  for (const auto& [key, value] : volume.file_metadata) {
+    auto it = file.metadata.find(key);
+    ASSERT_NE(it, file.metadata.end()) << key;
+    EXPECT_TRUE(it->second == value) << key;
+  }
+  for (const VdbVolume::Grid& written : volume.grids) {
+    const VdbGridData* read = file.Find(written.name);
+    ASSERT_NE(read, nullptr) << written.name;
+    const VdbMetadata* maps[] = {&volume.grid_metadata, &written.metadata};
+    for (const VdbMetadata* map : maps)
+      for (const auto& [key, value] : *map) {
+        auto it = read->metadata.find(key);
+        ASSERT_NE(it, read->metadata.end()) << written.name << " " << key;
+        EXPECT_TRUE(it->second == value) << written.name << " " << key;
+      }
+  }
+  // And it says what it should.
+  const VdbMetadata& meta = file.metadata;
+  Scene scene = TestScene(tables());
+  std::array<double, 3> position = Meta<std::array<double, 3>>(meta, "camera_position_m");
+  EXPECT_EQ(position, (std::array<double, 3>{1234.0, -567.0, 350.0}));
+  EXPECT_EQ(Meta<double>(meta, "camera_yaw_deg"), 35.0);
+  EXPECT_EQ(Meta<double>(meta, "camera_pitch_deg"), 8.0);
+  EXPECT_EQ(Meta<double>(meta, "camera_vertical_fov_deg"), scene.camera.vertical_fov_deg);
+  EXPECT_EQ(Meta<double>(meta, "camera_near_m"), scene.camera.near_m);
+  EXPECT_EQ(Meta<double>(meta, "camera_far_m"), 128e3);
+  glm::dvec3 sun = scene.sun.Direction();
+  using Double3 = std::array<double, 3>;
+  EXPECT_EQ(Meta<Double3>(meta, "sun_direction"), (Double3{sun.x, sun.y, sun.z}));
+  EXPECT_EQ(Meta<std::string>(meta, "lut"), "4d");
+  EXPECT_EQ(Meta<std::string>(meta, "units"), "meters");
+  EXPECT_EQ(Meta<std::string>(meta, "aerial_version"), AERIAL_VERSION);
+  EXPECT_EQ(Meta<std::string>(meta, "grid_space"), "froxel");
+  EXPECT_EQ(Meta<std::string>(meta, "froxel_depth_distribution"), "quadratic");
+  EXPECT_EQ(Meta<double>(meta, "froxel_far_m"), 128e3);
+  using Int3 = std::array<int32_t, 3>;
+  EXPECT_EQ(Meta<Int3>(meta, "froxel_resolution"), (Int3{16, 8, 12}));
+  EXPECT_EQ(Meta<std::string>(meta, "atmosphere_hash"), Hex(AtmosphereParameters::Earth().Hash()));
+}
+
+// Debian's python3-openvdb, a reader that shares no code with aerial, finds the grids, their
+// W x H x D boxes, and a value where aerial put it.
+TEST_F(VdbExport, DebiansPythonOpenVdbReadsTheFile) {
+  if (std::system("/usr/bin/python3 -c 'import pyopenvdb' 2>/dev/null") != 0)
+    GTEST_SKIP() << "/usr/bin/python3 has no pyopenvdb (Debian's python3-openvdb)";
+  FroxelFrame frame = Capture();
+  WriteVdb(dir_ / "f.vdb", MakeFroxelSpaceVolume(frame));
+  std::ofstream(dir_ / "read.py") << R"(
+import json, sys, pyopenvdb as vdb
+grids, metadata = vdb.readAll(sys.argv[1])
+out = {"grids": {}, "metadata_keys": sorted(metadata.keys())}
+for g in grids:
+    lo, hi = g.evalActiveVoxelBoundingBox()
+    out["grids"][g.name] = {"type": g.valueTypeName, "active": g.activeVoxelCount(),
+                            "min": list(lo), "max": list(hi)}
+rayleigh = [g for g in grids if g.name == "rayleigh_inscatter"][0]
+out["rayleigh_3_2_5"] = list(rayleigh.getConstAccessor().getValue((3, 2, 5)))
+print(json.dumps(out))
+)";
+  std::string command = "/usr/bin/python3 " + (dir_ / "read.py").string() + " " + (dir_ / "f.vdb").string() +
+                        " > " + (dir_ / "out.json").string();
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  std::ifstream in(dir_ / "out.json");
+  nlohmann::json json = nlohmann::json::parse(in);
+  FroxelGrid grid = TestGrid();
+  for (const char* name : {"rayleigh_inscatter", "mie_inscatter", "transmittance", "inscatter_luminance",
+                           "froxel_position"}) {
+    ASSERT_TRUE(json["grids"].contains(name)) << name;
+    const auto& g = json["grids"][name];
+    EXPECT_EQ(g["active"], grid.width * grid.height * grid.depth) << name;
+    EXPECT_EQ(g["min"], (std::vector<int>{0, 0, 0})) << name;
+    EXPECT_EQ(g["max"], (std::vector<int>{grid.width - 1, grid.height - 1, grid.depth - 1})) << name;
+  }
+  EXPECT_EQ(json["grids"]["rayleigh_inscatter"]["type"], "vec3s");
+  EXPECT_EQ(json["grids"]["inscatter_luminance"]["type"], "float");
+  size_t texel = ((size_t(5) * grid.height + 2) * grid.width + 3) * 4;
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(float(json["rayleigh_3_2_5"][c].get<double>()), frame.texels.rayleigh[texel + c]);
+  auto keys = json["metadata_keys"].get<std::vector<std::string>>();
+  for (const char* key : {"camera_position_m", "sun_direction", "lut", "atmosphere_hash", "units"})
+    EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
+}
+
+class VdbPaths : public ScratchDirTest {};
+
+TEST_F(VdbPaths, UnwritableOrWrongPathsFailBeforeAnyWork) {
+  EXPECT_THROW(CheckVdbOutputPath("/nonexistent-aerial-dir/x.vdb"), Error);
+  EXPECT_FALSE(std::filesystem::exists("/nonexistent-aerial-dir"));
+  try {
+    CheckVdbOutputPath(dir_ / "x.exr");
+    FAIL() << "a .exr name was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.field(), "--out");
+  }
+  CheckVdbOutputPath(dir_ / "x.VDB");  // the extension in any case
+  EXPECT_TRUE(Entries().empty()) << "the check leaves no probe file";
+}
+
+// A write that fails (the parent is a regular file) throws naming the path and leaves neither the
+// file nor a temporary.
+TEST_F(VdbPaths, FailedWriteLeavesNoFile) {
+  std::ofstream(dir_ / "blocker") << "a file, not a directory";
+  VdbVolume volume;
+  volume.voxels = {{0, 0, 0}};
+  volume.grids = {{.name = "density", .components = 1, .values = {1.0f}}};
+  try {
+    WriteVdb(dir_ / "blocker" / "x.vdb", volume);
+    FAIL() << "wrote under a regular file";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("blocker"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(Entries(), std::vector<std::string>{"blocker"});
+  // And a good write leaves exactly the file.
+  WriteVdb(dir_ / "ok.vdb", volume);
+  EXPECT_EQ(Entries(), (std::vector<std::string>{"blocker", "ok.vdb"}));
+  VdbFileData read = ReadVdb(dir_ / "ok.vdb");
+  ASSERT_EQ(read.grids.size(), 1u);
+  EXPECT_EQ(read.grids[0].active_voxels, 1);
+}
+
+// A voxel equal to the background (0) is still written: the froxel grids stay dense.
+TEST_F(VdbPaths, ZeroValuedVoxelsStayActive) {
+  VdbVolume volume;
+  for (int i = 0; i < 4; ++i) volume.voxels.push_back({i, 0, 0});
+  volume.grids = {{.name = "zeros", .components = 3, .values = std::vector<float>(12, 0.0f)}};
+  WriteVdb(dir_ / "z.vdb", volume);
+  VdbFileData read = ReadVdb(dir_ / "z.vdb");
+  ASSERT_EQ(read.grids.size(), 1u);
+  EXPECT_EQ(read.grids[0].active_voxels, 4);
+}
+
+}  // namespace
+}  // namespace aerial::testing
