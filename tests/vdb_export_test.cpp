@@ -22,6 +22,9 @@
 namespace aerial::testing {
 namespace {
 
+// A small image of render's default 16:9 aspect.
+constexpr CaptureSize kTestSize{.width = 64, .height = 36};
+
 FroxelGrid TestGrid() {
   FroxelGrid grid;
   grid.width = 16;
@@ -110,7 +113,7 @@ class VdbExport : public GpuTest {
 
   const AtmosphereTables& tables() const { return SmallTables(); }
 
-  FroxelFrame Capture() const { return CaptureFroxels(tables(), TestScene(tables()), TestGrid()); }
+  FroxelFrame Capture() const { return CaptureFroxels(tables(), TestScene(tables()), TestGrid(), kTestSize); }
 
   std::filesystem::path dir_;
 };
@@ -121,14 +124,14 @@ TEST_F(VdbExport, RoundTripHoldsTheGpuVolumeExactly) {
   Scene scene = TestScene(tables());
   FroxelGrid grid = TestGrid();
   // The GPU volume as the test reads it from a renderer of its own, at the capture's size.
-  Renderer renderer(tables(), scene, {.width = kCaptureWidth, .height = kCaptureHeight, .froxels = grid});
+  Renderer renderer(tables(), scene, {.width = kTestSize.width, .height = kTestSize.height, .froxels = grid});
   renderer.Render(scene);
   const FroxelVolume& froxels = renderer.froxels();
   std::vector<float> gpu[3] = {ReadImage(tables().context(), froxels.rayleigh()),
                                ReadImage(tables().context(), froxels.mie()),
                                ReadImage(tables().context(), froxels.transmittance())};
 
-  FroxelFrame frame = CaptureFroxels(tables(), scene, grid);
+  FroxelFrame frame = CaptureFroxels(tables(), scene, grid, kTestSize);
   WriteVdb(dir_ / "f.vdb", MakeFroxelSpaceVolume(frame));
   VdbFileData file = ReadVdb(dir_ / "f.vdb");
 

@@ -10,6 +10,7 @@
 #include "aerial/cli/common_options.h"
 #include "aerial/cli/scene_options.h"
 #include "aerial/export/froxel_export.h"
+#include "aerial/render/renderer.h"
 
 namespace aerial::cli {
 namespace {
@@ -18,6 +19,7 @@ struct ExportVdbCommandOptions {
   TableOptions tables;
   SceneOptions scene;
   FroxelOptions froxels;
+  CaptureSize size;
   std::optional<double> world_grid_m;
   std::filesystem::path out;
 };
@@ -28,14 +30,15 @@ void RunExportVdb(const ExportVdbCommandOptions& options) {
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
   PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
   FroxelGrid grid = options.froxels.Make();
+  RenderOptions{.width = options.size.width, .height = options.size.height, .froxels = grid}.Validate();
   Scene scene = options.scene.Load(atmosphere.bottom_radius_m);
   if (options.world_grid_m) {
-    FroxelPlacement placement(CaptureFrameUniforms(scene, atmosphere.bottom_radius_m, grid), grid);
+    FroxelPlacement placement(CaptureFrameUniforms(scene, atmosphere.bottom_radius_m, grid, options.size), grid);
     CheckWorldGrid(*options.world_grid_m, placement);
   }
   auto context = options.tables.MakeContext();
   LoadedTables loaded = LoadOrPrecompute(*context, atmosphere, precompute, options.tables.MakeStoreOptions());
-  FroxelFrame frame = CaptureFroxels(*loaded.tables, scene, grid);
+  FroxelFrame frame = CaptureFroxels(*loaded.tables, scene, grid, options.size);
   VdbVolume volume = options.world_grid_m ? MakeWorldSpaceVolume(frame, *options.world_grid_m)
                                           : MakeFroxelSpaceVolume(frame);
   WriteVdb(options.out, volume);
@@ -53,6 +56,9 @@ void AddExportVdbCommand(CLI::App& app) {
   options->tables.AddTo(*command);
   options->scene.AddTo(*command);
   options->froxels.AddTo(*command);
+  command->add_option("--width", options->size.width,
+                      "Width of the image the froxels are for (its aspect shapes the frustum)");
+  command->add_option("--height", options->size.height, "Height of that image");
   command->add_option("--world-grid", options->world_grid_m,
                       "Resample into a regular world-space grid of this voxel size (m) instead of "
                       "writing the froxels in their own index space");

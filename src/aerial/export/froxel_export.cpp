@@ -50,7 +50,7 @@ VdbMetadata FrameMetadata(const FroxelFrame& frame, const std::string& grid_spac
       {"camera_yaw_deg", frame.camera.yaw_deg},
       {"camera_pitch_deg", frame.camera.pitch_deg},
       {"camera_vertical_fov_deg", frame.camera.vertical_fov_deg},
-      {"camera_aspect", double(kCaptureWidth) / kCaptureHeight},
+      {"camera_aspect", frame.size.aspect()},
       {"camera_near_m", frame.camera.near_m},
       {"camera_far_m", grid.far_m},
       {"sun_direction", ToArray(frame.sun.Direction())},
@@ -112,18 +112,21 @@ double InscatterLuminance(const float* rayleigh, const float* mie) {
          0.0722 * (double(rayleigh[2]) + mie[2]);
 }
 
-FrameUniforms CaptureFrameUniforms(const Scene& scene, double planet_radius_m, const FroxelGrid& grid) {
-  return MakeFrameUniforms(scene, planet_radius_m, kCaptureWidth, kCaptureHeight, grid);
+FrameUniforms CaptureFrameUniforms(const Scene& scene, double planet_radius_m, const FroxelGrid& grid,
+                                   CaptureSize size) {
+  return MakeFrameUniforms(scene, planet_radius_m, size.width, size.height, grid);
 }
 
-FroxelFrame CaptureFroxels(const AtmosphereTables& tables, const Scene& scene, const FroxelGrid& grid) {
+FroxelFrame CaptureFroxels(const AtmosphereTables& tables, const Scene& scene, const FroxelGrid& grid,
+                           CaptureSize size) {
   Renderer renderer(tables, scene,
-                    {.width = kCaptureWidth, .height = kCaptureHeight, .froxels = grid,
+                    {.width = size.width, .height = size.height, .froxels = grid,
                      .mode = AerialMode::kFroxel});
   renderer.Render(scene);
   FroxelFrame frame;
   frame.texels = renderer.froxels().Read(tables.context());
   frame.uniforms = renderer.frame_uniforms();
+  frame.size = size;
   frame.camera = scene.camera;
   frame.sun = scene.sun;
   frame.lut = tables.options().variant;

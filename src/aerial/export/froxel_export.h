@@ -2,8 +2,8 @@
 // One frame's froxel volume as an OpenVDB file (`aerial export-vdb`). See froxel/README.md,
 // "Exporting to OpenVDB", for the file's layout, units and coordinate frame.
 //
-// The froxel pass runs in the real renderer (Renderer::Render on the scene, at a small image of
-// kCaptureWidth x kCaptureHeight: only its 16:9 aspect reaches the froxels) and the three froxel
+// The froxel pass runs in the real renderer (Renderer::Render on the scene, at the image size the
+// frame is for: only its aspect reaches the froxels, through the projection) and the three froxel
 // images are read back as computed, float32. Two layouts:
 //  - froxel space (default): voxel (i, j, k) holds froxel (i, j, k) exactly, W x H x D voxels,
 //    with an identity index transform, plus a `froxel_position` grid holding each froxel
@@ -25,8 +25,12 @@
 
 namespace aerial {
 
-inline constexpr int kCaptureWidth = 64;
-inline constexpr int kCaptureHeight = 36;
+// The image the froxels are computed for (`render`'s default size).
+struct CaptureSize {
+  int width = 1280;
+  int height = 720;
+  double aspect() const { return double(width) / height; }
+};
 // The world grid's bounding box may hold at most this many voxels (2^24: about 0.7 GB at peak).
 inline constexpr int64_t kMaxWorldGridVoxels = int64_t(1) << 24;
 
@@ -34,6 +38,7 @@ inline constexpr int64_t kMaxWorldGridVoxels = int64_t(1) << 24;
 struct FroxelFrame {
   FroxelTexels texels;    // as the GPU computed them
   FrameUniforms uniforms;  // the frame block the froxel pass read
+  CaptureSize size;
   Camera camera;
   Sun sun;
   LutVariant lut = LutVariant::k4D;
@@ -46,10 +51,12 @@ struct FroxelFrame {
 };
 
 // The frame uniforms of the capture, computed on the CPU (for checks before any GPU work).
-FrameUniforms CaptureFrameUniforms(const Scene& scene, double planet_radius_m, const FroxelGrid& grid);
+FrameUniforms CaptureFrameUniforms(const Scene& scene, double planet_radius_m, const FroxelGrid& grid,
+                                   CaptureSize size);
 
 // Renders the scene once and reads its froxels back.
-FroxelFrame CaptureFroxels(const AtmosphereTables& tables, const Scene& scene, const FroxelGrid& grid);
+FroxelFrame CaptureFroxels(const AtmosphereTables& tables, const Scene& scene, const FroxelGrid& grid,
+                           CaptureSize size);
 
 // The .vdb extension (any case), an existing parent directory, and a file can be created there.
 // Throws Error naming --out.
