@@ -7,5 +7,6 @@ namespace aerial::cli {
 void AddPrecomputeCommand(CLI::App& app);
 void AddProbeCommand(CLI::App& app);
 void AddRenderCommand(CLI::App& app);
+void AddViewCommand(CLI::App& app);
 
 }  // namespace aerial::cli

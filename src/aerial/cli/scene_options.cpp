@@ -1,0 +1,55 @@
+#include "aerial/cli/scene_options.h"
+
+#include "aerial/scene/presets.h"
+#include "aerial/scene/scene_file.h"
+
+namespace aerial::cli {
+
+void SceneOptions::AddTo(CLI::App& command) {
+  auto* scene = command.add_option("--scene", scene_file, "Scene file (TOML)");
+  command.add_option("--preset", preset,
+                     "Built-in scene: noon (default), afternoon, sunset, twilight, high-altitude")
+      ->excludes(scene);
+  command.add_option("--camera-position-m", camera_position_m,
+                     "Camera position x,y,z in the scene frame (m; x east, y north, z up)")
+      ->delimiter(',')->expected(3);
+  command.add_option("--camera-yaw-deg", overrides.camera_yaw_deg, "Camera compass azimuth (deg)");
+  command.add_option("--camera-pitch-deg", overrides.camera_pitch_deg, "Camera elevation (deg)");
+  command.add_option("--camera-fov-deg", overrides.camera_fov_deg, "Vertical field of view (deg)");
+  command.add_option("--sun-zenith-deg", overrides.sun_zenith_deg, "Sun zenith angle (deg)");
+  command.add_option("--sun-azimuth-deg", overrides.sun_azimuth_deg, "Sun compass azimuth (deg)");
+}
+
+Scene SceneOptions::Load(double planet_radius_m) const {
+  Scene scene = scene_file.empty() ? BuildPreset(preset.empty() ? "noon" : preset, planet_radius_m)
+                                   : LoadSceneFile(scene_file, planet_radius_m);
+  SceneOverrides all = overrides;
+  if (!camera_position_m.empty()) {
+    all.camera_position_m = glm::dvec3(camera_position_m[0], camera_position_m[1], camera_position_m[2]);
+  }
+  ApplyOverrides(scene, all, planet_radius_m);
+  return scene;
+}
+
+void FrameOptions::AddTo(CLI::App& command, const std::string& size_help) {
+  command.add_option("--froxels", froxels, "Froxel grid WxHxD (default 32x32x32)");
+  command.add_option("--froxel-far-m", froxel_far_m, "Distance covered by the froxels (m)");
+  command.add_option("--width", width, size_help + " width in pixels");
+  command.add_option("--height", height, size_help + " height in pixels");
+  command.add_option("--exposure", exposure, "Radiance multiplier before tone mapping (PNG)");
+  command.add_option("--aerial", aerial, "Aerial perspective: froxel or per-pixel")
+      ->check(CLI::IsMember({"froxel", "per-pixel"}));
+}
+
+RenderOptions FrameOptions::MakeRenderOptions() const {
+  RenderOptions render;
+  render.width = width;
+  render.height = height;
+  render.froxels = FroxelGrid::Parse(froxels);
+  render.froxels.far_m = froxel_far_m;
+  render.mode = aerial == "per-pixel" ? AerialMode::kPerPixel : AerialMode::kFroxel;
+  render.Validate();
+  return render;
+}
+
+}  // namespace aerial::cli
