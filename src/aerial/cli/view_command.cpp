@@ -42,8 +42,8 @@ std::map<LutVariant, PrecomputeOptions> TableVariants(const TableOptions& tables
 
 void RunView(const ViewCommandOptions& options) {
   if (!options.screenshot.empty()) {
-    if (options.frames == 0) throw Error("--screenshot", options.screenshot.string(), "used with --frames N");
-    CheckImageOutputPath(options.screenshot);
+    if (options.frames == 0) throw Error("--screenshot", options.screenshot.string(), "--frames N as well (it saves the last frame)");
+    CheckImageOutputPath(options.screenshot, "--screenshot");
   }
   if (!options.stats.empty()) CheckWritable(options.stats);
   viewer::ViewerOptions viewer;
@@ -72,7 +72,7 @@ void AddViewCommand(CLI::App& app) {
   options->scene.AddTo(*command);
   options->frame.AddTo(*command, "Window");
   command->add_option("--frames", options->frames, "Close after N frames (scripted runs)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, 100000000));
   command->add_option("--screenshot", options->screenshot,
                       "With --frames: save the last frame, .exr (linear) or .png (sRGB)");
   command->add_option("--stats", options->stats,

@@ -44,10 +44,23 @@ const char* PassName(DebugView view) {
   return view == DebugView::kFinal ? "present" : "debug view";
 }
 
-class Viewer {
+}  // namespace
+
+// The viewer's state; Viewer's methods forward to it. Members are declared in the order they are
+// built (GLFW before the Vulkan instance that needs its extensions, the context before everything
+// made with it) and so destroyed in reverse.
+class Viewer::Impl {
  public:
-  explicit Viewer(ViewerOptions options);
+  explicit Impl(ViewerOptions options);
+  bool Step();
   void Run();
+  GLFWwindow* window() const { return window_.handle(); }
+
+  TableWorker worker_;             // its own context, and nothing of the others
+  ViewSettings settings_;
+  AtmosphereKnobs applied_knobs_;  // the knobs the tables are asked for (the panel's, on release)
+  std::vector<vk::PassTime> last_passes_;
+  Renderer* shown_ = nullptr;      // the renderer of the last frame
 
  private:
   RenderOptions CurrentRenderOptions() const;
@@ -64,14 +77,12 @@ class Viewer {
   PanelInfo MakePanelInfo(const Renderer& primary) const;
 
   ViewerOptions options_;
-  ViewSettings settings_;
-  AtmosphereParameters wanted_;                // the base with the panel's knobs applied
+  AtmosphereParameters wanted_;                // the base with the applied knobs
   std::map<LutVariant, uint64_t> requested_;   // atmosphere hash asked of the worker, per variant
   GlfwSession glfw_;
   vk::ContextCreateInfo context_info_;
   vk::Context context_;
   RenderStack stack_;
-  TableWorker worker_;
   Window window_;
   vk::Swapchain swapchain_;
   ImGuiLayer imgui_;
@@ -79,18 +90,18 @@ class Viewer {
   DisplayPasses display_;
   vk::GpuTimer timer_;
   FrameStats stats_;
-  std::vector<vk::PassTime> last_passes_;
   std::string message_;
   int frames_ = 0;
+  Clock::time_point last_frame_end_;
 };
 
-Viewer::Viewer(ViewerOptions options)
-    : options_(std::move(options)),
+Viewer::Impl::Impl(ViewerOptions options)
+    : worker_(options.context),
+      options_(std::move(options)),
       wanted_(options_.atmosphere),
       context_info_(WithWindowSupport(options_.context)),
       context_(context_info_),
       stack_(options_.scene),
-      worker_(options_.context),
       window_(context_, options_.render.width, options_.render.height, "aerial view: " + options_.scene.name),
       swapchain_(context_, window_.surface(), window_.framebuffer_extent()),
       imgui_(context_, window_.handle(), swapchain_),
@@ -98,7 +109,7 @@ Viewer::Viewer(ViewerOptions options)
       display_(context_, swapchain_.extent().width, swapchain_.extent().height),
       timer_(context_) {
   settings_.variant = options_.variant;
-  settings_.knobs = ReadKnobs(options_.atmosphere);
+  settings_.knobs = applied_knobs_ = ReadKnobs(options_.atmosphere);
   settings_.froxels = options_.render.froxels;
   settings_.mode = options_.render.mode;
   settings_.exposure = float(options_.exposure);
@@ -108,16 +119,17 @@ Viewer::Viewer(ViewerOptions options)
                                          options_.tables.at(options_.variant), options_.store);
   requested_[options_.variant] = options_.atmosphere.Hash();
   stack_.Install(std::move(loaded.tables), CurrentRenderOptions());
+  last_frame_end_ = Clock::now();
 }
 
-RenderOptions Viewer::CurrentRenderOptions() const {
+RenderOptions Viewer::Impl::CurrentRenderOptions() const {
   return {.width = int(swapchain_.extent().width),
           .height = int(swapchain_.extent().height),
           .froxels = settings_.froxels,
           .mode = settings_.mode};
 }
 
-bool Viewer::HasCurrentTables(LutVariant variant) const {
+bool Viewer::Impl::HasCurrentTables(LutVariant variant) const {
   const AtmosphereTables* tables = stack_.tables(variant);
   return tables && tables->atmosphere().Hash() == wanted_.Hash();
 }
@@ -125,8 +137,8 @@ bool Viewer::HasCurrentTables(LutVariant variant) const {
 // Asks the worker for what the settings need and the stack lacks: the shown variant, and for the
 // difference view the other one too. Edited atmospheres are not written to the cache, so that
 // exploring does not fill it with a 32 MiB file per slider release.
-void Viewer::RequestTables() {
-  wanted_ = ApplyKnobs(options_.atmosphere, settings_.knobs);
+void Viewer::Impl::RequestTables() {
+  wanted_ = ApplyKnobs(options_.atmosphere, applied_knobs_);
   std::vector<LutVariant> needed = {settings_.variant};
   if (settings_.view == DebugView::kDifference) needed.push_back(Other(settings_.variant));
   for (LutVariant variant : needed) {
@@ -145,7 +157,7 @@ void Viewer::RequestTables() {
 
 // Uploads the worker's finished tables into this context; results for an atmosphere the panel has
 // since left are dropped.
-void Viewer::AdoptFinishedTables() {
+void Viewer::Impl::AdoptFinishedTables() {
   while (std::optional<TableResult> result = worker_.TakeResult()) {
     const TableRequest& request = result->request;
     if (!result->tables) {
@@ -159,7 +171,7 @@ void Viewer::AdoptFinishedTables() {
   }
 }
 
-void Viewer::Resize(::vk::Extent2D extent) {
+void Viewer::Impl::Resize(::vk::Extent2D extent) {
   swapchain_.Recreate(extent);
   imgui_.OnSwapchainRecreated(swapchain_);
   display_.Resize(swapchain_.extent().width, swapchain_.extent().height);
@@ -167,7 +179,7 @@ void Viewer::Resize(::vk::Extent2D extent) {
 
 // The camera follows the path while it lasts, then the fly controls; the sun follows the keys and
 // the mouse, within the zenith angles the tables cover.
-void Viewer::Steer(const FrameInput& input, double dt_s) {
+void Viewer::Impl::Steer(const FrameInput& input, double dt_s) {
   Scene& scene = options_.scene;
   double path_time = frames_ * kFrameStepS;
   if (options_.camera_path && path_time <= options_.camera_path->duration_s()) {
@@ -179,23 +191,23 @@ void Viewer::Steer(const FrameInput& input, double dt_s) {
 }
 
 // The lowest sun the tables cover: mu_s_min (parameters.h).
-double Viewer::MaxSunZenithDeg() const {
+double Viewer::Impl::MaxSunZenithDeg() const {
   return std::acos(options_.atmosphere.mu_s_min) * 180.0 / std::numbers::pi;
 }
 
-void Viewer::Say(std::string message) {
+void Viewer::Impl::Say(std::string message) {
   std::printf("%s\n", message.c_str());
   std::fflush(stdout);
   message_ = std::move(message);
 }
 
-void Viewer::FollowSunClock() {
+void Viewer::Impl::FollowSunClock() {
   options_.scene.sun = SunAtSolarTime(settings_.solar_time_h, settings_.latitude_deg, settings_.declination_deg);
   SteerSun(options_.scene.sun, 0.0, 0.0, MaxSunZenithDeg());
 }
 
 // Screenshots and exports of the frame just rendered.
-void Viewer::Act(const PanelEvents& events, const std::vector<int>& keys, const Renderer& renderer) {
+void Viewer::Impl::Act(const PanelEvents& events, const std::vector<int>& keys, const Renderer& renderer) {
   bool screenshot = events.screenshot, export_vdb = events.export_vdb;
   for (int key : keys) {
     screenshot |= key == GLFW_KEY_F12 || key == GLFW_KEY_P;
@@ -212,7 +224,7 @@ void Viewer::Act(const PanelEvents& events, const std::vector<int>& keys, const 
 }
 
 // The display pass for the settings' view, the blit into the swapchain and the panel over it.
-std::vector<vk::PassTime> Viewer::Draw(Renderer& primary, Renderer* other) {
+std::vector<vk::PassTime> Viewer::Impl::Draw(Renderer& primary, Renderer* other) {
   bool recorded = false;
   auto prepare = [&](const ::vk::raii::CommandBuffer& cmd) {
     recorded = true;
@@ -254,7 +266,7 @@ std::vector<vk::PassTime> Viewer::Draw(Renderer& primary, Renderer* other) {
   return {};
 }
 
-PanelInfo Viewer::MakePanelInfo(const Renderer& primary) const {
+PanelInfo Viewer::Impl::MakePanelInfo(const Renderer& primary) const {
   const AtmosphereTables& tables = primary.tables();
   double frame_ms = stats_.MedianFrameMs(kPanelWindow);
   return {.fps = frame_ms > 0.0 ? 1000.0 / frame_ms : 0.0,
@@ -267,60 +279,74 @@ PanelInfo Viewer::MakePanelInfo(const Renderer& primary) const {
           .difference_ready = HasCurrentTables(LutVariant::k4D) && HasCurrentTables(LutVariant::k3D)};
 }
 
-void Viewer::Run() {
-  Clock::time_point last = Clock::now();
-  Renderer* primary = nullptr;
-  while (options_.frames == 0 || frames_ < options_.frames) {
-    glfwPollEvents();
-    if (window_.should_close()) break;
-    ::vk::Extent2D extent = window_.framebuffer_extent();
-    if (extent.width == 0 || extent.height == 0) {  // minimized: nothing to draw into
-      glfwWaitEvents();
-      last = Clock::now();
-      continue;
-    }
-    if (extent != swapchain_.extent()) Resize(extent);
-    AdoptFinishedTables();
-    double dt_s = std::chrono::duration<double>(Clock::now() - last).count();
-
-    imgui_.NewFrame();
-    Steer(input_.Read(dt_s, imgui_.wants_mouse(), imgui_.wants_keyboard()), dt_s);
-    RenderOptions render = CurrentRenderOptions();
-    primary = stack_.Get(settings_.variant, render);
-    if (!primary) primary = stack_.Get(Other(settings_.variant), render);
-    PanelEvents events = DrawPanel(settings_, MakePanelInfo(*primary));
-    imgui_.EndFrame();
-    if (events.sun_clock_moved) FollowSunClock();
-    RequestTables();
-
-    std::vector<vk::PassTime> passes = primary->Render(options_.scene);
-    std::vector<int> keys = window_.TakeKeyPresses();
-    if (imgui_.wants_keyboard()) keys.clear();
-    Act(events, keys, *primary);
-    Renderer* other = nullptr;
-    if (settings_.view == DebugView::kDifference && HasCurrentTables(LutVariant::k4D) &&
-        HasCurrentTables(LutVariant::k3D) && HasCurrentTables(settings_.variant)) {
-      other = stack_.Get(Other(settings_.variant), render);
-      for (vk::PassTime pass : other->Render(options_.scene)) {
-        pass.pass += " (" + ToString(other->tables().options().variant) + ")";
-        passes.push_back(pass);
-      }
-    }
-    std::vector<vk::PassTime> display = Draw(*primary, other);
-    if (display.empty()) continue;  // not presented: the swapchain was out of date
-    passes.insert(passes.end(), display.begin(), display.end());
-    Clock::time_point now = Clock::now();
-    stats_.AddFrame(std::chrono::duration<double, std::milli>(now - last).count(), passes);
-    last = now;
-    last_passes_ = std::move(passes);
-    ++frames_;
+// One frame: events, tables, input, panel, render, display. False once the window is closed.
+bool Viewer::Impl::Step() {
+  glfwPollEvents();
+  if (window_.should_close()) return false;
+  ::vk::Extent2D extent = window_.framebuffer_extent();
+  if (extent.width == 0 || extent.height == 0) {  // minimized: nothing to draw into
+    glfwWaitEvents();
+    last_frame_end_ = Clock::now();
+    return true;
   }
-  if (!options_.screenshot.empty() && primary)
-    WriteImage(options_.screenshot, primary->ReadOutput(), {.exposure = settings_.exposure});
+  if (extent != swapchain_.extent()) Resize(extent);
+  AdoptFinishedTables();
+  double dt_s = std::chrono::duration<double>(Clock::now() - last_frame_end_).count();
+
+  imgui_.NewFrame();
+  Steer(input_.Read(dt_s, imgui_.wants_mouse(), imgui_.wants_keyboard()), dt_s);
+  RenderOptions render = CurrentRenderOptions();
+  Renderer* primary = stack_.Get(settings_.variant, render);
+  if (!primary) primary = stack_.Get(Other(settings_.variant), render);
+  PanelEvents events = DrawPanel(settings_, MakePanelInfo(*primary));
+  imgui_.EndFrame();
+  if (events.sun_clock_moved) FollowSunClock();
+  if (events.tables_changed) applied_knobs_ = settings_.knobs;
+  RequestTables();
+
+  std::vector<vk::PassTime> passes = primary->Render(options_.scene);
+  shown_ = primary;
+  std::vector<int> keys = window_.TakeKeyPresses();
+  if (imgui_.wants_keyboard()) keys.clear();
+  Act(events, keys, *primary);
+  Renderer* other = nullptr;
+  if (settings_.view == DebugView::kDifference && HasCurrentTables(LutVariant::k4D) &&
+      HasCurrentTables(LutVariant::k3D) && HasCurrentTables(settings_.variant)) {
+    other = stack_.Get(Other(settings_.variant), render);
+    for (vk::PassTime pass : other->Render(options_.scene)) {
+      pass.pass += " (" + ToString(other->tables().options().variant) + ")";
+      passes.push_back(pass);
+    }
+  }
+  std::vector<vk::PassTime> display = Draw(*primary, other);
+  if (display.empty()) return true;  // not presented: the swapchain was out of date
+  passes.insert(passes.end(), display.begin(), display.end());
+  Clock::time_point now = Clock::now();
+  stats_.AddFrame(std::chrono::duration<double, std::milli>(now - last_frame_end_).count(), passes);
+  last_frame_end_ = now;
+  last_passes_ = std::move(passes);
+  ++frames_;
+  return true;
+}
+
+void Viewer::Impl::Run() {
+  while ((options_.frames == 0 || frames_ < options_.frames) && Step()) {
+  }
+  if (!options_.screenshot.empty() && shown_)
+    WriteImage(options_.screenshot, shown_->ReadOutput(), {.exposure = settings_.exposure});
   if (!options_.stats.empty()) stats_.Write(options_.stats);
 }
 
-}  // namespace
+Viewer::Viewer(ViewerOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
+Viewer::~Viewer() = default;
+void Viewer::Run() { impl_->Run(); }
+bool Viewer::Step() { return impl_->Step(); }
+ViewSettings& Viewer::settings() { return impl_->settings_; }
+void Viewer::ApplyTableSettings() { impl_->applied_knobs_ = impl_->settings_.knobs; }
+const Renderer& Viewer::renderer() const { return *impl_->shown_; }
+const std::vector<vk::PassTime>& Viewer::last_passes() const { return impl_->last_passes_; }
+TableWorkStatus Viewer::table_work() const { return impl_->worker_.status(); }
+GLFWwindow* Viewer::window() const { return impl_->window(); }
 
 void RunViewer(ViewerOptions options) { Viewer(std::move(options)).Run(); }
 

@@ -6,11 +6,16 @@
 // drawing with the old tables until the new ones are uploaded.
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 
 #include "aerial/precompute/table_store.h"
 #include "aerial/render/renderer.h"
 #include "aerial/viewer/camera_path.h"
+#include "aerial/viewer/table_worker.h"
+#include "aerial/viewer/view_settings.h"
+
+struct GLFWwindow;
 
 namespace aerial::viewer {
 
@@ -31,7 +36,34 @@ struct ViewerOptions {
   std::optional<CameraPath> camera_path;
 };
 
-// Opens the window and runs until it is closed or `frames` frames were presented.
+class Viewer {
+ public:
+  // Opens the window and loads (or precomputes) the first tables.
+  explicit Viewer(ViewerOptions options);
+  ~Viewer();  // waits for a running background precompute
+
+  // Draws frames until the window is closed or `frames` frames were presented, then writes the
+  // screenshot and the statistics.
+  void Run();
+  // One frame (what Run repeats): false once the window is closed.
+  bool Step();
+
+  // For tests and tools that drive the viewer without a user: the panel's settings, changed in
+  // place. Frame and display settings apply at the next Step; the atmosphere knobs only once
+  // applied, as the panel applies them when a slider is released.
+  ViewSettings& settings();
+  void ApplyTableSettings();
+  const Renderer& renderer() const;  // the one of the last frame
+  const std::vector<vk::PassTime>& last_passes() const;
+  TableWorkStatus table_work() const;
+  GLFWwindow* window() const;
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Viewer(options).Run().
 void RunViewer(ViewerOptions options);
 
 }  // namespace aerial::viewer
