@@ -12,10 +12,13 @@ vk::Context& SharedContext() {
 
 namespace {
 const AtmosphereTables& Tables(const PrecomputeOptions& options) {
+  // The context first: statics are destroyed in reverse order of construction, and the tables
+  // must go before their device.
+  vk::Context& context = SharedContext();
   static std::map<uint64_t, LoadedTables> loaded;
   auto it = loaded.find(options.Hash());
   if (it == loaded.end()) {
-    it = loaded.emplace(options.Hash(), LoadOrPrecompute(SharedContext(), AtmosphereParameters::Earth(),
+    it = loaded.emplace(options.Hash(), LoadOrPrecompute(context, AtmosphereParameters::Earth(),
                                                          options, {.quiet = true}))
              .first;
   }

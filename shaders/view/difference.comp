@@ -7,7 +7,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 0) uniform sampler2D radiance_4d;
 layout(set = 0, binding = 1) uniform sampler2D radiance_3d;
-layout(set = 0, binding = 2, rgba8) writeonly uniform image2D display;
+layout(set = 0, binding = 2) writeonly uniform image2D display;  // 8-bit UNORM, RGBA or BGRA
 layout(push_constant) uniform Push { float full_scale; } push;
 
 void main() {

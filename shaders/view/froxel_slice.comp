@@ -11,7 +11,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 0) uniform sampler3D rayleigh_froxels;
 layout(set = 0, binding = 1) uniform sampler3D mie_froxels;
 layout(set = 0, binding = 2) uniform sampler3D transmittance_froxels;
-layout(set = 0, binding = 3, rgba8) writeonly uniform image2D display;
+layout(set = 0, binding = 3) writeonly uniform image2D display;  // 8-bit UNORM, RGBA or BGRA
 layout(push_constant) uniform Push {
   int slice;
   float exposure;

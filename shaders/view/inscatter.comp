@@ -20,7 +20,7 @@ layout(set = 0, binding = 6) uniform sampler3D rayleigh_froxels;
 layout(set = 0, binding = 7) uniform sampler3D mie_froxels;
 layout(set = 0, binding = 8) uniform sampler3D transmittance_froxels;
 layout(set = 0, binding = 9) uniform sampler2D surface_texture;  // rgb: radiance, a: distance
-layout(set = 0, binding = 10, rgba8) writeonly uniform image2D display;
+layout(set = 0, binding = 10) writeonly uniform image2D display;  // 8-bit UNORM, RGBA or BGRA
 layout(push_constant) uniform Push {
   int term;          // 0: Rayleigh, 1: Mie, 2: transmittance
   int from_froxels;  // 1 in froxel mode

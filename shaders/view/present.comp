@@ -5,7 +5,7 @@
 #include "tone_map.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 0) uniform sampler2D radiance_image;
-layout(set = 0, binding = 1, rgba8) writeonly uniform image2D display;
+layout(set = 0, binding = 1) writeonly uniform image2D display;  // 8-bit UNORM, RGBA or BGRA
 layout(push_constant) uniform Push { float exposure; } push;
 
 void main() {

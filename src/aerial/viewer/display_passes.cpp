@@ -7,10 +7,11 @@ using vk::kSampled;
 using vk::kStorageImage;
 using vk::kUniform;
 
-std::unique_ptr<vk::Image> MakeDisplay(const vk::Context& context, uint32_t width, uint32_t height) {
+std::unique_ptr<vk::Image> MakeDisplay(const vk::Context& context, uint32_t width, uint32_t height,
+                                       ::vk::Format format) {
   auto image = std::make_unique<vk::Image>(
       context, vk::ImageCreateInfo{.extent = {width, height, 1},
-                                   .format = ::vk::Format::eR8G8B8A8Unorm,
+                                   .format = format,
                                    .usage = ::vk::ImageUsageFlagBits::eStorage |
                                             ::vk::ImageUsageFlagBits::eTransferSrc});
   context.Submit([&](const auto& cmd) { image->InitializeLayout(cmd); });
@@ -30,10 +31,18 @@ struct SlicePush {
 
 }  // namespace
 
-DisplayPasses::DisplayPasses(const vk::Context& context, uint32_t width, uint32_t height)
+::vk::Format DisplayFormat(const vk::Context& context, ::vk::Format swapchain_format) {
+  auto features = context.physical_device().getFormatProperties(swapchain_format).optimalTilingFeatures;
+  return features & ::vk::FormatFeatureFlagBits::eStorageImage ? swapchain_format
+                                                                : ::vk::Format::eR8G8B8A8Unorm;
+}
+
+DisplayPasses::DisplayPasses(const vk::Context& context, uint32_t width, uint32_t height,
+                             ::vk::Format format)
     : context_(context),
+      format_(format),
       sampler_(vk::CreateLinearClampSampler(context)),
-      display_(MakeDisplay(context, width, height)),
+      display_(MakeDisplay(context, width, height, format)),
       frame_buffer_(context, {.size = sizeof(FrameUniforms),
                               .usage = ::vk::BufferUsageFlagBits::eUniformBuffer,
                               .host_visible = true}),
@@ -48,7 +57,7 @@ DisplayPasses::DisplayPasses(const vk::Context& context, uint32_t width, uint32_
                   sizeof(float)) {}
 
 void DisplayPasses::Resize(uint32_t width, uint32_t height) {
-  display_ = MakeDisplay(context_, width, height);
+  display_ = MakeDisplay(context_, width, height, format_);
 }
 
 void DisplayPasses::Dispatch(const ::vk::raii::CommandBuffer& cmd,

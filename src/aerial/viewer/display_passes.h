@@ -7,13 +7,20 @@
 
 namespace aerial::viewer {
 
+// The swapchain's format if compute shaders can write it, else R8G8B8A8_UNORM (which every device
+// can, and which the swapchain then converts when it blits).
+::vk::Format DisplayFormat(const vk::Context& context, ::vk::Format swapchain_format);
+
 class DisplayPasses {
  public:
-  DisplayPasses(const vk::Context& context, uint32_t width, uint32_t height);
+  // format: of the display image, an 8-bit UNORM format the device can store to. The swapchain's
+  // own format (DisplayFormat) makes the swapchain's blit a plain copy.
+  DisplayPasses(const vk::Context& context, uint32_t width, uint32_t height,
+                ::vk::Format format = ::vk::Format::eR8G8B8A8Unorm);
 
   // Recreates the display image for a new size (nothing may be in flight).
   void Resize(uint32_t width, uint32_t height);
-  // RGBA8 UNORM holding sRGB-encoded values, GENERAL layout.
+  // sRGB-encoded values, GENERAL layout.
   const vk::Image& display() const { return *display_; }
 
   // The picture: radiance times exposure through ACES and sRGB (shaders/view/present.comp).
@@ -38,6 +45,7 @@ class DisplayPasses {
                 std::vector<vk::Slot> slots, const void* push_constants) const;
 
   const vk::Context& context_;
+  ::vk::Format format_;
   ::vk::raii::Sampler sampler_;
   std::unique_ptr<vk::Image> display_;
   vk::Buffer frame_buffer_;

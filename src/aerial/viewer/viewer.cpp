@@ -106,7 +106,8 @@ Viewer::Impl::Impl(ViewerOptions options)
       swapchain_(context_, window_.surface(), window_.framebuffer_extent()),
       imgui_(context_, window_.handle(), swapchain_),
       input_(window_.handle()),
-      display_(context_, swapchain_.extent().width, swapchain_.extent().height),
+      display_(context_, swapchain_.extent().width, swapchain_.extent().height,
+               DisplayFormat(context_, swapchain_.format())),
       timer_(context_) {
   settings_.variant = options_.variant;
   settings_.knobs = applied_knobs_ = ReadKnobs(options_.atmosphere);
@@ -251,9 +252,10 @@ std::vector<vk::PassTime> Viewer::Impl::Draw(Renderer& primary, Renderer* other)
         break;
       }
     }
-    timer_.End(cmd);
   };
+  // The display pass's time includes the blit into the swapchain image, recorded between the two.
   auto overlay = [&](const ::vk::raii::CommandBuffer& cmd) {
+    timer_.End(cmd);
     timer_.Begin(cmd, "panel");
     imgui_.Record(cmd);
     timer_.End(cmd);

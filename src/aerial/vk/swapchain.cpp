@@ -179,14 +179,22 @@ bool Swapchain::Present(const Image& source, const Recorder& prepare, const Reco
                                        .subresourceRange = ColorRange()};
   cmd.pipelineBarrier(::vk::PipelineStageFlagBits::eTransfer, ::vk::PipelineStageFlagBits::eTransfer,
                       {}, {}, {}, to_transfer);
+  // A copy when the formats match (a memcpy on a CPU device), else a blit, which converts.
   ::vk::ImageSubresourceLayers layer{.aspectMask = ::vk::ImageAspectFlagBits::eColor, .layerCount = 1};
-  std::array<::vk::Offset3D, 2> corners = {
-      ::vk::Offset3D{0, 0, 0}, ::vk::Offset3D{int32_t(extent_.width), int32_t(extent_.height), 1}};
-  cmd.blitImage(source.handle(), ::vk::ImageLayout::eGeneral, images_[index],
-                ::vk::ImageLayout::eTransferDstOptimal,
-                ::vk::ImageBlit{.srcSubresource = layer, .srcOffsets = corners,
-                                .dstSubresource = layer, .dstOffsets = corners},
-                ::vk::Filter::eNearest);
+  if (source.format() == format_) {
+    cmd.copyImage(source.handle(), ::vk::ImageLayout::eGeneral, images_[index],
+                  ::vk::ImageLayout::eTransferDstOptimal,
+                  ::vk::ImageCopy{.srcSubresource = layer, .dstSubresource = layer,
+                                  .extent = {extent_.width, extent_.height, 1}});
+  } else {
+    std::array<::vk::Offset3D, 2> corners = {
+        ::vk::Offset3D{0, 0, 0}, ::vk::Offset3D{int32_t(extent_.width), int32_t(extent_.height), 1}};
+    cmd.blitImage(source.handle(), ::vk::ImageLayout::eGeneral, images_[index],
+                  ::vk::ImageLayout::eTransferDstOptimal,
+                  ::vk::ImageBlit{.srcSubresource = layer, .srcOffsets = corners,
+                                  .dstSubresource = layer, .dstOffsets = corners},
+                  ::vk::Filter::eNearest);
+  }
   cmd.beginRenderPass(::vk::RenderPassBeginInfo{.renderPass = *render_pass_,
                                                 .framebuffer = *framebuffers_[index],
                                                 .renderArea = {.extent = extent_}},

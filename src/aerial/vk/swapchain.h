@@ -1,6 +1,6 @@
 #pragma once
 // A window's swapchain and the one way aerial presents: a finished image (a compute pass's output
-// in GENERAL layout) is blitted into the swapchain image, an overlay is drawn over it inside a
+// in GENERAL layout) is copied into the swapchain image, an overlay is drawn over it inside a
 // render pass, and the image is presented. The render pass exists for the overlay: Dear ImGui
 // 1.86's Vulkan backend draws into a VkRenderPass (it predates dynamic rendering).
 //
@@ -29,10 +29,11 @@ class Swapchain {
   // the device to be idle first.
   void Recreate(::vk::Extent2D wanted);
 
-  // One frame: acquires an image, records `prepare` (the passes that fill `source`), blits `source`
-  // (GENERAL layout, the swapchain's extent, a blittable color format) into the image, records
-  // `overlay` inside the render pass, submits, waits, presents. Returns false when the swapchain is
-  // out of date or suboptimal and nothing (or a possibly stretched image) was shown: Recreate.
+  // One frame: acquires an image, records `prepare` (the passes that fill `source`), copies `source`
+  // (GENERAL layout, the swapchain's extent; in format(), or in any blittable color format, then
+  // converted by a blit) into the image, records `overlay` inside the render pass, submits, waits,
+  // presents. Returns false when the swapchain is out of date or suboptimal and nothing (or a
+  // possibly stretched image) was shown: Recreate.
   bool Present(const Image& source, const Recorder& prepare, const Recorder& overlay);
 
   ::vk::Extent2D extent() const { return extent_; }
