@@ -1,5 +1,6 @@
 // The aerial command as users run it: bad input gives a clear message naming the field and a
-// non-zero exit, and the probe prints the JSON keys other tools script against.
+// non-zero exit, and the probe prints the JSON keys other tools script against. (The viewer's
+// runs under Xvfb are in view_cli_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,6 +71,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"render --out /nonexistent-aerial-dir/x.png", "/nonexistent-aerial-dir"},
         BadInput{"render --out /tmp/aerial-cli-test.jpg", "--out"},
         BadInput{"render --scene " AERIAL_SOURCE_DIR "/tests/data/bad_scene.toml --out /tmp/aerial-cli-test.png", "camera.fov_deg"},
+        // The viewer checks its paths and files before opening a window, so these need no display.
+        BadInput{"view --frames 2 --screenshot /nonexistent-aerial-dir/x.png", "--screenshot"},
+        BadInput{"view --frames 2 --screenshot /tmp/aerial-cli-test.jpg", "--screenshot"},
+        BadInput{"view --screenshot /tmp/aerial-cli-test.png", "--frames"},
+        BadInput{"view --frames 0", "--frames"},
+        BadInput{"view --camera-path /nonexistent-aerial-dir/path.toml", "--camera-path"},
+        BadInput{"view --camera-path " AERIAL_SOURCE_DIR "/tests/data/bad_camera_path.toml", "keyframe[1].pitch_deg"},
         BadInput{"no-such-command", "no-such-command"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return "case" + std::to_string(info.index); });
 

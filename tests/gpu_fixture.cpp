@@ -36,6 +36,17 @@ const AtmosphereTables& SmallTables(LutVariant variant) {
   return Tables(PrecomputeOptions::Small(variant));
 }
 
+std::vector<std::byte> ReadBack(const vk::Image& image) {
+  vk::Buffer readback(SharedContext(), {.size = image.byte_size(),
+                                        .usage = ::vk::BufferUsageFlagBits::eTransferDst,
+                                        .host_visible = true});
+  SharedContext().Submit([&](const auto& cmd) {
+    image.CopyToBuffer(cmd, readback);
+    vk::FullBarrier(cmd);
+  });
+  return {readback.mapped(), readback.mapped() + image.byte_size()};
+}
+
 void GpuTest::SetUp() {
   SharedContext();
   validation_messages_before_ = vk::Context::ValidationMessageCount();

@@ -1,7 +1,7 @@
 // `aerial view` as scripts run it, under Xvfb: it opens its window, renders, exits 0 without a
 // validation message (CTest sets AERIAL_VALIDATION=1), writes its screenshot and statistics, and
-// its frame is `aerial render`'s for the same scene, camera and size. Bad paths fail before the
-// window opens.
+// its frame is `aerial render`'s for the same scene, camera and size. (Bad paths, which fail
+// before the window opens, are in cli_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -70,34 +70,6 @@ TEST(ViewCli, RendersFramesLikeRenderAndWritesStats) {
     EXPECT_TRUE(stats["passes"].contains(pass)) << pass;
   std::filesystem::remove_all(dir);
 }
-
-struct BadView {
-  std::string arguments;
-  std::string must_mention;
-};
-
-void PrintTo(const BadView& input, std::ostream* out) { *out << input.arguments; }
-
-class ViewCliRejects : public ::testing::TestWithParam<BadView> {};
-
-// Checked before the window opens, so these need no display.
-TEST_P(ViewCliRejects, BeforeOpeningTheWindow) {
-  CommandRun run = RunAerial("view" + kSmall + " " + GetParam().arguments);
-  EXPECT_NE(run.exit_code, 0);
-  EXPECT_NE(run.err.find(GetParam().must_mention), std::string::npos) << run.err;
-  EXPECT_FALSE(std::filesystem::exists("/tmp/aerial-view-test.png"));
-}
-
-INSTANTIATE_TEST_SUITE_P(
-    BadValues, ViewCliRejects,
-    ::testing::Values(
-        BadView{"--frames 2 --screenshot /nonexistent-aerial-dir/x.png", "--screenshot"},
-        BadView{"--frames 2 --screenshot /tmp/aerial-view-test.jpg", "--screenshot"},
-        BadView{"--screenshot /tmp/aerial-view-test.png", "--frames"},
-        BadView{"--frames 0", "--frames"},
-        BadView{"--camera-path /nonexistent-aerial-dir/path.toml", "--camera-path"},
-        BadView{"--camera-path " AERIAL_SOURCE_DIR "/tests/data/bad_camera_path.toml", "keyframe[1].pitch_deg"}),
-    [](const ::testing::TestParamInfo<BadView>& info) { return "case" + std::to_string(info.index); });
 
 }  // namespace
 }  // namespace aerial::testing

@@ -42,16 +42,9 @@ class ViewerDebugViews : public GpuTest {
       record(cmd);
       vk::FullBarrier(cmd);
     });
-    const vk::Image& image = passes_->display();
-    vk::Buffer readback(context, {.size = image.byte_size(),
-                                  .usage = ::vk::BufferUsageFlagBits::eTransferDst,
-                                  .host_visible = true});
-    context.Submit([&](const auto& cmd) {
-      image.CopyToBuffer(cmd, readback);
-      vk::FullBarrier(cmd);
-    });
-    Display display{std::vector<uint8_t>(image.byte_size())};
-    std::memcpy(display.rgba.data(), readback.mapped(), image.byte_size());
+    std::vector<std::byte> bytes = ReadBack(passes_->display());
+    Display display{std::vector<uint8_t>(bytes.size())};
+    std::memcpy(display.rgba.data(), bytes.data(), bytes.size());
     return display;
   }
   Display ShowTerm(viewer::DisplayPasses::Term term) {

@@ -43,17 +43,6 @@ vk::Image Upload(const ImageRgbF& image) {
   return gpu;
 }
 
-std::vector<std::byte> Download(const vk::Image& image) {
-  vk::Buffer readback(SharedContext(), {.size = image.byte_size(),
-                                        .usage = ::vk::BufferUsageFlagBits::eTransferDst,
-                                        .host_visible = true});
-  SharedContext().Submit([&](const auto& cmd) {
-    image.CopyToBuffer(cmd, readback);
-    vk::FullBarrier(cmd);
-  });
-  return {readback.mapped(), readback.mapped() + image.byte_size()};
-}
-
 class ViewerToneMap : public GpuTest {};
 
 // Before rounding to 8 bits. The GPU evaluates the same expressions in float32 against the CPU's
@@ -73,7 +62,7 @@ TEST_F(ViewerToneMap, GpuMatchesCpuBeforeRounding) {
                       {kRampSize, 1, 1}, {64, 1, 1});
     vk::FullBarrier(cmd);
   });
-  std::vector<std::byte> bytes = Download(output);
+  std::vector<std::byte> bytes = ReadBack(output);
   std::vector<float> gpu(kRampSize * 4);
   std::memcpy(gpu.data(), bytes.data(), bytes.size());
   double worst = 0.0;
@@ -96,7 +85,7 @@ TEST_F(ViewerToneMap, PresentPassMatchesPngBytes) {
     passes.RecordToneMap(cmd, input, exposure);
     vk::FullBarrier(cmd);
   });
-  std::vector<std::byte> display = Download(passes.display());
+  std::vector<std::byte> display = ReadBack(passes.display());
   std::vector<uint8_t> png = ToneMapToSrgb8(ramp, {.exposure = exposure});
   int worst = 0, differing = 0;
   for (size_t i = 0; i < kRampSize; ++i) {
