@@ -69,6 +69,12 @@ TEST(ViewerSession, ResizesSwitchesAndRecomputesWithoutValidationMessages) {
       EXPECT_EQ(viewer.renderer().froxels().grid().depth, 16);
     }
 
+    // The difference view asks the worker for the other variant's tables and shows the picture
+    // until they come.
+    viewer.settings().view = viewer::DebugView::kDifference;
+    ASSERT_TRUE(viewer.Step());
+    EXPECT_LE(StepUntil(viewer, [&] { return HasPass(viewer, "(3d)"); }, 2000), 2000);
+
     // A precompute of the small tables takes hundreds of milliseconds, a 200x120 frame tens: the
     // window must keep drawing while the worker computes.
     viewer.settings().view = viewer::DebugView::kFinal;
@@ -81,11 +87,13 @@ TEST(ViewerSession, ResizesSwitchesAndRecomputesWithoutValidationMessages) {
     std::printf("frames drawn while the worker computed: %d\n", busy_frames);
     EXPECT_GT(busy_frames, 0);
 
+    // The 3D tables of the first atmosphere (from the difference view) show until those of the
+    // new one arrive.
     viewer.settings().variant = LutVariant::k3D;
-    EXPECT_LE(StepUntil(viewer, [&] { return viewer.renderer().tables().options().variant == LutVariant::k3D; },
-                        2000),
+    ASSERT_TRUE(viewer.Step());
+    EXPECT_EQ(viewer.renderer().tables().options().variant, LutVariant::k3D);
+    EXPECT_LE(StepUntil(viewer, [&] { return viewer.renderer().tables().atmosphere().mie_phase_g == 0.7; }, 2000),
               2000);
-    EXPECT_EQ(viewer.renderer().tables().atmosphere().mie_phase_g, 0.7);
 
     viewer.settings().view = viewer::DebugView::kDifference;
     EXPECT_LE(StepUntil(viewer, [&] { return HasPass(viewer, "(4d)"); }, 2000), 2000);

@@ -69,6 +69,7 @@ void DebugSection(ViewSettings& s, const PanelInfo& info) {
   int view = int(s.view);
   if (ImGui::Combo("Debug view", &view, names.data(), int(names.size()))) s.view = DebugView(view);
   if (s.view == DebugView::kFroxelSlice) {
+    s.froxel_slice = std::clamp(s.froxel_slice, 0, s.froxels.depth - 1);  // the grid may have changed
     ImGui::SliderInt("Slice", &s.froxel_slice, 0, s.froxels.depth - 1);
     ImGui::TextDisabled("at %.0f m; columns: Rayleigh, Mie (x 1/4pi), transmittance",
                         s.froxels.SliceDistance(s.froxel_slice + 0.5));

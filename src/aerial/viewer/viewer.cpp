@@ -144,15 +144,15 @@ void Viewer::Impl::RequestTables() {
   if (settings_.view == DebugView::kDifference) needed.push_back(Other(settings_.variant));
   for (LutVariant variant : needed) {
     if (HasCurrentTables(variant) || requested_[variant] == wanted_.Hash()) continue;
+    requested_[variant] = wanted_.Hash();  // asked once, whatever comes of it
     auto options = options_.tables.find(variant);
     if (options == options_.tables.end()) {
-      Say(ToString(variant) + " tables are not available with these table sizes");
+      Say(ToString(variant) + " tables are not available with the command line's table sizes");
       continue;
     }
     TableStoreOptions store = options_.store;
     store.write_cache = wanted_.Hash() == options_.atmosphere.Hash();
     worker_.Submit({.slot = int(variant), .atmosphere = wanted_, .options = options->second, .store = store});
-    requested_[variant] = wanted_.Hash();
   }
 }
 
@@ -226,19 +226,21 @@ void Viewer::Impl::Act(const PanelEvents& events, const std::vector<int>& keys, 
 
 // The display pass for the settings' view, the blit into the swapchain and the panel over it.
 std::vector<vk::PassTime> Viewer::Impl::Draw(Renderer& primary, Renderer* other) {
+  // The difference view needs both frames; until the other variant's tables arrive, the picture.
+  DebugView view = settings_.view == DebugView::kDifference && !other ? DebugView::kFinal : settings_.view;
   bool recorded = false;
   auto prepare = [&](const ::vk::raii::CommandBuffer& cmd) {
     recorded = true;
     timer_.Reset(cmd);
-    timer_.Begin(cmd, PassName(other ? DebugView::kDifference : settings_.view));
-    switch (other ? DebugView::kDifference : settings_.view) {
+    timer_.Begin(cmd, PassName(view));
+    switch (view) {
       case DebugView::kFinal:
         display_.RecordToneMap(cmd, primary.output_image(), settings_.exposure);
         break;
       case DebugView::kRayleigh:
       case DebugView::kMie:
       case DebugView::kTransmittance:
-        display_.RecordTerm(cmd, primary, DisplayPasses::Term(int(settings_.view) - int(DebugView::kRayleigh)),
+        display_.RecordTerm(cmd, primary, DisplayPasses::Term(int(view) - int(DebugView::kRayleigh)),
                             settings_.exposure);
         break;
       case DebugView::kFroxelSlice:
