@@ -105,8 +105,9 @@ void Timings(const PanelInfo& info) {
 PanelEvents DrawPanel(ViewSettings& s, const PanelInfo& info) {
   PanelEvents events;
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_FirstUseEver);
   ImGui::Begin("aerial");
+  ImGui::PushItemWidth(-ImGui::GetFontSize() * 12);  // room for the longest label on the right
   if (ImGui::CollapsingHeader("Atmosphere", ImGuiTreeNodeFlags_DefaultOpen)) {
     events.tables_changed |= AtmosphereSection(s.knobs);
     int variant = s.variant == LutVariant::k4D ? 0 : 1;
@@ -133,13 +134,14 @@ PanelEvents DrawPanel(ViewSettings& s, const PanelInfo& info) {
     ImGui::SliderFloat("Exposure", &s.exposure, 0.1f, 100.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
     DebugSection(s, info);
   }
-  if (ImGui::CollapsingHeader("Sun", ImGuiTreeNodeFlags_DefaultOpen)) events.sun_clock_moved = SunSection(s);
+  if (ImGui::CollapsingHeader("Sun")) events.sun_clock_moved = SunSection(s);
   if (ImGui::CollapsingHeader("Timings", ImGuiTreeNodeFlags_DefaultOpen)) Timings(info);
   events.screenshot = ImGui::Button("Screenshot (F12, P)");
   ImGui::SameLine();
   events.export_vdb = ImGui::Button("Froxels to VDB (V)");
   if (!info.message.empty()) ImGui::TextWrapped("%s", info.message.c_str());
   ImGui::TextDisabled("WASD QE: fly, right-drag: look, Shift/Ctrl: faster/slower");
+  ImGui::PopItemWidth();
   ImGui::End();
   return events;
 }

@@ -13,7 +13,7 @@ namespace aerial::viewer {
 
 class RenderStack {
  public:
-  // scene: its meshes go to every renderer; it must outlive the stack.
+  // scene: its meshes go to every renderer; it must outlive the stack (which may be moved).
   explicit RenderStack(const Scene& scene) : scene_(scene) {}
 
   // Replaces the tables of their variant, and that variant's renderer.

@@ -44,11 +44,22 @@ const char* PassName(DebugView view) {
   return view == DebugView::kFinal ? "present" : "debug view";
 }
 
+// The first tables, loaded (or precomputed, with the terminal's progress bar) on the viewer's own
+// context before the window opens, and their renderer at the size asked for.
+RenderStack FirstStack(const vk::Context& context, const ViewerOptions& options) {
+  RenderStack stack(options.scene);
+  LoadedTables loaded = LoadOrPrecompute(context, options.atmosphere, options.tables.at(options.variant),
+                                         options.store);
+  stack.Install(std::move(loaded.tables), options.render);
+  return stack;
+}
+
 }  // namespace
 
 // The viewer's state; Viewer's methods forward to it. Members are declared in the order they are
 // built (GLFW before the Vulkan instance that needs its extensions, the context before everything
-// made with it) and so destroyed in reverse.
+// made with it) and so destroyed in reverse; the worker last, so that the window closes before it
+// waits for a running precompute.
 class Viewer::Impl {
  public:
   explicit Impl(ViewerOptions options);
@@ -101,7 +112,7 @@ Viewer::Impl::Impl(ViewerOptions options)
       wanted_(options_.atmosphere),
       context_info_(WithWindowSupport(options_.context)),
       context_(context_info_),
-      stack_(options_.scene),
+      stack_(FirstStack(context_, options_)),
       window_(context_, options_.render.width, options_.render.height, "aerial view: " + options_.scene.name),
       swapchain_(context_, window_.surface(), window_.framebuffer_extent()),
       imgui_(context_, window_.handle(), swapchain_),
@@ -114,12 +125,7 @@ Viewer::Impl::Impl(ViewerOptions options)
   settings_.froxels = options_.render.froxels;
   settings_.mode = options_.render.mode;
   settings_.exposure = float(options_.exposure);
-  // The first tables are loaded (or precomputed, with the terminal's progress bar) before the
-  // first frame, on the viewer's own context.
-  LoadedTables loaded = LoadOrPrecompute(context_, options_.atmosphere,
-                                         options_.tables.at(options_.variant), options_.store);
   requested_[options_.variant] = options_.atmosphere.Hash();
-  stack_.Install(std::move(loaded.tables), CurrentRenderOptions());
   last_frame_end_ = Clock::now();
 }
 
