@@ -78,7 +78,7 @@ void AddViewCommand(CLI::App& app) {
   command->add_option("--stats", options->stats,
                       "Write frame statistics (median and p95 frame ms, FPS, GPU ms per pass) as JSON");
   command->add_option("--camera-path", options->camera_path,
-                      "Camera path to play, one keyframe step per 1/30 s (TOML, examples/paths/)");
+                      "Camera path to play, 1/30 s of path time per frame (TOML, examples/paths/)");
   command->callback([options] { RunView(*options); });
 }
 
