@@ -36,7 +36,8 @@ void FrameOptions::AddTo(CLI::App& command, const std::string& size_help) {
   command.add_option("--froxel-far-m", froxel_far_m, "Distance covered by the froxels (m)");
   command.add_option("--width", width, size_help + " width in pixels");
   command.add_option("--height", height, size_help + " height in pixels");
-  command.add_option("--exposure", exposure, "Radiance multiplier before tone mapping (PNG images, the viewer's window)");
+  command.add_option("--exposure", exposure,
+                     "Radiance multiplier before tone mapping (PNG images, the viewer's window)");
   command.add_option("--aerial", aerial, "Aerial perspective: froxel or per-pixel")
       ->check(CLI::IsMember({"froxel", "per-pixel"}));
 }

@@ -42,7 +42,10 @@ std::map<LutVariant, PrecomputeOptions> TableVariants(const TableOptions& tables
 
 void RunView(const ViewCommandOptions& options) {
   if (!options.screenshot.empty()) {
-    if (options.frames == 0) throw Error("--screenshot", options.screenshot.string(), "--frames N as well (it saves the last frame)");
+    if (options.frames == 0) {
+      throw Error("--screenshot", options.screenshot.string(),
+                  "--frames N as well (it saves the last frame)");
+    }
     CheckImageOutputPath(options.screenshot, "--screenshot");
   }
   if (!options.stats.empty()) CheckWritable(options.stats);

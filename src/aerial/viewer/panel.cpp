@@ -21,7 +21,8 @@ bool KnobSlider(const char* label, double& value, float min, float max, const ch
 bool AtmosphereSection(AtmosphereKnobs& knobs) {
   bool changed = false;
   if (knobs.rayleigh_scale_height_m)
-    changed |= KnobSlider("Rayleigh scale height", *knobs.rayleigh_scale_height_m, 2.0f, 16.0f, "%.2f km", 1e3);
+    changed |= KnobSlider("Rayleigh scale height", *knobs.rayleigh_scale_height_m, 2.0f, 16.0f,
+                          "%.2f km", 1e3);
   if (knobs.mie_scale_height_m)
     changed |= KnobSlider("Mie scale height", *knobs.mie_scale_height_m, 0.3f, 6.0f, "%.2f km", 1e3);
   changed |= KnobSlider("Mie g", knobs.mie_g, 0.0f, 0.95f, "%.3f");
@@ -33,10 +34,11 @@ bool AtmosphereSection(AtmosphereKnobs& knobs) {
 void TablesStatus(const PanelInfo& info) {
   ImGui::TextWrapped("Tables: %s", info.tables.c_str());
   if (!info.work.busy) return;
-  float fraction = info.work.total_steps > 0 ? float(info.work.done_steps) / float(info.work.total_steps) : 0.0f;
-  std::string label = info.work.total_steps > 0
-                          ? std::to_string(info.work.done_steps) + "/" + std::to_string(info.work.total_steps) + " passes"
-                          : "reading";
+  const TableWorkStatus& work = info.work;
+  float fraction = work.total_steps > 0 ? float(work.done_steps) / float(work.total_steps) : 0.0f;
+  std::string label = work.total_steps > 0 ? std::to_string(work.done_steps) + "/" +
+                                                 std::to_string(work.total_steps) + " passes"
+                                           : "loading";
   ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), label.c_str());
   ImGui::TextWrapped("Computing %s in the background", info.work.description.c_str());
 }

@@ -32,7 +32,7 @@ struct TableResult {
 
 struct TableWorkStatus {
   bool busy = false;
-  int done_steps = 0, total_steps = 0;  // precompute passes; 0 of 0 while reading the cache
+  int done_steps = 0, total_steps = 0;  // precompute passes; 0 of 0 until the first is done
   std::string description;              // of the running request
 };
 
