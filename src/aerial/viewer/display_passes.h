@@ -1,6 +1,6 @@
 #pragma once
 // The viewer's last passes before the swapchain: the renderer's frame, or a debug view of it, into
-// the 8-bit display image that the swapchain blits from (vk/swapchain.h). They only read the
+// the 8-bit display image that the swapchain copies from (vk/swapchain.h). They only read the
 // renderer's images: the frame itself is always Renderer::Render's, as in `aerial render`.
 #include "aerial/render/renderer.h"
 #include "aerial/vk/compute_pipeline.h"
