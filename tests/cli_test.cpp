@@ -1,43 +1,18 @@
 // The aerial command as users run it: bad input gives a clear message naming the field and a
-// non-zero exit, and the probe prints the JSON keys other tools script against.
+// non-zero exit, and the probe prints the JSON keys other tools script against. (The viewer's
+// runs under Xvfb are in view_cli_test.cpp.)
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "command_run.h"
+
 namespace aerial::testing {
 namespace {
-
-struct CommandRun {
-  int exit_code;
-  std::string out;
-  std::string err;
-};
-
-CommandRun RunAerial(const std::string& arguments) {
-  std::string err_file = std::filesystem::temp_directory_path() / ("aerial-cli-" + std::to_string(::getpid()));
-  std::string command = std::string(AERIAL_EXE) + " " + arguments + " 2>" + err_file;
-  CommandRun run{};
-  FILE* pipe = ::popen(command.c_str(), "r");
-  std::array<char, 4096> buffer;
-  size_t n;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) run.out.append(buffer.data(), n);
-  int status = ::pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream err(err_file);
-  run.err.assign(std::istreambuf_iterator<char>(err), {});
-  std::filesystem::remove(err_file);
-  return run;
-}
 
 const std::string kProbe =
     "probe --small-tables --quiet --altitude-m 1 --view-zenith-deg 45 --sun-zenith-deg 30 --azimuth-deg 0";
@@ -134,6 +109,13 @@ INSTANTIATE_TEST_SUITE_P(
         // that does not exist, the message is still about them.
         BadInput{"export-vdb --device no-such-gpu --out /nonexistent-aerial-dir/x.vdb", "/nonexistent-aerial-dir"},
         BadInput{"export-vdb --device no-such-gpu --world-grid 1 --out /tmp/aerial-cli-test.vdb", "--world-grid"},
+        // The viewer checks its paths and files before opening a window, so these need no display.
+        BadInput{"view --frames 2 --screenshot /nonexistent-aerial-dir/x.png", "--screenshot"},
+        BadInput{"view --frames 2 --screenshot /tmp/aerial-cli-test.jpg", "--screenshot"},
+        BadInput{"view --screenshot /tmp/aerial-cli-test.png", "--frames"},
+        BadInput{"view --frames 0", "--frames"},
+        BadInput{"view --camera-path /nonexistent-aerial-dir/path.toml", "--camera-path"},
+        BadInput{"view --camera-path " AERIAL_SOURCE_DIR "/tests/data/bad_camera_path.toml", "keyframe[1].pitch_deg"},
         BadInput{"no-such-command", "no-such-command"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return "case" + std::to_string(info.index); });
 

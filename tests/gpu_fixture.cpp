@@ -12,10 +12,13 @@ vk::Context& SharedContext() {
 
 namespace {
 const AtmosphereTables& Tables(const PrecomputeOptions& options) {
+  // The context first: statics are destroyed in reverse order of construction, and the tables
+  // must go before their device.
+  vk::Context& context = SharedContext();
   static std::map<uint64_t, LoadedTables> loaded;
   auto it = loaded.find(options.Hash());
   if (it == loaded.end()) {
-    it = loaded.emplace(options.Hash(), LoadOrPrecompute(SharedContext(), AtmosphereParameters::Earth(),
+    it = loaded.emplace(options.Hash(), LoadOrPrecompute(context, AtmosphereParameters::Earth(),
                                                          options, {.quiet = true}))
              .first;
   }
@@ -31,6 +34,17 @@ const AtmosphereTables& FullTables(int orders, LutVariant variant) {
 
 const AtmosphereTables& SmallTables(LutVariant variant) {
   return Tables(PrecomputeOptions::Small(variant));
+}
+
+std::vector<std::byte> ReadBack(const vk::Image& image) {
+  vk::Buffer readback(SharedContext(), {.size = image.byte_size(),
+                                        .usage = ::vk::BufferUsageFlagBits::eTransferDst,
+                                        .host_visible = true});
+  SharedContext().Submit([&](const auto& cmd) {
+    image.CopyToBuffer(cmd, readback);
+    vk::FullBarrier(cmd);
+  });
+  return {readback.mapped(), readback.mapped() + image.byte_size()};
 }
 
 void GpuTest::SetUp() {

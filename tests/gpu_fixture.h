@@ -7,6 +7,7 @@
 
 #include "aerial/precompute/table_store.h"
 #include "aerial/vk/context.h"
+#include "aerial/vk/resources.h"
 
 namespace aerial::testing {
 
@@ -16,6 +17,9 @@ vk::Context& SharedContext();
 const AtmosphereTables& FullTables(int orders = 4, LutVariant variant = LutVariant::k4D);
 // Quarter-size tables for tests that check structure rather than accuracy.
 const AtmosphereTables& SmallTables(LutVariant variant = LutVariant::k4D);
+
+// The image's texels, as stored (x fastest, then y, then z), read back through a staging buffer.
+std::vector<std::byte> ReadBack(const vk::Image& image);
 
 class GpuTest : public ::testing::Test {
  protected:

@@ -25,15 +25,9 @@ class GraphicsPipelineTest : public GpuTest {
     return buffer;
   }
   std::array<float, 4> Pixel(const vk::Image& image, uint32_t x, uint32_t y) {
-    vk::Buffer readback(SharedContext(), {.size = image.byte_size(),
-                                          .usage = ::vk::BufferUsageFlagBits::eTransferDst,
-                                          .host_visible = true});
-    SharedContext().Submit([&](const auto& cmd) {
-      image.CopyToBuffer(cmd, readback);
-      vk::FullBarrier(cmd);
-    });
+    std::vector<std::byte> texels = ReadBack(image);
     std::array<float, 4> pixel;
-    std::memcpy(pixel.data(), readback.mapped() + (y * kSize + x) * 16, 16);
+    std::memcpy(pixel.data(), texels.data() + (y * kSize + x) * 16, 16);
     return pixel;
   }
 };

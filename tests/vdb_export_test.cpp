@@ -17,6 +17,7 @@
 #include "aerial/image/scratch_dir_test_util.h"
 #include "aerial/render/renderer.h"
 #include "aerial/scene/presets.h"
+#include "aerial/viewer/froxel_export.h"
 #include "gpu_fixture.h"
 
 namespace aerial::testing {
@@ -167,6 +168,29 @@ TEST_F(VdbExport, RoundTripHoldsTheGpuVolumeExactly) {
     float expected = float(InscatterLuminance(&gpu[0][n * 4], &gpu[1][n * 4]));
     ASSERT_EQ(luminance->values[n], expected) << "voxel " << n;
   }
+}
+
+// The viewer's V key writes the renderer's current froxels, as export-vdb would: same values,
+// and the frame's own size in the metadata.
+TEST_F(VdbExport, ViewerExportWritesTheCurrentFrame) {
+  Scene scene = TestScene(tables());
+  Renderer renderer(tables(), scene, {.width = kTestSize.width, .height = kTestSize.height, .froxels = TestGrid()});
+  renderer.Render(scene);
+  std::string message = viewer::ExportFroxelsToVdb(renderer, scene, dir_);
+  std::vector<std::filesystem::path> written;
+  for (const auto& entry : std::filesystem::directory_iterator(dir_)) written.push_back(entry.path());
+  ASSERT_EQ(written.size(), 1u) << message;
+  EXPECT_EQ(written[0].extension(), ".vdb");
+  EXPECT_NE(message.find(written[0].string()), std::string::npos) << message;
+  VdbFileData file = ReadVdb(written[0]);
+  const VdbGridData* rayleigh = file.Find("rayleigh_inscatter");
+  ASSERT_NE(rayleigh, nullptr);
+  std::vector<float> gpu = ReadImage(tables().context(), renderer.froxels().rayleigh());
+  FroxelGrid grid = TestGrid();
+  EXPECT_EQ(rayleigh->values[3 * rayleigh->Offset(0, 0, 0)], gpu[0]);
+  EXPECT_EQ(rayleigh->values[3 * rayleigh->Offset(grid.width - 1, grid.height - 1, grid.depth - 1)],
+            gpu[gpu.size() - 4]);
+  EXPECT_EQ(file.metadata.at("camera_aspect"), VdbMetaValue(kTestSize.aspect()));
 }
 
 // Every froxel center, as the file places it, is where the renderer puts it (1e-4 of its

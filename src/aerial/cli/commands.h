@@ -8,5 +8,6 @@ void AddPrecomputeCommand(CLI::App& app);
 void AddProbeCommand(CLI::App& app);
 void AddRenderCommand(CLI::App& app);
 void AddExportVdbCommand(CLI::App& app);
+void AddViewCommand(CLI::App& app);
 
 }  // namespace aerial::cli

@@ -62,8 +62,12 @@ PrecomputeOptions TableOptions::MakePrecomputeOptions() const {
   return options;
 }
 
+vk::ContextCreateInfo TableOptions::MakeContextInfo() const {
+  return {.device_name = device, .validation = validation};
+}
+
 std::unique_ptr<vk::Context> TableOptions::MakeContext() const {
-  return std::make_unique<vk::Context>(vk::ContextCreateInfo{.device_name = device, .validation = validation});
+  return std::make_unique<vk::Context>(MakeContextInfo());
 }
 
 TableStoreOptions TableOptions::MakeStoreOptions() const {

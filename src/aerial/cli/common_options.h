@@ -32,6 +32,7 @@ struct TableOptions {
   void AddTo(CLI::App& command);
   AtmosphereParameters LoadAtmosphere() const;
   PrecomputeOptions MakePrecomputeOptions() const;
+  vk::ContextCreateInfo MakeContextInfo() const;  // --device, --validation
   std::unique_ptr<vk::Context> MakeContext() const;
   TableStoreOptions MakeStoreOptions() const;
 };

@@ -16,11 +16,7 @@ namespace {
 struct RenderCommandOptions {
   TableOptions tables;
   SceneOptions scene;
-  FroxelOptions froxels;
-  int width = 1280;
-  int height = 720;
-  double exposure = 8.0;
-  std::string aerial = "froxel";
+  FrameOptions frame;
   bool timings = false;
   std::filesystem::path out;
 };
@@ -28,12 +24,7 @@ struct RenderCommandOptions {
 void RunRender(const RenderCommandOptions& options) {
   CheckImageOutputPath(options.out);
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
-  RenderOptions render;
-  render.width = options.width;
-  render.height = options.height;
-  render.froxels = options.froxels.Make();
-  render.mode = options.aerial == "per-pixel" ? AerialMode::kPerPixel : AerialMode::kFroxel;
-  render.Validate();
+  RenderOptions render = options.frame.MakeRenderOptions();
   Scene scene = options.scene.Load(atmosphere.bottom_radius_m);
   auto context = options.tables.MakeContext();
   LoadedTables loaded = LoadOrPrecompute(*context, atmosphere, options.tables.MakePrecomputeOptions(),
@@ -41,7 +32,7 @@ void RunRender(const RenderCommandOptions& options) {
   Renderer renderer(*loaded.tables, scene, render);
   renderer.Render(scene);  // the first frame includes lavapipe's shader compilation
   std::vector<vk::PassTime> times = renderer.Render(scene);
-  WriteImage(options.out, renderer.ReadOutput(), {.exposure = options.exposure});
+  WriteImage(options.out, renderer.ReadOutput(), {.exposure = options.frame.exposure});
   if (options.timings) {
     double total = 0.0;
     for (const auto& pass : times) {
@@ -59,12 +50,7 @@ void AddRenderCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("render", "Render one frame of a scene to EXR or PNG");
   options->tables.AddTo(*command);
   options->scene.AddTo(*command);
-  options->froxels.AddTo(*command);
-  command->add_option("--width", options->width, "Image width in pixels");
-  command->add_option("--height", options->height, "Image height in pixels");
-  command->add_option("--exposure", options->exposure, "Radiance multiplier before tone mapping (PNG)");
-  command->add_option("--aerial", options->aerial, "Aerial perspective: froxel or per-pixel")
-      ->check(CLI::IsMember({"froxel", "per-pixel"}));
+  options->frame.AddTo(*command, "Image");
   command->add_flag("--timings", options->timings, "Print the GPU time of each pass");
   command->add_option("--out", options->out, "Output image, .exr (linear) or .png (sRGB)")->required();
   command->callback([options] { RunRender(*options); });

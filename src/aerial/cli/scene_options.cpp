@@ -50,4 +50,24 @@ FroxelGrid FroxelOptions::Make() const {
   return grid;
 }
 
+void FrameOptions::AddTo(CLI::App& command, const std::string& size_help) {
+  froxels.AddTo(command);
+  command.add_option("--width", width, size_help + " width in pixels");
+  command.add_option("--height", height, size_help + " height in pixels");
+  command.add_option("--exposure", exposure,
+                     "Radiance multiplier before tone mapping (PNG images, the viewer's window)");
+  command.add_option("--aerial", aerial, "Aerial perspective: froxel or per-pixel")
+      ->check(CLI::IsMember({"froxel", "per-pixel"}));
+}
+
+RenderOptions FrameOptions::MakeRenderOptions() const {
+  RenderOptions render;
+  render.width = width;
+  render.height = height;
+  render.froxels = froxels.Make();
+  render.mode = aerial == "per-pixel" ? AerialMode::kPerPixel : AerialMode::kFroxel;
+  render.Validate();
+  return render;
+}
+
 }  // namespace aerial::cli

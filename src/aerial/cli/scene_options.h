@@ -1,13 +1,14 @@
 #pragma once
-// Options shared by the commands that draw a frame of a scene (render, export-vdb): which scene,
-// the camera and sun overrides, and the froxel grid. Registered once here so both commands spell
-// and check them the same way.
+// Options shared by the commands that draw a frame of a scene (render, view, export-vdb): which
+// scene, the camera and sun overrides, the froxel grid and the frame's shape. Registered once
+// here so every command spells and checks them the same way.
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "aerial/render/renderer.h"
 #include "aerial/scene/scene.h"
 #include "aerial/scene/scene_overrides.h"
 #include "froxel/froxel_grid.h"
@@ -33,6 +34,19 @@ struct FroxelOptions {
   // --froxels and --froxel-far-m.
   void AddTo(CLI::App& command);
   FroxelGrid Make() const;  // validated
+};
+
+struct FrameOptions {
+  FroxelOptions froxels;
+  int width = 1280;
+  int height = 720;
+  double exposure = 8.0;
+  std::string aerial = "froxel";
+
+  // The froxel options, --width/--height (size_help: what they size, "Image"), --exposure and
+  // --aerial.
+  void AddTo(CLI::App& command, const std::string& size_help);
+  RenderOptions MakeRenderOptions() const;  // validated
 };
 
 }  // namespace aerial::cli

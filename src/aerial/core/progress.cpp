@@ -41,6 +41,7 @@ Progress::~Progress() { Finish(); }
 
 void Progress::Advance(std::string_view step_label) {
   ++done_steps_;
+  if (observer_) observer_(done_steps_, total_steps_, step_label);
   if (!enabled_ || finished_) return;
   std::string line = ProgressLine(title_, done_steps_, total_steps_, step_label);
   size_t length = line.size();

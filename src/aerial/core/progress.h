@@ -3,6 +3,7 @@
 // Vulkan driver). It draws only on a terminal: redirected output (logs, CI, pipes) stays free of
 // carriage returns. Set AERIAL_NO_PROGRESS=1, or pass quiet, to silence it on a terminal too.
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -22,6 +23,11 @@ class Progress {
 
   bool enabled() const { return enabled_; }
 
+  // Also tells observer of every step (from Advance, on the caller's thread), drawn or not: a
+  // window shows the same progress in its own bar.
+  using Observer = std::function<void(int done_steps, int total_steps, std::string_view step_label)>;
+  void set_observer(Observer observer) { observer_ = std::move(observer); }
+
  private:
   std::string title_;
   int total_steps_;
@@ -30,6 +36,7 @@ class Progress {
   bool enabled_;
   bool finished_ = false;
   size_t last_length_ = 0;  // to blank the rest of a longer previous line.
+  Observer observer_;
 };
 
 // The text of one bar update, without the leading \r: "title [#####.....] 3/9 label".

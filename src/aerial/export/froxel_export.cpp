@@ -117,16 +117,12 @@ FrameUniforms CaptureFrameUniforms(const Scene& scene, double planet_radius_m, c
   return MakeFrameUniforms(scene, planet_radius_m, size.width, size.height, grid);
 }
 
-FroxelFrame CaptureFroxels(const AtmosphereTables& tables, const Scene& scene, const FroxelGrid& grid,
-                           CaptureSize size) {
-  Renderer renderer(tables, scene,
-                    {.width = size.width, .height = size.height, .froxels = grid,
-                     .mode = AerialMode::kFroxel});
-  renderer.Render(scene);
+FroxelFrame ReadFroxelFrame(const Renderer& renderer, const Scene& scene) {
+  const AtmosphereTables& tables = renderer.tables();
   FroxelFrame frame;
   frame.texels = renderer.froxels().Read(tables.context());
   frame.uniforms = renderer.frame_uniforms();
-  frame.size = size;
+  frame.size = {.width = renderer.options().width, .height = renderer.options().height};
   frame.camera = scene.camera;
   frame.sun = scene.sun;
   frame.lut = tables.options().variant;
@@ -135,6 +131,15 @@ FroxelFrame CaptureFroxels(const AtmosphereTables& tables, const Scene& scene, c
   frame.wavelengths_nm = tables.atmosphere().wavelengths_nm;
   frame.planet_radius_m = tables.atmosphere().bottom_radius_m;
   return frame;
+}
+
+FroxelFrame CaptureFroxels(const AtmosphereTables& tables, const Scene& scene, const FroxelGrid& grid,
+                           CaptureSize size) {
+  Renderer renderer(tables, scene,
+                    {.width = size.width, .height = size.height, .froxels = grid,
+                     .mode = AerialMode::kFroxel});
+  renderer.Render(scene);
+  return ReadFroxelFrame(renderer, scene);
 }
 
 void CheckVdbOutputPath(const std::filesystem::path& path) {

@@ -21,6 +21,7 @@
 #include "aerial/export/vdb_file.h"
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/render/frame_uniforms.h"
+#include "aerial/render/renderer.h"
 #include "froxel/froxel_placement.h"
 
 namespace aerial {
@@ -53,6 +54,9 @@ struct FroxelFrame {
 // The frame uniforms of the capture, computed on the CPU (for checks before any GPU work).
 FrameUniforms CaptureFrameUniforms(const Scene& scene, double planet_radius_m, const FroxelGrid& grid,
                                    CaptureSize size);
+
+// The froxels of the renderer's last frame (in froxel mode), which drew `scene`.
+FroxelFrame ReadFroxelFrame(const Renderer& renderer, const Scene& scene);
 
 // Renders the scene once and reads its froxels back.
 FroxelFrame CaptureFroxels(const AtmosphereTables& tables, const Scene& scene, const FroxelGrid& grid,

@@ -12,23 +12,23 @@
 
 namespace aerial {
 
-ImageFormat ImageFormatFromPath(const std::filesystem::path& path) {
+ImageFormat ImageFormatFromPath(const std::filesystem::path& path, const std::string& field) {
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == ".exr") return ImageFormat::kExr;
   if (extension == ".png") return ImageFormat::kPng;
-  throw Error("--out", path.string(), ".exr or .png");
+  throw Error(field, path.string(), ".exr or .png");
 }
 
-void CheckImageOutputPath(const std::filesystem::path& path) {
-  ImageFormatFromPath(path);
+void CheckImageOutputPath(const std::filesystem::path& path, const std::string& field) {
+  ImageFormatFromPath(path, field);
   // An image goes where the user points; a mistyped directory is an error, not created silently
   // (unlike the table cache, whose directory is ours to create).
   std::filesystem::path parent = path.parent_path().empty() ? "." : path.parent_path();
   std::error_code error;
   if (!std::filesystem::is_directory(parent, error))
-    throw Error("--out", path.string(), "a file in an existing directory (" + parent.string() +
+    throw Error(field, path.string(), "a file in an existing directory (" + parent.string() +
                                             " does not exist or is not a directory)");
   CheckWritable(path);
 }

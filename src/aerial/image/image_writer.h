@@ -3,6 +3,7 @@
 // (temporary + rename, see core/atomic_file.h): a failed, full-disk or killed export leaves the
 // previous file or nothing, never a truncated image.
 #include <filesystem>
+#include <string>
 
 #include "aerial/image/image.h"
 #include "aerial/image/tone_map.h"
@@ -14,13 +15,13 @@ enum class ImageFormat {
   kPng,  // tone-mapped sRGB preview
 };
 
-// By extension, case-insensitive (".exr", ".PNG"). Throws Error("--out", path, ".exr or .png"),
-// since the path comes from the --out option.
-ImageFormat ImageFormatFromPath(const std::filesystem::path& path);
+// By extension, case-insensitive (".exr", ".PNG"). Throws Error(field, path, ".exr or .png"); field
+// names the option the path came from.
+ImageFormat ImageFormatFromPath(const std::filesystem::path& path, const std::string& field = "--out");
 
-// Format and writability (CheckWritable: the parent is created if missing), so a command fails
-// before spending minutes rendering.
-void CheckImageOutputPath(const std::filesystem::path& path);
+// Format, an existing directory and writability, so a command fails before spending minutes
+// rendering. Errors name `field`.
+void CheckImageOutputPath(const std::filesystem::path& path, const std::string& field = "--out");
 
 // EXR: float R, G, B, A linear radiance; tone_map is ignored. PNG: ToneMapToSrgb8(image,
 // tone_map). Throws Error("image size") for sides outside 1..kMaxImageSide, Error("--out") for an

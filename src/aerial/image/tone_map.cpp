@@ -40,6 +40,10 @@ double SanitizeRadiance(double x) {
 
 }  // namespace
 
+double ToneMapChannel(double exposed_radiance) {
+  return SrgbOetf(AcesFilmic(SanitizeRadiance(exposed_radiance)));
+}
+
 std::vector<uint8_t> ToneMapToSrgb8(const ImageRgbF& image, const ToneMapOptions& options) {
   CheckImageSize(image);
   // A zero, negative or non-finite exposure would silently give a black or NaN image.
@@ -48,8 +52,7 @@ std::vector<uint8_t> ToneMapToSrgb8(const ImageRgbF& image, const ToneMapOptions
   std::vector<uint8_t> out(image.rgba.size());
   for (size_t i = 0; i < image.rgba.size(); i += 4) {
     for (size_t c = 0; c < 3; ++c) {
-      const double radiance = SanitizeRadiance(double{image.rgba[i + c]} * options.exposure);
-      out[i + c] = Quantize(SrgbOetf(AcesFilmic(radiance)));
+      out[i + c] = Quantize(ToneMapChannel(double{image.rgba[i + c]} * options.exposure));
     }
     const double alpha = image.rgba[i + 3];
     out[i + 3] = Quantize(std::isnan(alpha) ? 0.0 : alpha);

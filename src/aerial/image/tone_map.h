@@ -20,4 +20,9 @@ struct ToneMapOptions {
 // image and Error("exposure") unless exposure is finite and > 0.
 std::vector<uint8_t> ToneMapToSrgb8(const ImageRgbF& image, const ToneMapOptions& options);
 
+// One colour channel of that curve before rounding: radiance already multiplied by the exposure,
+// to the sRGB-encoded display value in [0, 1] (negative and NaN give 0). The viewer's GPU tone map,
+// shaders/include/tone_map.glsl, mirrors it line by line.
+double ToneMapChannel(double exposed_radiance);
+
 }  // namespace aerial

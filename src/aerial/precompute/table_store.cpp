@@ -60,6 +60,7 @@ LoadedTables LoadOrPrecompute(const vk::Context& context, const AtmosphereParame
   }
   Progress progress("precompute " + ToString(options.variant), PrecomputePassCount(options), stderr,
                     store.quiet);
+  progress.set_observer(store.progress);
   loaded.pass_times = Precompute(*loaded.tables, &progress);
   if (write_cache) WriteTableCache(loaded.cache_file, loaded.tables->Download());
   return loaded;

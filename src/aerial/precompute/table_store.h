@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "aerial/core/progress.h"
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/vk/gpu_timer.h"
 
@@ -19,6 +20,7 @@ struct TableStoreOptions {
   // false: it is reported and the tables are used without being cached.
   bool require_cache_write = false;
   bool quiet = false;               // no progress bar, no cache notes
+  Progress::Observer progress;      // told of each precompute pass, if set (quiet or not)
 };
 
 struct LoadedTables {

@@ -96,6 +96,7 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
                                       ::vk::ImageUsageFlagBits::eDepthStencilAttachment)),
       output_(tables.context(), Target(options, ::vk::Format::eR32G32B32A32Sfloat,
                                        ::vk::ImageUsageFlagBits::eColorAttachment |
+                                           ::vk::ImageUsageFlagBits::eSampled |
                                            ::vk::ImageUsageFlagBits::eTransferSrc)),
       sky_rayleigh_(tables.context(), SkyViewImage()),
       sky_mie_(tables.context(), SkyViewImage()),

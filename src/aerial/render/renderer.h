@@ -41,6 +41,11 @@ class Renderer {
   // The opaque pass's target: lit surface radiance before aerial perspective in rgb, distance
   // from the camera in a (negative where no geometry was drawn).
   ImageRgbF ReadSurface() const;
+  // The images behind ReadOutput and ReadSurface (GENERAL layout, sampled), for passes that read
+  // the frame on the GPU (the viewer's tone map and debug views).
+  const vk::Image& output_image() const { return output_; }
+  const vk::Image& surface_image() const { return surface_; }
+  const AtmosphereTables& tables() const { return tables_; }
   const FroxelVolume& froxels() const { return froxels_; }
   const FrameUniforms& frame_uniforms() const { return frame_uniforms_; }
   const RenderOptions& options() const { return options_; }

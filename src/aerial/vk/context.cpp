@@ -105,12 +105,18 @@ Context::Context(const ContextCreateInfo& info) {
 
   auto families = physical_device_.getQueueFamilyProperties();
   auto wanted_flags = ::vk::QueueFlagBits::eCompute | ::vk::QueueFlagBits::eGraphics;
-  auto family = std::find_if(families.begin(), families.end(), [&](const auto& f) {
-    return (f.queueFlags & wanted_flags) == wanted_flags && f.timestampValidBits > 0;
-  });
-  if (family == families.end())
-    throw Error("device queue", device_name(), "a graphics+compute queue with timestamps");
-  queue_family_ = uint32_t(family - families.begin());
+  auto suitable = [&](uint32_t index) {
+    const auto& f = families[index];
+    return (f.queueFlags & wanted_flags) == wanted_flags && f.timestampValidBits > 0 &&
+           (!info.present_support || info.present_support(*instance_, *physical_device_, index));
+  };
+  queue_family_ = 0;
+  while (queue_family_ < families.size() && !suitable(queue_family_)) ++queue_family_;
+  if (queue_family_ == families.size()) {
+    throw Error("device queue", device_name(),
+                std::string("a graphics+compute queue with timestamps") +
+                    (info.present_support ? " that can present to the window" : ""));
+  }
 
   float priority = 1.0f;
   ::vk::DeviceQueueCreateInfo queue_info{

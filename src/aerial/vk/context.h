@@ -5,6 +5,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <vulkan/vulkan_raii.hpp>
 
@@ -18,6 +19,9 @@ struct ContextCreateInfo {
   // Instance extensions a window system needs (GLFW); the swapchain device extension is then
   // requested too.
   std::vector<std::string> window_extensions;
+  // When set, the queue must also be able to present to the window system (for GLFW,
+  // glfwGetPhysicalDevicePresentationSupport); asked once the instance exists.
+  std::function<bool(::vk::Instance, ::vk::PhysicalDevice, uint32_t queue_family)> present_support;
 };
 
 class Context {

@@ -1,0 +1,88 @@
+// aerial view: the real-time viewer (src/aerial/viewer/). Scripted runs (--frames, --screenshot,
+// --stats, --camera-path) check every path and file before the window opens.
+#include <memory>
+
+#include "aerial/cli/commands.h"
+#include "aerial/cli/common_options.h"
+#include "aerial/cli/scene_options.h"
+#include "aerial/core/atomic_file.h"
+#include "aerial/core/error.h"
+#include "aerial/image/image_writer.h"
+#include "aerial/viewer/viewer.h"
+
+namespace aerial::cli {
+namespace {
+
+struct ViewCommandOptions {
+  TableOptions tables;
+  SceneOptions scene;
+  FrameOptions frame;
+  int frames = 0;
+  std::filesystem::path screenshot;
+  std::filesystem::path stats;
+  std::filesystem::path camera_path;
+};
+
+// The precompute options of both variants, for the panel's 3D/4D switch: the command line's
+// resolutions with the other --lut. A variant those resolutions do not allow (3D needs NU = 1) is
+// left out, unless it is the one asked for, which then fails as in any other command.
+std::map<LutVariant, PrecomputeOptions> TableVariants(const TableOptions& tables) {
+  std::map<LutVariant, PrecomputeOptions> variants;
+  LutVariant asked = ParseLutVariant(tables.lut, "--lut");
+  variants[asked] = tables.MakePrecomputeOptions();
+  TableOptions other = tables;
+  other.lut = asked == LutVariant::k4D ? "3d" : "4d";
+  try {
+    variants[ParseLutVariant(other.lut, "--lut")] = other.MakePrecomputeOptions();
+  } catch (const Error&) {
+    // Offered as unavailable in the panel.
+  }
+  return variants;
+}
+
+void RunView(const ViewCommandOptions& options) {
+  if (!options.screenshot.empty()) {
+    if (options.frames == 0) {
+      throw Error("--screenshot", options.screenshot.string(),
+                  "--frames N as well (it saves the last frame)");
+    }
+    CheckImageOutputPath(options.screenshot, "--screenshot");
+  }
+  if (!options.stats.empty()) CheckWritable(options.stats);
+  viewer::ViewerOptions viewer;
+  viewer.atmosphere = options.tables.LoadAtmosphere();
+  viewer.render = options.frame.MakeRenderOptions();
+  viewer.tables = TableVariants(options.tables);
+  viewer.variant = ParseLutVariant(options.tables.lut, "--lut");
+  if (!options.camera_path.empty())
+    viewer.camera_path = viewer::CameraPath::Load(options.camera_path, viewer.atmosphere.bottom_radius_m);
+  viewer.scene = options.scene.Load(viewer.atmosphere.bottom_radius_m);
+  viewer.store = options.tables.MakeStoreOptions();
+  viewer.context = options.tables.MakeContextInfo();
+  viewer.exposure = options.frame.exposure;
+  viewer.frames = options.frames;
+  viewer.screenshot = options.screenshot;
+  viewer.stats = options.stats;
+  viewer::RunViewer(std::move(viewer));
+}
+
+}  // namespace
+
+void AddViewCommand(CLI::App& app) {
+  auto options = std::make_shared<ViewCommandOptions>();
+  CLI::App* command = app.add_subcommand("view", "Real-time viewer: fly through a scene, tune the atmosphere");
+  options->tables.AddTo(*command);
+  options->scene.AddTo(*command);
+  options->frame.AddTo(*command, "Window");
+  command->add_option("--frames", options->frames, "Close after N frames (scripted runs)")
+      ->check(CLI::Range(1, 100000000));
+  command->add_option("--screenshot", options->screenshot,
+                      "With --frames: save the last frame, .exr (linear) or .png (sRGB)");
+  command->add_option("--stats", options->stats,
+                      "Write frame statistics (median and p95 frame ms, FPS, GPU ms per pass) as JSON");
+  command->add_option("--camera-path", options->camera_path,
+                      "Camera path to play, 1/30 s of path time per frame (TOML, examples/paths/)");
+  command->callback([options] { RunView(*options); });
+}
+
+}  // namespace aerial::cli

@@ -1,0 +1,86 @@
+#include "aerial/viewer/camera_path.h"
+
+#include <algorithm>
+
+#include "aerial/core/error.h"
+#include "aerial/core/toml_reader.h"
+#include "aerial/scene/scene_limits.h"
+
+namespace aerial::viewer {
+namespace {
+
+const toml::node& Required(TomlReader& r, const toml::table& t, const toml::node& table_node,
+                           const std::string& field, std::string_view key) {
+  const toml::node* node = t.get(key);
+  if (!node) r.Fail(table_node, TomlReader::Join(field, key), "a value (every keyframe key is required)");
+  return *node;
+}
+
+CameraKeyframe ReadKeyframe(TomlReader& r, const toml::node& node, const std::string& field,
+                            double planet_radius_m) {
+  const toml::table& t = r.Table(node, field);
+  r.RejectUnknownKeys(t, field, {"time_s", "position_m", "yaw_deg", "pitch_deg"});
+  auto key = [&](std::string_view k) { return TomlReader::Join(field, k); };
+  CameraKeyframe k;
+  const toml::node& time = Required(r, t, node, field, "time_s");
+  k.time_s = r.Number(time, key("time_s"), "s");
+  if (!(k.time_s >= 0.0 && std::isfinite(k.time_s))) r.Fail(time, key("time_s"), ">= 0 s and finite");
+  const toml::node& position = Required(r, t, node, field, "position_m");
+  std::vector<double> p = r.Numbers(position, key("position_m"), 3, 3, "m");
+  k.position_m = {p[0], p[1], p[2]};
+  CheckCameraPosition(k.position_m, planet_radius_m, key("position_m"), r.At(position));
+  const toml::node& yaw = Required(r, t, node, field, "yaw_deg");
+  k.yaw_deg = r.Number(yaw, key("yaw_deg"), "degrees");
+  CheckAzimuthDeg(k.yaw_deg, key("yaw_deg"), r.At(yaw));
+  const toml::node& pitch = Required(r, t, node, field, "pitch_deg");
+  k.pitch_deg = r.Number(pitch, key("pitch_deg"), "degrees");
+  CheckPitchDeg(k.pitch_deg, key("pitch_deg"), r.At(pitch));
+  return k;
+}
+
+}  // namespace
+
+CameraPath CameraPath::Parse(std::string_view text, const std::string& where, double planet_radius_m) {
+  TomlReader r(where, FormatNumber);
+  toml::table root = r.Parse(text);
+  r.RejectUnknownKeys(root, "", {"keyframe"});
+  const toml::node* list = root.get("keyframe");
+  const toml::array* keyframes = list ? list->as_array() : nullptr;
+  if (!keyframes || keyframes->size() < 2) {
+    throw Error("keyframe", list ? r.NodeText(*list) : "missing",
+                "two or more keyframes ([[keyframe]] tables)", list ? r.At(*list) : where);
+  }
+  CameraPath path;
+  for (size_t i = 0; i < keyframes->size(); ++i) {
+    std::string field = TomlReader::Index("keyframe", i);
+    path.keyframes_.push_back(ReadKeyframe(r, *keyframes->get(i), field, planet_radius_m));
+    if (i > 0 && !(path.keyframes_[i].time_s > path.keyframes_[i - 1].time_s)) {
+      std::string time_field = TomlReader::Join(field, "time_s");
+      throw Error(time_field, FormatNumber(path.keyframes_[i].time_s),
+                  "> " + FormatNumber(path.keyframes_[i - 1].time_s) +
+                      " s (times must increase from keyframe to keyframe)",
+                  r.WhereOf(time_field));
+    }
+  }
+  return path;
+}
+
+CameraPath CameraPath::Load(const std::filesystem::path& path, double planet_radius_m) {
+  return Parse(ReadTomlFile(path, "--camera-path"), path.string(), planet_radius_m);
+}
+
+void CameraPath::Apply(double t_s, Camera& camera) const {
+  // The first keyframe later than t; the segment is the one ending there.
+  auto next = std::upper_bound(keyframes_.begin(), keyframes_.end(), t_s,
+                               [](double t, const CameraKeyframe& k) { return t < k.time_s; });
+  const CameraKeyframe& a = next == keyframes_.begin() ? keyframes_.front()
+                            : next == keyframes_.end() ? keyframes_.back()
+                                                       : *(next - 1);
+  const CameraKeyframe& b = next == keyframes_.end() ? keyframes_.back() : *next;
+  double s = b.time_s > a.time_s ? std::clamp((t_s - a.time_s) / (b.time_s - a.time_s), 0.0, 1.0) : 0.0;
+  camera.position = a.position_m + s * (b.position_m - a.position_m);
+  camera.yaw_deg = a.yaw_deg + s * (b.yaw_deg - a.yaw_deg);
+  camera.pitch_deg = a.pitch_deg + s * (b.pitch_deg - a.pitch_deg);
+}
+
+}  // namespace aerial::viewer

@@ -1,0 +1,94 @@
+#include "aerial/viewer/camera_path.h"
+
+#include <gtest/gtest.h>
+
+#include "aerial/core/error.h"
+
+namespace aerial::viewer {
+namespace {
+
+constexpr double kR = 6360e3;
+
+const char* kPath = R"(
+[[keyframe]]
+time_s = 0.0
+position_m = [0.0, 0.0, 30.0]
+yaw_deg = 350.0
+pitch_deg = 4.0
+
+[[keyframe]]
+time_s = 2.0
+position_m = [0.0, 2000.0, 230.0]
+yaw_deg = 370.0
+pitch_deg = 0.0
+)";
+
+TEST(CameraPath, InterpolatesLinearlyAndHoldsTheEnds) {
+  CameraPath path = CameraPath::Parse(kPath, "path.toml", kR);
+  ASSERT_EQ(path.keyframes().size(), 2u);
+  EXPECT_DOUBLE_EQ(path.duration_s(), 2.0);
+  Camera camera;
+  camera.vertical_fov_deg = 42.0;
+  path.Apply(0.5, camera);
+  EXPECT_NEAR(camera.position.y, 500.0, 1e-9);
+  EXPECT_NEAR(camera.position.z, 80.0, 1e-9);
+  EXPECT_NEAR(camera.yaw_deg, 355.0, 1e-9);  // as written: 350 -> 370, no wrap to 10
+  EXPECT_NEAR(camera.pitch_deg, 3.0, 1e-9);
+  EXPECT_EQ(camera.vertical_fov_deg, 42.0);  // not part of a path
+  path.Apply(-1.0, camera);
+  EXPECT_EQ(camera.position.z, 30.0);
+  path.Apply(60 * kFrameStepS + 1.0, camera);
+  EXPECT_EQ(camera.position.y, 2000.0);
+  EXPECT_EQ(camera.yaw_deg, 370.0);
+}
+
+// A frame step lands exactly on keyframes: frame 60 of a 2 s path is its last keyframe.
+TEST(CameraPath, FrameStepIsThirtyPerSecond) {
+  CameraPath path = CameraPath::Parse(kPath, "path.toml", kR);
+  Camera camera;
+  path.Apply(60 * kFrameStepS, camera);
+  EXPECT_NEAR(camera.position.y, 2000.0, 1e-6);
+}
+
+struct BadPath {
+  std::string text;
+  std::string field;
+};
+
+class CameraPathRejects : public ::testing::TestWithParam<BadPath> {};
+
+TEST_P(CameraPathRejects, NamingTheField) {
+  try {
+    CameraPath::Parse(GetParam().text, "path.toml", kR);
+    FAIL() << "accepted:\n" << GetParam().text;
+  } catch (const Error& e) {
+    EXPECT_EQ(e.field(), GetParam().field) << e.what();
+    EXPECT_NE(e.where().find("path.toml"), std::string::npos) << e.what();
+  }
+}
+
+const std::string kFirst = "[[keyframe]]\ntime_s = 0.0\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 0.0\npitch_deg = 0.0\n";
+
+INSTANTIATE_TEST_SUITE_P(
+    BadFiles, CameraPathRejects,
+    ::testing::Values(
+        BadPath{"", "keyframe"},
+        BadPath{kFirst, "keyframe"},
+        BadPath{kFirst + "[[keyframe]]\ntime_s = 1.0\nposition_m = [0.0, 0.0, 30.0]\npitch_deg = 0.0\n",
+                "keyframe[1].yaw_deg"},
+        BadPath{kFirst + "[[keyframe]]\ntime_s = 0.0\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 0.0\npitch_deg = 0.0\n",
+                "keyframe[1].time_s"},
+        BadPath{kFirst + "[[keyframe]]\ntime_s = 1.0\nposition_m = [0.0, 30.0]\nyaw_deg = 0.0\npitch_deg = 0.0\n",
+                "keyframe[1].position_m"},
+        BadPath{kFirst + "[[keyframe]]\ntime_s = 1.0\nposition_m = [0.0, 0.0, 2e5]\nyaw_deg = 0.0\npitch_deg = 0.0\n",
+                "keyframe[1].position_m"},
+        BadPath{kFirst + "[[keyframe]]\ntime_s = 1.0\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 0.0\npitch_deg = 95.0\n",
+                "keyframe[1].pitch_deg"},
+        BadPath{kFirst + "[[keyframe]]\ntime_s = 1.0\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 0.0\npitch_deg = 0.0\nroll_deg = 1.0\n",
+                "keyframe[1].roll_deg"},
+        BadPath{kFirst + "[[keyframe]]\ntime_s = \"soon\"\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 0.0\npitch_deg = 0.0\n",
+                "keyframe[1].time_s"}),
+    [](const ::testing::TestParamInfo<BadPath>& info) { return "case" + std::to_string(info.index); });
+
+}  // namespace
+}  // namespace aerial::viewer

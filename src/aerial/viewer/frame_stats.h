@@ -1,0 +1,40 @@
+#pragma once
+// Frame times and per-pass GPU times of a viewer session, for the panel and for
+// `aerial view --stats FILE`:
+//   {"frames": N, "median_frame_ms": ..., "p95_frame_ms": ..., "fps_median": 1000 / median,
+//    "passes": {"froxel build": median GPU ms, ...}}
+// A frame's time is wall clock from the end of the previous frame to the end of its present, so
+// it includes input, the panel and waiting; pass times are GPU timestamps (on lavapipe, the CPU
+// time of the pass). Percentiles are nearest-rank.
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "aerial/vk/gpu_timer.h"
+
+namespace aerial::viewer {
+
+// Nearest-rank percentile (p in (0, 100]) of the values; 0 for none.
+double Percentile(std::vector<double> values, double p);
+
+class FrameStats {
+ public:
+  void AddFrame(double frame_ms, const std::vector<vk::PassTime>& passes);
+
+  size_t frames() const { return frame_ms_.size(); }
+  // Over the last `window` frames (all when 0).
+  double MedianFrameMs(size_t window = 0) const;
+  // Median GPU time of each pass over the frames that ran it.
+  std::map<std::string, double> MedianPassMs() const;
+
+  std::string ToJson() const;
+  // Atomically (core/atomic_file.h).
+  void Write(const std::filesystem::path& path) const;
+
+ private:
+  std::vector<double> frame_ms_;
+  std::map<std::string, std::vector<double>> pass_ms_;
+};
+
+}  // namespace aerial::viewer

@@ -1,0 +1,35 @@
+#include "aerial/viewer/frame_stats.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+namespace aerial::viewer {
+namespace {
+
+TEST(Percentile, IsNearestRank) {
+  std::vector<double> values = {5, 1, 4, 2, 3};
+  EXPECT_EQ(Percentile(values, 50.0), 3.0);
+  EXPECT_EQ(Percentile(values, 95.0), 5.0);  // rank ceil(4.75) = 5
+  EXPECT_EQ(Percentile(values, 20.0), 1.0);
+  EXPECT_EQ(Percentile({}, 50.0), 0.0);
+}
+
+TEST(FrameStats, JsonHasTheScriptedKeys) {
+  FrameStats stats;
+  for (int i = 1; i <= 20; ++i)
+    stats.AddFrame(10.0 * i, {{"froxel build", 1.0 * i}, {"composite", 2.0}});
+  stats.AddFrame(1000.0, {{"present", 0.5}});
+  auto json = nlohmann::json::parse(stats.ToJson());
+  EXPECT_EQ(json["frames"], 21);
+  EXPECT_EQ(json["median_frame_ms"], 110.0);  // 11th of 21
+  EXPECT_EQ(json["p95_frame_ms"], 200.0);     // rank ceil(19.95) = 20
+  EXPECT_NEAR(json["fps_median"].get<double>(), 1000.0 / 110.0, 1e-12);
+  EXPECT_EQ(json["passes"]["froxel build"], 10.0);  // 10th of 20 frames that ran it
+  EXPECT_EQ(json["passes"]["composite"], 2.0);
+  EXPECT_EQ(json["passes"]["present"], 0.5);
+  EXPECT_EQ(stats.MedianFrameMs(3), 200.0);  // frames 190, 200, 1000
+}
+
+}  // namespace
+}  // namespace aerial::viewer

@@ -1,0 +1,34 @@
+#include "aerial/viewer/render_stack.h"
+
+namespace aerial::viewer {
+
+bool SameRenderOptions(const RenderOptions& a, const RenderOptions& b) {
+  return a.width == b.width && a.height == b.height && a.mode == b.mode &&
+         a.froxels.width == b.froxels.width && a.froxels.height == b.froxels.height &&
+         a.froxels.depth == b.froxels.depth && a.froxels.far_m == b.froxels.far_m;
+}
+
+void RenderStack::Install(std::unique_ptr<AtmosphereTables> tables, const RenderOptions& options) {
+  Entry& entry = entries_[tables->options().variant];
+  entry.renderer.reset();  // it refers to the old tables
+  entry.tables = std::move(tables);
+  entry.renderer = std::make_unique<Renderer>(*entry.tables, scene_, options);
+}
+
+Renderer* RenderStack::Get(LutVariant variant, const RenderOptions& options) {
+  auto it = entries_.find(variant);
+  if (it == entries_.end()) return nullptr;
+  Entry& entry = it->second;
+  if (!SameRenderOptions(entry.renderer->options(), options)) {
+    entry.renderer.reset();
+    entry.renderer = std::make_unique<Renderer>(*entry.tables, scene_, options);
+  }
+  return entry.renderer.get();
+}
+
+const AtmosphereTables* RenderStack::tables(LutVariant variant) const {
+  auto it = entries_.find(variant);
+  return it == entries_.end() ? nullptr : it->second.tables.get();
+}
+
+}  // namespace aerial::viewer

@@ -1,0 +1,39 @@
+#pragma once
+// The table sets and renderers the viewer draws with: one per table variant, the current one and,
+// for the 3D-vs-4D view, the other. Every renderer is aerial's one Renderer (render/renderer.h),
+// rebuilt when its tables or its options change: the size (a resize), the froxel grid, and the
+// aerial mode, which is a specialization constant of its pipelines. Nothing is in flight when
+// that happens: Renderer::Render and the swapchain's Present both wait for their work.
+#include <map>
+#include <memory>
+
+#include "aerial/render/renderer.h"
+
+namespace aerial::viewer {
+
+class RenderStack {
+ public:
+  // scene: its meshes go to every renderer; it must outlive the stack (which may be moved).
+  explicit RenderStack(const Scene& scene) : scene_(scene) {}
+
+  // Replaces the tables of their variant, and that variant's renderer.
+  void Install(std::unique_ptr<AtmosphereTables> tables, const RenderOptions& options);
+  // The variant's renderer, rebuilt first if its options differ; null if the variant has no
+  // tables yet. Its tables may be for an older atmosphere while new ones are being made: check
+  // renderer->tables().atmosphere() where that matters.
+  Renderer* Get(LutVariant variant, const RenderOptions& options);
+  // The variant's tables, whatever atmosphere they were made for; null if none.
+  const AtmosphereTables* tables(LutVariant variant) const;
+
+ private:
+  struct Entry {
+    std::unique_ptr<AtmosphereTables> tables;
+    std::unique_ptr<Renderer> renderer;
+  };
+  const Scene& scene_;
+  std::map<LutVariant, Entry> entries_;
+};
+
+bool SameRenderOptions(const RenderOptions& a, const RenderOptions& b);
+
+}  // namespace aerial::viewer

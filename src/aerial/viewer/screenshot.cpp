@@ -1,0 +1,24 @@
+#include "aerial/viewer/screenshot.h"
+
+#include <ctime>
+
+#include "aerial/image/image_writer.h"
+
+namespace aerial::viewer {
+
+std::string SaveScreenshots(const Renderer& renderer, double exposure,
+                            const std::filesystem::path& directory) {
+  std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  char stem[64];
+  std::strftime(stem, sizeof stem, "aerial-view-%Y%m%d-%H%M%S", &local);
+  ImageRgbF frame = renderer.ReadOutput();
+  std::filesystem::path png = directory / (std::string(stem) + ".png");
+  std::filesystem::path exr = directory / (std::string(stem) + ".exr");
+  WriteImage(png, frame, {.exposure = exposure});
+  WriteImage(exr, frame, {});
+  return "Saved " + png.string() + " and " + exr.string();
+}
+
+}  // namespace aerial::viewer

@@ -1,0 +1,363 @@
+#include "aerial/viewer/viewer.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "aerial/core/error.h"
+#include "aerial/image/image_writer.h"
+#include "aerial/viewer/display_passes.h"
+#include "aerial/viewer/frame_stats.h"
+#include "aerial/viewer/froxel_export.h"
+#include "aerial/viewer/imgui_layer.h"
+#include "aerial/viewer/input.h"
+#include "aerial/viewer/panel.h"
+#include "aerial/viewer/render_stack.h"
+#include "aerial/viewer/screenshot.h"
+#include "aerial/viewer/sun_control.h"
+#include "aerial/viewer/table_worker.h"
+#include "aerial/viewer/window.h"
+#include "aerial/vk/swapchain.h"
+
+namespace aerial::viewer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Frames the panel's FPS and frame time are the median of.
+constexpr size_t kPanelWindow = 30;
+
+LutVariant Other(LutVariant variant) {
+  return variant == LutVariant::k4D ? LutVariant::k3D : LutVariant::k4D;
+}
+
+vk::ContextCreateInfo WithWindowSupport(vk::ContextCreateInfo info) {
+  GlfwSession::AddWindowSupport(info);
+  return info;
+}
+
+const char* PassName(DebugView view) {
+  return view == DebugView::kFinal ? "present" : "debug view";
+}
+
+// The first tables, loaded (or precomputed, with the terminal's progress bar) on the viewer's own
+// context before the window opens, and their renderer at the size asked for.
+RenderStack FirstStack(const vk::Context& context, const ViewerOptions& options) {
+  RenderStack stack(options.scene);
+  LoadedTables loaded = LoadOrPrecompute(context, options.atmosphere, options.tables.at(options.variant),
+                                         options.store);
+  stack.Install(std::move(loaded.tables), options.render);
+  return stack;
+}
+
+}  // namespace
+
+// The viewer's state; Viewer's methods forward to it. Members are declared in the order they are
+// built (GLFW before the Vulkan instance that needs its extensions, the context before everything
+// made with it) and so destroyed in reverse; the worker last, so that the window closes before it
+// waits for a running precompute.
+class Viewer::Impl {
+ public:
+  explicit Impl(ViewerOptions options);
+  bool Step();
+  void Run();
+  GLFWwindow* window() const { return window_.handle(); }
+
+  TableWorker worker_;             // its own context, and nothing of the others
+  ViewSettings settings_;
+  AtmosphereKnobs applied_knobs_;  // the knobs the tables are asked for (the panel's, on release)
+  std::vector<vk::PassTime> last_passes_;
+  Renderer* shown_ = nullptr;      // the renderer of the last frame
+
+ private:
+  RenderOptions CurrentRenderOptions() const;
+  bool HasCurrentTables(LutVariant variant) const;
+  void RequestTables();
+  void AdoptFinishedTables();
+  void Resize(::vk::Extent2D extent);
+  void Steer(const FrameInput& input, double dt_s);
+  double MaxSunZenithDeg() const;
+  void FollowSunClock();
+  void Act(const PanelEvents& events, const std::vector<int>& keys, const Renderer& renderer);
+  void Say(std::string message);
+  std::vector<vk::PassTime> Draw(Renderer& primary, Renderer* other);
+  PanelInfo MakePanelInfo(const Renderer& primary) const;
+
+  ViewerOptions options_;
+  AtmosphereParameters wanted_;                // the base with the applied knobs
+  std::map<LutVariant, uint64_t> requested_;   // atmosphere hash asked of the worker, per variant
+  GlfwSession glfw_;
+  vk::ContextCreateInfo context_info_;
+  vk::Context context_;
+  RenderStack stack_;
+  Window window_;
+  vk::Swapchain swapchain_;
+  ImGuiLayer imgui_;
+  InputReader input_;
+  DisplayPasses display_;
+  vk::GpuTimer timer_;
+  FrameStats stats_;
+  std::string message_;
+  int frames_ = 0;
+  Clock::time_point last_frame_end_;
+};
+
+Viewer::Impl::Impl(ViewerOptions options)
+    : worker_(options.context),
+      options_(std::move(options)),
+      wanted_(options_.atmosphere),
+      context_info_(WithWindowSupport(options_.context)),
+      context_(context_info_),
+      stack_(FirstStack(context_, options_)),
+      window_(context_, options_.render.width, options_.render.height, "aerial view: " + options_.scene.name),
+      swapchain_(context_, window_.surface(), window_.framebuffer_extent()),
+      imgui_(context_, window_.handle(), swapchain_),
+      input_(window_.handle()),
+      display_(context_, swapchain_.extent().width, swapchain_.extent().height,
+               DisplayFormat(context_, swapchain_.format())),
+      timer_(context_) {
+  settings_.variant = options_.variant;
+  settings_.knobs = applied_knobs_ = ReadKnobs(options_.atmosphere);
+  settings_.froxels = options_.render.froxels;
+  settings_.mode = options_.render.mode;
+  settings_.exposure = float(options_.exposure);
+  requested_[options_.variant] = options_.atmosphere.Hash();
+  last_frame_end_ = Clock::now();
+}
+
+RenderOptions Viewer::Impl::CurrentRenderOptions() const {
+  return {.width = int(swapchain_.extent().width),
+          .height = int(swapchain_.extent().height),
+          .froxels = settings_.froxels,
+          .mode = settings_.mode};
+}
+
+bool Viewer::Impl::HasCurrentTables(LutVariant variant) const {
+  const AtmosphereTables* tables = stack_.tables(variant);
+  return tables && tables->atmosphere().Hash() == wanted_.Hash();
+}
+
+// Asks the worker for what the settings need and the stack lacks: the shown variant, and for the
+// difference view the other one too. Edited atmospheres are not written to the cache, so that
+// exploring does not fill it with a 32 MiB file per slider release.
+void Viewer::Impl::RequestTables() {
+  wanted_ = ApplyKnobs(options_.atmosphere, applied_knobs_);
+  std::vector<LutVariant> needed = {settings_.variant};
+  if (settings_.view == DebugView::kDifference) needed.push_back(Other(settings_.variant));
+  for (LutVariant variant : needed) {
+    if (HasCurrentTables(variant) || requested_[variant] == wanted_.Hash()) continue;
+    requested_[variant] = wanted_.Hash();  // asked once, whatever comes of it
+    auto options = options_.tables.find(variant);
+    if (options == options_.tables.end()) {
+      Say(ToString(variant) + " tables are not available with the command line's table sizes");
+      continue;
+    }
+    TableStoreOptions store = options_.store;
+    store.write_cache = wanted_.Hash() == options_.atmosphere.Hash();
+    worker_.Submit({.slot = int(variant), .atmosphere = wanted_, .options = options->second, .store = store});
+  }
+}
+
+// Uploads the worker's finished tables into this context; results for an atmosphere the panel has
+// since left are dropped.
+void Viewer::Impl::AdoptFinishedTables() {
+  while (std::optional<TableResult> result = worker_.TakeResult()) {
+    const TableRequest& request = result->request;
+    if (!result->tables) {
+      Say("tables: " + result->error);
+      continue;
+    }
+    if (request.atmosphere.Hash() != wanted_.Hash()) continue;
+    auto tables = std::make_unique<AtmosphereTables>(context_, request.atmosphere, request.options);
+    tables->Upload(*result->tables);
+    stack_.Install(std::move(tables), CurrentRenderOptions());
+  }
+}
+
+void Viewer::Impl::Resize(::vk::Extent2D extent) {
+  swapchain_.Recreate(extent);
+  imgui_.OnSwapchainRecreated(swapchain_);
+  display_.Resize(swapchain_.extent().width, swapchain_.extent().height);
+}
+
+// The camera follows the path while it lasts, then the fly controls; the sun follows the keys and
+// the mouse, within the zenith angles the tables cover.
+void Viewer::Impl::Steer(const FrameInput& input, double dt_s) {
+  Scene& scene = options_.scene;
+  double path_time = frames_ * kFrameStepS;
+  if (options_.camera_path && path_time <= options_.camera_path->duration_s()) {
+    options_.camera_path->Apply(path_time, scene.camera);
+  } else {
+    Fly(scene.camera, input.fly, dt_s, options_.atmosphere.bottom_radius_m);
+  }
+  SteerSun(scene.sun, input.sun_d_azimuth_deg, input.sun_d_zenith_deg, MaxSunZenithDeg());
+}
+
+// The lowest sun the tables cover: mu_s_min (parameters.h).
+double Viewer::Impl::MaxSunZenithDeg() const {
+  return std::acos(options_.atmosphere.mu_s_min) * 180.0 / std::numbers::pi;
+}
+
+void Viewer::Impl::Say(std::string message) {
+  std::printf("%s\n", message.c_str());
+  std::fflush(stdout);
+  message_ = std::move(message);
+}
+
+void Viewer::Impl::FollowSunClock() {
+  options_.scene.sun = SunAtSolarTime(settings_.solar_time_h, settings_.latitude_deg, settings_.declination_deg);
+  SteerSun(options_.scene.sun, 0.0, 0.0, MaxSunZenithDeg());
+}
+
+// Screenshots and exports of the frame just rendered.
+void Viewer::Impl::Act(const PanelEvents& events, const std::vector<int>& keys, const Renderer& renderer) {
+  bool screenshot = events.screenshot, export_vdb = events.export_vdb;
+  for (int key : keys) {
+    screenshot |= key == GLFW_KEY_F12 || key == GLFW_KEY_P;
+    export_vdb |= key == GLFW_KEY_V;
+  }
+  if (screenshot) {
+    try {
+      Say(SaveScreenshots(renderer, settings_.exposure));
+    } catch (const Error& e) {
+      Say(std::string("screenshot: ") + e.what());
+    }
+  }
+  if (export_vdb) Say(ExportFroxelsToVdb(renderer, options_.scene));
+}
+
+// The display pass for the settings' view, the blit into the swapchain and the panel over it.
+std::vector<vk::PassTime> Viewer::Impl::Draw(Renderer& primary, Renderer* other) {
+  // The difference view needs both frames; until the other variant's tables arrive, the picture.
+  DebugView view = settings_.view == DebugView::kDifference && !other ? DebugView::kFinal : settings_.view;
+  bool recorded = false;
+  auto prepare = [&](const ::vk::raii::CommandBuffer& cmd) {
+    recorded = true;
+    timer_.Reset(cmd);
+    timer_.Begin(cmd, PassName(view));
+    switch (view) {
+      case DebugView::kFinal:
+        display_.RecordToneMap(cmd, primary.output_image(), settings_.exposure);
+        break;
+      case DebugView::kRayleigh:
+      case DebugView::kMie:
+      case DebugView::kTransmittance:
+        display_.RecordTerm(cmd, primary, DisplayPasses::Term(int(view) - int(DebugView::kRayleigh)),
+                            settings_.exposure);
+        break;
+      case DebugView::kFroxelSlice:
+        display_.RecordFroxelSlice(cmd, primary.froxels(), settings_.froxel_slice, settings_.exposure);
+        break;
+      case DebugView::kDifference: {
+        bool primary_4d = primary.tables().options().variant == LutVariant::k4D;
+        const Renderer& l4 = primary_4d ? primary : *other;
+        const Renderer& l3 = primary_4d ? *other : primary;
+        display_.RecordDifference(cmd, l4.output_image(), l3.output_image(), settings_.difference_full_scale);
+        break;
+      }
+    }
+  };
+  // The display pass's time includes the blit into the swapchain image, recorded between the two.
+  auto overlay = [&](const ::vk::raii::CommandBuffer& cmd) {
+    timer_.End(cmd);
+    timer_.Begin(cmd, "panel");
+    imgui_.Record(cmd);
+    timer_.End(cmd);
+  };
+  bool presented = swapchain_.Present(display_.display(), prepare, overlay);
+  std::vector<vk::PassTime> times = recorded ? timer_.Collect() : std::vector<vk::PassTime>{};
+  if (presented) return times;
+  ::vk::Extent2D extent = window_.framebuffer_extent();
+  if (extent.width > 0 && extent.height > 0) Resize(extent);
+  return {};
+}
+
+PanelInfo Viewer::Impl::MakePanelInfo(const Renderer& primary) const {
+  const AtmosphereTables& tables = primary.tables();
+  double frame_ms = stats_.MedianFrameMs(kPanelWindow);
+  return {.fps = frame_ms > 0.0 ? 1000.0 / frame_ms : 0.0,
+          .frame_ms = frame_ms,
+          .passes = last_passes_,
+          .work = worker_.status(),
+          .tables = tables.options().Describe() +
+                    (tables.atmosphere().Hash() == wanted_.Hash() ? "" : " (previous atmosphere)"),
+          .message = message_,
+          .difference_ready = HasCurrentTables(LutVariant::k4D) && HasCurrentTables(LutVariant::k3D)};
+}
+
+// One frame: events, tables, input, panel, render, display. False once the window is closed.
+bool Viewer::Impl::Step() {
+  glfwPollEvents();
+  if (window_.should_close()) return false;
+  ::vk::Extent2D extent = window_.framebuffer_extent();
+  if (extent.width == 0 || extent.height == 0) {  // minimized: nothing to draw into
+    glfwWaitEvents();
+    last_frame_end_ = Clock::now();
+    return true;
+  }
+  if (extent != swapchain_.extent()) Resize(extent);
+  AdoptFinishedTables();
+  double dt_s = std::chrono::duration<double>(Clock::now() - last_frame_end_).count();
+
+  imgui_.NewFrame();
+  Steer(input_.Read(dt_s, imgui_.wants_mouse(), imgui_.wants_keyboard()), dt_s);
+  RenderOptions render = CurrentRenderOptions();
+  Renderer* primary = stack_.Get(settings_.variant, render);
+  if (!primary) primary = stack_.Get(Other(settings_.variant), render);
+  PanelEvents events = DrawPanel(settings_, MakePanelInfo(*primary));
+  imgui_.EndFrame();
+  if (events.sun_clock_moved) FollowSunClock();
+  if (events.tables_changed) applied_knobs_ = settings_.knobs;
+  RequestTables();
+
+  std::vector<vk::PassTime> passes = primary->Render(options_.scene);
+  shown_ = primary;
+  std::vector<int> keys = window_.TakeKeyPresses();
+  if (imgui_.wants_keyboard()) keys.clear();
+  Act(events, keys, *primary);
+  Renderer* other = nullptr;
+  if (settings_.view == DebugView::kDifference && HasCurrentTables(LutVariant::k4D) &&
+      HasCurrentTables(LutVariant::k3D) && HasCurrentTables(settings_.variant)) {
+    other = stack_.Get(Other(settings_.variant), render);
+    for (vk::PassTime pass : other->Render(options_.scene)) {
+      pass.pass += " (" + ToString(other->tables().options().variant) + ")";
+      passes.push_back(pass);
+    }
+  }
+  std::vector<vk::PassTime> display = Draw(*primary, other);
+  if (display.empty()) return true;  // not presented: the swapchain was out of date
+  passes.insert(passes.end(), display.begin(), display.end());
+  Clock::time_point now = Clock::now();
+  stats_.AddFrame(std::chrono::duration<double, std::milli>(now - last_frame_end_).count(), passes);
+  last_frame_end_ = now;
+  last_passes_ = std::move(passes);
+  ++frames_;
+  return true;
+}
+
+void Viewer::Impl::Run() {
+  while ((options_.frames == 0 || frames_ < options_.frames) && Step()) {
+  }
+  if (!options_.screenshot.empty() && shown_)
+    WriteImage(options_.screenshot, shown_->ReadOutput(), {.exposure = settings_.exposure});
+  if (!options_.stats.empty()) stats_.Write(options_.stats);
+}
+
+Viewer::Viewer(ViewerOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
+Viewer::~Viewer() = default;
+void Viewer::Run() { impl_->Run(); }
+bool Viewer::Step() { return impl_->Step(); }
+ViewSettings& Viewer::settings() { return impl_->settings_; }
+void Viewer::ApplyTableSettings() { impl_->applied_knobs_ = impl_->settings_.knobs; }
+const Renderer& Viewer::renderer() const { return *impl_->shown_; }
+const std::vector<vk::PassTime>& Viewer::last_passes() const { return impl_->last_passes_; }
+TableWorkStatus Viewer::table_work() const { return impl_->worker_.status(); }
+GLFWwindow* Viewer::window() const { return impl_->window(); }
+
+void RunViewer(ViewerOptions options) { Viewer(std::move(options)).Run(); }
+
+}  // namespace aerial::viewer

@@ -1,0 +1,75 @@
+// `aerial view` as scripts run it, under Xvfb: it opens its window, renders, exits 0 without a
+// validation message (CTest sets AERIAL_VALIDATION=1), writes its screenshot and statistics, and
+// its frame is `aerial render`'s for the same scene, camera and size. (Bad paths, which fail
+// before the window opens, are in cli_test.cpp.)
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "aerial/image/image_writer.h"
+#include "command_run.h"
+
+namespace aerial::testing {
+namespace {
+
+const std::string kXvfb = "xvfb-run -a -s \"-screen 0 640x480x24\"";
+const std::string kSmall = " --small-tables --quiet --width 160 --height 90";
+
+std::filesystem::path ScratchDir() {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() / ("aerial-view-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+double RelativeRmse(const ImageRgbF& a, const ImageRgbF& b) {
+  double squared = 0.0, reference = 0.0;
+  for (size_t i = 0; i < a.rgba.size(); ++i) {
+    if (i % 4 == 3) continue;
+    squared += (a.rgba[i] - b.rgba[i]) * double(a.rgba[i] - b.rgba[i]);
+    reference += double(b.rgba[i]) * b.rgba[i];
+  }
+  return std::sqrt(squared / reference);
+}
+
+TEST(ViewCli, RendersFramesLikeRenderAndWritesStats) {
+  std::filesystem::path dir = ScratchDir();
+  CommandRun view = RunAerial("view" + kSmall + " --frames 5 --screenshot " + (dir / "view.exr").string() +
+                                  " --stats " + (dir / "stats.json").string() + " --camera-path " +
+                                  AERIAL_SOURCE_DIR "/examples/paths/corridor.toml",
+                              kXvfb);
+  ASSERT_EQ(view.exit_code, 0) << view.err;
+  EXPECT_EQ(view.err.find("validation"), std::string::npos) << view.err;
+
+  // The path starts at the noon preset's view; the 5th frame is at path time 4/30 s, 2/15 of the
+  // way to the second keyframe. Render that same pose.
+  CommandRun render = RunAerial("render" + kSmall + " --camera-position-m 0,80,46 --camera-yaw-deg 1.0666666666666667" +
+                                " --camera-pitch-deg 3.7333333333333334 --out " + (dir / "render.exr").string());
+  ASSERT_EQ(render.exit_code, 0) << render.err;
+  ImageRgbF a = ReadExr(dir / "view.exr"), b = ReadExr(dir / "render.exr");
+  ASSERT_EQ(a.width, 160);
+  ASSERT_EQ(a.height, 90);
+  ASSERT_EQ(b.width, a.width);
+  // The same Renderer, tables, scene, camera and size: the frames are the same computation, so
+  // only the last float bits of the camera pose (interpolated vs parsed) may differ.
+  double rmse = RelativeRmse(a, b);
+  std::printf("view vs render: relative RMSE %.2e\n", rmse);
+  EXPECT_LT(rmse, 1e-4);
+
+  std::ifstream file(dir / "stats.json");
+  auto stats = nlohmann::json::parse(file);
+  EXPECT_EQ(stats["frames"], 5);
+  for (const char* key : {"median_frame_ms", "p95_frame_ms", "fps_median"})
+    EXPECT_GT(stats[key].get<double>(), 0.0) << key;
+  for (const char* pass : {"froxel build", "opaque raster", "composite", "present", "panel"})
+    EXPECT_TRUE(stats["passes"].contains(pass)) << pass;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace aerial::testing

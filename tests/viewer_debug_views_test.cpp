@@ -1,0 +1,119 @@
+// The viewer's debug views of a real frame (noon preset, small tables): each view shows what it
+// says, with numbers the physics fixes, and the final view is the PNG encoder's output.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "aerial/image/tone_map.h"
+#include "aerial/scene/presets.h"
+#include "aerial/viewer/display_passes.h"
+#include "gpu_fixture.h"
+
+namespace aerial::testing {
+namespace {
+
+constexpr int kWidth = 160, kHeight = 90;
+constexpr float kExposure = 8.0f;
+
+struct Display {
+  std::vector<uint8_t> rgba;
+  const uint8_t* pixel(int x, int y) const { return rgba.data() + 4 * (size_t(y) * kWidth + x); }
+};
+
+class ViewerDebugViews : public GpuTest {
+ protected:
+  // One frame for the whole suite: building the scene and the renderer is most of the time.
+  static void SetUpTestSuite() {
+    scene_ = new Scene(BuildPreset("noon", SmallTables().atmosphere().bottom_radius_m));
+    renderer_ = new Renderer(SmallTables(), *scene_, RenderOptions{.width = kWidth, .height = kHeight});
+    renderer_->Render(*scene_);
+    passes_ = new viewer::DisplayPasses(SharedContext(), kWidth, kHeight);
+  }
+  static void TearDownTestSuite() {
+    delete passes_;
+    delete renderer_;
+    delete scene_;
+  }
+
+  template <typename Record>
+  Display Show(Record record) {
+    vk::Context& context = SharedContext();
+    context.Submit([&](const ::vk::raii::CommandBuffer& cmd) {
+      record(cmd);
+      vk::FullBarrier(cmd);
+    });
+    std::vector<std::byte> bytes = ReadBack(passes_->display());
+    Display display{std::vector<uint8_t>(bytes.size())};
+    std::memcpy(display.rgba.data(), bytes.data(), bytes.size());
+    return display;
+  }
+  Display ShowTerm(viewer::DisplayPasses::Term term) {
+    return Show([&](const auto& cmd) { passes_->RecordTerm(cmd, *renderer_, term, kExposure); });
+  }
+
+  static inline Scene* scene_ = nullptr;
+  static inline Renderer* renderer_ = nullptr;
+  static inline viewer::DisplayPasses* passes_ = nullptr;
+};
+
+// What the window shows is what a PNG of the frame holds: the same curve (viewer_present_test.cpp)
+// on the renderer's own output image, at most one 8-bit step apart where rounding straddles.
+TEST_F(ViewerDebugViews, FinalViewIsThePngOfTheFrame) {
+  Display shown = Show([&](const auto& cmd) { passes_->RecordToneMap(cmd, renderer_->output_image(), kExposure); });
+  std::vector<uint8_t> png = ToneMapToSrgb8(renderer_->ReadOutput(), {.exposure = kExposure});
+  int worst = 0;
+  for (size_t i = 0; i < png.size(); ++i)
+    if (i % 4 != 3) worst = std::max(worst, std::abs(int(shown.rgba[i]) - int(png[i])));
+  EXPECT_LE(worst, 1);
+}
+
+// Rayleigh scattering goes as lambda^-4 (440 nm scatters 5.7x more than 680 nm), Mie scattering is
+// grey in this atmosphere: in the sky straight above the image center the Rayleigh view is blue
+// and the Mie view close to grey.
+TEST_F(ViewerDebugViews, RayleighIsBlueAndMieIsGrey) {
+  Display rayleigh = ShowTerm(viewer::DisplayPasses::Term::kRayleigh);
+  Display mie = ShowTerm(viewer::DisplayPasses::Term::kMie);
+  const uint8_t* r = rayleigh.pixel(kWidth / 2, 2);
+  const uint8_t* m = mie.pixel(kWidth / 2, 2);
+  EXPECT_GT(r[2], r[0] + 40) << "Rayleigh view, top center: " << int(r[0]) << " " << int(r[2]);
+  EXPECT_GT(m[0], 0);
+  // Only the transmittance on the way colors Mie inscatter; its channels stay within 1.5x.
+  EXPECT_LT(std::max(m[0], m[2]), 1.5 * std::min(m[0], m[2])) << int(m[0]) << " " << int(m[2]);
+}
+
+// Transmittance: 1 at the camera, lower with distance, lowest in blue. The froxel slice view's
+// transmittance column is ~1 in the first slice (12 m at 32 slices to 128 km) and lower in the last
+// (128 km); the sky's whole-ray transmittance is below a near landmark's.
+TEST_F(ViewerDebugViews, TransmittanceFallsWithDistance) {
+  Display first = Show([&](const auto& cmd) { passes_->RecordFroxelSlice(cmd, renderer_->froxels(), 0, kExposure); });
+  Display last = Show([&](const auto& cmd) { passes_->RecordFroxelSlice(cmd, renderer_->froxels(), 31, kExposure); });
+  const uint8_t* near = first.pixel(kWidth * 5 / 6, kHeight / 2);  // the third column
+  const uint8_t* far = last.pixel(kWidth * 5 / 6, kHeight / 2);
+  EXPECT_GE(near[2], 254);
+  EXPECT_LT(far[2], near[2] - 30) << int(far[2]);
+  EXPECT_LT(far[2], far[0]) << "blue is attenuated most";
+
+  Display transmittance = ShowTerm(viewer::DisplayPasses::Term::kTransmittance);
+  ImageRgbF surface = renderer_->ReadSurface();
+  int sky = -1, ground = -1;  // a pixel of sky, and one of geometry within 2 km
+  for (int i = 0; i < kWidth * kHeight; ++i) {
+    float distance = surface.rgba[4 * i + 3];
+    if (distance < 0.0f && sky < 0) sky = i;
+    if (distance > 0.0f && distance < 2000.0f && ground < 0) ground = i;
+  }
+  ASSERT_GE(sky, 0);
+  ASSERT_GE(ground, 0);
+  EXPECT_LT(transmittance.rgba[4 * sky + 2], transmittance.rgba[4 * ground + 2]);
+}
+
+// A frame against itself differs nowhere: the heat map is black.
+TEST_F(ViewerDebugViews, DifferenceOfAFrameWithItselfIsBlack) {
+  const vk::Image& output = renderer_->output_image();
+  Display same = Show([&](const auto& cmd) { passes_->RecordDifference(cmd, output, output, 0.05f); });
+  int lit = 0;
+  for (size_t i = 0; i < same.rgba.size(); ++i) lit += i % 4 != 3 && same.rgba[i] != 0;
+  EXPECT_EQ(lit, 0);
+}
+
+}  // namespace
+}  // namespace aerial::testing

@@ -1,0 +1,108 @@
+// The viewer's GPU tone map (shaders/include/tone_map.glsl) against the CPU's
+// (src/aerial/image/tone_map.cpp), which writes the PNGs: the window must show what a PNG of the
+// same frame holds.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "aerial/image/tone_map.h"
+#include "aerial/viewer/display_passes.h"
+#include "gpu_fixture.h"
+
+namespace aerial::testing {
+namespace {
+
+constexpr uint32_t kRampSize = 1024;
+
+// Radiance from 0 to 12 (past the curve's saturation near 7.24), cubed so that the sRGB toe
+// (below 0.0031308) and the ACES knee get most of the samples; each channel a different slice.
+ImageRgbF Ramp(double scale) {
+  ImageRgbF ramp{int(kRampSize), 1, std::vector<float>(kRampSize * 4)};
+  for (uint32_t i = 0; i < kRampSize; ++i) {
+    double s = double(i) / (kRampSize - 1);
+    ramp.rgba[4 * i + 0] = float(scale * 12.0 * s * s * s);
+    ramp.rgba[4 * i + 1] = float(scale * 1.0 * s * s);
+    ramp.rgba[4 * i + 2] = float(scale * 0.01 * s);
+    ramp.rgba[4 * i + 3] = 1.0f;
+  }
+  return ramp;
+}
+
+vk::Image Upload(const ImageRgbF& image) {
+  vk::Context& context = SharedContext();
+  vk::Image gpu(context, {.extent = {uint32_t(image.width), uint32_t(image.height), 1}});
+  vk::Buffer staging(context, {.size = gpu.byte_size(), .usage = ::vk::BufferUsageFlagBits::eTransferSrc,
+                               .host_visible = true});
+  staging.Write(std::as_bytes(std::span(image.rgba)));
+  context.Submit([&](const auto& cmd) {
+    gpu.InitializeLayout(cmd);
+    gpu.CopyFromBuffer(cmd, staging);
+    vk::FullBarrier(cmd);
+  });
+  return gpu;
+}
+
+class ViewerToneMap : public GpuTest {};
+
+// Before rounding to 8 bits. The GPU evaluates the same expressions in float32 against the CPU's
+// double: the rational ACES fit and pow(x, 1/2.4) each lose a few ulps (~1e-6 relative), so 1e-3
+// (a quarter of an 8-bit step) leaves three orders of magnitude of margin and still catches any
+// change of a constant or of a branch point.
+TEST_F(ViewerToneMap, GpuMatchesCpuBeforeRounding) {
+  vk::Context& context = SharedContext();
+  ImageRgbF ramp = Ramp(1.0);
+  vk::Image input = Upload(ramp);
+  vk::Image output(context, {.extent = {kRampSize, 1, 1}});
+  ::vk::raii::Sampler sampler = vk::CreateLinearClampSampler(context);
+  vk::ComputePipeline pipeline(context, "test/tone_map.comp", {vk::kSampled, vk::kStorageImage});
+  context.Submit([&](const auto& cmd) {
+    output.InitializeLayout(cmd);
+    pipeline.Dispatch(cmd, {vk::SampledImageSlot{&input, *sampler}, vk::StorageImageSlot{&output}},
+                      {kRampSize, 1, 1}, {64, 1, 1});
+    vk::FullBarrier(cmd);
+  });
+  std::vector<std::byte> bytes = ReadBack(output);
+  std::vector<float> gpu(kRampSize * 4);
+  std::memcpy(gpu.data(), bytes.data(), bytes.size());
+  double worst = 0.0;
+  for (size_t i = 0; i < kRampSize; ++i)
+    for (size_t c = 0; c < 3; ++c)
+      worst = std::max(worst, std::abs(gpu[4 * i + c] - ToneMapChannel(ramp.rgba[4 * i + c])));
+  std::printf("GPU vs CPU tone map, worst difference before rounding: %.2e\n", worst);
+  EXPECT_LT(worst, 1e-3);
+}
+
+// The viewer's present pass, exposure included, against the PNG encoder: equal bytes except where
+// the two sit on either side of a rounding boundary (1 step, given the 1e-3 above). In both display
+// formats: the swapchain's is often BGRA, and the shader's store must land in the right channels.
+TEST_F(ViewerToneMap, PresentPassMatchesPngBytes) {
+  vk::Context& context = SharedContext();
+  const float exposure = 8.0f;
+  ImageRgbF ramp = Ramp(1.0 / exposure);
+  vk::Image input = Upload(ramp);
+  std::vector<uint8_t> png = ToneMapToSrgb8(ramp, {.exposure = exposure});
+  for (auto [format, red] : {std::pair{::vk::Format::eR8G8B8A8Unorm, 0}, std::pair{::vk::Format::eB8G8R8A8Unorm, 2}}) {
+    viewer::DisplayPasses passes(context, kRampSize, 1, format);
+    context.Submit([&](const auto& cmd) {
+      passes.RecordToneMap(cmd, input, exposure);
+      vk::FullBarrier(cmd);
+    });
+    std::vector<std::byte> display = ReadBack(passes.display());
+    int worst = 0, differing = 0;
+    for (size_t i = 0; i < kRampSize; ++i) {
+      for (int c = 0; c < 3; ++c) {
+        int stored = c == 1 ? 1 : (c == 0 ? red : 2 - red);  // where channel c sits in the format
+        int d = std::abs(int(std::to_integer<uint8_t>(display[4 * i + stored])) - int(png[4 * i + c]));
+        worst = std::max(worst, d);
+        differing += d > 0;
+      }
+    }
+    std::printf("present pass (%s) vs PNG bytes: %d of %u differ, by at most %d\n",
+                ::vk::to_string(format).c_str(), differing, 3 * kRampSize, worst);
+    EXPECT_LE(worst, 1) << ::vk::to_string(format);
+  }
+}
+
+}  // namespace
+}  // namespace aerial::testing

@@ -1,0 +1,105 @@
+// The viewer's live loop, driven frame by frame under a private X server: a resize recreates the
+// swapchain and the renderer, frame settings rebuild the renderer, an atmosphere change is
+// computed on the worker while frames keep coming, the 3D/4D switch and every debug view run, and
+// the validation layers (on, as everywhere in the tests) report nothing.
+#include <gtest/gtest.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <functional>
+
+#include "aerial/scene/presets.h"
+#include "aerial/viewer/viewer.h"
+#include "xvfb_display.h"
+
+namespace aerial::testing {
+namespace {
+
+// Steps until done() or max_steps frames; returns how many frames it took (max_steps + 1: never).
+int StepUntil(viewer::Viewer& viewer, const std::function<bool()>& done, int max_steps,
+              int* busy_frames = nullptr) {
+  for (int step = 0; step < max_steps; ++step) {
+    if (done()) return step;
+    if (busy_frames) *busy_frames += viewer.table_work().busy;
+    EXPECT_TRUE(viewer.Step());
+  }
+  return done() ? max_steps : max_steps + 1;
+}
+
+bool HasPass(const viewer::Viewer& viewer, const std::string& fragment) {
+  for (const vk::PassTime& pass : viewer.last_passes())
+    if (pass.pass.find(fragment) != std::string::npos) return true;
+  return false;
+}
+
+TEST(ViewerSession, ResizesSwitchesAndRecomputesWithoutValidationMessages) {
+  XvfbDisplay x;
+  ASSERT_FALSE(x.display().empty()) << x.error();
+  const int messages_before = vk::Context::ValidationMessageCount();
+  {
+    viewer::ViewerOptions options;
+    options.atmosphere = AtmosphereParameters::Earth();
+    options.tables = {{LutVariant::k4D, PrecomputeOptions::Small(LutVariant::k4D)},
+                      {LutVariant::k3D, PrecomputeOptions::Small(LutVariant::k3D)}};
+    options.store = {.quiet = true};
+    options.context = {.validation = true};
+    options.render = {.width = 160, .height = 90};
+    options.scene = BuildPreset("noon", options.atmosphere.bottom_radius_m);
+    viewer::Viewer viewer(options);
+    ASSERT_TRUE(viewer.Step());
+    EXPECT_EQ(viewer.renderer().options().width, 160);
+    EXPECT_TRUE(HasPass(viewer, "present"));
+
+    glfwSetWindowSize(viewer.window(), 200, 120);
+    EXPECT_LE(StepUntil(viewer, [&] { return viewer.renderer().options().width == 200 &&
+                                             viewer.renderer().options().height == 120; }, 20), 20);
+
+    viewer.settings().mode = AerialMode::kPerPixel;
+    viewer.settings().froxels = FroxelGrid::Parse("16x16x16");
+    ASSERT_TRUE(viewer.Step());
+    EXPECT_EQ(viewer.renderer().options().mode, AerialMode::kPerPixel);
+    EXPECT_FALSE(HasPass(viewer, "froxel build"));
+    viewer.settings().mode = AerialMode::kFroxel;
+    for (viewer::DebugView view : {viewer::DebugView::kRayleigh, viewer::DebugView::kMie,
+                                   viewer::DebugView::kTransmittance, viewer::DebugView::kFroxelSlice}) {
+      viewer.settings().view = view;
+      ASSERT_TRUE(viewer.Step());
+      EXPECT_TRUE(HasPass(viewer, "debug view"));
+      EXPECT_EQ(viewer.renderer().froxels().grid().depth, 16);
+    }
+
+    // The difference view asks the worker for the other variant's tables and shows the picture
+    // until they come.
+    viewer.settings().view = viewer::DebugView::kDifference;
+    ASSERT_TRUE(viewer.Step());
+    EXPECT_LE(StepUntil(viewer, [&] { return HasPass(viewer, "(3d)"); }, 2000), 2000);
+
+    // A precompute of the small tables takes hundreds of milliseconds, a 200x120 frame tens: the
+    // window must keep drawing while the worker computes.
+    viewer.settings().view = viewer::DebugView::kFinal;
+    viewer.settings().knobs.mie_g = 0.7;
+    viewer.ApplyTableSettings();
+    int busy_frames = 0;
+    EXPECT_LE(StepUntil(viewer, [&] { return viewer.renderer().tables().atmosphere().mie_phase_g == 0.7; },
+                        2000, &busy_frames),
+              2000);
+    std::printf("frames drawn while the worker computed: %d\n", busy_frames);
+    EXPECT_GT(busy_frames, 0);
+
+    // The 3D tables of the first atmosphere (from the difference view) show until those of the
+    // new one arrive.
+    viewer.settings().variant = LutVariant::k3D;
+    ASSERT_TRUE(viewer.Step());
+    EXPECT_EQ(viewer.renderer().tables().options().variant, LutVariant::k3D);
+    EXPECT_LE(StepUntil(viewer, [&] { return viewer.renderer().tables().atmosphere().mie_phase_g == 0.7; }, 2000),
+              2000);
+
+    viewer.settings().view = viewer::DebugView::kDifference;
+    EXPECT_LE(StepUntil(viewer, [&] { return HasPass(viewer, "(4d)"); }, 2000), 2000);
+  }
+  EXPECT_EQ(vk::Context::ValidationMessageCount(), messages_before);
+}
+
+}  // namespace
+}  // namespace aerial::testing

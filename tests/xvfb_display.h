@@ -1,0 +1,28 @@
+#pragma once
+// A private X server for tests that open windows in this process: Xvfb on a display number it
+// picks itself (-displayfd), DISPLAY pointed at it while the object lives. Destroy every window
+// (and terminate GLFW) before it.
+#include <string>
+
+#include <sys/types.h>
+
+namespace aerial::testing {
+
+class XvfbDisplay {
+ public:
+  XvfbDisplay();
+  ~XvfbDisplay();
+  XvfbDisplay(const XvfbDisplay&) = delete;
+  XvfbDisplay& operator=(const XvfbDisplay&) = delete;
+
+  // ":N", or empty if Xvfb could not be started (error() says why).
+  const std::string& display() const { return display_; }
+  const std::string& error() const { return error_; }
+
+ private:
+  pid_t pid_ = -1;
+  std::string display_, error_, previous_display_;
+  bool had_display_ = false;
+};
+
+}  // namespace aerial::testing
