@@ -2,42 +2,16 @@
 // non-zero exit, and the probe prints the JSON keys other tools script against.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "run_aerial.h"
+
 namespace aerial::testing {
 namespace {
-
-struct CommandRun {
-  int exit_code;
-  std::string out;
-  std::string err;
-};
-
-CommandRun RunAerial(const std::string& arguments) {
-  std::string err_file = std::filesystem::temp_directory_path() / ("aerial-cli-" + std::to_string(::getpid()));
-  std::string command = std::string(AERIAL_EXE) + " " + arguments + " 2>" + err_file;
-  CommandRun run{};
-  FILE* pipe = ::popen(command.c_str(), "r");
-  std::array<char, 4096> buffer;
-  size_t n;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) run.out.append(buffer.data(), n);
-  int status = ::pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream err(err_file);
-  run.err.assign(std::istreambuf_iterator<char>(err), {});
-  std::filesystem::remove(err_file);
-  return run;
-}
 
 const std::string kProbe =
     "probe --small-tables --quiet --altitude-m 1 --view-zenith-deg 45 --sun-zenith-deg 30 --azimuth-deg 0";
@@ -96,6 +70,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"render --out /nonexistent-aerial-dir/x.png", "/nonexistent-aerial-dir"},
         BadInput{"render --out /tmp/aerial-cli-test.jpg", "--out"},
         BadInput{"render --scene " AERIAL_SOURCE_DIR "/tests/data/bad_scene.toml --out /tmp/aerial-cli-test.png", "camera.fov_deg"},
+        BadInput{"bench --quick --out /proc/aerial-bench-out", "/proc/aerial-bench-out"},
         BadInput{"no-such-command", "no-such-command"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return "case" + std::to_string(info.index); });
 

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "report.h"
+#include "aerial/bench/precompute_report.h"
 
 namespace aerial::bench {
 
@@ -21,9 +21,12 @@ struct VariantRatios {
 };
 VariantRatios CompareVariants(const BenchResult& lut4d, const BenchResult& lut3d);
 
+// One variant's precompute: its ReportDoc plus "variant", "precompute_ms" (median GPU time),
+// "wall_ms" and "pass_median_ms".
+nlohmann::json VariantJson(const BenchResult& result);
+
 void PrintComparison(const BenchResult& lut4d, const BenchResult& lut3d, std::FILE* out);
-// Both variants: "variants" lists one entry each (its ReportDoc plus "variant", "precompute_ms",
-// "wall_ms" and "pass_median_ms"), "ratios" holds CompareVariants.
+// Both variants: "variants" lists the VariantJson of each, "ratios" holds CompareVariants.
 std::string ComparisonJson(const BenchResult& lut4d, const BenchResult& lut3d);
 
 }  // namespace aerial::bench

@@ -1,8 +1,8 @@
-#include "comparison.h"
+#include "aerial/bench/variant_comparison.h"
 
 #include <nlohmann/json.hpp>
 
-#include "pass_stats.h"
+#include "aerial/bench/pass_stats.h"
 
 namespace aerial::bench {
 namespace {
@@ -27,7 +27,9 @@ double MedianOf(const std::vector<std::pair<std::string, double>>& medians, cons
 
 std::string Identity(const std::string& pass) { return pass; }
 
-nlohmann::json Entry(const BenchResult& r) {
+}  // namespace
+
+nlohmann::json VariantJson(const BenchResult& r) {
   nlohmann::json entry = ReportDoc(r);
   entry["variant"] = ToString(r.options.variant);
   entry["precompute_ms"] = MedianGpu(r);
@@ -37,8 +39,6 @@ nlohmann::json Entry(const BenchResult& r) {
   entry["pass_median_ms"] = passes;
   return entry;
 }
-
-}  // namespace
 
 std::string ComparisonKind(const std::string& pass) {
   std::string kind = PassKind(pass);
@@ -91,7 +91,7 @@ std::string ComparisonJson(const BenchResult& lut4d, const BenchResult& lut3d) {
       {"lavapipe_threads", {{"count", lut4d.threads}, {"source", lut4d.threads_source}}},
       {"warmup", lut4d.warmup},
       {"runs", lut4d.runs.size()},
-      {"variants", nlohmann::json::array({Entry(lut4d), Entry(lut3d)})},
+      {"variants", nlohmann::json::array({VariantJson(lut4d), VariantJson(lut3d)})},
       {"ratios", {{"description", "3d / 4d of the medians"},
                   {"precompute_ms", ratios.gpu},
                   {"wall_ms", ratios.wall},
