@@ -2,17 +2,15 @@
 // property the command exists to show (the 3D tables are smaller than the 4D ones), from one run
 // (about 45 s with the validation layers on).
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "run_aerial.h"
 
@@ -31,15 +29,17 @@ std::string ReadText(const fs::path& path) {
 void CheckFilesAndStructure(const fs::path& dir, const nlohmann::json& results) {
   for (const char* file : {"report.md", "results.json", "results.csv", "precompute-vs-memory.png"})
     EXPECT_TRUE(fs::is_regular_file(dir / file)) << file;
-  for (const char* view : kViews) EXPECT_TRUE(fs::is_regular_file(dir / (std::string(view) + ".png"))) << view;
+  for (const char* view : kViews)
+    EXPECT_TRUE(fs::is_regular_file(dir / (std::string(view) + ".png"))) << view;
 
-  std::string report = "\n" + ReadText(dir / "report.md");  // every heading starts a line
-  for (const char* heading : {"# aerial bench", "## Machine", "## Summary", "## Speed and size", "## Accuracy",
-                              "### What is compared", "### 3D tables against 4D tables",
-                              "### Against the CPU reference, froxel path",
-                              "### Against the CPU reference, per-pixel path",
-                              "### Froxel path against per-pixel path", "### Reference sampling", "## Figures"})
-    EXPECT_NE(report.find(std::string("\n") + heading), std::string::npos) << heading;
+  std::string report = ReadText(dir / "report.md");
+  report.insert(report.begin(), '\n');  // every heading starts a line
+  for (const char* heading :
+       {"# aerial bench", "## Machine", "## Summary", "## Speed and size", "## Accuracy",
+        "### What is compared", "### 3D tables against 4D tables",
+        "### Against the CPU reference, froxel path", "### Against the CPU reference, per-pixel path",
+        "### Froxel path against per-pixel path", "### Reference sampling", "## Figures"})
+    EXPECT_NE(report.find('\n' + std::string(heading)), std::string::npos) << heading;
   EXPECT_NE(report.find("aerial bench --quick"), std::string::npos) << "the command is in the report";
 
   std::string csv = ReadText(dir / "results.csv");
@@ -62,10 +62,11 @@ void CheckFilesAndStructure(const fs::path& dir, const nlohmann::json& results) 
 
 void CheckNumbersArePositiveAndFinite(const nlohmann::json& results) {
   for (const auto& entry : results["results"]) {
-    for (const char* key : {"table_bytes", "precompute_ms", "frame_ms", "per_pixel_frame_ms", "froxel_build_ms",
-                            "composite_ms"}) {
+    for (const char* key : {"table_bytes", "precompute_ms", "frame_ms", "per_pixel_frame_ms",
+                            "froxel_build_ms", "composite_ms"}) {
       double v = entry[key].get<double>();
-      EXPECT_TRUE(std::isfinite(v) && v > 0.0) << entry["variant"] << " " << entry["tier"] << " " << key << " = " << v;
+      EXPECT_TRUE(std::isfinite(v) && v > 0.0)
+          << entry["variant"] << " " << entry["tier"] << " " << key << " = " << v;
     }
     for (const auto& [view, comparisons] : entry["accuracy"].items())
       for (const auto& [name, classes] : comparisons.items())

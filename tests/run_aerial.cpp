@@ -12,7 +12,8 @@
 namespace aerial::testing {
 
 CommandRun RunAerial(const std::string& arguments) {
-  std::string err_file = std::filesystem::temp_directory_path() / ("aerial-cli-" + std::to_string(::getpid()));
+  std::string err_file =
+      std::filesystem::temp_directory_path() / ("aerial-cli-" + std::to_string(::getpid()));
   std::string command = std::string(AERIAL_EXE) + " " + arguments + " 2>" + err_file;
   CommandRun run{};
   FILE* pipe = ::popen(command.c_str(), "r");

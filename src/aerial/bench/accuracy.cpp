@@ -26,7 +26,8 @@ VariantImages Render(Renderer& froxel, Renderer& per_pixel, const Scene& scene) 
   return {froxel.ReadOutput(), per_pixel.ReadOutput(), per_pixel.ReadSurface()};
 }
 
-ClassErrors AgainstReference(const ViewReference& reference, const ImageRgbF& rendered, const ImageRgbF& surface) {
+ClassErrors AgainstReference(const ViewReference& reference, const ImageRgbF& rendered,
+                             const ImageRgbF& surface) {
   return {CompareSamples(ReferenceSamples(reference, rendered, surface, PixelClass::kSky)),
           CompareSamples(ReferenceSamples(reference, rendered, surface, PixelClass::kOpaque))};
 }
@@ -55,7 +56,8 @@ std::vector<ViewReference> SampleViews(const AtmosphereTables& tables, Scene& sc
                                        const std::function<void()>& on_pixel) {
   const AtmosphereParameters& atmosphere = tables.atmosphere();
   reference::Reference model(atmosphere);
-  ReferenceSampling sampling{.columns = plan.reference_columns, .rows = plan.reference_rows,
+  ReferenceSampling sampling{.columns = plan.reference_columns,
+                             .rows = plan.reference_rows,
                              .orders = tables.options().orders,
                              .monte_carlo = {.paths_per_query = plan.reference_paths}};
   std::unique_ptr<Renderer> renderer = ImageRenderer(tables, scene, plan, AerialMode::kFroxel);
@@ -88,8 +90,8 @@ void MeasureAccuracy(VariantResult& lut4d, const AtmosphereTables& tables4d, Var
     lut3d.accuracy.push_back(Measure(view, images3d, references.at(v)));
     lut3d.accuracy.back().vs_4d = AgainstImage(images3d.per_pixel, images4d.per_pixel, images4d.surface);
     if (figures)
-      figures->push_back({view, std::move(images3d.per_pixel), std::move(images4d.per_pixel),
-                          std::move(images4d.surface)});
+      figures->push_back(
+          {view, std::move(images3d.per_pixel), std::move(images4d.per_pixel), std::move(images4d.surface)});
     if (on_view) on_view();
   }
 }

@@ -5,7 +5,8 @@
 namespace aerial::bench {
 
 PrecomputeOptions TableTier::Options(LutVariant variant) const {
-  PrecomputeOptions options = small_base ? PrecomputeOptions::Small(variant) : PrecomputeOptions::Default(variant);
+  PrecomputeOptions options =
+      small_base ? PrecomputeOptions::Small(variant) : PrecomputeOptions::Default(variant);
   options.SetScatteringSize(r, mu, mu_s, variant == LutVariant::k4D ? nu : 1);
   options.Validate();
   return options;
@@ -20,7 +21,8 @@ BenchPlan BenchPlan::Full() {
   BenchPlan plan;
   // Small(), the defaults, and the defaults with twice the mu_s resolution: the axis that limits
   // accuracy near sunset (README, "Accuracy against the CPU reference").
-  plan.tiers = {{"small", true, 16, 64, 16, 8}, {"default", false, 32, 128, 32, 8},
+  plan.tiers = {{"small", true, 16, 64, 16, 8},
+                {"default", false, 32, 128, 32, 8},
                 {"fine-mu_s", false, 32, 128, 64, 8}};
   plan.figure_tier = 1;
   plan.views = PresetNames();

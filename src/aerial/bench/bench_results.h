@@ -57,6 +57,9 @@ struct MachineInfo {
   std::string device, date, command, version;
   int cores = 0;
   bool validation = false;  // validation layers on: every time is inflated
+  // /proc/loadavg's 1, 5 and 15 minute averages before and after the run: other work on a shared
+  // machine slows every measurement (the 3D/4D ratios suffer less than the times).
+  std::string load_before, load_after;
 };
 
 struct BenchResults {

@@ -9,6 +9,7 @@
 namespace aerial::bench {
 
 // quiet: no progress bar (it is only drawn on a terminal anyway).
-BenchResults RunBench(const BenchPlan& plan, const vk::Context& context, const MachineInfo& machine, bool quiet);
+BenchResults RunBench(const BenchPlan& plan, const vk::Context& context, const MachineInfo& machine,
+                      bool quiet);
 
 }  // namespace aerial::bench

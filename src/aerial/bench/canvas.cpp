@@ -41,7 +41,9 @@ void Canvas::Line(double x0, double y0, double x1, double y1, double width, Rgb 
     }
 }
 
-void Canvas::Disc(double cx, double cy, double radius, Rgb color) { Line(cx, cy, cx, cy, 2.0 * radius, color); }
+void Canvas::Disc(double cx, double cy, double radius, Rgb color) {
+  Line(cx, cy, cx, cy, 2.0 * radius, color);
+}
 
 void Canvas::Blit(int x, int y, const std::vector<uint8_t>& rgba8, int w, int h) {
   for (int j = 0; j < h; ++j)

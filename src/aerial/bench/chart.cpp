@@ -22,7 +22,8 @@ std::string FormatNumber(double v) {
 struct LogAxis {
   double lo, hi;  // log10 of the ends
   LogAxis(double min, double max)
-      : lo(std::floor(std::log10(min))), hi(std::max(std::ceil(std::log10(max)), std::floor(std::log10(min)) + 1)) {}
+      : lo(std::floor(std::log10(min))),
+        hi(std::max(std::ceil(std::log10(max)), std::floor(std::log10(min)) + 1)) {}
   double Fraction(double v) const { return (std::log10(v) - lo) / (hi - lo); }
   // 1, 2 and 5 times each power of ten in range; only the powers when there are many decades.
   std::vector<double> Ticks() const {
@@ -50,7 +51,8 @@ Canvas LogLogChart(const ChartSpec& spec, int width, int height) {
   for (const ChartSeries& s : spec.series)
     for (auto [x, y] : s.points) {
       if (!(x > 0.0 && y > 0.0 && std::isfinite(x) && std::isfinite(y)))
-        throw Error("chart point", FormatNumber(x) + ", " + FormatNumber(y), "positive and finite", spec.title);
+        throw Error("chart point", FormatNumber(x) + ", " + FormatNumber(y), "positive and finite",
+                    spec.title);
       x_min = std::min(x_min, x), x_max = std::max(x_max, x);
       y_min = std::min(y_min, y), y_max = std::max(y_max, y);
     }
@@ -59,8 +61,11 @@ Canvas LogLogChart(const ChartSpec& spec, int width, int height) {
 
   int text_h = Canvas::TextHeight(kTextScale);
   int y_label_w = 0;
-  for (double v : y_axis.Ticks()) y_label_w = std::max(y_label_w, Canvas::TextWidth(FormatNumber(v), kTextScale));
-  int left = kMargin + y_label_w + kTick + 4, right = width - kMargin;
+  for (double v : y_axis.Ticks())
+    y_label_w = std::max(y_label_w, Canvas::TextWidth(FormatNumber(v), kTextScale));
+  // The last x label is centered on the right end of the axis: leave room for its half.
+  int x_label_half = Canvas::TextWidth(FormatNumber(std::pow(10.0, x_axis.hi)), kTextScale) / 2;
+  int left = kMargin + y_label_w + kTick + 4, right = width - kMargin - x_label_half;
   int top = kMargin + 2 * (text_h + 10), bottom = height - kMargin - 2 * text_h - 16;
   auto px = [&](double x) { return left + x_axis.Fraction(x) * (right - left); };
   auto py = [&](double y) { return bottom - y_axis.Fraction(y) * (bottom - top); };
@@ -82,7 +87,8 @@ Canvas LogLogChart(const ChartSpec& spec, int width, int height) {
     canvas.FillRect(left, y, right - left, 1, kGrid);
     canvas.FillRect(left - kTick, y, kTick, 1, kInk);
     std::string label = FormatNumber(v);
-    canvas.Text(left - kTick - 4 - Canvas::TextWidth(label, kTextScale), y - text_h / 2, label, kTextScale, kInk);
+    canvas.Text(left - kTick - 4 - Canvas::TextWidth(label, kTextScale), y - text_h / 2, label, kTextScale,
+                kInk);
   }
   canvas.FillRect(left, top, 1, bottom - top + 1, kInk);
   canvas.FillRect(left, bottom, right - left, 1, kInk);
@@ -91,13 +97,15 @@ Canvas LogLogChart(const ChartSpec& spec, int width, int height) {
     std::vector<std::array<double, 2>> points = s.points;
     std::sort(points.begin(), points.end());
     for (size_t i = 1; i < points.size(); ++i)
-      canvas.Line(px(points[i - 1][0]), py(points[i - 1][1]), px(points[i][0]), py(points[i][1]), 2.0, s.color);
+      canvas.Line(px(points[i - 1][0]), py(points[i - 1][1]), px(points[i][0]), py(points[i][1]), 2.0,
+                  s.color);
     for (auto [x, y] : points) Marker(canvas, s, px(x), py(y));
   }
 
   // Legend, top left inside the plot.
   int legend_w = 0;
-  for (const ChartSeries& s : spec.series) legend_w = std::max(legend_w, Canvas::TextWidth(s.label, kTextScale));
+  for (const ChartSeries& s : spec.series)
+    legend_w = std::max(legend_w, Canvas::TextWidth(s.label, kTextScale));
   int row_h = text_h + 8, box_w = legend_w + 44, box_h = int(spec.series.size()) * row_h + 8;
   int box_x = left + 10, box_y = top + 10;
   canvas.FillRect(box_x, box_y, box_w, box_h, kInk);

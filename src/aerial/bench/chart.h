@@ -12,7 +12,7 @@ namespace aerial::bench {
 struct ChartSeries {
   std::string label;
   Rgb color;
-  bool square_markers = false;  // else round
+  bool square_markers = false;                // else round
   std::vector<std::array<double, 2>> points;  // (x, y), both > 0
 };
 

@@ -2,8 +2,8 @@
 
 namespace aerial::bench {
 
-std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<Renderer*>& renderers,
-                                                  const Scene& scene, int warmup, int frames,
+std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<Renderer*>& renderers, const Scene& scene,
+                                                  int warmup, int frames,
                                                   const std::function<void()>& on_frame) {
   std::vector<std::vector<RunResult>> measured(renderers.size());
   for (int i = 0; i < warmup + frames; ++i)

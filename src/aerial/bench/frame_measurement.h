@@ -16,8 +16,8 @@ inline constexpr const char* kCompositePass = "composite";
 
 // frames[r] holds renderer r's measured frames, in order. on_frame (may be empty) is called after
 // every frame, warm-up included.
-std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<Renderer*>& renderers,
-                                                  const Scene& scene, int warmup, int frames,
+std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<Renderer*>& renderers, const Scene& scene,
+                                                  int warmup, int frames,
                                                   const std::function<void()>& on_frame);
 
 }  // namespace aerial::bench

@@ -38,9 +38,11 @@ std::string FormatPercent(double fraction) {
   return text;
 }
 
-void DrawHeatMap(Canvas& canvas, int x, int y, const std::vector<float>& values, int w, int h, double scale_max) {
+void DrawHeatMap(Canvas& canvas, int x, int y, const std::vector<float>& values, int w, int h,
+                 double scale_max) {
   for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i) canvas.Set(x + i, y + j, HeatColor(values[size_t(j) * size_t(w) + size_t(i)] / scale_max));
+    for (int i = 0; i < w; ++i)
+      canvas.Set(x + i, y + j, HeatColor(values[size_t(j) * size_t(w) + size_t(i)] / scale_max));
 }
 
 namespace {
@@ -50,7 +52,8 @@ constexpr int kTickLength = 4, kLabelGap = 6;
 
 int ColorBarWidth(int w, double scale_max, int text_scale) {
   int label = 0;
-  for (double t : kTicks) label = std::max(label, Canvas::TextWidth(FormatPercent(t * scale_max), text_scale));
+  for (double t : kTicks)
+    label = std::max(label, Canvas::TextWidth(FormatPercent(t * scale_max), text_scale));
   return w + kLabelGap + label;
 }
 
@@ -60,7 +63,8 @@ void DrawColorBar(Canvas& canvas, int x, int y, int w, int h, double scale_max, 
   for (double t : kTicks) {
     int tick_y = y + int(std::lround((1.0 - t) * (h - 1)));
     canvas.FillRect(x + w, tick_y, kTickLength, 1, ink);
-    canvas.Text(x + w + kLabelGap, tick_y - Canvas::TextHeight(text_scale) / 2, FormatPercent(t * scale_max), text_scale, ink);
+    canvas.Text(x + w + kLabelGap, tick_y - Canvas::TextHeight(text_scale) / 2, FormatPercent(t * scale_max),
+                text_scale, ink);
   }
 }
 

@@ -19,7 +19,8 @@ double NiceCeiling(double value);
 std::string FormatPercent(double fraction);
 
 // values (w x h, row-major) drawn at (x, y), each value / scale_max through HeatColor.
-void DrawHeatMap(Canvas& canvas, int x, int y, const std::vector<float>& values, int w, int h, double scale_max);
+void DrawHeatMap(Canvas& canvas, int x, int y, const std::vector<float>& values, int w, int h,
+                 double scale_max);
 
 // A vertical colour bar of w x h pixels at (x, y), scale_max at the top and 0 at the bottom, with
 // three labelled ticks (0, half, max) on its right.

@@ -13,8 +13,7 @@ namespace {
 // timed on the wall clock.
 RunResult RunOnce(PrecomputeMeasurement& measurement, const vk::Context& context,
                   const AtmosphereParameters& atmosphere) {
-  measurement.tables =
-      std::make_unique<AtmosphereTables>(context, atmosphere, measurement.result.options);
+  measurement.tables = std::make_unique<AtmosphereTables>(context, atmosphere, measurement.result.options);
   measurement.result.table_bytes = measurement.tables->table_bytes();
   auto start = std::chrono::steady_clock::now();
   RunResult run{.passes = Precompute(*measurement.tables, nullptr)};
@@ -47,8 +46,10 @@ std::vector<PrecomputeMeasurement> MeasurePrecompute(const vk::Context& context,
     for (PrecomputeMeasurement& m : measurements) {
       RunResult run = RunOnce(m, context, atmosphere);
       if (on_run) on_run(m.result, run, warming, warming ? i + 1 : i - warmup + 1);
-      if (i == 0 && warming) m.result.cold = std::move(run);
-      else if (!warming) m.result.runs.push_back(std::move(run));
+      if (i == 0 && warming)
+        m.result.cold = std::move(run);
+      else if (!warming)
+        m.result.runs.push_back(std::move(run));
     }
   }
   return measurements;

@@ -48,8 +48,8 @@ Spectrum GroundRadiance(const reference::Reference& model, const glm::dvec3& gro
 }  // namespace
 
 glm::dvec3 PixelRay(const FrameUniforms& frame, int x, int y) {
-  glm::dvec4 clip((x + 0.5) / frame.viewport[0] * 2.0 - 1.0, (y + 0.5) / frame.viewport[1] * 2.0 - 1.0,
-                  0.5, 1.0);
+  glm::dvec4 clip((x + 0.5) / frame.viewport[0] * 2.0 - 1.0, (y + 0.5) / frame.viewport[1] * 2.0 - 1.0, 0.5,
+                  1.0);
   glm::dmat4 inverse;  // column-major, as std140 stores it
   for (int column = 0; column < 4; ++column)
     for (int row = 0; row < 4; ++row) inverse[column][row] = frame.inverse_view_projection[column * 4 + row];
@@ -94,11 +94,13 @@ ViewReference SampleReference(const reference::Reference& model, const FrameUnif
     }
     // Sky: to the ground or the top of the atmosphere; opaque: to the surface.
     double distance = pixel.sky ? model.DistanceToBoundary(r, mu) : double(surface.pixel(x, y)[3]);
-    reference::Estimate s = model.ComputeRadiance(r, mu, mu_s, nu, sampling.orders, distance, sampling.monte_carlo);
+    reference::Estimate s =
+        model.ComputeRadiance(r, mu, mu_s, nu, sampling.orders, distance, sampling.monte_carlo);
     pixel.inscatter = s.value;
     pixel.transmittance = model.Transmittance(r, mu, distance);
     Spectrum ground_error{};
-    if (pixel.sky && ground) pixel.ground = GroundRadiance(model, camera + distance * ray, sun, sampling, &ground_error);
+    if (pixel.sky && ground)
+      pixel.ground = GroundRadiance(model, camera + distance * ray, sun, sampling, &ground_error);
     for (int c = 0; c < 3; ++c)
       pixel.std_error[c] = std::hypot(s.std_error[c], pixel.transmittance[c] * ground_error[c]);
     view.pixels.push_back(pixel);

@@ -12,9 +12,8 @@
 // Pixels that see the sun disc are left out: the disc is not a scattering quantity.
 #include <array>
 #include <functional>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "aerial/bench/image_metrics.h"
 #include "aerial/image/image.h"

@@ -43,7 +43,7 @@ TEST(PixelRay, CenterFollowsTheCamera) {
 TEST(GridPixels, CellCentersInRowOrder) {
   auto pixels = GridPixels(320, 180, 8, 5);
   ASSERT_EQ(pixels.size(), 40u);
-  EXPECT_EQ(pixels.front(), (std::array<int, 2>{20, 18}));   // (0.5 * 320 / 8, 0.5 * 180 / 5)
+  EXPECT_EQ(pixels.front(), (std::array<int, 2>{20, 18}));  // (0.5 * 320 / 8, 0.5 * 180 / 5)
   EXPECT_EQ(pixels[1], (std::array<int, 2>{60, 18}));
   EXPECT_EQ(pixels.back(), (std::array<int, 2>{300, 162}));
 }

@@ -16,8 +16,8 @@ namespace {
 
 nlohmann::json ErrorJson(const ErrorStats& e) {
   if (e.pixels == 0) return {{"pixels", 0}, {"rel_rmse", nullptr}, {"rel_max", nullptr}};
-  return {{"pixels", e.pixels}, {"rel_rmse", e.rel_rmse}, {"rel_max", e.rel_max},
-          {"max_at", {e.max_x, e.max_y}}};
+  return {
+      {"pixels", e.pixels}, {"rel_rmse", e.rel_rmse}, {"rel_max", e.rel_max}, {"max_at", {e.max_x, e.max_y}}};
 }
 
 nlohmann::json ResolutionJson(const TableResolution& r) {
@@ -80,20 +80,27 @@ nlohmann::json ResultsJson(const BenchResults& b) {
   doc["date"] = b.machine.date;
   doc["version"] = b.machine.version;
   doc["seconds"] = b.seconds;
-  doc["machine"] = {{"device", b.machine.device}, {"cores", b.machine.cores},
-                    {"validation_layers", b.machine.validation}};
+  doc["machine"] = {{"device", b.machine.device},
+                    {"cores", b.machine.cores},
+                    {"validation_layers", b.machine.validation},
+                    {"load_average_before", b.machine.load_before},
+                    {"load_average_after", b.machine.load_after}};
   if (!b.results.empty())
     doc["machine"]["lavapipe_threads"] = {{"count", b.results[0].precompute.threads},
                                           {"source", b.results[0].precompute.threads_source}};
-  doc["settings"] = {
-      {"frame_size", {plan.frame_width, plan.frame_height}}, {"frame_warmup", plan.frame_warmup},
-      {"frames", plan.frames}, {"frame_scene", "built-in default scene, preset noon"},
-      {"precompute_warmup", plan.precompute_warmup}, {"precompute_runs", plan.precompute_runs},
-      {"image_size", {plan.image_width, plan.image_height}},
-      {"accuracy_scene", "built-in default scene without its transparent meshes"},
-      {"views", plan.views}, {"reference_grid", {plan.reference_columns, plan.reference_rows}},
-      {"reference_paths_per_query", plan.reference_paths}, {"error_definition", kErrorDefinition},
-      {"times", "medians of GPU timestamps, ms"}};
+  doc["settings"] = {{"frame_size", {plan.frame_width, plan.frame_height}},
+                     {"frame_warmup", plan.frame_warmup},
+                     {"frames", plan.frames},
+                     {"frame_scene", "built-in default scene, preset noon"},
+                     {"precompute_warmup", plan.precompute_warmup},
+                     {"precompute_runs", plan.precompute_runs},
+                     {"image_size", {plan.image_width, plan.image_height}},
+                     {"accuracy_scene", "built-in default scene without its transparent meshes"},
+                     {"views", plan.views},
+                     {"reference_grid", {plan.reference_columns, plan.reference_rows}},
+                     {"reference_paths_per_query", plan.reference_paths},
+                     {"error_definition", kErrorDefinition},
+                     {"times", "medians of GPU timestamps, ms"}};
   doc["results"] = nlohmann::json::array();
   for (const VariantResult& r : b.results) doc["results"].push_back(EntryJson(r));
   doc["ratios_3d_over_4d"] = nlohmann::json::array();
@@ -103,16 +110,19 @@ nlohmann::json ResultsJson(const BenchResults& b) {
     VariantRatios ratios = CompareVariants(lut4d.precompute, lut3d.precompute);
     nlohmann::json kinds = nlohmann::json::object();
     for (const auto& [kind, ratio] : ratios.kinds) kinds[kind] = ratio;
-    doc["ratios_3d_over_4d"].push_back({{"tier", tier.name},
-                                        {"table_bytes", ratios.memory},
-                                        {"precompute_ms", ratios.gpu},
-                                        {"precompute_kinds", kinds},
-                                        {"frame_ms", lut3d.FrameMs() / lut4d.FrameMs()},
-                                        {"per_pixel_frame_ms", lut3d.PerPixelFrameMs() / lut4d.PerPixelFrameMs()}});
+    doc["ratios_3d_over_4d"].push_back(
+        {{"tier", tier.name},
+         {"table_bytes", ratios.memory},
+         {"precompute_ms", ratios.gpu},
+         {"precompute_kinds", kinds},
+         {"frame_ms", lut3d.FrameMs() / lut4d.FrameMs()},
+         {"per_pixel_frame_ms", lut3d.PerPixelFrameMs() / lut4d.PerPixelFrameMs()}});
   }
   doc["reference"] = nlohmann::json::array();
   for (const ReferenceSummary& s : b.references)
-    doc["reference"].push_back({{"view", s.view}, {"sky_pixels", s.sky_pixels}, {"opaque_pixels", s.opaque_pixels},
+    doc["reference"].push_back({{"view", s.view},
+                                {"sky_pixels", s.sky_pixels},
+                                {"opaque_pixels", s.opaque_pixels},
                                 {"sun_pixels_left_out", s.sun_pixels},
                                 {"median_relative_std_error", s.median_relative_std_error}});
   return doc;
@@ -124,16 +134,17 @@ std::string ResultsCsv(const BenchResults& b) {
          "froxel_build_ms,composite_ms,view,comparison,pixels,pixel_count,rel_rmse,rel_max\n";
   for (const VariantResult& r : b.results) {
     std::string head = ToString(r.variant()) + "," + r.tier + "," +
-                       ScatteringSize(r.precompute.options.resolution) + "," + std::to_string(r.precompute.table_bytes) +
-                       "," + CsvNumber(r.PrecomputeMs()) + "," + CsvNumber(r.FrameMs()) + "," +
-                       CsvNumber(r.PerPixelFrameMs()) + "," + CsvNumber(r.FroxelBuildMs()) + "," +
-                       CsvNumber(r.CompositeMs());
+                       ScatteringSize(r.precompute.options.resolution) + "," +
+                       std::to_string(r.precompute.table_bytes) + "," + CsvNumber(r.PrecomputeMs()) + "," +
+                       CsvNumber(r.FrameMs()) + "," + CsvNumber(r.PerPixelFrameMs()) + "," +
+                       CsvNumber(r.FroxelBuildMs()) + "," + CsvNumber(r.CompositeMs());
     for (const ViewAccuracy& view : r.accuracy)
       for (const auto& [name, errors] : NamedComparisons(view))
         for (PixelClass pixels : {PixelClass::kSky, PixelClass::kOpaque}) {
           const ErrorStats& e = pixels == PixelClass::kSky ? errors->sky : errors->opaque;
           csv << head << "," << view.view << "," << name << "," << ToString(pixels) << "," << e.pixels << ","
-              << (e.pixels ? CsvNumber(e.rel_rmse) : "") << "," << (e.pixels ? CsvNumber(e.rel_max) : "") << "\n";
+              << (e.pixels ? CsvNumber(e.rel_rmse) : "") << "," << (e.pixels ? CsvNumber(e.rel_max) : "")
+              << "\n";
         }
   }
   return csv.str();

@@ -6,9 +6,8 @@
 //     view; beside it the settings, the machine, the 3D/4D ratios and the reference sampling.
 //   results.csv: one row per variant, tier, view, comparison and pixel class (tidy data): the
 //     entry's sizes and times repeated on each of its rows, then the error figures.
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "aerial/bench/bench_results.h"
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <thread>
 
@@ -43,14 +44,27 @@ std::string UtcNow() {
   return text;
 }
 
+// The first three fields of /proc/loadavg, or "unknown".
+std::string LoadAverage() {
+  std::ifstream in("/proc/loadavg");
+  std::string one, five, fifteen;
+  if (!(in >> one >> five >> fifteen)) return "unknown";
+  return one + " " + five + " " + fifteen;
+}
+
 void RunBenchCommand(const BenchCommandOptions& options) {
   bench::CheckOutputDirectory(options.out);
   bench::BenchPlan plan = options.quick ? bench::BenchPlan::Quick() : bench::BenchPlan::Full();
   vk::Context context(vk::ContextCreateInfo{.device_name = options.device, .validation = options.validation});
-  bench::MachineInfo machine{.device = context.device_name(), .date = UtcNow(), .command = options.Command(),
-                             .version = AERIAL_VERSION, .cores = int(std::thread::hardware_concurrency()),
-                             .validation = context.validation_enabled()};
+  bench::MachineInfo machine{.device = context.device_name(),
+                             .date = UtcNow(),
+                             .command = options.Command(),
+                             .version = AERIAL_VERSION,
+                             .cores = int(std::thread::hardware_concurrency()),
+                             .validation = context.validation_enabled(),
+                             .load_before = LoadAverage()};
   bench::BenchResults results = bench::RunBench(plan, context, machine, options.quiet);
+  results.machine.load_after = LoadAverage();
   bench::WriteBenchOutputs(options.out, results);
   std::printf("aerial bench: %s mode, %.0f s; wrote %s\n", plan.quick ? "quick" : "full", results.seconds,
               (options.out / "report.md").c_str());
@@ -65,7 +79,8 @@ void AddBenchCommand(CLI::App& app) {
   command->add_flag("--quick", options->quick,
                     "Small tables, few frames, small images, few reference pixels (under 2 minutes)");
   command->add_option("--out", options->out, "Output directory (default bench-out; created if missing)");
-  command->add_option("--device", options->device, "Vulkan device to use: part of its name (or AERIAL_DEVICE)");
+  command->add_option("--device", options->device,
+                      "Vulkan device to use: part of its name (or AERIAL_DEVICE)");
   command->add_flag("--validation", options->validation,
                     "Enable the Vulkan validation layers (or AERIAL_VALIDATION=1); inflates every time");
   command->add_flag("--quiet", options->quiet, "No progress bar");
