@@ -74,6 +74,25 @@ void SummarySection(std::ostringstream& md, const BenchResults& b) {
      << opaque_view << ").\n\n";
 }
 
+// Median precompute GPU time of each kind of pass, all orders summed.
+void PrecomputeKindsTable(std::ostringstream& md, const BenchResults& b) {
+  if (b.results.empty()) return;
+  std::vector<std::pair<std::string, double>> kinds = PassMedians(b.results[0].precompute, ComparisonKind);
+  md << "Precompute GPU time by kind of pass (ms, medians; density = incident radiance + scattering density, "
+        "multiple scattering includes accumulate, all orders summed):\n\n| tables | variant |";
+  for (const auto& kind : kinds) md << " " << kind.first << " |";
+  md << "\n|---|---|";
+  for (size_t i = 0; i < kinds.size(); ++i) md << "---|";
+  md << "\n";
+  for (const VariantResult& r : b.results) {
+    md << "| " << r.tier << " | " << ToString(r.variant()) << " |";
+    for (const auto& [kind, ms] : PassMedians(r.precompute, ComparisonKind))
+      md << " " << Format("%.1f", ms) << " |";
+    md << "\n";
+  }
+  md << "\n";
+}
+
 void SpeedSection(std::ostringstream& md, const BenchResults& b) {
   const BenchPlan& p = b.plan;
   md << "## Speed and size\n\nPrecompute: GPU time of all passes, median of " << p.precompute_runs
@@ -84,6 +103,7 @@ void SpeedSection(std::ostringstream& md, const BenchResults& b) {
      << " warm-up, the four renderers of a tier (two variants, two paths) interleaved. All times are GPU "
         "timestamps in ms.\n\n";
   md << SpeedTable(b) << "\n";
+  PrecomputeKindsTable(md, b);
   md << "3D / 4D ratios (below 1: the 3D tables are cheaper):\n\n"
      << "| tables | memory | precompute | frame, froxel path | frame, per-pixel path | precompute by kind |\n"
      << "|---|---|---|---|---|---|\n";
@@ -94,21 +114,19 @@ void SpeedSection(std::ostringstream& md, const BenchResults& b) {
     md << "| " << TierLabel(tier) << " | " << Format("%.3f", ratios.memory) << " | "
        << Format("%.3f", ratios.gpu) << " | " << Format("%.3f", lut3d.FrameMs() / lut4d.FrameMs()) << " | "
        << Format("%.3f", lut3d.PerPixelFrameMs() / lut4d.PerPixelFrameMs()) << " |";
-    for (const auto& [kind, ratio] : ratios.kinds) md << " " << kind << " " << Format("%.2f", ratio) << ";";
+    for (size_t i = 0; i < ratios.kinds.size(); ++i)
+      md << (i ? "; " : " ") << ratios.kinds[i].first << " " << Format("%.2f", ratios.kinds[i].second);
     md << " |\n";
   }
   md << "\nHow to read the times:\n\n"
-     << "- On lavapipe a command buffer runs on the CPU and the timestamps of a pass are its CPU time. The "
-        "first "
-        "precompute and the first frame of each renderer include lavapipe's JIT compilation of every "
-        "pipeline: "
-        "they are warm-up and not counted.\n"
+     << "- On lavapipe a command buffer runs on the CPU, and the timestamps around a pass measure its CPU "
+        "time. The first precompute and the first frame of each renderer include lavapipe's JIT compilation "
+        "of every pipeline: they are warm-up and not counted.\n"
      << "- lavapipe defers rasterization, so the timestamps around raster passes (opaque, composite, "
-        "transparent) do not reliably bound their work: the whole-frame time and the compute passes (froxel "
+        "transparent) do not reliably bound their work: the whole-frame times and the compute passes (froxel "
         "build, precompute passes) are the reliable figures; the composite column is indicative only.\n"
-     << "- Precompute by kind: density = incident radiance + scattering density, multiple scattering "
-        "includes "
-        "accumulate, all orders summed.\n\n";
+     << "- Other work on the machine slows every run (see the load average above); the 3D / 4D ratios, "
+        "from interleaved runs, suffer less from it than the times themselves.\n\n";
 }
 
 // One accuracy table: rows tier x view, a column per (variant or comparison, class).
@@ -132,13 +150,11 @@ void AccuracyTable(std::ostringstream& md, const BenchResults& b, const std::str
 
 void AccuracySection(std::ostringstream& md, const BenchResults& b) {
   const BenchPlan& p = b.plan;
-  md << "## Accuracy\n\n### What is compared\n\n"
-     << "- Views: the presets";
+  md << "## Accuracy\n\n### What is compared\n\n- Views: the presets";
   for (const std::string& v : p.views) md << " " << v << (&v == &p.views.back() ? "" : ",");
   md << " of the built-in scene, rendered at " << p.image_width << "x" << p.image_height
-     << " without the scene's transparent meshes, so every pixel is sky or an opaque surface. A pixel is sky "
-        "where "
-        "the opaque pass drew nothing (Renderer::ReadSurface alpha < 0).\n"
+     << " without the scene's transparent meshes, so every pixel is sky or an opaque surface. A pixel is "
+        "sky where the opaque pass drew nothing (Renderer::ReadSurface alpha < 0).\n"
      << "- Each cell is the relative RMSE / the maximum relative error over the pixels of the class: "
      << kErrorDefinition << ".\n"
      << "- **3D against 4D**: every pixel of the 3D frame against the 4D frame, both on the per-pixel path "
@@ -146,19 +162,16 @@ void AccuracySection(std::ostringstream& md, const BenchResults& b) {
      << "- **Against the CPU reference**: the double-precision reference (src/aerial/reference) on a "
      << p.reference_columns << "x" << p.reference_rows
      << " grid of pixel centers per view, each pixel's ray rebuilt from the frame's uniforms as the "
-        "composite "
-        "shaders build it. Sky pixels: the sky radiance along the whole ray, orders 1.."
+        "composite shaders build it. Sky pixels: the sky radiance along the whole ray, orders 1.."
      << (b.results.empty() ? 4 : b.results[0].precompute.options.orders)
-     << " (the tables' orders); where the ray meets the bare planet plus T albedo/pi (E_sun + E_sky) of the "
-        "ground, E_sky of one order less, as the tables hold it. Opaque pixels: aerial perspective, L = "
-        "L_surface T + "
-        "inscatter over the segment to the surface, with the renderer's own L_surface, so only aerial "
-        "perspective "
-        "is compared. Pixels that see the sun disc are left out. Orders >= 2 are Monte Carlo with "
+     << " (the tables' orders); where the ray meets the bare planet, plus T albedo/pi (E_sun + E_sky) of "
+        "the ground, E_sky of one order less, as the tables hold it. Opaque pixels: aerial perspective, "
+        "L = L_surface T + inscatter over the segment to the surface, with the renderer's own L_surface, so "
+        "only aerial perspective is compared. Pixels that see the sun disc are left out. Orders >= 2 are "
+        "Monte Carlo with "
      << p.reference_paths << " paths per query; the noise is listed below.\n"
      << "- **Froxel path against per-pixel path**: every pixel of the frame on the froxel path (froxel "
-        "volume and "
-        "sky-view table) against the same tables read per pixel.\n\n";
+        "volume and sky-view table) against the same tables read per pixel.\n\n";
   md << "### 3D tables against 4D tables (per-pixel path)\n\n";
   AccuracyTable(md, b, "3d_vs_4d", false);
   md << "### Against the CPU reference, froxel path\n\n";
@@ -167,9 +180,9 @@ void AccuracySection(std::ostringstream& md, const BenchResults& b) {
   AccuracyTable(md, b, "per_pixel_vs_reference", true);
   md << "### Froxel path against per-pixel path\n\n";
   AccuracyTable(md, b, "froxel_vs_per_pixel", true);
-  md << "### Reference sampling\n\n| view | sky pixels | opaque pixels | sun pixels left out | Monte Carlo "
-        "noise "
-        "(median relative standard error) |\n|---|---|---|---|---|\n";
+  md << "### Reference sampling\n\n"
+     << "| view | sky pixels | opaque pixels | sun pixels left out | Monte Carlo noise (median relative "
+        "standard error) |\n|---|---|---|---|---|\n";
   for (const ReferenceSummary& s : b.references)
     md << "| " << s.view << " | " << s.sky_pixels << " | " << s.opaque_pixels << " | " << s.sun_pixels
        << " | " << Percent(s.median_relative_std_error) << " |\n";
@@ -179,17 +192,13 @@ void AccuracySection(std::ostringstream& md, const BenchResults& b) {
 void FiguresSection(std::ostringstream& md, const BenchResults& b) {
   const TableTier& tier = b.plan.tiers.at(b.plan.figure_tier);
   md << "## Figures\n\nEach view at the " << TierLabel(tier)
-     << " resolution on the per-pixel path, left to right: the 3D frame and the 4D frame, tone-mapped with "
-        "one "
-        "exposure (the 4D frame's log-average luminance to mid grey), and their relative difference "
-        "|3D - 4D| / 4D per pixel (the largest channel, floor as above) as a heat map, clipped at the top of "
-        "its "
-        "colour bar (the 99th percentile, rounded up).\n\n";
+     << " resolution on the per-pixel path, left to right: the 3D frame and the 4D frame, tone-mapped "
+        "with one exposure (the 4D frame's log-average luminance to mid grey), and their relative "
+        "difference |3D - 4D| / 4D per pixel (the largest channel, floor as above) as a heat map, clipped "
+        "at the top of its colour bar (the 99th percentile, rounded up).\n\n";
   for (const std::string& view : b.plan.views) md << "![" << view << "](" << ViewFigureFile(view) << ")\n\n";
-  md << "Precompute time against table memory, every tier of both variants:\n\n![precompute time against "
-        "table "
-        "memory]("
-     << kChartFile << ")\n";
+  md << "Precompute time against table memory, every tier of both variants:\n\n"
+     << "![precompute time against table memory](" << kChartFile << ")\n";
 }
 
 }  // namespace
@@ -198,10 +207,9 @@ std::string ViewFigureFile(const std::string& view) { return view + ".png"; }
 
 std::string SpeedTable(const BenchResults& b) {
   std::ostringstream md;
-  md << "| tables | variant | scattering (r x mu x mu_s x nu) | memory (MiB) | precompute (ms, min-max) | "
-        "froxel "
-        "build | composite | frame, froxel path | frame, per-pixel path "
-        "|\n|---|---|---|---|---|---|---|---|---|\n";
+  md << "| tables | variant | scattering (r x mu x mu_s x nu) | memory (MiB) | precompute (ms, min-max) "
+        "| froxel build | composite | frame, froxel path | frame, per-pixel path |\n"
+     << "|---|---|---|---|---|---|---|---|---|\n";
   for (const TableTier& tier : b.plan.tiers)
     for (LutVariant variant : {LutVariant::k4D, LutVariant::k3D}) {
       const VariantResult& r = b.Find(tier.name, variant);
