@@ -116,6 +116,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"view --frames 0", "--frames"},
         BadInput{"view --camera-path /nonexistent-aerial-dir/path.toml", "--camera-path"},
         BadInput{"view --camera-path " AERIAL_SOURCE_DIR "/tests/data/bad_camera_path.toml", "keyframe[1].pitch_deg"},
+        BadInput{"bench --quick --out /proc/aerial-bench-out", "/proc/aerial-bench-out"},
         BadInput{"no-such-command", "no-such-command"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return "case" + std::to_string(info.index); });
 

@@ -1,9 +1,8 @@
 // aerial_bench_render: GPU time of each render pass, froxel path against per-pixel path, as
 // medians over several frames in one process. Both renderers draw the same scene (preset noon);
-// warm-up frames first (lavapipe JIT-compiles each pipeline on its first use), then the measured
-// frames alternate between the two modes so that both see the same machine noise.
+// warm-up frames first, then the measured frames alternate between the two modes
+// (aerial/bench/frame_measurement.h).
 #include <cstdio>
-#include <exception>
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,15 +10,14 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "bench_main.h"
 #include "aerial/atmosphere/parameters.h"
+#include "aerial/bench/frame_measurement.h"
 #include "aerial/core/atomic_file.h"
-#include "aerial/core/error.h"
 #include "aerial/precompute/table_store.h"
 #include "aerial/render/renderer.h"
 #include "aerial/scene/presets.h"
 #include "aerial/vk/context.h"
-#include "pass_stats.h"
+#include "bench_main.h"
 
 namespace {
 
@@ -27,6 +25,7 @@ using aerial::bench::GroupPasses;
 using aerial::bench::RunResult;
 using aerial::bench::Series;
 using aerial::bench::Stats;
+using aerial::bench::SumOfPasses;
 using aerial::bench::Summarize;
 
 // shared/design.md, "Speed": a 1280x720 full-screen pass with one 3D tap takes ~6 ms here. The
@@ -50,16 +49,10 @@ struct ModeResult {
   }
   // The aerial-perspective cost: every pass but the scene rasters.
   Series Aerial() const {
-    auto series = GroupPasses(frames, [](const std::string& pass) {
-      return pass == "froxel build" || pass == "composite" ? std::string("aerial") : std::string();
-    });
-    return {"froxel build + composite", series.at(0).ms};
+    return SumOfPasses(frames, {aerial::bench::kFroxelBuildPass, aerial::bench::kCompositePass},
+                       "froxel build + composite");
   }
-  Series Pass(const std::string& name) const {
-    for (auto& s : Passes())
-      if (s.name == name) return s;
-    throw aerial::Error("pass", name, "a pass the renderer timed", std::string(this->name) + " mode");
-  }
+  Series Pass(const std::string& name) const { return SumOfPasses(frames, {name}, name); }
 };
 
 nlohmann::json StatsJson(const Series& s) {
@@ -92,11 +85,10 @@ void Bench(const BenchOptions& cli) {
     render.mode = m.mode;
     renderers.push_back(std::make_unique<aerial::Renderer>(*loaded.tables, scene, render));
   }
-  for (int i = 0; i < cli.warmup + cli.frames; ++i)
-    for (size_t m = 0; m < modes.size(); ++m) {
-      RunResult frame{.passes = renderers[m]->Render(scene)};
-      if (i >= cli.warmup) modes[m].frames.push_back(std::move(frame));
-    }
+  std::vector<aerial::Renderer*> pointers;
+  for (auto& r : renderers) pointers.push_back(r.get());
+  auto frames = aerial::bench::MeasureFrames(pointers, scene, cli.warmup, cli.frames, {});
+  for (size_t m = 0; m < modes.size(); ++m) modes[m].frames = std::move(frames[m]);
 
   std::printf("device: %s\n%dx%d, froxels %s, %s tables, preset noon\n", context.device_name().c_str(),
               cli.width, cli.height, render.froxels.Describe().c_str(), cli.lut.c_str());

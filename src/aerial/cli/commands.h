@@ -4,6 +4,7 @@
 
 namespace aerial::cli {
 
+void AddBenchCommand(CLI::App& app);
 void AddPrecomputeCommand(CLI::App& app);
 void AddProbeCommand(CLI::App& app);
 void AddRenderCommand(CLI::App& app);

@@ -1,7 +1,5 @@
 #include "aerial/cli/common_options.h"
 
-#include <algorithm>
-
 #include "aerial/atmosphere/config.h"
 
 namespace aerial::cli {
@@ -45,16 +43,8 @@ PrecomputeOptions TableOptions::MakePrecomputeOptions() const {
     options.resolution.irradiance_r = irradiance_size[1];
   }
   if (!scattering_size.empty()) {
-    TableResolution& r = options.resolution;
-    r.scattering_r = scattering_size[0];
-    r.scattering_mu = scattering_size[1];
-    r.scattering_mu_s = scattering_size[2];
-    r.scattering_nu = scattering_size[3];
-    // The per-order tables follow: same r, mu_s and nu, half the mu (precompute_options.h).
-    options.samples.density_r = r.scattering_r;
-    options.samples.density_mu = std::max(4, (r.scattering_mu / 4) * 2);
-    options.samples.density_mu_s = r.scattering_mu_s;
-    options.samples.density_nu = r.scattering_nu;
+    options.SetScatteringSize(scattering_size[0], scattering_size[1], scattering_size[2],
+                              scattering_size[3]);
   }
   options.orders = orders;
   options.precision = half_precision ? TablePrecision::kFloat16 : TablePrecision::kFloat32;

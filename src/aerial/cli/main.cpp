@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   aerial::cli::AddRenderCommand(app);
   aerial::cli::AddExportVdbCommand(app);
   aerial::cli::AddViewCommand(app);
+  aerial::cli::AddBenchCommand(app);
   // CLI11 reports a mistyped command only as "a subcommand is required": name it instead.
   if (argc > 1 && argv[1][0] != '-') {
     std::string commands;

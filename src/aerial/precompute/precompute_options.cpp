@@ -1,5 +1,6 @@
 #include "aerial/precompute/precompute_options.h"
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -39,6 +40,17 @@ PrecomputeOptions PrecomputeOptions::Small(LutVariant variant) {
   options.samples.density_theta_down = 4;
   options.samples.density_phi = 12;
   return options;
+}
+
+void PrecomputeOptions::SetScatteringSize(int r, int mu, int mu_s, int nu) {
+  resolution.scattering_r = r;
+  resolution.scattering_mu = mu;
+  resolution.scattering_mu_s = mu_s;
+  resolution.scattering_nu = nu;
+  samples.density_r = r;
+  samples.density_mu = std::max(4, (mu / 4) * 2);  // half of mu, even
+  samples.density_mu_s = mu_s;
+  samples.density_nu = nu;
 }
 
 namespace {

@@ -58,6 +58,10 @@ struct PrecomputeOptions {
   // Small tables for quick tests; same shape, roughly 1/16 of the texels.
   static PrecomputeOptions Small(LutVariant variant = LutVariant::k4D);
 
+  // Sets the scattering tables' size; the per-order density and multiple scattering tables follow
+  // (same r, mu_s and nu, half the mu: see SampleCounts). Validate() checks the result.
+  void SetScatteringSize(int r, int mu, int mu_s, int nu);
+
   // Throws aerial::Error naming the field, value and allowed range.
   void Validate() const;
   uint64_t Hash() const;

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "aerial/precompute/precompute_options.h"
-#include "pass_stats.h"
+#include "aerial/bench/pass_stats.h"
 
 namespace aerial::bench {
 

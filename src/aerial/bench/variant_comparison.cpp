@@ -1,8 +1,8 @@
-#include "comparison.h"
+#include "aerial/bench/variant_comparison.h"
 
 #include <nlohmann/json.hpp>
 
-#include "pass_stats.h"
+#include "aerial/bench/pass_stats.h"
 
 namespace aerial::bench {
 namespace {
@@ -10,14 +10,6 @@ namespace {
 double MiB(size_t bytes) { return double(bytes) / (1 << 20); }
 double MedianGpu(const BenchResult& r) { return Summarize(GpuTotals(r.runs)).median; }
 double MedianWall(const BenchResult& r) { return Summarize(WallTotals(r.runs)).median; }
-
-// Median ms of each pass (or kind, by key), in pass order.
-std::vector<std::pair<std::string, double>> Medians(
-    const BenchResult& r, const std::function<std::string(const std::string&)>& key) {
-  std::vector<std::pair<std::string, double>> medians;
-  for (const auto& s : GroupPasses(r.runs, key)) medians.emplace_back(s.name, Summarize(s.ms).median);
-  return medians;
-}
 
 double MedianOf(const std::vector<std::pair<std::string, double>>& medians, const std::string& name) {
   for (const auto& [n, ms] : medians)
@@ -27,18 +19,25 @@ double MedianOf(const std::vector<std::pair<std::string, double>>& medians, cons
 
 std::string Identity(const std::string& pass) { return pass; }
 
-nlohmann::json Entry(const BenchResult& r) {
+}  // namespace
+
+std::vector<std::pair<std::string, double>> PassMedians(
+    const BenchResult& r, const std::function<std::string(const std::string&)>& key) {
+  std::vector<std::pair<std::string, double>> medians;
+  for (const auto& s : GroupPasses(r.runs, key)) medians.emplace_back(s.name, Summarize(s.ms).median);
+  return medians;
+}
+
+nlohmann::json VariantJson(const BenchResult& r) {
   nlohmann::json entry = ReportDoc(r);
   entry["variant"] = ToString(r.options.variant);
   entry["precompute_ms"] = MedianGpu(r);
   entry["wall_ms"] = MedianWall(r);
   nlohmann::json passes = nlohmann::json::object();
-  for (const auto& [name, ms] : Medians(r, Identity)) passes[name] = ms;
+  for (const auto& [name, ms] : PassMedians(r, Identity)) passes[name] = ms;
   entry["pass_median_ms"] = passes;
   return entry;
 }
-
-}  // namespace
 
 std::string ComparisonKind(const std::string& pass) {
   std::string kind = PassKind(pass);
@@ -51,8 +50,8 @@ VariantRatios CompareVariants(const BenchResult& lut4d, const BenchResult& lut3d
   VariantRatios ratios{.gpu = MedianGpu(lut3d) / MedianGpu(lut4d),
                        .wall = MedianWall(lut3d) / MedianWall(lut4d),
                        .memory = double(lut3d.table_bytes) / double(lut4d.table_bytes)};
-  std::vector<std::pair<std::string, double>> kinds3d = Medians(lut3d, ComparisonKind);
-  for (const auto& [kind, ms4d] : Medians(lut4d, ComparisonKind))
+  std::vector<std::pair<std::string, double>> kinds3d = PassMedians(lut3d, ComparisonKind);
+  for (const auto& [kind, ms4d] : PassMedians(lut4d, ComparisonKind))
     ratios.kinds.emplace_back(kind, MedianOf(kinds3d, kind) / ms4d);
   return ratios;
 }
@@ -67,8 +66,8 @@ void PrintComparison(const BenchResult& lut4d, const BenchResult& lut3d, std::FI
                  MedianGpu(*r), MedianWall(*r), MiB(r->table_bytes));
   std::fprintf(out, "  %-28s %12.3f %12.3f %12.3f\n", "ratio 3d / 4d", ratios.gpu, ratios.wall, ratios.memory);
   std::fprintf(out, "\n  %-28s %12s %12s %12s\n", "GPU time per kind", "4d ms", "3d ms", "3d / 4d");
-  std::vector<std::pair<std::string, double>> kinds4d = Medians(lut4d, ComparisonKind);
-  std::vector<std::pair<std::string, double>> kinds3d = Medians(lut3d, ComparisonKind);
+  std::vector<std::pair<std::string, double>> kinds4d = PassMedians(lut4d, ComparisonKind);
+  std::vector<std::pair<std::string, double>> kinds3d = PassMedians(lut3d, ComparisonKind);
   for (const auto& [kind, ratio] : ratios.kinds)
     std::fprintf(out, "  %-28s %12.1f %12.1f %12.3f\n", kind.c_str(), MedianOf(kinds4d, kind),
                  MedianOf(kinds3d, kind), ratio);
@@ -91,7 +90,7 @@ std::string ComparisonJson(const BenchResult& lut4d, const BenchResult& lut3d) {
       {"lavapipe_threads", {{"count", lut4d.threads}, {"source", lut4d.threads_source}}},
       {"warmup", lut4d.warmup},
       {"runs", lut4d.runs.size()},
-      {"variants", nlohmann::json::array({Entry(lut4d), Entry(lut3d)})},
+      {"variants", nlohmann::json::array({VariantJson(lut4d), VariantJson(lut3d)})},
       {"ratios", {{"description", "3d / 4d of the medians"},
                   {"precompute_ms", ratios.gpu},
                   {"wall_ms", ratios.wall},

@@ -1,5 +1,5 @@
 #pragma once
-// Statistics over repeated precompute runs. The machine is noisy (2 cores shared with other
+// Statistics over repeated precompute runs or frames. The machine is noisy (2 cores shared with other
 // work, lavapipe running the "GPU" on them), so a benchmark reports the median of each pass with
 // its min and max instead of a mean that one disturbed run would drag.
 #include <functional>
@@ -10,8 +10,9 @@
 
 namespace aerial::bench {
 
-// One Precompute call: the GPU time of each pass and the wall-clock time of the whole call (which
-// also covers pipeline creation, allocation and submissions).
+// One Precompute call or one frame: the GPU time of each pass and, for a Precompute, the
+// wall-clock time of the whole call (which also covers pipeline creation, allocation and
+// submissions).
 struct RunResult {
   std::vector<vk::PassTime> passes;
   double wall_ms = 0.0;
@@ -38,6 +39,11 @@ struct Series {
 // median over runs keeps each run's passes together (a median of sums, not a sum of medians).
 std::vector<Series> GroupPasses(const std::vector<RunResult>& runs,
                                 const std::function<std::string(const std::string&)>& key);
+
+// The summed time of the named passes in each run. Throws aerial::Error if a name is timed in no
+// run (a renamed pass must not silently count as 0 ms); label names the series.
+Series SumOfPasses(const std::vector<RunResult>& runs, const std::vector<std::string>& passes,
+                   const std::string& label);
 
 // "scattering density (order 3)" -> "scattering density": the kind of pass, whatever the order.
 std::string PassKind(const std::string& pass);

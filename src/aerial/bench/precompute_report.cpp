@@ -1,6 +1,6 @@
-#include "report.h"
+#include "aerial/bench/precompute_report.h"
 
-#include "bruneton_2017.h"
+#include "aerial/bench/bruneton_2017.h"
 
 namespace aerial::bench {
 namespace {

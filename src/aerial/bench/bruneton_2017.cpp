@@ -1,6 +1,6 @@
-#include "bruneton_2017.h"
+#include "aerial/bench/bruneton_2017.h"
 
-#include "pass_stats.h"
+#include "aerial/bench/pass_stats.h"
 
 namespace aerial::bench {
 

@@ -1,7 +1,9 @@
-#include "pass_stats.h"
+#include "aerial/bench/pass_stats.h"
 
 #include <algorithm>
 #include <map>
+
+#include "aerial/core/error.h"
 
 namespace aerial::bench {
 
@@ -45,6 +47,19 @@ std::vector<Series> GroupPasses(const std::vector<RunResult>& runs,
     }
   }
   return series;
+}
+
+Series SumOfPasses(const std::vector<RunResult>& runs, const std::vector<std::string>& passes,
+                   const std::string& label) {
+  for (const std::string& pass : passes) {
+    bool timed = false;
+    for (const auto& run : runs)
+      for (const auto& p : run.passes) timed = timed || p.pass == pass;
+    if (!timed) throw Error("pass", pass, "a pass the runs timed", label);
+  }
+  return GroupPasses(runs, [&](const std::string& pass) {
+           return std::find(passes.begin(), passes.end(), pass) != passes.end() ? label : std::string();
+         }).at(0);
 }
 
 std::string PassKind(const std::string& pass) {

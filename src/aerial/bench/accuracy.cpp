@@ -1,0 +1,99 @@
+#include "aerial/bench/accuracy.h"
+
+#include <memory>
+
+#include "aerial/render/renderer.h"
+#include "aerial/scene/presets.h"
+
+namespace aerial::bench {
+namespace {
+
+std::unique_ptr<Renderer> ImageRenderer(const AtmosphereTables& tables, const Scene& scene,
+                                        const BenchPlan& plan, AerialMode mode) {
+  RenderOptions options{.width = plan.image_width, .height = plan.image_height, .mode = mode};
+  options.Validate();
+  return std::make_unique<Renderer>(tables, scene, options);
+}
+
+// One variant's frame of a view on both paths; the surface is the same on both.
+struct VariantImages {
+  ImageRgbF froxel, per_pixel, surface;
+};
+
+VariantImages Render(Renderer& froxel, Renderer& per_pixel, const Scene& scene) {
+  froxel.Render(scene);
+  per_pixel.Render(scene);
+  return {froxel.ReadOutput(), per_pixel.ReadOutput(), per_pixel.ReadSurface()};
+}
+
+ClassErrors AgainstReference(const ViewReference& reference, const ImageRgbF& rendered,
+                             const ImageRgbF& surface) {
+  return {CompareSamples(ReferenceSamples(reference, rendered, surface, PixelClass::kSky)),
+          CompareSamples(ReferenceSamples(reference, rendered, surface, PixelClass::kOpaque))};
+}
+
+ClassErrors AgainstImage(const ImageRgbF& actual, const ImageRgbF& expected, const ImageRgbF& surface) {
+  return {CompareImages(actual, expected, surface, PixelClass::kSky),
+          CompareImages(actual, expected, surface, PixelClass::kOpaque)};
+}
+
+ViewAccuracy Measure(const std::string& view, const VariantImages& images, const ViewReference& reference) {
+  return {.view = view,
+          .froxel_vs_reference = AgainstReference(reference, images.froxel, images.surface),
+          .per_pixel_vs_reference = AgainstReference(reference, images.per_pixel, images.surface),
+          .froxel_vs_per_pixel = AgainstImage(images.froxel, images.per_pixel, images.surface)};
+}
+
+}  // namespace
+
+Scene OpaqueScene(const Scene& scene) {
+  Scene opaque = scene;
+  std::erase_if(opaque.meshes, [](const Mesh& mesh) { return mesh.transparent; });
+  return opaque;
+}
+
+std::vector<ViewReference> SampleViews(const AtmosphereTables& tables, Scene& scene, const BenchPlan& plan,
+                                       const std::function<void()>& on_pixel) {
+  const AtmosphereParameters& atmosphere = tables.atmosphere();
+  reference::Reference model(atmosphere);
+  ReferenceSampling sampling{.columns = plan.reference_columns,
+                             .rows = plan.reference_rows,
+                             .orders = tables.options().orders,
+                             .monte_carlo = {.paths_per_query = plan.reference_paths}};
+  std::unique_ptr<Renderer> renderer = ImageRenderer(tables, scene, plan, AerialMode::kFroxel);
+  std::vector<ViewReference> references;
+  for (const std::string& view : plan.views) {
+    ApplyPresetView(scene, view, atmosphere.bottom_radius_m);
+    renderer->Render(scene);
+    references.push_back(
+        SampleReference(model, renderer->frame_uniforms(), renderer->ReadSurface(), sampling, on_pixel));
+  }
+  return references;
+}
+
+void MeasureAccuracy(VariantResult& lut4d, const AtmosphereTables& tables4d, VariantResult& lut3d,
+                     const AtmosphereTables& tables3d, Scene& scene, const BenchPlan& plan,
+                     const std::vector<ViewReference>& references, std::vector<FigureImages>* figures,
+                     const std::function<void()>& on_view) {
+  std::unique_ptr<Renderer> froxel4d = ImageRenderer(tables4d, scene, plan, AerialMode::kFroxel);
+  std::unique_ptr<Renderer> per_pixel4d = ImageRenderer(tables4d, scene, plan, AerialMode::kPerPixel);
+  std::unique_ptr<Renderer> froxel3d = ImageRenderer(tables3d, scene, plan, AerialMode::kFroxel);
+  std::unique_ptr<Renderer> per_pixel3d = ImageRenderer(tables3d, scene, plan, AerialMode::kPerPixel);
+  lut4d.accuracy.clear();
+  lut3d.accuracy.clear();
+  for (size_t v = 0; v < plan.views.size(); ++v) {
+    const std::string& view = plan.views[v];
+    ApplyPresetView(scene, view, tables4d.atmosphere().bottom_radius_m);
+    VariantImages images4d = Render(*froxel4d, *per_pixel4d, scene);
+    VariantImages images3d = Render(*froxel3d, *per_pixel3d, scene);
+    lut4d.accuracy.push_back(Measure(view, images4d, references.at(v)));
+    lut3d.accuracy.push_back(Measure(view, images3d, references.at(v)));
+    lut3d.accuracy.back().vs_4d = AgainstImage(images3d.per_pixel, images4d.per_pixel, images4d.surface);
+    if (figures)
+      figures->push_back(
+          {view, std::move(images3d.per_pixel), std::move(images4d.per_pixel), std::move(images4d.surface)});
+    if (on_view) on_view();
+  }
+}
+
+}  // namespace aerial::bench

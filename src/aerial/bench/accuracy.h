@@ -1,0 +1,33 @@
+#pragma once
+// Accuracy of one table tier over the plan's views. The views are rendered without the scene's
+// transparent meshes, so every pixel is sky or an opaque surface whose aerial perspective the
+// reference can compute. For each variant: both paths against the CPU reference (at the sampled
+// pixels, reference_sampling.h) and the froxel path against the per-pixel path (every pixel);
+// for the 3D tables also 3D against 4D on the per-pixel path (every pixel), where the difference
+// is the tables' alone.
+#include <functional>
+#include <vector>
+
+#include "aerial/bench/bench_plan.h"
+#include "aerial/bench/bench_results.h"
+#include "aerial/bench/reference_sampling.h"
+#include "aerial/precompute/atmosphere_tables.h"
+#include "aerial/scene/scene.h"
+
+namespace aerial::bench {
+
+// The scene with its transparent meshes removed.
+Scene OpaqueScene(const Scene& scene);
+
+// The reference in each view of plan.views, at plan.image_width x height: tables only serve to
+// render the views' surfaces (distances and sky pixels) and frame uniforms. Sets scene's view.
+std::vector<ViewReference> SampleViews(const AtmosphereTables& tables, Scene& scene, const BenchPlan& plan,
+                                       const std::function<void()>& on_pixel);
+
+// Fills the accuracy of both results; figures (may be null) receives each view's images.
+void MeasureAccuracy(VariantResult& lut4d, const AtmosphereTables& tables4d, VariantResult& lut3d,
+                     const AtmosphereTables& tables3d, Scene& scene, const BenchPlan& plan,
+                     const std::vector<ViewReference>& references, std::vector<FigureImages>* figures,
+                     const std::function<void()>& on_view);
+
+}  // namespace aerial::bench

@@ -1,0 +1,49 @@
+#include "aerial/bench/bench_plan.h"
+
+#include "aerial/scene/presets.h"
+
+namespace aerial::bench {
+
+PrecomputeOptions TableTier::Options(LutVariant variant) const {
+  PrecomputeOptions options =
+      small_base ? PrecomputeOptions::Small(variant) : PrecomputeOptions::Default(variant);
+  options.SetScatteringSize(r, mu, mu_s, variant == LutVariant::k4D ? nu : 1);
+  options.Validate();
+  return options;
+}
+
+std::string ScatteringSize(const TableResolution& r) {
+  return std::to_string(r.scattering_r) + "x" + std::to_string(r.scattering_mu) + "x" +
+         std::to_string(r.scattering_mu_s) + "x" + std::to_string(r.scattering_nu);
+}
+
+BenchPlan BenchPlan::Full() {
+  BenchPlan plan;
+  // Small(), the defaults, and the defaults with twice the mu_s resolution: the axis that limits
+  // accuracy near sunset (README, "Accuracy against the CPU reference").
+  plan.tiers = {{"small", true, 16, 64, 16, 8},
+                {"default", false, 32, 128, 32, 8},
+                {"fine-mu_s", false, 32, 128, 64, 8}};
+  plan.figure_tier = 1;
+  plan.views = PresetNames();
+  return plan;
+}
+
+BenchPlan BenchPlan::Quick() {
+  BenchPlan plan;
+  plan.quick = true;
+  plan.tiers = {{"tiny", true, 8, 32, 8, 8}, {"small", true, 16, 64, 16, 8}};
+  plan.figure_tier = 1;
+  plan.precompute_runs = 2;
+  plan.frame_warmup = 1;
+  plan.frames = 3;
+  plan.image_width = 320;
+  plan.image_height = 180;
+  plan.reference_columns = 8;
+  plan.reference_rows = 5;
+  plan.reference_paths = 8192;
+  plan.views = PresetNames();
+  return plan;
+}
+
+}  // namespace aerial::bench

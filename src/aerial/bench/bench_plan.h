@@ -1,0 +1,41 @@
+#pragma once
+// What `aerial bench` measures: the table resolutions of both variants, the frame and image sizes,
+// the number of runs and frames, and the reference sampling; in full mode or in quick mode (small
+// tables, fewer frames, smaller images, fewer and noisier reference pixels: under 2 minutes on 2
+// cores with lavapipe).
+#include <string>
+#include <vector>
+
+#include "aerial/precompute/precompute_options.h"
+
+namespace aerial::bench {
+
+// One table resolution, for both variants: the same transmittance, irradiance and scattering
+// (r, mu, mu_s) sizes; the 4D tables add nu, the 3D ones have one nu slice.
+struct TableTier {
+  std::string name;
+  bool small_base = false;  // transmittance, irradiance and sample counts of Small() (else Default())
+  int r = 32, mu = 128, mu_s = 32, nu = 8;
+
+  PrecomputeOptions Options(LutVariant variant) const;
+};
+
+// "RxMUxMU_SxNU" of the scattering tables, e.g. "32x128x32x8".
+std::string ScatteringSize(const TableResolution& resolution);
+
+struct BenchPlan {
+  bool quick = false;
+  std::vector<TableTier> tiers;
+  size_t figure_tier = 0;  // the tier whose images the figures show
+  int precompute_warmup = 1, precompute_runs = 3;
+  int frame_width = 1280, frame_height = 720, frame_warmup = 2, frames = 7;
+  int image_width = 1280, image_height = 720;  // the accuracy renders
+  int reference_columns = 16, reference_rows = 9;
+  int reference_paths = 32768;  // Monte Carlo paths per reference query (orders >= 2)
+  std::vector<std::string> views;
+
+  static BenchPlan Full();
+  static BenchPlan Quick();
+};
+
+}  // namespace aerial::bench

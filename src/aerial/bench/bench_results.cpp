@@ -1,0 +1,28 @@
+#include "aerial/bench/bench_results.h"
+
+#include "aerial/bench/frame_measurement.h"
+#include "aerial/core/error.h"
+
+namespace aerial::bench {
+namespace {
+
+double Median(const std::vector<RunResult>& frames, const char* pass) {
+  return Summarize(SumOfPasses(frames, {pass}, pass).ms).median;
+}
+
+}  // namespace
+
+double VariantResult::PrecomputeMs() const { return Summarize(GpuTotals(precompute.runs)).median; }
+double VariantResult::FrameMs() const { return Summarize(GpuTotals(froxel_frames)).median; }
+double VariantResult::PerPixelFrameMs() const { return Summarize(GpuTotals(per_pixel_frames)).median; }
+double VariantResult::FroxelBuildMs() const { return Median(froxel_frames, kFroxelBuildPass); }
+double VariantResult::CompositeMs() const { return Median(froxel_frames, kCompositePass); }
+double VariantResult::PerPixelCompositeMs() const { return Median(per_pixel_frames, kCompositePass); }
+
+const VariantResult& BenchResults::Find(const std::string& tier, LutVariant variant) const {
+  for (const VariantResult& r : results)
+    if (r.tier == tier && r.variant() == variant) return r;
+  throw Error("bench result", tier + " " + ToString(variant), "a measured tier and variant");
+}
+
+}  // namespace aerial::bench

@@ -1,0 +1,77 @@
+#pragma once
+// Everything one `aerial bench` run measured, as the report writers read it.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "aerial/bench/bench_plan.h"
+#include "aerial/bench/image_metrics.h"
+#include "aerial/bench/precompute_report.h"
+#include "aerial/image/image.h"
+
+namespace aerial::bench {
+
+struct ClassErrors {
+  ErrorStats sky, opaque;
+};
+
+// One variant's accuracy in one view.
+struct ViewAccuracy {
+  std::string view;
+  ClassErrors froxel_vs_reference, per_pixel_vs_reference, froxel_vs_per_pixel;
+  std::optional<ClassErrors> vs_4d;  // 3D tables only: 3D against 4D, both on the per-pixel path
+};
+
+// One variant at one table tier.
+struct VariantResult {
+  std::string tier;
+  BenchResult precompute;  // options, table bytes, the precompute runs
+  std::vector<RunResult> froxel_frames, per_pixel_frames;
+  std::vector<ViewAccuracy> accuracy;  // in the plan's view order
+
+  LutVariant variant() const { return precompute.options.variant; }
+  // Medians over the runs or frames, in ms (GPU timestamps).
+  double PrecomputeMs() const;
+  double FrameMs() const;          // whole froxel-path frame
+  double PerPixelFrameMs() const;  // whole per-pixel-path frame
+  double FroxelBuildMs() const;
+  double CompositeMs() const;
+  double PerPixelCompositeMs() const;
+};
+
+// How the CPU reference was sampled in one view.
+struct ReferenceSummary {
+  std::string view;
+  int sky_pixels = 0, opaque_pixels = 0, sun_pixels = 0;
+  double median_relative_std_error = 0.0;  // Monte Carlo noise of the reference
+};
+
+// The images a view's figure shows: both variants on the per-pixel path, and the surface (to
+// tell sky from geometry).
+struct FigureImages {
+  std::string view;
+  ImageRgbF lut3d, lut4d, surface;
+};
+
+struct MachineInfo {
+  std::string device, date, command, version;
+  int cores = 0;
+  bool validation = false;  // validation layers on: every time is inflated
+  // /proc/loadavg's 1, 5 and 15 minute averages before and after the run: other work on a shared
+  // machine slows every measurement (the 3D/4D ratios suffer less than the times).
+  std::string load_before, load_after;
+};
+
+struct BenchResults {
+  BenchPlan plan;
+  MachineInfo machine;
+  std::vector<VariantResult> results;  // per tier of the plan: 4D, then 3D
+  std::vector<ReferenceSummary> references;
+  std::vector<FigureImages> figures;
+  double seconds = 0.0;  // wall-clock time of the whole run
+
+  // The result of a variant at a tier; throws if absent.
+  const VariantResult& Find(const std::string& tier, LutVariant variant) const;
+};
+
+}  // namespace aerial::bench

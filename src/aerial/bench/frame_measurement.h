@@ -1,0 +1,23 @@
+#pragma once
+// Frames of several renderers of one scene, interleaved (frame i: every renderer in turn) so that
+// all see the same machine noise, after warm-up frames: lavapipe compiles each pipeline on its
+// first use, so the first frame of a renderer costs far more than the next ones.
+#include <functional>
+#include <vector>
+
+#include "aerial/bench/pass_stats.h"
+#include "aerial/render/renderer.h"
+
+namespace aerial::bench {
+
+// The passes timed by the renderer that the frame statistics name (renderer.cpp).
+inline constexpr const char* kFroxelBuildPass = "froxel build";
+inline constexpr const char* kCompositePass = "composite";
+
+// frames[r] holds renderer r's measured frames, in order. on_frame (may be empty) is called after
+// every frame, warm-up included.
+std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<Renderer*>& renderers, const Scene& scene,
+                                                  int warmup, int frames,
+                                                  const std::function<void()>& on_frame);
+
+}  // namespace aerial::bench

@@ -1,0 +1,18 @@
+#pragma once
+// Frame times of one table tier: the 4D and 3D tables, each on the froxel and the per-pixel path,
+// four renderers of the same scene with their frames interleaved (frame_measurement.h).
+#include <functional>
+
+#include "aerial/bench/bench_plan.h"
+#include "aerial/bench/bench_results.h"
+#include "aerial/precompute/atmosphere_tables.h"
+#include "aerial/scene/scene.h"
+
+namespace aerial::bench {
+
+// Fills the froxel_frames and per_pixel_frames of both results, at plan.frame_width x height.
+void MeasureVariantFrames(VariantResult& lut4d, const AtmosphereTables& tables4d, VariantResult& lut3d,
+                          const AtmosphereTables& tables3d, const Scene& scene, const BenchPlan& plan,
+                          const std::function<void()>& on_frame);
+
+}  // namespace aerial::bench

@@ -1,0 +1,90 @@
+// aerial bench: the 3D and 4D tables compared on this machine, in one process: table memory,
+// precompute and frame times, and accuracy in five views against each other and against the CPU
+// reference. Writes report.md, results.json, results.csv and PNG figures into --out (checked
+// before the work, each file written atomically).
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <thread>
+
+#include "aerial/bench/bench_output.h"
+#include "aerial/bench/bench_run.h"
+#include "aerial/cli/commands.h"
+
+namespace aerial::cli {
+namespace {
+
+struct BenchCommandOptions {
+  bool quick = false;
+  std::filesystem::path out = "bench-out";
+  std::string device;
+  bool validation = false;
+  bool quiet = false;
+
+  // The command line that reproduces this run.
+  std::string Command() const {
+    std::string command = "aerial bench";
+    if (quick) command += " --quick";
+    command += " --out " + out.string();
+    if (!device.empty()) command += " --device \"" + device + "\"";
+    if (validation) command += " --validation";
+    return command;
+  }
+};
+
+std::string UtcNow() {
+  std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M UTC", &utc);
+  return text;
+}
+
+// The first three fields of /proc/loadavg, or "unknown".
+std::string LoadAverage() {
+  std::ifstream in("/proc/loadavg");
+  std::string one, five, fifteen;
+  if (!(in >> one >> five >> fifteen)) return "unknown";
+  return one + " " + five + " " + fifteen;
+}
+
+void RunBenchCommand(const BenchCommandOptions& options) {
+  bench::CheckOutputDirectory(options.out);
+  bench::BenchPlan plan = options.quick ? bench::BenchPlan::Quick() : bench::BenchPlan::Full();
+  vk::Context context(vk::ContextCreateInfo{.device_name = options.device, .validation = options.validation});
+  bench::MachineInfo machine{.device = context.device_name(),
+                             .date = UtcNow(),
+                             .command = options.Command(),
+                             .version = AERIAL_VERSION,
+                             .cores = int(std::thread::hardware_concurrency()),
+                             .validation = context.validation_enabled(),
+                             .load_before = LoadAverage()};
+  bench::BenchResults results = bench::RunBench(plan, context, machine, options.quiet);
+  results.machine.load_after = LoadAverage();
+  bench::WriteBenchOutputs(options.out, results);
+  std::printf("aerial bench: %s mode, %.0f s; wrote %s\n", plan.quick ? "quick" : "full", results.seconds,
+              (options.out / "report.md").c_str());
+}
+
+}  // namespace
+
+void AddBenchCommand(CLI::App& app) {
+  auto options = std::make_shared<BenchCommandOptions>();
+  CLI::App* command = app.add_subcommand(
+      "bench", "Compare the 3D and 4D tables on this machine: memory, speed and accuracy, as a report");
+  command->add_flag("--quick", options->quick,
+                    "Small tables, few frames, small images, few reference pixels (under 2 minutes)");
+  command->add_option("--out", options->out, "Output directory (default bench-out; created if missing)");
+  command->add_option("--device", options->device,
+                      "Vulkan device to use: part of its name (or AERIAL_DEVICE)");
+  command->add_flag("--validation", options->validation,
+                    "Enable the Vulkan validation layers (or AERIAL_VALIDATION=1); inflates every time");
+  command->add_flag("--quiet", options->quiet, "No progress bar");
+  command->callback([options] { RunBenchCommand(*options); });
+}
+
+}  // namespace aerial::cli
