@@ -77,6 +77,16 @@ void SyncDirectory(const fs::path& directory) {
   if (::fsync(dir.fd) != 0 && errno != EINVAL) Fail(directory, "sync the directory", errno);
 }
 
+// Syncs and closes the written temporary, then renames it over path. close() can report a
+// deferred write error (NFS, quota), so it is checked rather than left to the destructor.
+void CommitTemporary(Fd& file, const fs::path& temporary, const fs::path& path) {
+  if (::fsync(file.fd) != 0) Fail(temporary, "sync", errno);
+  int fd = file.fd;
+  file.fd = -1;
+  if (::close(fd) != 0) Fail(temporary, "close", errno);
+  if (::rename(temporary.c_str(), path.c_str()) != 0) Fail(path, "rename a file over", errno);
+}
+
 }  // namespace
 
 void WriteFileAtomically(const fs::path& path, std::span<const std::byte> bytes) {
@@ -86,13 +96,7 @@ void WriteFileAtomically(const fs::path& path, std::span<const std::byte> bytes)
   if (file.fd < 0) Fail(path, "create the temporary " + temporary.filename().string(), errno);
   try {
     WriteAll(file.fd, bytes.data(), bytes.size(), temporary);
-    if (::fsync(file.fd) != 0) Fail(temporary, "sync", errno);
-    // close() can report a deferred write error (NFS, quota), so check it rather than the
-    // destructor.
-    int fd = file.fd;
-    file.fd = -1;
-    if (::close(fd) != 0) Fail(temporary, "close", errno);
-    if (::rename(temporary.c_str(), path.c_str()) != 0) Fail(path, "rename a file over", errno);
+    CommitTemporary(file, temporary, path);
   } catch (...) {
     ::unlink(temporary.c_str());
     throw;
@@ -112,11 +116,7 @@ void WriteFileAtomicallyWith(const fs::path& path,
     write(temporary);
     Fd file{::open(temporary.c_str(), O_WRONLY | O_CLOEXEC)};
     if (file.fd < 0) Fail(temporary, "open the written temporary", errno);
-    if (::fsync(file.fd) != 0) Fail(temporary, "sync", errno);
-    int fd = file.fd;
-    file.fd = -1;
-    if (::close(fd) != 0) Fail(temporary, "close", errno);
-    if (::rename(temporary.c_str(), path.c_str()) != 0) Fail(path, "rename a file over", errno);
+    CommitTemporary(file, temporary, path);
   } catch (...) {
     ::unlink(temporary.c_str());
     throw;
