@@ -13,7 +13,7 @@ packages=(
   libopenvdb-dev libboost-iostreams-dev libtbb-dev libopenexr-dev libstb-dev
   libimgui-dev libtinygltf-dev
   # tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev xvfb python3-openvdb
+  libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-openvdb
 )
 
 missing=()

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
+#include <string>
+
 #include "aerial/core/error.h"
 
 namespace aerial::viewer {
@@ -54,6 +57,9 @@ struct BadPath {
   std::string text;
   std::string field;
 };
+
+// CTest lists each case by the field it expects named, not by the struct's bytes.
+void PrintTo(const BadPath& bad, std::ostream* out) { *out << bad.field; }
 
 class CameraPathRejects : public ::testing::TestWithParam<BadPath> {};
 
