@@ -16,15 +16,14 @@ glm::dmat4 ToMatrix(const std::array<float, 16>& m) {
 }  // namespace
 
 FroxelPlacement::FroxelPlacement(const FrameUniforms& frame, const FroxelGrid& grid)
-    : view_projection_(ToMatrix(frame.view_projection)),
-      inverse_view_projection_(ToMatrix(frame.inverse_view_projection)),
+    : frame_(frame),
+      view_projection_(ToMatrix(frame.view_projection)),
       camera_(frame.camera_scene_position[0], frame.camera_scene_position[1],
               frame.camera_scene_position[2]),
       grid_(grid) {}
 
 glm::dvec3 FroxelPlacement::RayThroughScreen(glm::dvec2 uv) const {
-  glm::dvec4 world = inverse_view_projection_ * glm::dvec4(uv * 2.0 - 1.0, 0.5, 1.0);
-  return glm::normalize(glm::dvec3(world) / world.w);
+  return ViewRayFromScreen(frame_, uv);
 }
 
 glm::dvec3 FroxelPlacement::FroxelCenter(int i, int j, int k) const {

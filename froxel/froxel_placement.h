@@ -45,7 +45,8 @@ class FroxelPlacement {
   std::array<glm::dvec3, 2> Bounds() const;
 
  private:
-  glm::dmat4 view_projection_, inverse_view_projection_;
+  FrameUniforms frame_;
+  glm::dmat4 view_projection_;
   glm::dvec3 camera_;
   FroxelGrid grid_;
 };

@@ -1,6 +1,5 @@
 #include "froxel/froxel_volume.h"
 
-#include <cstring>
 
 namespace aerial {
 namespace {
@@ -44,18 +43,9 @@ void FroxelVolume::Build(const ::vk::raii::CommandBuffer& cmd, const AtmosphereT
 
 FroxelTexels FroxelVolume::Read(const vk::Context& context) const {
   FroxelTexels texels{.grid = grid_};
-  for (auto [image, out] : {std::pair{&rayleigh_, &texels.rayleigh}, std::pair{&mie_, &texels.mie},
-                            std::pair{&transmittance_, &texels.transmittance}}) {
-    vk::Buffer readback(context, {.size = image->byte_size(),
-                                  .usage = ::vk::BufferUsageFlagBits::eTransferDst,
-                                  .host_visible = true});
-    context.Submit([&](const auto& cmd) {
-      image->CopyToBuffer(cmd, readback);
-      vk::FullBarrier(cmd);
-    });
-    out->resize(size_t(grid_.width) * grid_.height * grid_.depth * 4);
-    std::memcpy(out->data(), readback.mapped(), out->size() * sizeof(float));
-  }
+  texels.rayleigh = vk::ReadImageFloats(context, rayleigh_);
+  texels.mie = vk::ReadImageFloats(context, mie_);
+  texels.transmittance = vk::ReadImageFloats(context, transmittance_);
   return texels;
 }
 

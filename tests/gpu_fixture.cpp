@@ -37,14 +37,7 @@ const AtmosphereTables& SmallTables(LutVariant variant) {
 }
 
 std::vector<std::byte> ReadBack(const vk::Image& image) {
-  vk::Buffer readback(SharedContext(), {.size = image.byte_size(),
-                                        .usage = ::vk::BufferUsageFlagBits::eTransferDst,
-                                        .host_visible = true});
-  SharedContext().Submit([&](const auto& cmd) {
-    image.CopyToBuffer(cmd, readback);
-    vk::FullBarrier(cmd);
-  });
-  return {readback.mapped(), readback.mapped() + image.byte_size()};
+  return vk::ReadImageBytes(SharedContext(), image);
 }
 
 void GpuTest::SetUp() {

@@ -44,20 +44,6 @@ Scene TestScene(const AtmosphereTables& tables) {
   return scene;
 }
 
-// A froxel image read back by the test itself, as render_test does: RGBA floats, x fastest.
-std::vector<float> ReadImage(const vk::Context& context, const vk::Image& image) {
-  vk::Buffer readback(context, {.size = image.byte_size(),
-                                .usage = ::vk::BufferUsageFlagBits::eTransferDst,
-                                .host_visible = true});
-  context.Submit([&](const auto& cmd) {
-    image.CopyToBuffer(cmd, readback);
-    vk::FullBarrier(cmd);
-  });
-  std::vector<float> texels(image.byte_size() / sizeof(float));
-  std::memcpy(texels.data(), readback.mapped(), image.byte_size());
-  return texels;
-}
-
 // The renderer's own placement of froxel (i, j, k), computed here from the frame block as
 // shaders/frame/froxel.comp and shaders/include/frame.glsl do (ViewRayFromScreen,
 // FroxelSliceDistance), independently of froxel_placement.cpp.
@@ -128,9 +114,9 @@ TEST_F(VdbExport, RoundTripHoldsTheGpuVolumeExactly) {
   Renderer renderer(tables(), scene, {.width = kTestSize.width, .height = kTestSize.height, .froxels = grid});
   renderer.Render(scene);
   const FroxelVolume& froxels = renderer.froxels();
-  std::vector<float> gpu[3] = {ReadImage(tables().context(), froxels.rayleigh()),
-                               ReadImage(tables().context(), froxels.mie()),
-                               ReadImage(tables().context(), froxels.transmittance())};
+  std::vector<float> gpu[3] = {vk::ReadImageFloats(tables().context(), froxels.rayleigh()),
+                               vk::ReadImageFloats(tables().context(), froxels.mie()),
+                               vk::ReadImageFloats(tables().context(), froxels.transmittance())};
 
   FroxelFrame frame = CaptureFroxels(tables(), scene, grid, kTestSize);
   WriteVdb(dir_ / "f.vdb", MakeFroxelSpaceVolume(frame));
@@ -185,7 +171,7 @@ TEST_F(VdbExport, ViewerExportWritesTheCurrentFrame) {
   VdbFileData file = ReadVdb(written[0]);
   const VdbGridData* rayleigh = file.Find("rayleigh_inscatter");
   ASSERT_NE(rayleigh, nullptr);
-  std::vector<float> gpu = ReadImage(tables().context(), renderer.froxels().rayleigh());
+  std::vector<float> gpu = vk::ReadImageFloats(tables().context(), renderer.froxels().rayleigh());
   FroxelGrid grid = TestGrid();
   EXPECT_EQ(rayleigh->values[3 * rayleigh->Offset(0, 0, 0)], gpu[0]);
   EXPECT_EQ(rayleigh->values[3 * rayleigh->Offset(grid.width - 1, grid.height - 1, grid.depth - 1)],

@@ -48,13 +48,7 @@ Spectrum GroundRadiance(const reference::Reference& model, const glm::dvec3& gro
 }  // namespace
 
 glm::dvec3 PixelRay(const FrameUniforms& frame, int x, int y) {
-  glm::dvec4 clip((x + 0.5) / frame.viewport[0] * 2.0 - 1.0, (y + 0.5) / frame.viewport[1] * 2.0 - 1.0, 0.5,
-                  1.0);
-  glm::dmat4 inverse;  // column-major, as std140 stores it
-  for (int column = 0; column < 4; ++column)
-    for (int row = 0; row < 4; ++row) inverse[column][row] = frame.inverse_view_projection[column * 4 + row];
-  glm::dvec4 world = inverse * clip;
-  return glm::normalize(glm::dvec3(world) / world.w);
+  return ViewRayFromScreen(frame, glm::dvec2((x + 0.5) / frame.viewport[0], (y + 0.5) / frame.viewport[1]));
 }
 
 Spectrum ReferencePixel::Expected(const float* surface_rgba) const {

@@ -89,17 +89,10 @@ TableCache AtmosphereTables::Download() const {
                            NamedImage{"irradiance", &irradiance_}, NamedImage{"rayleigh", &rayleigh_},
                            NamedImage{"mie", &mie_},
                            NamedImage{"multiple", &multiple_}}) {
-    vk::Buffer staging(context_, {.size = table.image->byte_size(),
-                                  .usage = ::vk::BufferUsageFlagBits::eTransferDst,
-                                  .host_visible = true});
-    context_.Submit([&](const auto& cmd) {
-      table.image->CopyToBuffer(cmd, staging);
-      vk::FullBarrier(cmd);
-    });
     ::vk::Extent3D e = table.image->extent();
     CachedTable cached{.name = table.name, .width = e.width, .height = e.height, .depth = e.depth,
-                       .format = ToTexelFormat(table.image->format())};
-    cached.texels.assign(staging.mapped(), staging.mapped() + table.image->byte_size());
+                       .format = ToTexelFormat(table.image->format()),
+                       .texels = vk::ReadImageBytes(context_, *table.image)};
     cache.tables.push_back(std::move(cached));
   }
   return cache;

@@ -21,6 +21,10 @@ struct alignas(16) FrameUniforms {
 };
 static_assert(sizeof(FrameUniforms) == 2 * 64 + 6 * 16);
 
+// The unit view ray (camera-relative world) through screen point uv in [0, 1]^2: the CPU twin of
+// ViewRayFromScreen in shaders/include/frame.glsl, in double precision.
+glm::dvec3 ViewRayFromScreen(const FrameUniforms& frame, glm::dvec2 uv);
+
 FrameUniforms MakeFrameUniforms(const Scene& scene, double planet_radius_m, int width, int height,
                                 const FroxelGrid& froxels);
 

@@ -1,7 +1,6 @@
 #include "aerial/render/renderer.h"
 
 #include <array>
-#include <cstring>
 
 #include "aerial/core/error.h"
 
@@ -199,17 +198,7 @@ ImageRgbF Renderer::ReadOutput() const { return Read(output_); }
 ImageRgbF Renderer::ReadSurface() const { return Read(surface_); }
 
 ImageRgbF Renderer::Read(const vk::Image& image) const {
-  vk::Buffer readback(tables_.context(), {.size = image.byte_size(),
-                                          .usage = ::vk::BufferUsageFlagBits::eTransferDst,
-                                          .host_visible = true});
-  tables_.context().Submit([&](const auto& cmd) {
-    image.CopyToBuffer(cmd, readback);
-    vk::FullBarrier(cmd);
-  });
-  ImageRgbF pixels{options_.width, options_.height, {}};
-  pixels.rgba.resize(size_t(options_.width) * options_.height * 4);
-  std::memcpy(pixels.rgba.data(), readback.mapped(), pixels.rgba.size() * sizeof(float));
-  return pixels;
+  return ImageRgbF{options_.width, options_.height, vk::ReadImageFloats(tables_.context(), image)};
 }
 
 }  // namespace aerial

@@ -127,6 +127,24 @@ void Image::CopyFromBuffer(const ::vk::raii::CommandBuffer& cmd, const Buffer& b
                         WholeImageCopy(extent_, format_));
 }
 
+std::vector<std::byte> ReadImageBytes(const Context& context, const Image& image) {
+  Buffer readback(context, {.size = image.byte_size(),
+                            .usage = ::vk::BufferUsageFlagBits::eTransferDst,
+                            .host_visible = true});
+  context.Submit([&](const auto& cmd) {
+    image.CopyToBuffer(cmd, readback);
+    FullBarrier(cmd);
+  });
+  return {readback.mapped(), readback.mapped() + image.byte_size()};
+}
+
+std::vector<float> ReadImageFloats(const Context& context, const Image& image) {
+  std::vector<std::byte> bytes = ReadImageBytes(context, image);
+  std::vector<float> texels(bytes.size() / sizeof(float));
+  std::memcpy(texels.data(), bytes.data(), texels.size() * sizeof(float));
+  return texels;
+}
+
 ::vk::raii::Sampler CreateLinearClampSampler(const Context& context) {
   return ::vk::raii::Sampler(
       context.device(), ::vk::SamplerCreateInfo{

@@ -3,6 +3,7 @@
 // few dozen resources per table set, far below any allocation limit, so no sub-allocator is needed.
 #include <cstddef>
 #include <span>
+#include <vector>
 
 #include "aerial/vk/context.h"
 
@@ -72,5 +73,10 @@ class Image {
 
 // Makes every earlier shader or transfer write visible to every later shader or transfer access.
 void FullBarrier(const ::vk::raii::CommandBuffer& cmd);
+
+// The whole image's texels, copied to the host after every earlier GPU write (tightly packed, x
+// fastest). ReadImageFloats: the same for a 32-bit float format.
+std::vector<std::byte> ReadImageBytes(const Context& context, const Image& image);
+std::vector<float> ReadImageFloats(const Context& context, const Image& image);
 
 }  // namespace aerial::vk
