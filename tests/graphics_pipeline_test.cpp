@@ -64,9 +64,13 @@ TEST_F(GraphicsPipelineTest, DrawsDepthTestsAndBlends) {
   context.Submit([&](const auto& cmd) {
     color.InitializeLayout(cmd);
     depth.InitializeLayout(cmd);
-    opaque.Draw(cmd, {.colors = {&color}, .clear_colors = {std::array<float, 4>{0, 0, 0, 0}},
-                      .depth = &depth, .clear_depth = 0.0f},
-                {}, vertex_buffer, index_buffer, 6);
+    {
+      vk::Rendering rendering(cmd, {.colors = {&color}, .clear_colors = {std::array<float, 4>{0, 0, 0, 0}},
+                                    .depth = &depth, .clear_depth = 0.0f});
+      opaque.Bind(cmd, {});
+      vk::BindMesh(cmd, vertex_buffer, index_buffer);
+      vk::DrawIndexed(cmd, 6);
+    }
     vk::FullBarrier(cmd);
   });
   auto left = Pixel(color, 2, 8);
@@ -76,8 +80,12 @@ TEST_F(GraphicsPipelineTest, DrawsDepthTestsAndBlends) {
   EXPECT_EQ(right[1], 1.0f) << "the far green triangle covers the rest";
 
   context.Submit([&](const auto& cmd) {
-    blended.Draw(cmd, {.colors = {&color}, .clear_colors = {std::nullopt}, .depth = &depth}, {},
-                 glass_buffer, index_buffer, 3);
+    {
+      vk::Rendering rendering(cmd, {.colors = {&color}, .clear_colors = {std::nullopt}, .depth = &depth});
+      blended.Bind(cmd, {});
+      vk::BindMesh(cmd, glass_buffer, index_buffer);
+      vk::DrawIndexed(cmd, 3);
+    }
     vk::FullBarrier(cmd);
   });
   auto glazed = Pixel(color, 13, 8);

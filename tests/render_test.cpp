@@ -130,12 +130,15 @@ TEST_F(Render, SunHaloIsCenteredOnTheSun) {
 // Small golden images of two presets, stored as EXR (tests/data/golden). The tolerance is 1%
 // relative RMSE: lavapipe is deterministic, so this leaves room for other drivers' rounding and
 // texture filtering while catching any change of the physics or the passes. Rebuild them with
-// AERIAL_UPDATE_GOLDEN=1 after an intended change, and say why in the commit.
+// AERIAL_UPDATE_GOLDEN=1 after an intended change, and say why in the commit. The goldens hold
+// the fixed terrain mesh: the level of detail's terrain is measured against that mesh on its own
+// (terrain_lod_render_test.cpp), so that a change of the passes and a change of the terrain
+// each show where they belong.
 TEST_F(Render, MatchesGoldenImages) {
   for (const char* preset : {"noon", "sunset"}) {
     const AtmosphereTables& tables = FullTables();
     Scene scene = BuildPreset(preset, tables.atmosphere().bottom_radius_m);
-    Renderer renderer(tables, scene, {.width = 96, .height = 54});
+    Renderer renderer(tables, scene, {.width = 96, .height = 54, .terrain = TerrainMode::kStaticMesh});
     renderer.Render(scene);
     ImageRgbF image = renderer.ReadOutput();
     std::filesystem::path golden =

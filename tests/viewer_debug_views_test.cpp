@@ -7,6 +7,7 @@
 #include "aerial/image/tone_map.h"
 #include "aerial/scene/presets.h"
 #include "aerial/viewer/display_passes.h"
+#include "display_target.h"
 #include "gpu_fixture.h"
 
 namespace aerial::testing {
@@ -14,6 +15,7 @@ namespace {
 
 constexpr int kWidth = 160, kHeight = 90;
 constexpr float kExposure = 8.0f;
+constexpr ::vk::Extent2D kExtent{kWidth, kHeight};
 
 struct Display {
   std::vector<uint8_t> rgba;
@@ -27,39 +29,34 @@ class ViewerDebugViews : public GpuTest {
     scene_ = new Scene(BuildPreset("noon", SmallTables().atmosphere().bottom_radius_m));
     renderer_ = new Renderer(SmallTables(), *scene_, RenderOptions{.width = kWidth, .height = kHeight});
     renderer_->Render(*scene_);
-    passes_ = new viewer::DisplayPasses(SharedContext(), kWidth, kHeight);
+    target_ = new DisplayTarget(SharedContext(), kWidth, kHeight);
+    passes_ = new viewer::DisplayPasses(SharedContext(), target_->render_pass());
   }
   static void TearDownTestSuite() {
     delete passes_;
+    delete target_;
     delete renderer_;
     delete scene_;
   }
 
   template <typename Record>
   Display Show(Record record) {
-    vk::Context& context = SharedContext();
-    context.Submit([&](const ::vk::raii::CommandBuffer& cmd) {
-      record(cmd);
-      vk::FullBarrier(cmd);
-    });
-    std::vector<std::byte> bytes = ReadBack(passes_->display());
-    Display display{std::vector<uint8_t>(bytes.size())};
-    std::memcpy(display.rgba.data(), bytes.data(), bytes.size());
-    return display;
+    return Display{target_->Draw(record)};
   }
   Display ShowTerm(viewer::DisplayPasses::Term term) {
-    return Show([&](const auto& cmd) { passes_->RecordTerm(cmd, *renderer_, term, kExposure); });
+    return Show([&](const auto& cmd) { passes_->RecordTerm(cmd, kExtent, *renderer_, 0, term, kExposure); });
   }
 
   static inline Scene* scene_ = nullptr;
   static inline Renderer* renderer_ = nullptr;
+  static inline DisplayTarget* target_ = nullptr;
   static inline viewer::DisplayPasses* passes_ = nullptr;
 };
 
 // What the window shows is what a PNG of the frame holds: the same curve (viewer_present_test.cpp)
 // on the renderer's own output image, at most one 8-bit step apart where rounding straddles.
 TEST_F(ViewerDebugViews, FinalViewIsThePngOfTheFrame) {
-  Display shown = Show([&](const auto& cmd) { passes_->RecordToneMap(cmd, renderer_->output_image(), kExposure); });
+  Display shown = Show([&](const auto& cmd) { passes_->RecordToneMap(cmd, kExtent, renderer_->output_image(), kExposure); });
   std::vector<uint8_t> png = ToneMapToSrgb8(renderer_->ReadOutput(), {.exposure = kExposure});
   int worst = 0;
   for (size_t i = 0; i < png.size(); ++i)
@@ -85,8 +82,8 @@ TEST_F(ViewerDebugViews, RayleighIsBlueAndMieIsGrey) {
 // transmittance column is ~1 in the first slice (12 m at 32 slices to 128 km) and lower in the last
 // (128 km); the sky's whole-ray transmittance is below a near landmark's.
 TEST_F(ViewerDebugViews, TransmittanceFallsWithDistance) {
-  Display first = Show([&](const auto& cmd) { passes_->RecordFroxelSlice(cmd, renderer_->froxels(), 0, kExposure); });
-  Display last = Show([&](const auto& cmd) { passes_->RecordFroxelSlice(cmd, renderer_->froxels(), 31, kExposure); });
+  Display first = Show([&](const auto& cmd) { passes_->RecordFroxelSlice(cmd, kExtent, renderer_->froxels(), 0, kExposure); });
+  Display last = Show([&](const auto& cmd) { passes_->RecordFroxelSlice(cmd, kExtent, renderer_->froxels(), 31, kExposure); });
   const uint8_t* near = first.pixel(kWidth * 5 / 6, kHeight / 2);  // the third column
   const uint8_t* far = last.pixel(kWidth * 5 / 6, kHeight / 2);
   EXPECT_GE(near[2], 254);
@@ -109,7 +106,7 @@ TEST_F(ViewerDebugViews, TransmittanceFallsWithDistance) {
 // A frame against itself differs nowhere: the heat map is black.
 TEST_F(ViewerDebugViews, DifferenceOfAFrameWithItselfIsBlack) {
   const vk::Image& output = renderer_->output_image();
-  Display same = Show([&](const auto& cmd) { passes_->RecordDifference(cmd, output, output, 0.05f); });
+  Display same = Show([&](const auto& cmd) { passes_->RecordDifference(cmd, kExtent, output, output, 0.05f); });
   int lit = 0;
   for (size_t i = 0; i < same.rgba.size(); ++i) lit += i % 4 != 3 && same.rgba[i] != 0;
   EXPECT_EQ(lit, 0);

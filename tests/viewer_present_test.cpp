@@ -8,6 +8,7 @@
 
 #include "aerial/image/tone_map.h"
 #include "aerial/viewer/display_passes.h"
+#include "display_target.h"
 #include "gpu_fixture.h"
 
 namespace aerial::testing {
@@ -83,17 +84,15 @@ TEST_F(ViewerToneMap, PresentPassMatchesPngBytes) {
   vk::Image input = Upload(ramp);
   std::vector<uint8_t> png = ToneMapToSrgb8(ramp, {.exposure = exposure});
   for (auto [format, red] : {std::pair{::vk::Format::eR8G8B8A8Unorm, 0}, std::pair{::vk::Format::eB8G8R8A8Unorm, 2}}) {
-    viewer::DisplayPasses passes(context, kRampSize, 1, format);
-    context.Submit([&](const auto& cmd) {
-      passes.RecordToneMap(cmd, input, exposure);
-      vk::FullBarrier(cmd);
-    });
-    std::vector<std::byte> display = ReadBack(passes.display());
+    DisplayTarget target(context, kRampSize, 1, format);
+    viewer::DisplayPasses passes(context, target.render_pass());
+    std::vector<uint8_t> display =
+        target.Draw([&](const auto& cmd) { passes.RecordToneMap(cmd, target.extent(), input, exposure); });
     int worst = 0, differing = 0;
     for (size_t i = 0; i < kRampSize; ++i) {
       for (int c = 0; c < 3; ++c) {
         int stored = c == 1 ? 1 : (c == 0 ? red : 2 - red);  // where channel c sits in the format
-        int d = std::abs(int(std::to_integer<uint8_t>(display[4 * i + stored])) - int(png[4 * i + c]));
+        int d = std::abs(int(display[4 * i + stored]) - int(png[4 * i + c]));
         worst = std::max(worst, d);
         differing += d > 0;
       }

@@ -1,17 +1,36 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Opaque geometry: the lit surface radiance (no aerial perspective yet) and its distance from the
-// camera, for the composite pass.
-#include "surface.glsl"
+// Opaque geometry seen through the air: L T + I_R P_R(nu) + I_M P_M(nu), with L the lit surface
+// radiance from the vertices (opaque.vert), (I_R, I_M, T) read from the froxel volume at the
+// fragment's screen position and distance (per-pixel mode: from the tables) and nu from the
+// fragment's own view ray. Geometry is drawn nearest first, so early depth tests skip this work
+// for hidden fragments.
+#include "froxel.glsl"
+#include "frame.glsl"
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
-layout(set = 0, binding = 3) uniform sampler2D irradiance_texture;
+layout(set = 0, binding = 4) uniform sampler3D rayleigh_texture;
+layout(set = 0, binding = 5) uniform sampler3D mie_texture;
+layout(set = 0, binding = 6) uniform sampler3D multiple_texture;
+layout(set = 0, binding = 7) uniform sampler3D rayleigh_froxels;
+layout(set = 0, binding = 8) uniform sampler3D mie_froxels;
+layout(set = 0, binding = 9) uniform sampler3D transmittance_froxels;
 layout(location = 0) in vec3 relative_position;
-layout(location = 1) in vec3 surface_normal;
-layout(location = 2) in vec3 surface_albedo;
-layout(location = 0) out vec4 radiance_and_distance;
+layout(location = 1) in vec3 surface_radiance;
+layout(location = 0) out vec4 color;
 
 void main() {
-  vec3 radiance = ShadeLambertian(transmittance_texture, irradiance_texture, relative_position,
-                                  normalize(surface_normal), surface_albedo);
-  radiance_and_distance = vec4(radiance, length(relative_position));
+  float distance = length(relative_position);
+  vec3 ray = relative_position / distance;
+  float r, mu, mu_s, nu;
+  GetCameraRayParameters(ray, r, mu, mu_s, nu);
+  Inscatter segment;
+  if (kAerialPerPixel == 1) {
+    segment = GetSkyInscatterToPoint(transmittance_texture, rayleigh_texture, mie_texture,
+                                     multiple_texture, r, mu, mu_s, nu, distance);
+  } else {
+    segment = SampleFroxels(rayleigh_froxels, mie_froxels, transmittance_froxels,
+                            gl_FragCoord.xy / frame.viewport.xy, distance,
+                            float(frame.froxel_size.z), frame.froxel_depth.x);
+  }
+  color = vec4(surface_radiance * segment.transmittance + ApplyPhaseFunctions(segment, nu), 1.0);
 }

@@ -1,43 +1,38 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Transparent geometry: lit like opaque surfaces, seen through the interpolated per-vertex
-// aerial perspective with per-pixel phase functions (or, in per-pixel mode, the tables), output
-// premultiplied: alpha (L T + I_R P_R + I_M P_M) over the composited background. The background
-// already holds the inscatter of the segment in front of the surface, so this blend is exact:
-// I + T (alpha L + (1 - alpha) L_behind).
-#include "surface.glsl"
+// Transparent geometry: the surface lit per vertex (transparent.vert), seen through the
+// interpolated per-vertex aerial perspective with per-pixel phase functions (or, in per-pixel
+// mode, the tables), output premultiplied: alpha (L T + I_R P_R + I_M P_M) over what is already
+// drawn. What is drawn already holds the inscatter of the segment in front of the surface, so
+// this blend is exact: I + T (alpha L + (1 - alpha) L_behind).
+#include "sky_lookup.glsl"
+#include "frame.glsl"
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
-layout(set = 0, binding = 3) uniform sampler2D irradiance_texture;
 layout(set = 0, binding = 4) uniform sampler3D rayleigh_texture;
 layout(set = 0, binding = 5) uniform sampler3D mie_texture;
 layout(set = 0, binding = 6) uniform sampler3D multiple_texture;
 layout(location = 0) in vec3 relative_position;
-layout(location = 1) in vec3 surface_normal;
-layout(location = 2) in vec4 surface_albedo_opacity;
-layout(location = 3) in vec3 vertex_rayleigh;
-layout(location = 4) in vec3 vertex_mie;
-layout(location = 5) in vec3 vertex_transmittance;
+layout(location = 1) in vec4 surface_radiance_opacity;
+layout(location = 2) in vec3 vertex_rayleigh;
+layout(location = 3) in vec3 vertex_mie;
+layout(location = 4) in vec3 vertex_transmittance;
 layout(location = 0) out vec4 color;
 
 void main() {
-  vec3 ray = normalize(relative_position);
+  float distance = length(relative_position);
+  vec3 ray = relative_position / distance;
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
   Inscatter segment;
   if (kAerialPerPixel == 1) {
     segment = GetSkyInscatterToPoint(transmittance_texture, rayleigh_texture, mie_texture,
-                                     multiple_texture, r, mu, mu_s, nu, length(relative_position));
+                                     multiple_texture, r, mu, mu_s, nu, distance);
   } else {
     segment.rayleigh = vertex_rayleigh;
     segment.mie = vertex_mie;
     segment.transmittance = vertex_transmittance;
   }
-  // Two-sided: glass and particles are lit from whichever side faces the camera.
-  vec3 normal = normalize(surface_normal);
-  if (dot(normal, ray) > 0.0) normal = -normal;
-  vec3 surface = ShadeLambertian(transmittance_texture, irradiance_texture, relative_position,
-                                 normal, surface_albedo_opacity.rgb);
-  float alpha = surface_albedo_opacity.a;
-  vec3 radiance = surface * segment.transmittance + ApplyPhaseFunctions(segment, nu);
+  float alpha = surface_radiance_opacity.a;
+  vec3 radiance = surface_radiance_opacity.rgb * segment.transmittance + ApplyPhaseFunctions(segment, nu);
   color = vec4(radiance * alpha, alpha);
 }

@@ -1,10 +1,13 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Transparent geometry: the aerial perspective is read from the froxel volume per VERTEX (as
-// engines do for particles and glass) and interpolated across the triangle; the phase functions
-// are still evaluated per pixel, in the fragment shader.
+// Transparent geometry, per VERTEX as engines do for particles and glass: the aerial perspective
+// read from the froxel volume and the surface lit (Lambertian, two-sided: from whichever side
+// faces the camera), both interpolated across the triangle. The phase functions are still
+// evaluated per pixel, in the fragment shader.
 #include "froxel.glsl"
-#include "frame.glsl"
+#include "surface.glsl"
+layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
+layout(set = 0, binding = 3) uniform sampler2D irradiance_texture;
 layout(set = 0, binding = 7) uniform sampler3D rayleigh_froxels;
 layout(set = 0, binding = 8) uniform sampler3D mie_froxels;
 layout(set = 0, binding = 9) uniform sampler3D transmittance_froxels;
@@ -13,16 +16,17 @@ layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 albedo;
 layout(location = 3) in float opacity;
 layout(location = 0) out vec3 relative_position;
-layout(location = 1) out vec3 surface_normal;
-layout(location = 2) out vec4 surface_albedo_opacity;
-layout(location = 3) out vec3 vertex_rayleigh;
-layout(location = 4) out vec3 vertex_mie;
-layout(location = 5) out vec3 vertex_transmittance;
+layout(location = 1) out vec4 surface_radiance_opacity;
+layout(location = 2) out vec3 vertex_rayleigh;
+layout(location = 3) out vec3 vertex_mie;
+layout(location = 4) out vec3 vertex_transmittance;
 
 void main() {
   relative_position = position - frame.camera_scene_position.xyz;
-  surface_normal = normal;
-  surface_albedo_opacity = vec4(albedo, opacity);
+  vec3 facing = dot(normal, relative_position) > 0.0 ? -normal : normal;
+  surface_radiance_opacity =
+      vec4(ShadeLambertian(transmittance_texture, irradiance_texture, relative_position, facing, albedo),
+           opacity);
   gl_Position = frame.view_projection * vec4(relative_position, 1.0);
   vec2 uv = gl_Position.xy / gl_Position.w * 0.5 + 0.5;
   Inscatter inscatter =

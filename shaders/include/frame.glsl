@@ -28,6 +28,12 @@ vec3 ViewRayFromScreen(vec2 uv) {
   return normalize(world.xyz / world.w);
 }
 
+// The distance from the camera to the point a pixel's reversed-Z depth value stands for.
+float DistanceFromDepth(vec2 uv, float depth) {
+  vec4 world = frame.inverse_view_projection * vec4(uv * 2.0 - 1.0, depth, 1.0);
+  return length(world.xyz / world.w);
+}
+
 // The (r, mu, mu_s, nu) of a ray from the camera, for the table lookups.
 void GetCameraRayParameters(vec3 ray, out float r, out float mu, out float mu_s, out float nu) {
   vec3 x = frame.camera_planet_position.xyz;

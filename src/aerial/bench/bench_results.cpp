@@ -16,8 +16,7 @@ double VariantResult::PrecomputeMs() const { return Summarize(GpuTotals(precompu
 double VariantResult::FrameMs() const { return Summarize(GpuTotals(froxel_frames)).median; }
 double VariantResult::PerPixelFrameMs() const { return Summarize(GpuTotals(per_pixel_frames)).median; }
 double VariantResult::FroxelBuildMs() const { return Median(froxel_frames, kFroxelBuildPass); }
-double VariantResult::CompositeMs() const { return Median(froxel_frames, kCompositePass); }
-double VariantResult::PerPixelCompositeMs() const { return Median(per_pixel_frames, kCompositePass); }
+double VariantResult::FrameWallMs() const { return Summarize(WallTotals(froxel_frames)).median; }
 
 const VariantResult& BenchResults::Find(const std::string& tier, LutVariant variant) const {
   for (const VariantResult& r : results)

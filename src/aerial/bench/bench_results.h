@@ -34,9 +34,8 @@ struct VariantResult {
   double PrecomputeMs() const;
   double FrameMs() const;          // whole froxel-path frame
   double PerPixelFrameMs() const;  // whole per-pixel-path frame
+  double FrameWallMs() const;      // the froxel-path frame's wall-clock time, CPU work included
   double FroxelBuildMs() const;
-  double CompositeMs() const;
-  double PerPixelCompositeMs() const;
 };
 
 // How the CPU reference was sampled in one view.

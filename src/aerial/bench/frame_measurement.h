@@ -1,7 +1,9 @@
 #pragma once
 // Frames of several renderers of one scene, interleaved (frame i: every renderer in turn) so that
 // all see the same machine noise, after warm-up frames: lavapipe compiles each pipeline on its
-// first use, so the first frame of a renderer costs far more than the next ones.
+// first use, so the first frame of a renderer costs far more than the next ones. Each frame has
+// its GPU pass times and its wall-clock time: Renderer::Render from the call to the end of the
+// wait, the CPU's part (terrain selection, sorting, recording, submitting) included.
 #include <functional>
 #include <vector>
 
@@ -12,7 +14,6 @@ namespace aerial::bench {
 
 // The passes timed by the renderer that the frame statistics name (renderer.cpp).
 inline constexpr const char* kFroxelBuildPass = "froxel build";
-inline constexpr const char* kCompositePass = "composite";
 
 // frames[r] holds renderer r's measured frames, in order. on_frame (may be empty) is called after
 // every frame, warm-up included.

@@ -42,8 +42,7 @@ nlohmann::json EntryJson(const VariantResult& r) {
   entry["frame_ms"] = r.FrameMs();
   entry["per_pixel_frame_ms"] = r.PerPixelFrameMs();
   entry["froxel_build_ms"] = r.FroxelBuildMs();
-  entry["composite_ms"] = r.CompositeMs();
-  entry["per_pixel_composite_ms"] = r.PerPixelCompositeMs();
+  entry["frame_wall_ms"] = r.FrameWallMs();
   entry["frame_pass_median_ms"] = {{"froxel", FramePassesJson(r.froxel_frames)},
                                    {"per_pixel", FramePassesJson(r.per_pixel_frames)}};
   nlohmann::json accuracy = nlohmann::json::object();
@@ -131,13 +130,13 @@ nlohmann::json ResultsJson(const BenchResults& b) {
 std::string ResultsCsv(const BenchResults& b) {
   std::ostringstream csv;
   csv << "variant,tier,scattering_size,table_bytes,precompute_ms,frame_ms,per_pixel_frame_ms,"
-         "froxel_build_ms,composite_ms,view,comparison,pixels,pixel_count,rel_rmse,rel_max\n";
+         "froxel_build_ms,frame_wall_ms,view,comparison,pixels,pixel_count,rel_rmse,rel_max\n";
   for (const VariantResult& r : b.results) {
     std::string head = ToString(r.variant()) + "," + r.tier + "," +
                        ScatteringSize(r.precompute.options.resolution) + "," +
                        std::to_string(r.precompute.table_bytes) + "," + CsvNumber(r.PrecomputeMs()) + "," +
                        CsvNumber(r.FrameMs()) + "," + CsvNumber(r.PerPixelFrameMs()) + "," +
-                       CsvNumber(r.FroxelBuildMs()) + "," + CsvNumber(r.CompositeMs());
+                       CsvNumber(r.FroxelBuildMs()) + "," + CsvNumber(r.FrameWallMs());
     for (const ViewAccuracy& view : r.accuracy)
       for (const auto& [name, errors] : NamedComparisons(view))
         for (PixelClass pixels : {PixelClass::kSky, PixelClass::kOpaque}) {

@@ -40,6 +40,9 @@ void RunRender(const RenderCommandOptions& options) {
       total += pass.milliseconds;
     }
     std::printf("  %-24s %9.2f ms\n", "total", total);
+    const TerrainFrameStats& terrain = renderer.terrain_stats();
+    if (terrain.chunks > 0)
+      std::printf("  terrain: %zu chunks, %zu triangles\n", terrain.chunks, terrain.triangles);
   }
 }
 

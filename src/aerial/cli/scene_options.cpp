@@ -58,6 +58,15 @@ void FrameOptions::AddTo(CLI::App& command, const std::string& size_help) {
                      "Radiance multiplier before tone mapping (PNG images, the viewer's window)");
   command.add_option("--aerial", aerial, "Aerial perspective: froxel or per-pixel")
       ->check(CLI::IsMember({"froxel", "per-pixel"}));
+  command.add_option("--render-scale", render_scale,
+                     "Rasterize at this fraction (0.25 to 1) of the size, then upscale (default 1)");
+  command.add_option("--terrain", terrain,
+                     "Terrain: lod (level of detail following the camera, default) or mesh (the fixed "
+                     "294K-triangle reference mesh)")
+      ->check(CLI::IsMember({"lod", "mesh"}));
+  command.add_option("--terrain-error-px", terrain_error_px,
+                     "Terrain level of detail: largest height error on screen, in pixels at 720 rows "
+                     "or more (0.25 to 64)");
 }
 
 RenderOptions FrameOptions::MakeRenderOptions() const {
@@ -66,6 +75,9 @@ RenderOptions FrameOptions::MakeRenderOptions() const {
   render.height = height;
   render.froxels = froxels.Make();
   render.mode = aerial == "per-pixel" ? AerialMode::kPerPixel : AerialMode::kFroxel;
+  render.render_scale = render_scale;
+  render.terrain = terrain == "mesh" ? TerrainMode::kStaticMesh : TerrainMode::kLod;
+  render.terrain_error_px = terrain_error_px;
   render.Validate();
   return render;
 }

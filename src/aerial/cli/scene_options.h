@@ -42,9 +42,12 @@ struct FrameOptions {
   int height = 720;
   double exposure = 8.0;
   std::string aerial = "froxel";
+  double render_scale = 1.0;
+  std::string terrain = "lod";
+  double terrain_error_px = kDefaultTerrainErrorPx;
 
-  // The froxel options, --width/--height (size_help: what they size, "Image"), --exposure and
-  // --aerial.
+  // The froxel options, --width/--height (size_help: what they size, "Image"), --exposure,
+  // --aerial, --render-scale, --terrain and --terrain-error-px.
   void AddTo(CLI::App& command, const std::string& size_help);
   RenderOptions MakeRenderOptions() const;  // validated
 };

@@ -1,61 +1,64 @@
 #include "aerial/render/renderer.h"
 
 #include <array>
+#include <cmath>
 
 #include "aerial/core/error.h"
+#include "aerial/image/resample.h"
+#include "aerial/scene/terrain.h"
 
 namespace aerial {
 namespace {
 
+using vk::kSampled;
+using vk::kUniform;
+
 int32_t PerPixel(AerialMode mode) { return mode == AerialMode::kPerPixel ? 1 : 0; }
 
+constexpr ::vk::Format kRadianceFormat = ::vk::Format::eR32G32B32A32Sfloat;
+constexpr ::vk::Format kDepthFormat = ::vk::Format::eD32Sfloat;
+
+// Terrain chunk slots on the GPU: the default view at 720p draws a few hundred chunks and walks
+// through about as many coarser ones; the rest keeps chunks around for a camera that moves.
+constexpr uint32_t kTerrainChunkSlots = 8192;
+
+// Opaque and transparent meshes read the same resources: the atmosphere and frame blocks, the
+// transmittance and irradiance tables (lighting), the scattering tables (per-pixel mode) and the
+// froxels.
+const std::vector<::vk::DescriptorType> kMeshSlots = {kUniform, kUniform, kSampled, kSampled, kSampled,
+                                                      kSampled, kSampled, kSampled, kSampled, kSampled};
+
 vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std::string& fragment,
-                                            std::vector<::vk::DescriptorType> slots, bool blended,
-                                            AerialMode mode) {
+                                            bool blended, AerialMode mode) {
   return {.vertex_shader = vertex,
           .fragment_shader = fragment,
-          .slot_types = std::move(slots),
+          .slot_types = kMeshSlots,
           .vertex_stride = sizeof(Vertex),
           .attributes = {{::vk::Format::eR32G32B32Sfloat, offsetof(Vertex, position)},
                          {::vk::Format::eR32G32B32Sfloat, offsetof(Vertex, normal)},
                          {::vk::Format::eR32G32B32Sfloat, offsetof(Vertex, albedo)},
                          {::vk::Format::eR32Sfloat, offsetof(Vertex, opacity)}},
-          .color_formats = {::vk::Format::eR32G32B32A32Sfloat},
-          .depth_format = ::vk::Format::eD32Sfloat,
+          .color_formats = {kRadianceFormat},
+          .depth_format = kDepthFormat,
           .depth_write = !blended,
           .alpha_blend = blended,
+          .dynamic_cull_mode = !blended,
           .specialization = {PerPixel(mode)}};
 }
 
-// The composite is two full-screen passes split by the depth buffer (reversed Z, cleared to 0):
-// EQUAL 0 keeps the sky pixels, LESS (0 < stored depth) the pixels with geometry. Each pixel then
-// runs only its own shader; in one shader a CPU rasterizer runs both sides of the branch.
-vk::GraphicsPipelineCreateInfo CompositePipeline(AerialMode mode, const std::string& fragment,
-                                                 ::vk::CompareOp depth_compare, size_t samplers) {
-  std::vector<::vk::DescriptorType> slots = {vk::kUniform, vk::kUniform};
-  slots.insert(slots.end(), samplers, vk::kSampled);
-  return {.vertex_shader = "frame/fullscreen.vert",
-          .fragment_shader = fragment,
-          .slot_types = slots,
-          .vertex_stride = 16,
-          .attributes = {{::vk::Format::eR32G32B32A32Sfloat, 0}},
-          .color_formats = {::vk::Format::eR32G32B32A32Sfloat},
-          .depth_format = ::vk::Format::eD32Sfloat,
+// The sky: a full-screen triangle at depth 0 whose test (EQUAL against the depth cleared to 0,
+// reversed Z) passes only where no geometry was drawn, so each pixel runs one shader or the other.
+vk::GraphicsPipelineCreateInfo SkyPipeline(AerialMode mode) {
+  return {.vertex_shader = "frame/sky.vert",
+          .fragment_shader = "frame/sky.frag",
+          .slot_types = {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled,
+                         kSampled, kSampled, kSampled},
+          .color_formats = {kRadianceFormat},
+          .depth_format = kDepthFormat,
           .depth_write = false,
-          .depth_compare = depth_compare,
+          .depth_compare = ::vk::CompareOp::eEqual,
           .specialization = {PerPixel(mode)}};
 }
-
-vk::Buffer HostBuffer(const vk::Context& context, std::span<const std::byte> bytes,
-                      ::vk::BufferUsageFlags usage) {
-  vk::Buffer buffer(context, {.size = bytes.size(), .usage = usage, .host_visible = true});
-  buffer.Write(bytes);
-  return buffer;
-}
-
-// One triangle covering the screen: (-1,-1), (3,-1), (-1,3) in clip space.
-constexpr std::array<float, 12> kFullscreenTriangle = {-1, -1, 0, 1, 3, -1, 0, 1, -1, 3, 0, 1};
-constexpr std::array<uint32_t, 3> kFullscreenIndices = {0, 1, 2};
 
 // The sky-view table's size (Hillaire 2020 uses 192x108): azimuth over [0, pi], zenith split at
 // the horizon (54 rows each side).
@@ -66,139 +69,232 @@ vk::ImageCreateInfo SkyViewImage() {
 }
 
 vk::ImageCreateInfo Target(const RenderOptions& o, ::vk::Format format, ::vk::ImageUsageFlags usage) {
-  return {.extent = {uint32_t(o.width), uint32_t(o.height), 1}, .format = format, .usage = usage};
+  return {.extent = {uint32_t(o.render_width()), uint32_t(o.render_height()), 1},
+          .format = format,
+          .usage = usage | ::vk::ImageUsageFlagBits::eSampled | ::vk::ImageUsageFlagBits::eTransferSrc};
+}
+
+std::vector<Mesh> ReferenceTerrain(const Scene& scene, const RenderOptions& options, double R) {
+  if (!scene.terrain || options.terrain != TerrainMode::kStaticMesh || !options.passes.terrain) return {};
+  return {BuildTerrainMesh(R)};
+}
+
+std::unique_ptr<TerrainChunkCache> TerrainCache(const vk::Context& context, const Scene& scene,
+                                                const RenderOptions& options, double R) {
+  if (!scene.terrain || options.terrain != TerrainMode::kLod) return nullptr;
+  return std::make_unique<TerrainChunkCache>(context, R, kTerrainChunkSlots, options.frames_in_flight);
 }
 
 }  // namespace
 
 void RenderOptions::Validate() const {
   CheckImageSize(width, height, "--width/--height");
+  if (!(render_scale >= 0.25 && render_scale <= 1.0))
+    throw Error("--render-scale", std::to_string(render_scale), "0.25 to 1");
+  if (!(terrain_error_px >= 0.25 && terrain_error_px <= 64.0))
+    throw Error("--terrain-error-px", std::to_string(terrain_error_px), "0.25 to 64");
   froxels.Validate();
 }
 
-using vk::kSampled;
-using vk::kUniform;
+int RenderOptions::render_width() const { return std::max(1, int(std::lround(width * render_scale))); }
+int RenderOptions::render_height() const { return std::max(1, int(std::lround(height * render_scale))); }
 
 Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const RenderOptions& options)
     : tables_(tables),
       options_((options.Validate(), options)),
-      geometry_(tables.context(), scene),
+      geometry_(tables.context(), scene, options.frames_in_flight,
+                ReferenceTerrain(scene, options, tables.atmosphere().bottom_radius_m)),
+      terrain_(TerrainCache(tables.context(), scene, options, tables.atmosphere().bottom_radius_m)),
       froxels_(tables.context(), options.froxels),
-      frame_buffer_(tables.context(), {.size = sizeof(FrameUniforms),
-                                       .usage = ::vk::BufferUsageFlagBits::eUniformBuffer,
-                                       .host_visible = true}),
-      surface_(tables.context(), Target(options, ::vk::Format::eR32G32B32A32Sfloat,
-                                        ::vk::ImageUsageFlagBits::eColorAttachment |
-                                            ::vk::ImageUsageFlagBits::eSampled |
-                                            ::vk::ImageUsageFlagBits::eTransferSrc)),
-      depth_(tables.context(), Target(options, ::vk::Format::eD32Sfloat,
-                                      ::vk::ImageUsageFlagBits::eDepthStencilAttachment)),
-      output_(tables.context(), Target(options, ::vk::Format::eR32G32B32A32Sfloat,
-                                       ::vk::ImageUsageFlagBits::eColorAttachment |
-                                           ::vk::ImageUsageFlagBits::eSampled |
-                                           ::vk::ImageUsageFlagBits::eTransferSrc)),
+      depth_(tables.context(), Target(options, kDepthFormat, ::vk::ImageUsageFlagBits::eDepthStencilAttachment)),
+      output_(tables.context(), Target(options, kRadianceFormat, ::vk::ImageUsageFlagBits::eColorAttachment)),
       sky_rayleigh_(tables.context(), SkyViewImage()),
       sky_mie_(tables.context(), SkyViewImage()),
       sky_background_(tables.context(), SkyViewImage()),
       sky_view_(tables.context(), "frame/sky_view.comp",
-                {vk::kUniform, vk::kUniform, vk::kSampled, vk::kSampled, vk::kSampled, vk::kSampled,
-                 vk::kSampled, vk::kStorageImage, vk::kStorageImage, vk::kStorageImage},
+                {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled,
+                 vk::kStorageImage, vk::kStorageImage, vk::kStorageImage},
                 sizeof(kSkyViewSize)),
-      opaque_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/opaque.frag",
-                                             {kUniform, kUniform, kSampled, kSampled}, false,
-                                             options.mode)),
+      opaque_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/opaque.frag", false, options.mode)),
+      sky_(tables.context(), SkyPipeline(options.mode)),
       transparent_(tables.context(),
-                   MeshPipeline("frame/transparent.vert", "frame/transparent.frag",
-                                {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled,
-                                 kSampled, kSampled, kSampled, kSampled},
-                                true, options.mode)),
-      composite_sky_(tables.context(), CompositePipeline(options.mode, "frame/composite_sky.frag",
-                                                         ::vk::CompareOp::eEqual, 8)),
-      composite_surface_(tables.context(),
-                         CompositePipeline(options.mode, "frame/composite_surface.frag",
-                                           ::vk::CompareOp::eLess, 8)),
-      fullscreen_vertices_(HostBuffer(tables.context(), std::as_bytes(std::span(kFullscreenTriangle)),
-                                      ::vk::BufferUsageFlagBits::eVertexBuffer)),
-      fullscreen_indices_(HostBuffer(tables.context(), std::as_bytes(std::span(kFullscreenIndices)),
-                                     ::vk::BufferUsageFlagBits::eIndexBuffer)),
-      timer_(std::make_unique<vk::GpuTimer>(tables.context())) {
+                   MeshPipeline("frame/transparent.vert", "frame/transparent.frag", true, options.mode)),
+      surface_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/surface.frag", false, options.mode)) {
+  if (options.frames_in_flight < 1) throw Error("frames in flight", "0", "at least 1");
+  for (uint32_t slot = 0; slot < options.frames_in_flight; ++slot) {
+    frame_buffers_.emplace_back(tables.context(), vk::BufferCreateInfo{
+                                                      .size = sizeof(FrameUniforms),
+                                                      .usage = ::vk::BufferUsageFlagBits::eUniformBuffer,
+                                                      .host_visible = true});
+    timers_.push_back(std::make_unique<vk::GpuTimer>(tables.context()));
+  }
   tables.context().Submit([&](const auto& cmd) {
-    for (const vk::Image* image : {&surface_, &depth_, &output_, &sky_rayleigh_, &sky_mie_,
-                                   &sky_background_})
+    for (const vk::Image* image : {&depth_, &output_, &sky_rayleigh_, &sky_mie_, &sky_background_})
       image->InitializeLayout(cmd);
   });
 }
 
 Renderer::~Renderer() = default;
 
-std::vector<vk::PassTime> Renderer::Render(const Scene& scene) {
-  frame_uniforms_ = MakeFrameUniforms(scene, tables_.atmosphere().bottom_radius_m, options_.width,
-                                      options_.height, options_.froxels);
-  frame_buffer_.Write(std::as_bytes(std::span(&frame_uniforms_, 1)));
-  geometry_.SortTransparent(scene.camera.position);
+// The chunks to draw, nearest first (terrain/lod_selection.h), built as needed.
+void Renderer::SelectTerrain(const Scene& scene, bool complete) {
+  terrain_stats_ = {};
+  terrain_chunks_.clear();
+  if (!terrain_ || !options_.passes.terrain) return;
+  // The first frame builds all it needs, so that a window opens on the whole terrain.
+  terrain_->BeginFrame(complete || frames_recorded_ == 0 ? 0.0 : options_.terrain_build_budget_ms);
+  double aspect = double(options_.render_width()) / double(options_.render_height());
+  terrain::LodView view =
+      terrain::MakeLodView(scene.camera, aspect, options_.render_height(), options_.terrain_error_px);
+  terrain::Selection selection = terrain::SelectChunks(view, *terrain_);
+  terrain_chunks_ = std::move(selection.chunks);
+  size_t indices = 0;
+  for (const terrain::SelectedChunk& chunk : terrain_chunks_) indices += terrain::ChunkIndexRange(chunk.skirts).count;
+  terrain_stats_ = {.chunks = terrain_chunks_.size(),
+                    .triangles = indices / 3,
+                    .deferred = selection.deferred,
+                    .built = terrain_->built_this_frame()};
+}
+
+// The sky-view table depends on the camera's distance from the planet's center and the sun's
+// zenith angle there, nothing else (sky_view.glsl builds it in the camera's local frame): it is
+// remade only when one of them changes, or on the first frame.
+void Renderer::RecordSkyView(const ::vk::raii::CommandBuffer& cmd, const vk::Buffer& frame) {
+  const auto& p = frame_uniforms_.camera_planet_position;
+  const auto& s = frame_uniforms_.sun_direction;
+  float r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+  std::array<float, 2> key = {r, (p[0] * s[0] + p[1] * s[1] + p[2] * s[2]) / r};
+  if (sky_view_key_ == key) return;
+  sky_view_key_ = key;
+  ::vk::Sampler sampler = tables_.sampler();
+  auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
+  sky_view_.Dispatch(cmd,
+                     {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame},
+                      sampled(tables_.transmittance()), sampled(tables_.rayleigh()), sampled(tables_.mie()),
+                      sampled(tables_.multiple()), sampled(tables_.irradiance()),
+                      vk::StorageImageSlot{&sky_rayleigh_}, vk::StorageImageSlot{&sky_mie_},
+                      vk::StorageImageSlot{&sky_background_}},
+                     {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}, {8, 8, 1},
+                     kSkyViewSize.data());
+}
+
+std::vector<vk::Slot> Renderer::MeshSlots(uint32_t slot) const {
+  ::vk::Sampler sampler = tables_.sampler();
+  auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
+  return {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame_buffers_[slot]},
+          sampled(tables_.transmittance()), sampled(tables_.irradiance()), sampled(tables_.rayleigh()),
+          sampled(tables_.mie()), sampled(tables_.multiple()), sampled(froxels_.rayleigh()),
+          sampled(froxels_.mie()), sampled(froxels_.transmittance())};
+}
+
+// Nearest first, so that early depth tests skip the shading of what is hidden: the scene's meshes
+// (landmarks and models standing on the ground), then the terrain's chunks by distance.
+void Renderer::DrawOpaque(const ::vk::raii::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
+                          const std::vector<vk::Slot>& slots) const {
+  pipeline.Bind(cmd, slots);
+  vk::BindMesh(cmd, geometry_.opaque_vertices(), geometry_.opaque_indices());
+  vk::SetCullBackFaces(cmd, true);
+  vk::DrawIndexed(cmd, geometry_.single_sided_index_count());
+  uint32_t double_sided = geometry_.opaque_index_count() - geometry_.single_sided_index_count();
+  if (double_sided > 0) {
+    vk::SetCullBackFaces(cmd, false);
+    vk::DrawIndexed(cmd, double_sided, geometry_.single_sided_index_count());
+  }
+  if (terrain_chunks_.empty()) return;
+  vk::SetCullBackFaces(cmd, true);
+  vk::BindMesh(cmd, terrain_->vertices(), terrain_->indices());
+  for (const terrain::SelectedChunk& chunk : terrain_chunks_) {
+    terrain::IndexRange range = terrain::ChunkIndexRange(chunk.skirts);
+    vk::DrawIndexed(cmd, range.count, range.first, terrain_->VertexOffset(chunk.id));
+  }
+}
+
+void Renderer::Record(const ::vk::raii::CommandBuffer& cmd, const Scene& scene, uint32_t slot,
+                      bool complete) {
+  if (slot >= options_.frames_in_flight)
+    throw Error("frame slot", std::to_string(slot), "below " + std::to_string(options_.frames_in_flight));
+  const vk::Buffer& frame = frame_buffers_[slot];
+  vk::GpuTimer& timer = *timers_[slot];
+  frame_uniforms_ = MakeFrameUniforms(scene, tables_.atmosphere().bottom_radius_m, options_.render_width(),
+                                      options_.render_height(), options_.froxels);
+  frame_buffers_[slot].Write(std::as_bytes(std::span(&frame_uniforms_, 1)));
+  geometry_.SortTransparent(scene.camera.position, slot);
+  SelectTerrain(scene, complete);
+
   ::vk::Sampler sampler = tables_.sampler();
   auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
   vk::Slot atmosphere = vk::UniformBufferSlot{&tables_.uniform_buffer()};
-  vk::Slot frame = vk::UniformBufferSlot{&frame_buffer_};
-  tables_.context().Submit([&](const ::vk::raii::CommandBuffer& cmd) {
-    timer_->Reset(cmd);
-    if (options_.mode == AerialMode::kFroxel) {
-      timer_->Begin(cmd, "froxel build");
-      froxels_.Build(cmd, tables_, frame_buffer_);
-      timer_->End(cmd);
-      timer_->Begin(cmd, "sky view");
-      sky_view_.Dispatch(cmd,
-                         {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.rayleigh()),
-                          sampled(tables_.mie()), sampled(tables_.multiple()),
-                          sampled(tables_.irradiance()), vk::StorageImageSlot{&sky_rayleigh_}, vk::StorageImageSlot{&sky_mie_},
-                          vk::StorageImageSlot{&sky_background_}},
-                         {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}, {8, 8, 1},
-                         kSkyViewSize.data());
-      timer_->End(cmd);
+  vk::Slot frame_slot = vk::UniformBufferSlot{&frame};
+  // The previous frame's reads and writes of the shared images come before this frame's.
+  vk::FullBarrier(cmd);
+  timer.Reset(cmd);
+  if (options_.mode == AerialMode::kFroxel) {
+    timer.Begin(cmd, "froxel build");
+    froxels_.Build(cmd, tables_, frame);
+    timer.End(cmd);
+    timer.Begin(cmd, "sky view");
+    RecordSkyView(cmd, frame);
+    timer.End(cmd);
+    vk::FullBarrier(cmd);
+  }
+  std::vector<vk::Slot> mesh_slots = MeshSlots(slot);
+  {
+    // Every pixel is written once by the opaque pass or the sky, so the output is not cleared.
+    vk::Rendering rendering(cmd, {.colors = {&output_}, .clear_colors = {std::nullopt},
+                                  .depth = &depth_, .clear_depth = 0.0f});
+    timer.Begin(cmd, "opaque raster");
+    DrawOpaque(cmd, opaque_, mesh_slots);
+    timer.End(cmd);
+    timer.Begin(cmd, "sky");
+    if (options_.passes.sky) {
+      sky_.Bind(cmd, {atmosphere, frame_slot, sampled(tables_.transmittance()), sampled(tables_.rayleigh()),
+                      sampled(tables_.mie()), sampled(tables_.multiple()), sampled(tables_.irradiance()),
+                      sampled(sky_rayleigh_), sampled(sky_mie_), sampled(sky_background_)});
+      vk::DrawFullScreenTriangle(cmd);
     }
-    timer_->Begin(cmd, "opaque raster");
-    // Sky pixels keep distance -1; reversed Z clears depth to 0 (infinitely far).
-    opaque_.Draw(cmd, {.colors = {&surface_}, .clear_colors = {std::array<float, 4>{0, 0, 0, -1}},
-                       .depth = &depth_, .clear_depth = 0.0f},
-                 {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.irradiance())},
-                 geometry_.opaque_vertices(), geometry_.opaque_indices(), geometry_.opaque_index_count());
-    timer_->End(cmd);
-    vk::FullBarrier(cmd);
-    timer_->Begin(cmd, "composite");
-    // No clear: the sky pass and the geometry pass below together write every pixel once.
-    composite_sky_.Draw(cmd, {.colors = {&output_}, .clear_colors = {std::nullopt}, .depth = &depth_},
-                        {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.rayleigh()),
-                         sampled(tables_.mie()), sampled(tables_.multiple()), sampled(tables_.irradiance()),
-                         sampled(sky_rayleigh_), sampled(sky_mie_), sampled(sky_background_)},
-                        fullscreen_vertices_, fullscreen_indices_, 3);
-    composite_surface_.Draw(cmd, {.colors = {&output_}, .clear_colors = {std::nullopt}, .depth = &depth_},
-                            {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.rayleigh()),
-                             sampled(tables_.mie()), sampled(tables_.multiple()), sampled(froxels_.rayleigh()),
-                             sampled(froxels_.mie()), sampled(froxels_.transmittance()), sampled(surface_)},
-                            fullscreen_vertices_, fullscreen_indices_, 3);
-    timer_->End(cmd);
-    vk::FullBarrier(cmd);
-    timer_->Begin(cmd, "transparent raster");
-    if (geometry_.transparent_index_count() > 0) {
-      transparent_.Draw(cmd, {.colors = {&output_}, .clear_colors = {std::nullopt}, .depth = &depth_},
-                        {atmosphere, frame, sampled(tables_.transmittance()), sampled(tables_.irradiance()),
-                         sampled(tables_.rayleigh()), sampled(tables_.mie()), sampled(tables_.multiple()),
-                         sampled(froxels_.rayleigh()), sampled(froxels_.mie()),
-                         sampled(froxels_.transmittance())},
-                        geometry_.transparent_vertices(), geometry_.transparent_indices(),
-                        geometry_.transparent_index_count());
+    timer.End(cmd);
+    timer.Begin(cmd, "transparent raster");
+    if (options_.passes.transparent && geometry_.transparent_index_count() > 0) {
+      transparent_.Bind(cmd, mesh_slots);
+      vk::BindMesh(cmd, geometry_.transparent_vertices(), geometry_.transparent_indices(slot));
+      vk::DrawIndexed(cmd, geometry_.transparent_index_count());
     }
-    timer_->End(cmd);
-    vk::FullBarrier(cmd);
-  });
-  return timer_->Collect();
+    timer.End(cmd);
+  }
+  vk::FullBarrier(cmd);
+  ++frames_recorded_;
+  last_slot_ = slot;
 }
 
-ImageRgbF Renderer::ReadOutput() const { return Read(output_); }
-ImageRgbF Renderer::ReadSurface() const { return Read(surface_); }
+std::vector<vk::PassTime> Renderer::PassTimes(uint32_t slot) const { return timers_[slot]->Collect(); }
 
-ImageRgbF Renderer::Read(const vk::Image& image) const {
-  return ImageRgbF{options_.width, options_.height, vk::ReadImageFloats(tables_.context(), image)};
+std::vector<vk::PassTime> Renderer::Render(const Scene& scene) {
+  tables_.context().Submit([&](const ::vk::raii::CommandBuffer& cmd) { Record(cmd, scene, 0); });
+  return PassTimes(0);
+}
+
+ImageRgbF Renderer::ReadOutput() const {
+  ImageRgbF rendered{options_.render_width(), options_.render_height(),
+                     vk::ReadImageFloats(tables_.context(), output_)};
+  if (rendered.width == options_.width && rendered.height == options_.height) return rendered;
+  return ResizeBilinear(rendered, options_.width, options_.height);
+}
+
+ImageRgbF Renderer::ReadSurface() const {
+  const vk::Context& context = tables_.context();
+  vk::Image surface(context, Target(options_, kRadianceFormat, ::vk::ImageUsageFlagBits::eColorAttachment));
+  vk::Image depth(context, Target(options_, kDepthFormat, ::vk::ImageUsageFlagBits::eDepthStencilAttachment));
+  context.Submit([&](const ::vk::raii::CommandBuffer& cmd) {
+    surface.InitializeLayout(cmd);
+    depth.InitializeLayout(cmd);
+    {
+      vk::Rendering rendering(cmd, {.colors = {&surface}, .clear_colors = {std::array<float, 4>{0, 0, 0, -1}},
+                                    .depth = &depth, .clear_depth = 0.0f});
+      DrawOpaque(cmd, surface_, MeshSlots(last_slot_));
+    }
+    vk::FullBarrier(cmd);
+  });
+  return ImageRgbF{options_.render_width(), options_.render_height(), vk::ReadImageFloats(context, surface)};
 }
 
 }  // namespace aerial

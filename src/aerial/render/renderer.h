@@ -1,31 +1,69 @@
 #pragma once
-// One frame, in three steps (shared/design.md, "The pipeline at a glance"):
-//   1. froxel pass: the camera-aligned volume of phase-free inscatter and transmittance, and the
-//      sky-view table: the same for whole view rays, per direction around the camera;
-//   2. opaque raster (lit surface radiance + distance), then the per-pixel composite: phases from
-//      each pixel's own ray, aerial perspective from the froxels (or the tables), sky and sun;
-//   3. transparent raster, back to front, froxels read per vertex, phases per pixel, blended.
-// The same renderer serves `aerial render`, the viewer and the exporters.
+// One frame, recorded into one command buffer (shared/design.md, "The pipeline at a glance"):
+//   1. compute: the froxel volume of phase-free inscatter and transmittance, and, when the
+//      camera's altitude or the sun moved, the sky-view table (the same for whole view rays);
+//   2. one raster pass, with no image round trip inside: the opaque meshes and the terrain,
+//      nearest first, each fragment lit and seen through the air in the same shader (froxels or
+//      tables, phases from the fragment's own ray); then the sky, only where no geometry was
+//      drawn (depth test EQUAL against the cleared depth); then the transparent objects, back to
+//      front, reading the froxels per vertex, phases per pixel, blended.
+// The same renderer serves `aerial render`, the viewer and the exporters. Record writes nothing
+// the GPU may still be reading: its per-frame buffers have one copy per frame in flight.
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "aerial/image/image.h"
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/render/frame_uniforms.h"
 #include "aerial/render/scene_geometry.h"
+#include "aerial/render/terrain_chunk_cache.h"
 #include "aerial/vk/gpu_timer.h"
 #include "aerial/vk/graphics_pipeline.h"
 #include "froxel/froxel_volume.h"
 
 namespace aerial {
 
+// How the built-in terrain is drawn: chunks with a level of detail that follows the camera, or
+// the fixed polar mesh around the origin (BuildTerrainMesh) that the level of detail is measured
+// against.
+enum class TerrainMode { kLod, kStaticMesh };
+
+// The terrain's default screen-space error bound (lod_selection.h), in pixels at 720 rows or
+// more: see README, "Terrain".
+inline constexpr double kDefaultTerrainErrorPx = 4.0;
+
+// Passes a benchmark may leave out to measure what they cost (lavapipe's timestamps inside one
+// raster pass do not bracket its draws): every frame has all of them.
+struct FramePasses {
+  bool sky = true, transparent = true, terrain = true;
+};
+
 struct RenderOptions {
-  int width = 1280;
+  int width = 1280;   // the output image
   int height = 720;
+  // The frame is rasterized at render_scale times the output size, then upscaled (bilinear).
+  double render_scale = 1.0;
   FroxelGrid froxels;
   AerialMode mode = AerialMode::kFroxel;
+  TerrainMode terrain = TerrainMode::kLod;
+  double terrain_error_px = kDefaultTerrainErrorPx;
+  // CPU time a frame may spend building terrain chunks (ms); until they are built their parents
+  // are drawn. 0: every chunk the frame needs is built first (one-off renders, tests).
+  double terrain_build_budget_ms = 0.0;
+  // Copies of the per-frame resources: frames recorded before the previous ones finished.
+  uint32_t frames_in_flight = 1;
+  FramePasses passes;
 
-  void Validate() const;  // throws aerial::Error for an absurd size
+  void Validate() const;  // throws aerial::Error naming the option
+  int render_width() const;
+  int render_height() const;
+};
+
+struct TerrainFrameStats {
+  size_t chunks = 0, triangles = 0;
+  int deferred = 0;  // chunks drawn in place of finer ones not built yet
+  int built = 0;     // chunks built for this frame
 };
 
 class Renderer {
@@ -34,37 +72,60 @@ class Renderer {
   Renderer(const AtmosphereTables& tables, const Scene& scene, const RenderOptions& options);
   ~Renderer();
 
-  // Renders one frame and waits for it. Returns the GPU time of each pass.
+  // Records one frame into cmd, with the per-frame resources of slot (< frames_in_flight). The
+  // caller makes sure the slot's previous frame has finished (a CommandRing does). complete: build
+  // every terrain chunk the frame needs whatever the budget (the first frame always does), so
+  // that the frame is the one `aerial render` makes of the same view.
+  void Record(const ::vk::raii::CommandBuffer& cmd, const Scene& scene, uint32_t slot = 0,
+              bool complete = false);
+  // GPU time of each pass of the slot's last frame; call once that frame has finished.
+  std::vector<vk::PassTime> PassTimes(uint32_t slot = 0) const;
+  // Records one frame, submits it and waits for it. Returns the GPU time of each pass.
   std::vector<vk::PassTime> Render(const Scene& scene);
 
-  ImageRgbF ReadOutput() const;  // linear radiance of the last frame
-  // The opaque pass's target: lit surface radiance before aerial perspective in rgb, distance
-  // from the camera in a (negative where no geometry was drawn).
+  // Linear radiance of the last frame at the output size (upscaled when render_scale < 1).
+  ImageRgbF ReadOutput() const;
+  // The last frame's opaque geometry drawn again at the render size, without aerial perspective:
+  // lit surface radiance in rgb, distance from the camera (m) in a, a = -1 where no geometry is.
+  // For checks and benchmarks; frames never draw it.
   ImageRgbF ReadSurface() const;
-  // The images behind ReadOutput and ReadSurface (GENERAL layout, sampled), for passes that read
-  // the frame on the GPU (the viewer's tone map and debug views).
+
+  // The frame's images at the render size (GENERAL layout, sampled) for passes that read it on
+  // the GPU (the viewer's tone map and debug views): radiance, and reversed-Z depth.
   const vk::Image& output_image() const { return output_; }
-  const vk::Image& surface_image() const { return surface_; }
+  const vk::Image& depth_image() const { return depth_; }
+  const vk::Buffer& frame_buffer(uint32_t slot) const { return frame_buffers_[slot]; }
   const AtmosphereTables& tables() const { return tables_; }
   const FroxelVolume& froxels() const { return froxels_; }
-  const FrameUniforms& frame_uniforms() const { return frame_uniforms_; }
+  const FrameUniforms& frame_uniforms() const { return frame_uniforms_; }  // of the last frame
   const RenderOptions& options() const { return options_; }
+  const TerrainFrameStats& terrain_stats() const { return terrain_stats_; }
 
  private:
-  ImageRgbF Read(const vk::Image& image) const;
+  void SelectTerrain(const Scene& scene, bool complete);
+  void RecordSkyView(const ::vk::raii::CommandBuffer& cmd, const vk::Buffer& frame);
+  std::vector<vk::Slot> MeshSlots(uint32_t slot) const;
+  void DrawOpaque(const ::vk::raii::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
+                  const std::vector<vk::Slot>& slots) const;
 
   const AtmosphereTables& tables_;
   RenderOptions options_;
   SceneGeometry geometry_;
+  std::unique_ptr<TerrainChunkCache> terrain_;  // null without a terrain or with the fixed mesh
+  std::vector<terrain::SelectedChunk> terrain_chunks_;
+  TerrainFrameStats terrain_stats_;
+  uint64_t frames_recorded_ = 0;
+  uint32_t last_slot_ = 0;
   FroxelVolume froxels_;
-  vk::Buffer frame_buffer_;
+  std::vector<vk::Buffer> frame_buffers_;
+  std::vector<std::unique_ptr<vk::GpuTimer>> timers_;
   FrameUniforms frame_uniforms_{};
-  vk::Image surface_, depth_, output_;
+  vk::Image depth_, output_;
   vk::Image sky_rayleigh_, sky_mie_, sky_background_;
+  // (r, mu_s) the sky-view table was made for: it depends on nothing else of the frame.
+  std::optional<std::array<float, 2>> sky_view_key_;
   vk::ComputePipeline sky_view_;
-  vk::GraphicsPipeline opaque_, transparent_, composite_sky_, composite_surface_;
-  vk::Buffer fullscreen_vertices_, fullscreen_indices_;
-  std::unique_ptr<vk::GpuTimer> timer_;
+  vk::GraphicsPipeline opaque_, sky_, transparent_, surface_;
 };
 
 }  // namespace aerial

@@ -17,31 +17,49 @@ vk::Buffer Upload(const vk::Context& context, std::span<const std::byte> bytes,
 
 }  // namespace
 
-SceneGeometry::Packed SceneGeometry::Pack(const Scene& scene, bool transparent) {
-  Packed packed;
-  for (const Mesh& mesh : scene.meshes) {
-    if (mesh.transparent != transparent) continue;
-    uint32_t base = uint32_t(packed.vertices.size());
-    packed.vertices.insert(packed.vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
-    for (uint32_t index : mesh.indices) packed.indices.push_back(base + index);
-  }
-  return packed;
+void SceneGeometry::Packed::Append(const Mesh& mesh) {
+  uint32_t base = uint32_t(vertices.size());
+  vertices.insert(vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
+  for (uint32_t index : mesh.indices) indices.push_back(base + index);
 }
 
-SceneGeometry::SceneGeometry(const vk::Context& context, const Scene& scene)
-    : SceneGeometry(context, Pack(scene, false), Pack(scene, true)) {}
+SceneGeometry::Packing SceneGeometry::Pack(const Scene& scene, const std::vector<Mesh>& extra_opaque) {
+  Packing packing;
+  std::vector<const Mesh*> single_sided, double_sided;
+  for (const std::vector<Mesh>* meshes : {&scene.meshes, &extra_opaque}) {
+    for (const Mesh& mesh : *meshes) {
+      if (mesh.transparent) {
+        packing.transparent.Append(mesh);
+      } else {
+        (mesh.double_sided ? double_sided : single_sided).push_back(&mesh);
+      }
+    }
+  }
+  for (const Mesh* mesh : single_sided) packing.opaque.Append(*mesh);
+  packing.single_sided_index_count = uint32_t(packing.opaque.indices.size());
+  for (const Mesh* mesh : double_sided) packing.opaque.Append(*mesh);
+  return packing;
+}
 
-SceneGeometry::SceneGeometry(const vk::Context& context, const Packed& opaque,
-                             const Packed& transparent)
-    : opaque_index_count_(uint32_t(opaque.indices.size())),
-      opaque_vertices_(Upload(context, std::as_bytes(std::span(opaque.vertices)),
+SceneGeometry::SceneGeometry(const vk::Context& context, const Scene& scene, uint32_t frames_in_flight,
+                             const std::vector<Mesh>& extra_opaque)
+    : SceneGeometry(context, Pack(scene, extra_opaque), frames_in_flight) {}
+
+SceneGeometry::SceneGeometry(const vk::Context& context, const Packing& packing,
+                             uint32_t frames_in_flight)
+    : single_sided_index_count_(packing.single_sided_index_count),
+      opaque_index_count_(uint32_t(packing.opaque.indices.size())),
+      opaque_vertices_(Upload(context, std::as_bytes(std::span(packing.opaque.vertices)),
                               ::vk::BufferUsageFlagBits::eVertexBuffer)),
-      opaque_indices_(Upload(context, std::as_bytes(std::span(opaque.indices)),
+      opaque_indices_(Upload(context, std::as_bytes(std::span(packing.opaque.indices)),
                              ::vk::BufferUsageFlagBits::eIndexBuffer)),
-      transparent_vertices_(Upload(context, std::as_bytes(std::span(transparent.vertices)),
-                                   ::vk::BufferUsageFlagBits::eVertexBuffer)),
-      transparent_indices_(Upload(context, std::as_bytes(std::span(transparent.indices)),
-                                  ::vk::BufferUsageFlagBits::eIndexBuffer)) {
+      transparent_vertices_(Upload(context, std::as_bytes(std::span(packing.transparent.vertices)),
+                                   ::vk::BufferUsageFlagBits::eVertexBuffer)) {
+  const Packed& transparent = packing.transparent;
+  for (uint32_t slot = 0; slot < frames_in_flight; ++slot) {
+    transparent_indices_.push_back(Upload(context, std::as_bytes(std::span(transparent.indices)),
+                                          ::vk::BufferUsageFlagBits::eIndexBuffer));
+  }
   for (size_t i = 0; i + 2 < transparent.indices.size(); i += 3) {
     Triangle triangle{{transparent.indices[i], transparent.indices[i + 1], transparent.indices[i + 2]},
                       glm::dvec3(0.0)};
@@ -49,18 +67,18 @@ SceneGeometry::SceneGeometry(const vk::Context& context, const Packed& opaque,
       triangle.centroid += glm::dvec3(transparent.vertices[index].position) / 3.0;
     transparent_triangles_.push_back(triangle);
   }
+  sorted_.reserve(transparent.indices.size());
 }
 
-void SceneGeometry::SortTransparent(const glm::dvec3& camera_position) {
+void SceneGeometry::SortTransparent(const glm::dvec3& camera_position, uint32_t slot) {
   if (transparent_triangles_.empty()) return;
   std::sort(transparent_triangles_.begin(), transparent_triangles_.end(),
             [&](const Triangle& a, const Triangle& b) {
               return glm::distance(a.centroid, camera_position) > glm::distance(b.centroid, camera_position);
             });
-  std::vector<uint32_t> indices;
-  indices.reserve(transparent_triangles_.size() * 3);
-  for (const Triangle& t : transparent_triangles_) indices.insert(indices.end(), t.indices.begin(), t.indices.end());
-  transparent_indices_.Write(std::as_bytes(std::span(indices)));
+  sorted_.clear();
+  for (const Triangle& t : transparent_triangles_) sorted_.insert(sorted_.end(), t.indices.begin(), t.indices.end());
+  transparent_indices_[slot].Write(std::as_bytes(std::span(sorted_)));
 }
 
 }  // namespace aerial

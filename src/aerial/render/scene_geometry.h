@@ -1,6 +1,8 @@
 #pragma once
-// The scene's meshes on the GPU: opaque meshes in one vertex and index buffer; transparent meshes
-// in another, whose triangles are re-sorted back to front for every camera (they are blended).
+// The scene's meshes on the GPU: opaque meshes in one vertex and index buffer, single-sided ones
+// (drawn with back faces culled) first; transparent meshes in another, whose triangles are
+// re-sorted back to front for every camera (they are blended). The sorted indices have one
+// buffer per frame in flight, so sorting for a frame never rewrites what an earlier one reads.
 #include <array>
 #include <vector>
 
@@ -13,16 +15,19 @@ namespace aerial {
 
 class SceneGeometry {
  public:
-  SceneGeometry(const vk::Context& context, const Scene& scene);
+  // extra_opaque: meshes drawn with the scene's opaque ones (the reference terrain mesh).
+  SceneGeometry(const vk::Context& context, const Scene& scene, uint32_t frames_in_flight,
+                const std::vector<Mesh>& extra_opaque = {});
 
-  // Rewrites the transparent index buffer, farthest triangle first, for a camera position.
-  void SortTransparent(const glm::dvec3& camera_position);
+  // Rewrites slot's transparent index buffer, farthest triangle first, for a camera position.
+  void SortTransparent(const glm::dvec3& camera_position, uint32_t slot);
 
   const vk::Buffer& opaque_vertices() const { return opaque_vertices_; }
   const vk::Buffer& opaque_indices() const { return opaque_indices_; }
-  uint32_t opaque_index_count() const { return opaque_index_count_; }
+  uint32_t single_sided_index_count() const { return single_sided_index_count_; }
+  uint32_t opaque_index_count() const { return opaque_index_count_; }  // both kinds
   const vk::Buffer& transparent_vertices() const { return transparent_vertices_; }
-  const vk::Buffer& transparent_indices() const { return transparent_indices_; }
+  const vk::Buffer& transparent_indices(uint32_t slot) const { return transparent_indices_[slot]; }
   uint32_t transparent_index_count() const { return uint32_t(transparent_triangles_.size() * 3); }
 
  private:
@@ -33,13 +38,20 @@ class SceneGeometry {
   struct Packed {
     std::vector<Vertex> vertices;
     std::vector<uint32_t> indices;
+    void Append(const Mesh& mesh);
   };
-  static Packed Pack(const Scene& scene, bool transparent);
-  SceneGeometry(const vk::Context& context, const Packed& opaque, const Packed& transparent);
+  struct Packing {
+    Packed opaque, transparent;
+    uint32_t single_sided_index_count = 0;
+  };
+  static Packing Pack(const Scene& scene, const std::vector<Mesh>& extra_opaque);
+  SceneGeometry(const vk::Context& context, const Packing& packing, uint32_t frames_in_flight);
 
-  uint32_t opaque_index_count_ = 0;
+  uint32_t single_sided_index_count_ = 0, opaque_index_count_ = 0;
   std::vector<Triangle> transparent_triangles_;
-  vk::Buffer opaque_vertices_, opaque_indices_, transparent_vertices_, transparent_indices_;
+  std::vector<uint32_t> sorted_;  // scratch, kept so that sorting does not allocate
+  vk::Buffer opaque_vertices_, opaque_indices_, transparent_vertices_;
+  std::vector<vk::Buffer> transparent_indices_;
 };
 
 }  // namespace aerial

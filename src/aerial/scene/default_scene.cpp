@@ -116,7 +116,7 @@ Mesh BuildParticleCloud(double planet_radius_m) {
 Scene BuildDefaultScene(double planet_radius_m) {
   Scene scene;
   ApplyPresetView(scene, "noon", planet_radius_m);
-  scene.meshes.push_back(BuildTerrainMesh(planet_radius_m));
+  scene.terrain = true;
   for (const Placement& at : kLandmarks) scene.meshes.push_back(BuildLandmark(at, planet_radius_m));
   // Each pane covers landmarks behind it: the 300 m one those at 5 and 20 km, the 1.5 km one the
   // 2 km landmark, so landmarks seen through glass sit beside ones seen directly.

@@ -48,6 +48,7 @@ struct Material {
   glm::vec3 albedo{1.0f};
   float opacity = 1.0f;
   bool blend = false;
+  bool double_sided = false;  // glTF's default: back faces are culled
 };
 
 Material MaterialOf(const tinygltf::Model& model, int index) {
@@ -61,6 +62,7 @@ Material MaterialOf(const tinygltf::Model& model, int index) {
     material.opacity = static_cast<float>(std::clamp(color[3], 0.0, 1.0));
   }
   material.blend = m.alphaMode == "BLEND";
+  material.double_sided = m.doubleSided;
   if (!material.blend) material.opacity = 1.0f;
   return material;
 }
@@ -140,6 +142,7 @@ void AppendMesh(const GltfReader& reader, const tinygltf::Model& model, int mesh
   for (size_t i = 0; i < primitives.size(); ++i) {
     Material material = MaterialOf(model, primitives[i].material);
     mesh.transparent = mesh.transparent || material.blend;
+    mesh.double_sided = mesh.double_sided || material.double_sided;
     AppendPrimitive(reader, primitives[i], material, to_world,
                     field + ".primitives[" + std::to_string(i) + "]", mesh);
   }

@@ -61,7 +61,7 @@ void ApplyPresetView(Scene& scene, const std::string& name, double planet_radius
 }
 
 Scene BuildPreset(const std::string& name, double planet_radius_m) {
-  CheckName(name);  // before building the terrain
+  CheckName(name);  // before building the scene
   Scene scene = BuildDefaultScene(planet_radius_m);
   ApplyPresetView(scene, name, planet_radius_m);
   return scene;

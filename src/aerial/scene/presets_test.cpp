@@ -29,7 +29,8 @@ TEST(Preset, EveryNamedPresetBuildsAValidScene) {
   for (const std::string& name : PresetNames()) {
     Scene scene = BuildPreset(name, kR);
     EXPECT_EQ(scene.name, name);
-    EXPECT_GT(scene.meshes.size(), 10u) << name;  // terrain, 6 landmarks, 4 transparent
+    EXPECT_TRUE(scene.terrain) << name;
+    EXPECT_EQ(scene.meshes.size(), 10u) << name;  // 6 landmarks, 4 transparent
     const Camera& c = scene.camera;
     // The same limits a scene file must meet; these throw on violation.
     EXPECT_NO_THROW(CheckCameraPosition(c.position, kR, name + " camera", ""));

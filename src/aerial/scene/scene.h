@@ -38,6 +38,9 @@ struct Mesh {
   std::vector<Vertex> vertices;
   std::vector<uint32_t> indices;  // triangle list, 3 per triangle
   bool transparent = false;
+  // Opaque meshes are drawn with back faces culled unless they are double-sided (an open
+  // surface seen from both sides). Transparent meshes are always drawn two-sided.
+  bool double_sided = false;
 };
 
 // A pinhole camera. yaw_deg is the compass azimuth of the view direction, pitch_deg its elevation
@@ -57,12 +60,15 @@ struct Sun {
 
 struct Scene {
   std::vector<Mesh> meshes;
+  // The built-in procedural terrain (terrain.h) is part of the scene. It is not one of the meshes:
+  // the renderer draws it with a level of detail that follows the camera (src/aerial/terrain/).
+  bool terrain = false;
   Camera camera;
   Sun sun;
   std::string name;
 };
 
-// The built-in scene (default_scene.cpp): a procedural terrain with mountains 5-80 km away, opaque
+// The built-in scene (default_scene.cpp): the procedural terrain with mountains 5-80 km away, opaque
 // landmarks named "landmark_<d>km" at d = 1, 2, 5, 10, 20 and 40 km, and transparent glass panes,
 // a balloon and a particle cloud; camera and sun from the "noon" preset (presets.h).
 Scene BuildDefaultScene(double planet_radius_m);

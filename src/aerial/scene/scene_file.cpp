@@ -137,7 +137,7 @@ Scene ParseSceneToml(std::string_view text, const std::string& where,
   toml::table root = r.Parse(text);
   r.RejectUnknownKeys(root, "", {"preset", "camera", "sun", "mesh"});
   // Everything is read and checked on the preset's view and the extra meshes first, and the
-  // built-in scene (a ~150k-vertex terrain) is built only once the file is known to be valid.
+  // built-in scene is built only once the file is known to be valid.
   Scene view;
   std::string preset = "noon";
   IfPresent(root, "preset", [&](const toml::node& n) {

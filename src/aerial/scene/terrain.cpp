@@ -70,11 +70,20 @@ glm::dvec3 TerrainAlbedo(double height_m, double cos_slope) {
   return glm::mix(glm::mix(kGrass, kRock, rock), kSnow, snow);
 }
 
+}  // namespace
+
 glm::dvec3 TerrainPoint(double x, double y, double planet_radius_m) {
   return SurfacePoint(x, y, TerrainHeightM(x, y), planet_radius_m);
 }
 
-}  // namespace
+Vertex TerrainVertex(const glm::dvec3& p, const glm::dvec3& across_x, const glm::dvec3& across_y,
+                     double planet_radius_m) {
+  const glm::dvec3 center(0.0, 0.0, -planet_radius_m);
+  glm::dvec3 normal = glm::normalize(glm::cross(across_x, across_y));
+  glm::dvec3 up = glm::normalize(p - center);
+  double height = glm::length(p - center) - planet_radius_m;
+  return {glm::vec3(p), glm::vec3(normal), glm::vec3(TerrainAlbedo(height, glm::dot(normal, up))), 1.0f};
+}
 
 double TerrainHeightM(double x, double y) {
   double d = std::hypot(x, y);
@@ -112,17 +121,11 @@ Mesh BuildTerrainMesh(double planet_radius_m) {
 
   Mesh mesh;
   mesh.name = "terrain";
-  // Normals by central differences of the surface over the local grid spacing, so shading sees
-  // the same detail as the geometry (a smaller step would show sub-cell noise as shimmer).
   auto add_vertex = [&](double x, double y, double step) {
-    glm::dvec3 p = TerrainPoint(x, y, R);
-    glm::dvec3 dx = TerrainPoint(x + step, y, R) - TerrainPoint(x - step, y, R);
-    glm::dvec3 dy = TerrainPoint(x, y + step, R) - TerrainPoint(x, y - step, R);
-    glm::dvec3 normal = glm::normalize(glm::cross(dx, dy));
-    glm::dvec3 up = glm::normalize(p - glm::dvec3(0.0, 0.0, -R));
-    double height = glm::length(p - glm::dvec3(0.0, 0.0, -R)) - R;
-    mesh.vertices.push_back({glm::vec3(p), glm::vec3(normal),
-                             glm::vec3(TerrainAlbedo(height, glm::dot(normal, up))), 1.0f});
+    mesh.vertices.push_back(TerrainVertex(TerrainPoint(x, y, R),
+                                          TerrainPoint(x + step, y, R) - TerrainPoint(x - step, y, R),
+                                          TerrainPoint(x, y + step, R) - TerrainPoint(x, y - step, R),
+                                          R));
   };
   add_vertex(0.0, 0.0, kTerrainMinStepM);
   for (size_t ring = 1; ring < radii.size(); ++ring) {

@@ -30,10 +30,22 @@ struct GroundFrame {
 };
 GroundFrame GroundFrameAt(double x_m, double y_m, double planet_radius_m);
 
-// The terrain as one opaque mesh named "terrain": a polar grid around the origin whose rings are
-// kTerrainMinStepM apart near the camera and then grow geometrically so that cells stay square
-// (ring spacing = r * 2 pi / kTerrainSegments), keeping triangles at a similar angular size from
-// the origin at every distance.
+// The terrain's surface point at the sea-level point (x, y): SurfacePoint at TerrainHeightM.
+glm::dvec3 TerrainPoint(double x_m, double y_m, double planet_radius_m);
+
+// A terrain vertex at surface point p whose normal is across_x x across_y: the differences of the
+// surface points one grid step to either side in x and in y. Taking the normal over the grid's own
+// spacing lets shading see the detail the geometry has (a smaller step would show sub-cell noise
+// as shimmer). The albedo follows height and slope: grass, rock, snow.
+Vertex TerrainVertex(const glm::dvec3& p, const glm::dvec3& across_x, const glm::dvec3& across_y,
+                     double planet_radius_m);
+
+// The terrain as one static opaque mesh named "terrain", centered on the scene origin: a polar
+// grid whose rings are kTerrainMinStepM apart near the origin and then grow geometrically so
+// that cells stay square (ring spacing = r * 2 pi / kTerrainSegments). 147K vertices and 294K
+// triangles. The renderer draws the terrain with a level of detail that follows the camera
+// (src/aerial/terrain/); this mesh is the fixed reference it is measured against
+// (RenderOptions::terrain).
 inline constexpr int kTerrainSegments = 360;
 inline constexpr double kTerrainMinStepM = 4.0;
 Mesh BuildTerrainMesh(double planet_radius_m);

@@ -4,108 +4,100 @@ namespace aerial::viewer {
 namespace {
 
 using vk::kSampled;
-using vk::kStorageImage;
 using vk::kUniform;
 
-std::unique_ptr<vk::Image> MakeDisplay(const vk::Context& context, uint32_t width, uint32_t height,
-                                       ::vk::Format format) {
-  auto image = std::make_unique<vk::Image>(
-      context, vk::ImageCreateInfo{.extent = {width, height, 1},
-                                   .format = format,
-                                   .usage = ::vk::ImageUsageFlagBits::eStorage |
-                                            ::vk::ImageUsageFlagBits::eTransferSrc});
-  context.Submit([&](const auto& cmd) { image->InitializeLayout(cmd); });
-  return image;
-}
+// Every push block starts with the target's size in pixels (the shaders' uv = gl_FragCoord / size).
+struct ToneMapPush {
+  float target_size[2];
+  float exposure;
+};
 
 struct TermPush {
+  float target_size[2];
   int32_t term;
   int32_t from_froxels;
   float exposure;
 };
 
 struct SlicePush {
+  float target_size[2];
   int32_t slice;
   float exposure;
 };
 
+struct DifferencePush {
+  float target_size[2];
+  float full_scale;
+};
+
+vk::GraphicsPipelineCreateInfo FullScreen(::vk::RenderPass render_pass, const std::string& fragment,
+                                          std::vector<::vk::DescriptorType> slots, uint32_t push_bytes) {
+  return {.vertex_shader = "frame/fullscreen.vert",
+          .fragment_shader = fragment,
+          .slot_types = std::move(slots),
+          .push_constant_bytes = push_bytes,
+          .render_pass = render_pass,
+          .depth_write = false};
+}
+
 }  // namespace
 
-::vk::Format DisplayFormat(const vk::Context& context, ::vk::Format swapchain_format) {
-  auto features = context.physical_device().getFormatProperties(swapchain_format).optimalTilingFeatures;
-  return features & ::vk::FormatFeatureFlagBits::eStorageImage ? swapchain_format
-                                                                : ::vk::Format::eR8G8B8A8Unorm;
+DisplayPasses::DisplayPasses(const vk::Context& context, ::vk::RenderPass render_pass)
+    : linear_(vk::CreateLinearClampSampler(context)),
+      nearest_(vk::CreateNearestClampSampler(context)),
+      tone_map_(context, FullScreen(render_pass, "view/present.frag", {kSampled}, sizeof(ToneMapPush))),
+      term_(context, FullScreen(render_pass, "view/inscatter.frag",
+                                {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled,
+                                 kSampled, kSampled, kSampled},
+                                sizeof(TermPush))),
+      froxel_slice_(context, FullScreen(render_pass, "view/froxel_slice.frag",
+                                        {kSampled, kSampled, kSampled}, sizeof(SlicePush))),
+      difference_(context, FullScreen(render_pass, "view/difference.frag", {kSampled, kSampled},
+                                      sizeof(DifferencePush))) {}
+
+void DisplayPasses::RecordToneMap(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,
+                                  const vk::Image& radiance, float exposure) const {
+  ToneMapPush push{{float(extent.width), float(extent.height)}, exposure};
+  tone_map_.Bind(cmd, {vk::SampledImageSlot{&radiance, *linear_}}, &push);
+  vk::DrawFullScreenTriangle(cmd);
 }
 
-DisplayPasses::DisplayPasses(const vk::Context& context, uint32_t width, uint32_t height,
-                             ::vk::Format format)
-    : context_(context),
-      format_(format),
-      sampler_(vk::CreateLinearClampSampler(context)),
-      display_(MakeDisplay(context, width, height, format)),
-      frame_buffer_(context, {.size = sizeof(FrameUniforms),
-                              .usage = ::vk::BufferUsageFlagBits::eUniformBuffer,
-                              .host_visible = true}),
-      tone_map_(context, "view/present.comp", {kSampled, kStorageImage}, sizeof(float)),
-      term_(context, "view/inscatter.comp",
-            {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled, kSampled,
-             kSampled, kSampled, kStorageImage},
-            sizeof(TermPush)),
-      froxel_slice_(context, "view/froxel_slice.comp",
-                    {kSampled, kSampled, kSampled, kStorageImage}, sizeof(SlicePush)),
-      difference_(context, "view/difference.comp", {kSampled, kSampled, kStorageImage},
-                  sizeof(float)) {}
-
-void DisplayPasses::Resize(uint32_t width, uint32_t height) {
-  display_ = MakeDisplay(context_, width, height, format_);
-}
-
-void DisplayPasses::Dispatch(const ::vk::raii::CommandBuffer& cmd,
-                             const vk::ComputePipeline& pipeline, std::vector<vk::Slot> slots,
-                             const void* push_constants) const {
-  slots.push_back(vk::StorageImageSlot{display_.get()});
-  ::vk::Extent3D extent = display_->extent();
-  pipeline.Dispatch(cmd, slots, {extent.width, extent.height, 1}, {8, 8, 1}, push_constants);
-}
-
-void DisplayPasses::RecordToneMap(const ::vk::raii::CommandBuffer& cmd, const vk::Image& radiance,
-                                  float exposure) const {
-  Dispatch(cmd, tone_map_, {vk::SampledImageSlot{&radiance, *sampler_}}, &exposure);
-}
-
-void DisplayPasses::RecordTerm(const ::vk::raii::CommandBuffer& cmd, const Renderer& renderer,
-                               Term term, float exposure) {
-  const FrameUniforms& uniforms = renderer.frame_uniforms();
-  frame_buffer_.Write(std::as_bytes(std::span(&uniforms, 1)));
+void DisplayPasses::RecordTerm(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,
+                               const Renderer& renderer, uint32_t slot, Term term,
+                               float exposure) const {
   const AtmosphereTables& tables = renderer.tables();
   const FroxelVolume& froxels = renderer.froxels();
-  auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, *sampler_}; };
-  TermPush push{int32_t(term), renderer.options().mode == AerialMode::kFroxel ? 1 : 0, exposure};
-  Dispatch(cmd, term_,
-           {vk::UniformBufferSlot{&tables.uniform_buffer()}, vk::UniformBufferSlot{&frame_buffer_},
-            sampled(tables.transmittance()), sampled(tables.rayleigh()), sampled(tables.mie()),
-            sampled(tables.multiple()), sampled(froxels.rayleigh()), sampled(froxels.mie()),
-            sampled(froxels.transmittance()), sampled(renderer.surface_image())},
-           &push);
+  auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, *linear_}; };
+  TermPush push{{float(extent.width), float(extent.height)}, int32_t(term),
+                renderer.options().mode == AerialMode::kFroxel ? 1 : 0, exposure};
+  term_.Bind(cmd,
+             {vk::UniformBufferSlot{&tables.uniform_buffer()}, vk::UniformBufferSlot{&renderer.frame_buffer(slot)},
+              sampled(tables.transmittance()), sampled(tables.rayleigh()), sampled(tables.mie()),
+              sampled(tables.multiple()), sampled(froxels.rayleigh()), sampled(froxels.mie()),
+              sampled(froxels.transmittance()), vk::SampledImageSlot{&renderer.depth_image(), *nearest_}},
+             &push);
+  vk::DrawFullScreenTriangle(cmd);
 }
 
-void DisplayPasses::RecordFroxelSlice(const ::vk::raii::CommandBuffer& cmd,
-                                      const FroxelVolume& froxels, int slice,
-                                      float exposure) const {
-  SlicePush push{slice, exposure};
-  Dispatch(cmd, froxel_slice_,
-           {vk::SampledImageSlot{&froxels.rayleigh(), *sampler_},
-            vk::SampledImageSlot{&froxels.mie(), *sampler_},
-            vk::SampledImageSlot{&froxels.transmittance(), *sampler_}},
-           &push);
+void DisplayPasses::RecordFroxelSlice(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,
+                                      const FroxelVolume& froxels, int slice, float exposure) const {
+  SlicePush push{{float(extent.width), float(extent.height)}, slice, exposure};
+  froxel_slice_.Bind(cmd,
+                     {vk::SampledImageSlot{&froxels.rayleigh(), *linear_},
+                      vk::SampledImageSlot{&froxels.mie(), *linear_},
+                      vk::SampledImageSlot{&froxels.transmittance(), *linear_}},
+                     &push);
+  vk::DrawFullScreenTriangle(cmd);
 }
 
-void DisplayPasses::RecordDifference(const ::vk::raii::CommandBuffer& cmd,
+void DisplayPasses::RecordDifference(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,
                                      const vk::Image& radiance_4d, const vk::Image& radiance_3d,
                                      float full_scale) const {
-  Dispatch(cmd, difference_,
-           {vk::SampledImageSlot{&radiance_4d, *sampler_}, vk::SampledImageSlot{&radiance_3d, *sampler_}},
-           &full_scale);
+  DifferencePush push{{float(extent.width), float(extent.height)}, full_scale};
+  difference_.Bind(cmd,
+                   {vk::SampledImageSlot{&radiance_4d, *linear_}, vk::SampledImageSlot{&radiance_3d, *linear_}},
+                   &push);
+  vk::DrawFullScreenTriangle(cmd);
 }
 
 }  // namespace aerial::viewer

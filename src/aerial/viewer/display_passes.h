@@ -1,55 +1,42 @@
 #pragma once
-// The viewer's last passes before the swapchain: the renderer's frame, or a debug view of it, into
-// the 8-bit display image that the swapchain copies from (vk/swapchain.h). They only read the
-// renderer's images: the frame itself is always Renderer::Render's, as in `aerial render`.
+// The viewer's last passes, drawn straight into the window's image inside its render pass: the
+// renderer's frame tone mapped, or a debug view of it. Each is one full-screen triangle whose
+// fragment shader writes every pixel; nothing is copied. They only read the renderer's images:
+// the frame itself is always Renderer::Record's, as in `aerial render`.
 #include "aerial/render/renderer.h"
-#include "aerial/vk/compute_pipeline.h"
+#include "aerial/vk/graphics_pipeline.h"
 
 namespace aerial::viewer {
 
-// The swapchain's format if compute shaders can write it, else R8G8B8A8_UNORM (which every device
-// can, and which the swapchain then converts when it blits).
-::vk::Format DisplayFormat(const vk::Context& context, ::vk::Format swapchain_format);
-
 class DisplayPasses {
  public:
-  // format: of the display image, an 8-bit UNORM format the device can store to. The swapchain's
-  // own format (DisplayFormat) makes the swapchain's blit a plain copy.
-  DisplayPasses(const vk::Context& context, uint32_t width, uint32_t height,
-                ::vk::Format format = ::vk::Format::eR8G8B8A8Unorm);
+  // render_pass: any render pass with one color attachment of the target's format (the
+  // swapchain's); the passes are recorded inside it, or inside a compatible one.
+  DisplayPasses(const vk::Context& context, ::vk::RenderPass render_pass);
 
-  // Recreates the display image for a new size (nothing may be in flight).
-  void Resize(uint32_t width, uint32_t height);
-  // sRGB-encoded values, GENERAL layout.
-  const vk::Image& display() const { return *display_; }
-
-  // The picture: radiance times exposure through ACES and sRGB (shaders/view/present.comp).
-  void RecordToneMap(const ::vk::raii::CommandBuffer& cmd, const vk::Image& radiance,
-                     float exposure) const;
+  // Each records one draw over a target of `extent` inside the caller's render pass.
+  // The picture: radiance times exposure through ACES and sRGB (shaders/view/present.frag),
+  // resampled bilinearly to the target.
+  void RecordToneMap(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,
+                     const vk::Image& radiance, float exposure) const;
 
   enum class Term { kRayleigh = 0, kMie = 1, kTransmittance = 2 };
-  // One term of the aerial perspective alone (shaders/view/inscatter.comp). Writes the renderer's
-  // frame uniforms into a buffer of this pass, so record it after the renderer's Render.
-  void RecordTerm(const ::vk::raii::CommandBuffer& cmd, const Renderer& renderer, Term term,
-                  float exposure);
-  // Depth slice `slice` of the froxel volume (shaders/view/froxel_slice.comp).
-  void RecordFroxelSlice(const ::vk::raii::CommandBuffer& cmd, const FroxelVolume& froxels,
-                         int slice, float exposure) const;
+  // One term of the aerial perspective alone (shaders/view/inscatter.frag), for the renderer's
+  // frame recorded with the per-frame resources of `slot`.
+  void RecordTerm(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,
+                  const Renderer& renderer, uint32_t slot, Term term, float exposure) const;
+  // Depth slice `slice` of the froxel volume (shaders/view/froxel_slice.frag).
+  void RecordFroxelSlice(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,
+                         const FroxelVolume& froxels, int slice, float exposure) const;
   // The 3D-vs-4D relative difference as a heat map, white at full_scale
-  // (shaders/view/difference.comp).
-  void RecordDifference(const ::vk::raii::CommandBuffer& cmd, const vk::Image& radiance_4d,
-                        const vk::Image& radiance_3d, float full_scale) const;
+  // (shaders/view/difference.frag).
+  void RecordDifference(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,
+                        const vk::Image& radiance_4d, const vk::Image& radiance_3d,
+                        float full_scale) const;
 
  private:
-  void Dispatch(const ::vk::raii::CommandBuffer& cmd, const vk::ComputePipeline& pipeline,
-                std::vector<vk::Slot> slots, const void* push_constants) const;
-
-  const vk::Context& context_;
-  ::vk::Format format_;
-  ::vk::raii::Sampler sampler_;
-  std::unique_ptr<vk::Image> display_;
-  vk::Buffer frame_buffer_;
-  vk::ComputePipeline tone_map_, term_, froxel_slice_, difference_;
+  ::vk::raii::Sampler linear_, nearest_;
+  vk::GraphicsPipeline tone_map_, term_, froxel_slice_, difference_;
 };
 
 }  // namespace aerial::viewer

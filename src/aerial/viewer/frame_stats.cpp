@@ -17,9 +17,16 @@ double Percentile(std::vector<double> values, double p) {
   return values[std::clamp<size_t>(rank, 1, values.size()) - 1];
 }
 
-void FrameStats::AddFrame(double frame_ms, const std::vector<vk::PassTime>& passes) {
-  frame_ms_.push_back(frame_ms);
-  for (const vk::PassTime& pass : passes) pass_ms_[pass.pass].push_back(pass.milliseconds);
+void FrameStats::AddFrame(double frame_ms) { frame_ms_.push_back(frame_ms); }
+
+void FrameStats::AddGpuFrame(const std::vector<vk::PassTime>& passes) {
+  if (passes.empty()) return;
+  double total = 0.0;
+  for (const vk::PassTime& pass : passes) {
+    pass_ms_[pass.pass].push_back(pass.milliseconds);
+    total += pass.milliseconds;
+  }
+  gpu_frame_ms_.push_back(total);
 }
 
 double FrameStats::MedianFrameMs(size_t window) const {
@@ -39,6 +46,7 @@ std::string FrameStats::ToJson() const {
                          {"median_frame_ms", median},
                          {"p95_frame_ms", Percentile(frame_ms_, 95.0)},
                          {"fps_median", median > 0.0 ? 1000.0 / median : 0.0},
+                         {"median_gpu_frame_ms", Percentile(gpu_frame_ms_, 50.0)},
                          {"passes", MedianPassMs()}};
   return json.dump(2) + "\n";
 }

@@ -2,10 +2,12 @@
 // Frame times and per-pass GPU times of a viewer session, for the panel and for
 // `aerial view --stats FILE`:
 //   {"frames": N, "median_frame_ms": ..., "p95_frame_ms": ..., "fps_median": 1000 / median,
-//    "passes": {"froxel build": median GPU ms, ...}}
+//    "median_gpu_frame_ms": ..., "passes": {"froxel build": median GPU ms, ...}}
 // A frame's time is wall clock from the end of the previous frame to the end of its present, so
-// it includes input, the panel and waiting; pass times are GPU timestamps (on lavapipe, the CPU
-// time of the pass). Percentiles are nearest-rank.
+// it is what a user sees: input, the panel, recording, waiting for the GPU and presenting. Pass
+// times are GPU timestamps (on lavapipe, the CPU time of the pass), and a GPU frame is the sum of
+// its passes; they arrive when the frame has finished, frames in flight later than its wall
+// clock time. Percentiles are nearest-rank.
 #include <filesystem>
 #include <map>
 #include <string>
@@ -20,7 +22,8 @@ double Percentile(std::vector<double> values, double p);
 
 class FrameStats {
  public:
-  void AddFrame(double frame_ms, const std::vector<vk::PassTime>& passes);
+  void AddFrame(double frame_ms);
+  void AddGpuFrame(const std::vector<vk::PassTime>& passes);
 
   size_t frames() const { return frame_ms_.size(); }
   // Over the last `window` frames (all when 0).
@@ -33,7 +36,7 @@ class FrameStats {
   void Write(const std::filesystem::path& path) const;
 
  private:
-  std::vector<double> frame_ms_;
+  std::vector<double> frame_ms_, gpu_frame_ms_;
   std::map<std::string, std::vector<double>> pass_ms_;
 };
 

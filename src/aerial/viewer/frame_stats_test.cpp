@@ -17,16 +17,22 @@ TEST(Percentile, IsNearestRank) {
 
 TEST(FrameStats, JsonHasTheScriptedKeys) {
   FrameStats stats;
-  for (int i = 1; i <= 20; ++i)
-    stats.AddFrame(10.0 * i, {{"froxel build", 1.0 * i}, {"composite", 2.0}});
-  stats.AddFrame(1000.0, {{"present", 0.5}});
+  for (int i = 1; i <= 20; ++i) {
+    stats.AddFrame(10.0 * i);
+    stats.AddGpuFrame({{"froxel build", 1.0 * i}, {"opaque raster", 2.0}});
+  }
+  stats.AddFrame(1000.0);
+  stats.AddGpuFrame({{"present", 0.5}});
+  stats.AddGpuFrame({});  // a frame whose times were not read: not counted
   auto json = nlohmann::json::parse(stats.ToJson());
   EXPECT_EQ(json["frames"], 21);
   EXPECT_EQ(json["median_frame_ms"], 110.0);  // 11th of 21
   EXPECT_EQ(json["p95_frame_ms"], 200.0);     // rank ceil(19.95) = 20
   EXPECT_NEAR(json["fps_median"].get<double>(), 1000.0 / 110.0, 1e-12);
+  // GPU frames 3, 4, ..., 22 ms and 0.5 ms: the 11th of 21 is 12 (frame 10: 10 + 2).
+  EXPECT_EQ(json["median_gpu_frame_ms"], 12.0);
   EXPECT_EQ(json["passes"]["froxel build"], 10.0);  // 10th of 20 frames that ran it
-  EXPECT_EQ(json["passes"]["composite"], 2.0);
+  EXPECT_EQ(json["passes"]["opaque raster"], 2.0);
   EXPECT_EQ(json["passes"]["present"], 0.5);
   EXPECT_EQ(stats.MedianFrameMs(3), 200.0);  // frames 190, 200, 1000
 }

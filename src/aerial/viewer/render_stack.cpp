@@ -4,12 +4,15 @@ namespace aerial::viewer {
 
 bool SameRenderOptions(const RenderOptions& a, const RenderOptions& b) {
   return a.width == b.width && a.height == b.height && a.mode == b.mode &&
+         a.render_scale == b.render_scale && a.terrain == b.terrain &&
+         a.terrain_error_px == b.terrain_error_px && a.frames_in_flight == b.frames_in_flight &&
          a.froxels.width == b.froxels.width && a.froxels.height == b.froxels.height &&
          a.froxels.depth == b.froxels.depth && a.froxels.far_m == b.froxels.far_m;
 }
 
 void RenderStack::Install(std::unique_ptr<AtmosphereTables> tables, const RenderOptions& options) {
   Entry& entry = entries_[tables->options().variant];
+  if (entry.renderer) before_rebuild_();
   entry.renderer.reset();  // it refers to the old tables
   entry.tables = std::move(tables);
   entry.renderer = std::make_unique<Renderer>(*entry.tables, scene_, options);
@@ -20,6 +23,7 @@ Renderer* RenderStack::Get(LutVariant variant, const RenderOptions& options) {
   if (it == entries_.end()) return nullptr;
   Entry& entry = it->second;
   if (!SameRenderOptions(entry.renderer->options(), options)) {
+    before_rebuild_();
     entry.renderer.reset();
     entry.renderer = std::make_unique<Renderer>(*entry.tables, scene_, options);
   }

@@ -2,8 +2,9 @@
 // The table sets and renderers the viewer draws with: one per table variant, the current one and,
 // for the 3D-vs-4D view, the other. Every renderer is aerial's one Renderer (render/renderer.h),
 // rebuilt when its tables or its options change: the size (a resize), the froxel grid, and the
-// aerial mode, which is a specialization constant of its pipelines. Nothing is in flight when
-// that happens: Renderer::Render and the swapchain's Present both wait for their work.
+// aerial mode, which is a specialization constant of its pipelines. Frames in flight may still
+// use a renderer, so the stack calls its owner's before_rebuild (which waits for them) first.
+#include <functional>
 #include <map>
 #include <memory>
 
@@ -14,7 +15,9 @@ namespace aerial::viewer {
 class RenderStack {
  public:
   // scene: its meshes go to every renderer; it must outlive the stack (which may be moved).
-  explicit RenderStack(const Scene& scene) : scene_(scene) {}
+  // before_rebuild: called before a renderer is destroyed.
+  RenderStack(const Scene& scene, std::function<void()> before_rebuild)
+      : scene_(scene), before_rebuild_(std::move(before_rebuild)) {}
 
   // Replaces the tables of their variant, and that variant's renderer.
   void Install(std::unique_ptr<AtmosphereTables> tables, const RenderOptions& options);
@@ -31,6 +34,7 @@ class RenderStack {
     std::unique_ptr<Renderer> renderer;
   };
   const Scene& scene_;
+  std::function<void()> before_rebuild_;
   std::map<LutVariant, Entry> entries_;
 };
 

@@ -21,6 +21,7 @@
 #include "aerial/viewer/sun_control.h"
 #include "aerial/viewer/table_worker.h"
 #include "aerial/viewer/window.h"
+#include "aerial/vk/command_ring.h"
 #include "aerial/vk/swapchain.h"
 
 namespace aerial::viewer {
@@ -30,6 +31,14 @@ using Clock = std::chrono::steady_clock;
 
 // Frames the panel's FPS and frame time are the median of.
 constexpr size_t kPanelWindow = 30;
+
+// The CPU records frame n + 1 (input, panel, terrain selection, sorting) while the GPU draws
+// frame n.
+constexpr uint32_t kFramesInFlight = 2;
+
+// CPU time a frame may spend building terrain chunks when the camera moves into new detail: the
+// chunks it lacks are drawn coarser until later frames have built them.
+constexpr double kTerrainBuildBudgetMs = 3.0;
 
 LutVariant Other(LutVariant variant) {
   return variant == LutVariant::k4D ? LutVariant::k3D : LutVariant::k4D;
@@ -44,13 +53,22 @@ const char* PassName(DebugView view) {
   return view == DebugView::kFinal ? "present" : "debug view";
 }
 
+// The viewer's renderers differ from `aerial render`'s in how they pace work: frames in flight,
+// and terrain chunks built within a budget.
+RenderOptions ForTheWindow(RenderOptions render) {
+  render.terrain_build_budget_ms = kTerrainBuildBudgetMs;
+  render.frames_in_flight = kFramesInFlight;
+  return render;
+}
+
 // The first tables, loaded (or precomputed, with the terminal's progress bar) on the viewer's own
 // context before the window opens, and their renderer at the size asked for.
-RenderStack FirstStack(const vk::Context& context, const ViewerOptions& options) {
-  RenderStack stack(options.scene);
+RenderStack FirstStack(const vk::Context& context, const ViewerOptions& options,
+                       std::function<void()> before_rebuild) {
+  RenderStack stack(options.scene, std::move(before_rebuild));
   LoadedTables loaded = LoadOrPrecompute(context, options.atmosphere, options.tables.at(options.variant),
                                          options.store);
-  stack.Install(std::move(loaded.tables), options.render);
+  stack.Install(std::move(loaded.tables), ForTheWindow(options.render));
   return stack;
 }
 
@@ -63,6 +81,14 @@ RenderStack FirstStack(const vk::Context& context, const ViewerOptions& options)
 class Viewer::Impl {
  public:
   explicit Impl(ViewerOptions options);
+  // Frames in flight use what the members below own: wait for them before any is destroyed.
+  // (A destructor must not throw: a lost device has nothing left to wait for.)
+  ~Impl() {
+    try {
+      ring_.WaitAll();
+    } catch (const std::exception&) {
+    }
+  }
   bool Step();
   void Run();
   GLFWwindow* window() const { return window_.handle(); }
@@ -84,7 +110,10 @@ class Viewer::Impl {
   void FollowSunClock();
   void Act(const PanelEvents& events, const std::vector<int>& keys, const Renderer& renderer);
   void Say(std::string message);
-  std::vector<vk::PassTime> Draw(Renderer& primary, Renderer* other);
+  void CollectFinishedFrame(uint32_t slot);
+  void ForgetRecordedFrames();
+  void RecordDisplay(const ::vk::raii::CommandBuffer& cmd, uint32_t slot, const Renderer& primary,
+                     const Renderer* other);
   PanelInfo MakePanelInfo(const Renderer& primary) const;
 
   ViewerOptions options_;
@@ -93,13 +122,17 @@ class Viewer::Impl {
   GlfwSession glfw_;
   vk::ContextCreateInfo context_info_;
   vk::Context context_;
+  vk::CommandRing ring_;
+  // The renderers each slot's frame was recorded with (and the suffix of their pass names), so
+  // that their GPU times are read once the slot's frame has finished.
+  std::vector<std::vector<std::pair<const Renderer*, std::string>>> recorded_;
   RenderStack stack_;
   Window window_;
   vk::Swapchain swapchain_;
   ImGuiLayer imgui_;
   InputReader input_;
   DisplayPasses display_;
-  vk::GpuTimer timer_;
+  std::vector<std::unique_ptr<vk::GpuTimer>> timers_;  // the display passes', per slot
   FrameStats stats_;
   std::string message_;
   int frames_ = 0;
@@ -112,14 +145,16 @@ Viewer::Impl::Impl(ViewerOptions options)
       wanted_(options_.atmosphere),
       context_info_(WithWindowSupport(options_.context)),
       context_(context_info_),
-      stack_(FirstStack(context_, options_)),
+      ring_(context_, kFramesInFlight),
+      recorded_(kFramesInFlight),
+      stack_(FirstStack(context_, options_, [this] { ForgetRecordedFrames(); })),
       window_(context_, options_.render.width, options_.render.height, "aerial view: " + options_.scene.name),
-      swapchain_(context_, window_.surface(), window_.framebuffer_extent()),
+      swapchain_(context_, window_.surface(), window_.framebuffer_extent(), kFramesInFlight),
       imgui_(context_, window_.handle(), swapchain_),
       input_(window_.handle()),
-      display_(context_, swapchain_.extent().width, swapchain_.extent().height,
-               DisplayFormat(context_, swapchain_.format())),
-      timer_(context_) {
+      display_(context_, swapchain_.render_pass()) {
+  for (uint32_t slot = 0; slot < kFramesInFlight; ++slot)
+    timers_.push_back(std::make_unique<vk::GpuTimer>(context_));
   settings_.variant = options_.variant;
   settings_.knobs = applied_knobs_ = ReadKnobs(options_.atmosphere);
   settings_.froxels = options_.render.froxels;
@@ -130,10 +165,12 @@ Viewer::Impl::Impl(ViewerOptions options)
 }
 
 RenderOptions Viewer::Impl::CurrentRenderOptions() const {
-  return {.width = int(swapchain_.extent().width),
-          .height = int(swapchain_.extent().height),
-          .froxels = settings_.froxels,
-          .mode = settings_.mode};
+  RenderOptions render = ForTheWindow(options_.render);
+  render.width = int(swapchain_.extent().width);
+  render.height = int(swapchain_.extent().height);
+  render.froxels = settings_.froxels;
+  render.mode = settings_.mode;
+  return render;
 }
 
 bool Viewer::Impl::HasCurrentTables(LutVariant variant) const {
@@ -181,7 +218,6 @@ void Viewer::Impl::AdoptFinishedTables() {
 void Viewer::Impl::Resize(::vk::Extent2D extent) {
   swapchain_.Recreate(extent);
   imgui_.OnSwapchainRecreated(swapchain_);
-  display_.Resize(swapchain_.extent().width, swapchain_.extent().height);
 }
 
 // The camera follows the path while it lasts, then the fly controls; the sun follows the keys and
@@ -230,50 +266,65 @@ void Viewer::Impl::Act(const PanelEvents& events, const std::vector<int>& keys, 
   if (export_vdb) Say(ExportFroxelsToVdb(renderer, options_.scene));
 }
 
-// The display pass for the settings' view, the blit into the swapchain and the panel over it.
-std::vector<vk::PassTime> Viewer::Impl::Draw(Renderer& primary, Renderer* other) {
+// Before a renderer is destroyed: no frame in flight may still use it, and its pass times are not
+// read any more.
+void Viewer::Impl::ForgetRecordedFrames() {
+  ring_.WaitAll();
+  for (auto& renderers : recorded_) renderers.clear();
+}
+
+// The GPU times of the frame the slot held, which has finished (CommandRing::Begin waited for it).
+void Viewer::Impl::CollectFinishedFrame(uint32_t slot) {
+  std::vector<vk::PassTime> passes;
+  for (const auto& [renderer, suffix] : recorded_[slot]) {
+    for (vk::PassTime pass : renderer->PassTimes(slot)) {
+      pass.pass += suffix;
+      passes.push_back(pass);
+    }
+  }
+  if (passes.empty()) return;  // nothing recorded in this slot yet
+  for (const vk::PassTime& pass : timers_[slot]->Collect()) passes.push_back(pass);
+  stats_.AddGpuFrame(passes);
+  last_passes_ = std::move(passes);
+}
+
+// The display pass for the settings' view and the panel over it, into the swapchain's image.
+void Viewer::Impl::RecordDisplay(const ::vk::raii::CommandBuffer& cmd, uint32_t slot,
+                                 const Renderer& primary, const Renderer* other) {
   // The difference view needs both frames; until the other variant's tables arrive, the picture.
   DebugView view = settings_.view == DebugView::kDifference && !other ? DebugView::kFinal : settings_.view;
-  bool recorded = false;
-  auto prepare = [&](const ::vk::raii::CommandBuffer& cmd) {
-    recorded = true;
-    timer_.Reset(cmd);
-    timer_.Begin(cmd, PassName(view));
+  ::vk::Extent2D extent = swapchain_.extent();
+  vk::GpuTimer& timer = *timers_[slot];
+  timer.Reset(cmd);
+  swapchain_.RecordDraw(cmd, [&](const ::vk::raii::CommandBuffer& cmd) {
+    timer.Begin(cmd, PassName(view));
     switch (view) {
       case DebugView::kFinal:
-        display_.RecordToneMap(cmd, primary.output_image(), settings_.exposure);
+        display_.RecordToneMap(cmd, extent, primary.output_image(), settings_.exposure);
         break;
       case DebugView::kRayleigh:
       case DebugView::kMie:
       case DebugView::kTransmittance:
-        display_.RecordTerm(cmd, primary, DisplayPasses::Term(int(view) - int(DebugView::kRayleigh)),
-                            settings_.exposure);
+        display_.RecordTerm(cmd, extent, primary, slot,
+                            DisplayPasses::Term(int(view) - int(DebugView::kRayleigh)), settings_.exposure);
         break;
       case DebugView::kFroxelSlice:
-        display_.RecordFroxelSlice(cmd, primary.froxels(), settings_.froxel_slice, settings_.exposure);
+        display_.RecordFroxelSlice(cmd, extent, primary.froxels(), settings_.froxel_slice, settings_.exposure);
         break;
       case DebugView::kDifference: {
         bool primary_4d = primary.tables().options().variant == LutVariant::k4D;
         const Renderer& l4 = primary_4d ? primary : *other;
         const Renderer& l3 = primary_4d ? *other : primary;
-        display_.RecordDifference(cmd, l4.output_image(), l3.output_image(), settings_.difference_full_scale);
+        display_.RecordDifference(cmd, extent, l4.output_image(), l3.output_image(),
+                                  settings_.difference_full_scale);
         break;
       }
     }
-  };
-  // The display pass's time includes the blit into the swapchain image, recorded between the two.
-  auto overlay = [&](const ::vk::raii::CommandBuffer& cmd) {
-    timer_.End(cmd);
-    timer_.Begin(cmd, "panel");
+    timer.End(cmd);
+    timer.Begin(cmd, "panel");
     imgui_.Record(cmd);
-    timer_.End(cmd);
-  };
-  bool presented = swapchain_.Present(display_.display(), prepare, overlay);
-  std::vector<vk::PassTime> times = recorded ? timer_.Collect() : std::vector<vk::PassTime>{};
-  if (presented) return times;
-  ::vk::Extent2D extent = window_.framebuffer_extent();
-  if (extent.width > 0 && extent.height > 0) Resize(extent);
-  return {};
+    timer.End(cmd);
+  });
 }
 
 PanelInfo Viewer::Impl::MakePanelInfo(const Renderer& primary) const {
@@ -313,28 +364,43 @@ bool Viewer::Impl::Step() {
   if (events.sun_clock_moved) FollowSunClock();
   if (events.tables_changed) applied_knobs_ = settings_.knobs;
   RequestTables();
-
-  std::vector<vk::PassTime> passes = primary->Render(options_.scene);
-  shown_ = primary;
-  std::vector<int> keys = window_.TakeKeyPresses();
-  if (imgui_.wants_keyboard()) keys.clear();
-  Act(events, keys, *primary);
+  // Got before recording: a renderer rebuilt for new options waits for the frames in flight.
   Renderer* other = nullptr;
   if (settings_.view == DebugView::kDifference && HasCurrentTables(LutVariant::k4D) &&
       HasCurrentTables(LutVariant::k3D) && HasCurrentTables(settings_.variant)) {
     other = stack_.Get(Other(settings_.variant), render);
-    for (vk::PassTime pass : other->Render(options_.scene)) {
-      pass.pass += " (" + ToString(other->tables().options().variant) + ")";
-      passes.push_back(pass);
-    }
   }
-  std::vector<vk::PassTime> display = Draw(*primary, other);
-  if (display.empty()) return true;  // not presented: the swapchain was out of date
-  passes.insert(passes.end(), display.begin(), display.end());
+
+  const ::vk::raii::CommandBuffer& cmd = ring_.Begin();
+  uint32_t slot = ring_.slot();
+  CollectFinishedFrame(slot);
+  recorded_[slot].clear();
+  if (!swapchain_.Acquire(ring_)) {  // out of date: nothing is recorded for this frame
+    Resize(window_.framebuffer_extent());
+    return true;
+  }
+  // The last frame of a scripted run is saved: it is completed like `aerial render`'s.
+  bool last = options_.frames > 0 && frames_ + 1 == options_.frames;
+  primary->Record(cmd, options_.scene, slot, last);
+  recorded_[slot].push_back({primary, ""});
+  shown_ = primary;
+  if (other) {
+    other->Record(cmd, options_.scene, slot);
+    recorded_[slot].push_back({other, " (" + ToString(other->tables().options().variant) + ")"});
+  }
+  RecordDisplay(cmd, slot, *primary, other);
+  bool presented = swapchain_.SubmitAndPresent(ring_);
+  // Reads of the frame (screenshots, exports) are submitted after it, so they see it finished.
+  std::vector<int> keys = window_.TakeKeyPresses();
+  if (imgui_.wants_keyboard()) keys.clear();
+  Act(events, keys, *primary);
+  if (!presented) {
+    ::vk::Extent2D now_extent = window_.framebuffer_extent();
+    if (now_extent.width > 0 && now_extent.height > 0) Resize(now_extent);
+  }
   Clock::time_point now = Clock::now();
-  stats_.AddFrame(std::chrono::duration<double, std::milli>(now - last_frame_end_).count(), passes);
+  stats_.AddFrame(std::chrono::duration<double, std::milli>(now - last_frame_end_).count());
   last_frame_end_ = now;
-  last_passes_ = std::move(passes);
   ++frames_;
   return true;
 }
@@ -342,6 +408,7 @@ bool Viewer::Impl::Step() {
 void Viewer::Impl::Run() {
   while ((options_.frames == 0 || frames_ < options_.frames) && Step()) {
   }
+  ring_.WaitAll();
   if (!options_.screenshot.empty() && shown_)
     WriteImage(options_.screenshot, shown_->ReadOutput(), {.exposure = settings_.exposure});
   if (!options_.stats.empty()) stats_.Write(options_.stats);

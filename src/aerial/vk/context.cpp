@@ -138,6 +138,12 @@ Context::Context(const ContextCreateInfo& info) {
       device_, ::vk::CommandPoolCreateInfo{
                    .flags = ::vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
                    .queueFamilyIndex = queue_family_});
+  submit_buffer_ = std::move(::vk::raii::CommandBuffers(
+      device_, ::vk::CommandBufferAllocateInfo{.commandPool = *command_pool_,
+                                               .level = ::vk::CommandBufferLevel::ePrimary,
+                                               .commandBufferCount = 1})
+                                 .front());
+  submit_done_ = ::vk::raii::Fence(device_, ::vk::FenceCreateInfo{});
 }
 
 std::string Context::device_name() const {
@@ -145,18 +151,15 @@ std::string Context::device_name() const {
 }
 
 void Context::Submit(const std::function<void(const ::vk::raii::CommandBuffer&)>& record) const {
-  ::vk::raii::CommandBuffers buffers(
-      device_, ::vk::CommandBufferAllocateInfo{.commandPool = *command_pool_,
-                                               .level = ::vk::CommandBufferLevel::ePrimary,
-                                               .commandBufferCount = 1});
-  const auto& cmd = buffers.front();
+  const auto& cmd = submit_buffer_;
+  cmd.reset();
   cmd.begin(::vk::CommandBufferBeginInfo{.flags = ::vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
   record(cmd);
   cmd.end();
-  ::vk::raii::Fence fence(device_, ::vk::FenceCreateInfo{});
+  device_.resetFences(*submit_done_);
   ::vk::CommandBuffer raw = *cmd;
-  queue_.submit(::vk::SubmitInfo{.commandBufferCount = 1, .pCommandBuffers = &raw}, *fence);
-  if (device_.waitForFences(*fence, VK_TRUE, UINT64_MAX) != ::vk::Result::eSuccess)
+  queue_.submit(::vk::SubmitInfo{.commandBufferCount = 1, .pCommandBuffers = &raw}, *submit_done_);
+  if (device_.waitForFences(*submit_done_, VK_TRUE, UINT64_MAX) != ::vk::Result::eSuccess)
     throw Error("vkWaitForFences", "timeout", "completion");
 }
 

@@ -39,7 +39,10 @@ class Context {
   bool validation_enabled() const { return validation_; }
   double timestamp_period_ns() const { return timestamp_period_ns_; }
 
-  // Records commands into a fresh command buffer, submits them and waits for completion.
+  // Records commands, submits them and waits for completion: for one-off work (uploads,
+  // readbacks, a single frame). The command buffer and fence are the context's own, reused by
+  // every call, so a Submit must not be made from inside another one's record, nor from two
+  // threads at once. Frames that should not wait use a CommandRing (command_ring.h).
   void Submit(const std::function<void(const ::vk::raii::CommandBuffer&)>& record) const;
 
   uint32_t FindMemoryType(uint32_t type_bits, ::vk::MemoryPropertyFlags properties) const;
@@ -55,6 +58,8 @@ class Context {
   ::vk::raii::Device device_{nullptr};
   ::vk::raii::Queue queue_{nullptr};
   ::vk::raii::CommandPool command_pool_{nullptr};
+  ::vk::raii::CommandBuffer submit_buffer_{nullptr};
+  ::vk::raii::Fence submit_done_{nullptr};
   uint32_t queue_family_ = 0;
   bool validation_ = false;
   double timestamp_period_ns_ = 1.0;

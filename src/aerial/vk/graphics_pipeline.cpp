@@ -31,8 +31,10 @@ GraphicsPipeline::GraphicsPipeline(const Context& context, const GraphicsPipelin
   for (uint32_t i = 0; i < info.attributes.size(); ++i)
     attributes.push_back({.location = i, .binding = 0, .format = info.attributes[i].format,
                           .offset = info.attributes[i].offset});
+  bool has_vertices = !attributes.empty();
   ::vk::PipelineVertexInputStateCreateInfo vertex_input{
-      .vertexBindingDescriptionCount = 1, .pVertexBindingDescriptions = &binding,
+      .vertexBindingDescriptionCount = has_vertices ? 1u : 0u,
+      .pVertexBindingDescriptions = has_vertices ? &binding : nullptr,
       .vertexAttributeDescriptionCount = uint32_t(attributes.size()),
       .pVertexAttributeDescriptions = attributes.data()};
   ::vk::PipelineInputAssemblyStateCreateInfo assembly{.topology = ::vk::PrimitiveTopology::eTriangleList};
@@ -56,19 +58,22 @@ GraphicsPipeline::GraphicsPipeline(const Context& context, const GraphicsPipelin
       .alphaBlendOp = ::vk::BlendOp::eAdd,
       .colorWriteMask = ::vk::ColorComponentFlagBits::eR | ::vk::ColorComponentFlagBits::eG |
                         ::vk::ColorComponentFlagBits::eB | ::vk::ColorComponentFlagBits::eA};
-  std::vector<::vk::PipelineColorBlendAttachmentState> blends(info.color_formats.size(), blend);
+  size_t color_count = info.render_pass ? 1 : info.color_formats.size();
+  std::vector<::vk::PipelineColorBlendAttachmentState> blends(color_count, blend);
   ::vk::PipelineColorBlendStateCreateInfo color_blend{.attachmentCount = uint32_t(blends.size()),
                                                       .pAttachments = blends.data()};
-  std::array<::vk::DynamicState, 2> dynamic_states = {::vk::DynamicState::eViewport,
-                                                      ::vk::DynamicState::eScissor};
-  ::vk::PipelineDynamicStateCreateInfo dynamic{.dynamicStateCount = 2, .pDynamicStates = dynamic_states.data()};
+  std::vector<::vk::DynamicState> dynamic_states = {::vk::DynamicState::eViewport,
+                                                    ::vk::DynamicState::eScissor};
+  if (info.dynamic_cull_mode) dynamic_states.push_back(::vk::DynamicState::eCullMode);
+  ::vk::PipelineDynamicStateCreateInfo dynamic{.dynamicStateCount = uint32_t(dynamic_states.size()),
+                                               .pDynamicStates = dynamic_states.data()};
   ::vk::PipelineRenderingCreateInfo rendering{
       .colorAttachmentCount = uint32_t(info.color_formats.size()),
       .pColorAttachmentFormats = info.color_formats.data(),
       .depthAttachmentFormat = info.depth_format.value_or(::vk::Format::eUndefined)};
   pipeline_ = ::vk::raii::Pipeline(
       context.device(), nullptr,
-      ::vk::GraphicsPipelineCreateInfo{.pNext = &rendering,
+      ::vk::GraphicsPipelineCreateInfo{.pNext = info.render_pass ? nullptr : &rendering,
                                        .stageCount = 2,
                                        .pStages = stages.data(),
                                        .pVertexInputState = &vertex_input,
@@ -79,15 +84,19 @@ GraphicsPipeline::GraphicsPipeline(const Context& context, const GraphicsPipelin
                                        .pDepthStencilState = &depth,
                                        .pColorBlendState = &color_blend,
                                        .pDynamicState = &dynamic,
-                                       .layout = *layout_.layout});
+                                       .layout = *layout_.layout,
+                                       .renderPass = info.render_pass});
 }
 
-void GraphicsPipeline::Draw(const ::vk::raii::CommandBuffer& cmd, const RenderTargets& targets,
-                            const std::vector<Slot>& slots, const Buffer& vertices,
-                            const Buffer& indices, uint32_t index_count,
+void GraphicsPipeline::Bind(const ::vk::raii::CommandBuffer& cmd, const std::vector<Slot>& slots,
                             const void* push_constants) const {
-  if (targets.colors.empty()) throw Error(name_ + " color targets", "0", "at least one");
-  ::vk::Extent3D extent = targets.colors.front()->extent();
+  cmd.bindPipeline(::vk::PipelineBindPoint::eGraphics, *pipeline_);
+  layout_.Push(cmd, ::vk::PipelineBindPoint::eGraphics, slots, push_constants, name_);
+}
+
+Rendering::Rendering(const ::vk::raii::CommandBuffer& cmd, const RenderTargets& targets) : cmd_(cmd) {
+  const Image* sized = targets.colors.empty() ? targets.depth : targets.colors.front();
+  if (!sized) throw Error("render targets", "none", "at least one color or depth image");
   std::vector<::vk::RenderingAttachmentInfo> colors;
   for (size_t i = 0; i < targets.colors.size(); ++i) {
     bool clear = i < targets.clear_colors.size() && targets.clear_colors[i].has_value();
@@ -109,21 +118,37 @@ void GraphicsPipeline::Draw(const ::vk::raii::CommandBuffer& cmd, const RenderTa
         .clearValue = ::vk::ClearValue{
             .depthStencil = ::vk::ClearDepthStencilValue{targets.clear_depth.value_or(0.0f), 0}}};
   }
-  ::vk::Rect2D area{.extent = {extent.width, extent.height}};
-  cmd.beginRendering(::vk::RenderingInfo{.renderArea = area,
+  ::vk::Extent2D extent{sized->extent().width, sized->extent().height};
+  cmd.beginRendering(::vk::RenderingInfo{.renderArea = {.extent = extent},
                                          .layerCount = 1,
                                          .colorAttachmentCount = uint32_t(colors.size()),
                                          .pColorAttachments = colors.data(),
                                          .pDepthAttachment = targets.depth ? &depth : nullptr});
-  cmd.bindPipeline(::vk::PipelineBindPoint::eGraphics, *pipeline_);
-  layout_.Push(cmd, ::vk::PipelineBindPoint::eGraphics, slots, push_constants, name_);
+  SetViewport(cmd, extent);
+}
+
+Rendering::~Rendering() { cmd_.endRendering(); }
+
+void SetViewport(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent) {
   cmd.setViewport(0, ::vk::Viewport{.width = float(extent.width), .height = float(extent.height),
                                     .minDepth = 0.0f, .maxDepth = 1.0f});
-  cmd.setScissor(0, area);
+  cmd.setScissor(0, ::vk::Rect2D{.extent = extent});
+}
+
+void SetCullBackFaces(const ::vk::raii::CommandBuffer& cmd, bool cull_back) {
+  cmd.setCullMode(cull_back ? ::vk::CullModeFlagBits::eBack : ::vk::CullModeFlagBits::eNone);
+}
+
+void BindMesh(const ::vk::raii::CommandBuffer& cmd, const Buffer& vertices, const Buffer& indices) {
   cmd.bindVertexBuffers(0, vertices.handle(), ::vk::DeviceSize(0));
   cmd.bindIndexBuffer(indices.handle(), 0, ::vk::IndexType::eUint32);
-  cmd.drawIndexed(index_count, 1, 0, 0, 0);
-  cmd.endRendering();
 }
+
+void DrawIndexed(const ::vk::raii::CommandBuffer& cmd, uint32_t index_count, uint32_t first_index,
+                 int32_t vertex_offset) {
+  cmd.drawIndexed(index_count, 1, first_index, vertex_offset, 0);
+}
+
+void DrawFullScreenTriangle(const ::vk::raii::CommandBuffer& cmd) { cmd.draw(3, 1, 0, 0); }
 
 }  // namespace aerial::vk

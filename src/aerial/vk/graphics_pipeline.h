@@ -1,13 +1,15 @@
 #pragma once
-// A raster pipeline for dynamic rendering (Vulkan 1.3): vertex and fragment modules from the
-// embedded SPIR-V, one interleaved vertex buffer, push descriptors as for compute. Render targets
-// are plain Images; Draw begins and ends the rendering around the recorded draw.
-#include <functional>
+// A raster pipeline: vertex and fragment modules from the embedded SPIR-V, at most one interleaved
+// vertex buffer, push descriptors as for compute. It draws either with dynamic rendering (Vulkan
+// 1.3) into plain Images, inside a Rendering scope, or inside a classic VkRenderPass (the
+// swapchain's, which Dear ImGui's backend needs).
+//
+// A frame records one Rendering scope for all its raster passes, so that no barrier or image
+// round trip separates them: Bind a pipeline, draw, Bind the next.
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <array>
 
 #include "aerial/vk/descriptors.h"
 
@@ -23,18 +25,35 @@ struct GraphicsPipelineCreateInfo {
   std::string fragment_shader;  // "frame/opaque.frag"
   std::vector<::vk::DescriptorType> slot_types;
   uint32_t push_constant_bytes = 0;
-  uint32_t vertex_stride = 0;
+  uint32_t vertex_stride = 0;               // 0 with no attributes: no vertex buffer
   std::vector<VertexAttribute> attributes;  // location i = attributes[i]
-  std::vector<::vk::Format> color_formats;
+  std::vector<::vk::Format> color_formats;  // dynamic rendering
   std::optional<::vk::Format> depth_format;
+  ::vk::RenderPass render_pass = nullptr;   // set: draws in subpass 0 of it instead
   bool depth_write = true;
   ::vk::CompareOp depth_compare = ::vk::CompareOp::eGreater;  // reversed-Z
   bool alpha_blend = false;  // premultiplied: src + (1 - src_alpha) dst
+  // The cull mode is dynamic state: every draw sets it (SetCullMode) before drawing.
+  bool dynamic_cull_mode = false;
   ::vk::CullModeFlags cull = ::vk::CullModeFlagBits::eNone;
   // Specialization constants of both stages: constant_id i takes specialization[i]. A CPU
   // rasterizer executes both sides of every branch its SIMD lanes reach, so choices that are fixed
   // for a pipeline (aerial perspective per pixel or from froxels) must be constants, not uniforms.
   std::vector<int32_t> specialization;
+};
+
+class GraphicsPipeline {
+ public:
+  GraphicsPipeline(const Context& context, const GraphicsPipelineCreateInfo& info);
+
+  // Binds the pipeline, pushes its descriptors and constants. Draws follow.
+  void Bind(const ::vk::raii::CommandBuffer& cmd, const std::vector<Slot>& slots,
+            const void* push_constants = nullptr) const;
+
+ private:
+  std::string name_;
+  PushDescriptorLayout layout_;
+  ::vk::raii::Pipeline pipeline_{nullptr};
 };
 
 struct RenderTargets {
@@ -44,20 +63,26 @@ struct RenderTargets {
   std::optional<float> clear_depth;  // nullopt: load
 };
 
-class GraphicsPipeline {
+// Dynamic rendering into targets (GENERAL layout) for its lifetime, with the viewport and scissor
+// covering the first target (or the depth target when there is no color).
+class Rendering {
  public:
-  GraphicsPipeline(const Context& context, const GraphicsPipelineCreateInfo& info);
-
-  // Begins rendering into targets (all in GENERAL layout), binds everything, draws `index_count`
-  // indices, ends rendering.
-  void Draw(const ::vk::raii::CommandBuffer& cmd, const RenderTargets& targets,
-            const std::vector<Slot>& slots, const Buffer& vertices, const Buffer& indices,
-            uint32_t index_count, const void* push_constants = nullptr) const;
+  Rendering(const ::vk::raii::CommandBuffer& cmd, const RenderTargets& targets);
+  ~Rendering();
+  Rendering(const Rendering&) = delete;
+  Rendering& operator=(const Rendering&) = delete;
 
  private:
-  std::string name_;
-  PushDescriptorLayout layout_;
-  ::vk::raii::Pipeline pipeline_{nullptr};
+  const ::vk::raii::CommandBuffer& cmd_;
 };
+
+// The viewport and scissor of a whole extent.
+void SetViewport(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent);
+void SetCullBackFaces(const ::vk::raii::CommandBuffer& cmd, bool cull_back);
+void BindMesh(const ::vk::raii::CommandBuffer& cmd, const Buffer& vertices, const Buffer& indices);
+void DrawIndexed(const ::vk::raii::CommandBuffer& cmd, uint32_t index_count, uint32_t first_index = 0,
+                 int32_t vertex_offset = 0);
+// Three vertices and no buffers: a full-screen triangle made in the vertex shader.
+void DrawFullScreenTriangle(const ::vk::raii::CommandBuffer& cmd);
 
 }  // namespace aerial::vk

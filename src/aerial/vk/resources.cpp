@@ -145,16 +145,26 @@ std::vector<float> ReadImageFloats(const Context& context, const Image& image) {
   return texels;
 }
 
-::vk::raii::Sampler CreateLinearClampSampler(const Context& context) {
+namespace {
+::vk::raii::Sampler CreateClampSampler(const Context& context, ::vk::Filter filter) {
   return ::vk::raii::Sampler(
       context.device(), ::vk::SamplerCreateInfo{
-                            .magFilter = ::vk::Filter::eLinear,
-                            .minFilter = ::vk::Filter::eLinear,
+                            .magFilter = filter,
+                            .minFilter = filter,
                             .mipmapMode = ::vk::SamplerMipmapMode::eNearest,
                             .addressModeU = ::vk::SamplerAddressMode::eClampToEdge,
                             .addressModeV = ::vk::SamplerAddressMode::eClampToEdge,
                             .addressModeW = ::vk::SamplerAddressMode::eClampToEdge,
                             .maxLod = 0.0f});
+}
+}  // namespace
+
+::vk::raii::Sampler CreateLinearClampSampler(const Context& context) {
+  return CreateClampSampler(context, ::vk::Filter::eLinear);
+}
+
+::vk::raii::Sampler CreateNearestClampSampler(const Context& context) {
+  return CreateClampSampler(context, ::vk::Filter::eNearest);
 }
 
 void FullBarrier(const ::vk::raii::CommandBuffer& cmd) {

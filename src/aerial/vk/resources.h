@@ -70,6 +70,8 @@ class Image {
 
 // Linear filtering with clamp-to-edge: the table mappings put every lookup on texel centers.
 ::vk::raii::Sampler CreateLinearClampSampler(const Context& context);
+// Nearest texel, clamp-to-edge: for images read texel by texel (a depth buffer).
+::vk::raii::Sampler CreateNearestClampSampler(const Context& context);
 
 // Makes every earlier shader or transfer write visible to every later shader or transfer access.
 void FullBarrier(const ::vk::raii::CommandBuffer& cmd);

@@ -1,15 +1,16 @@
 #pragma once
-// A window's swapchain and the one way aerial presents: a finished image (a compute pass's output
-// in GENERAL layout) is copied into the swapchain image, an overlay is drawn over it inside a
-// render pass, and the image is presented. The render pass exists for the overlay: Dear ImGui
-// 1.86's Vulkan backend draws into a VkRenderPass (it predates dynamic rendering).
+// A window's swapchain and how aerial draws into it: each frame acquires an image, draws it in one
+// render pass (the display pass writes every pixel, then an overlay such as Dear ImGui goes on
+// top), and presents it, with several frames in flight: the CPU records the next frame while the
+// GPU draws this one. The frame's commands come from a CommandRing; the swapchain owns the
+// semaphores that order acquire, drawing and presentation.
 //
 // Images are 8-bit UNORM: aerial encodes sRGB in its own shaders, exactly as it does for PNG files,
-// so an sRGB swapchain format would encode twice. One frame is in flight: Present waits for the
-// frame's fence, which is what the synchronous renderer does anyway.
+// so an sRGB swapchain format would encode twice.
 #include <functional>
 #include <vector>
 
+#include "aerial/vk/command_ring.h"
 #include "aerial/vk/resources.h"
 
 namespace aerial::vk {
@@ -20,21 +21,25 @@ class Swapchain {
  public:
   // surface: created by the window system for the context's instance; it must outlive this.
   // wanted: the window's framebuffer size, used when the surface does not dictate one.
-  Swapchain(const Context& context, ::vk::SurfaceKHR surface, ::vk::Extent2D wanted);
+  // frames_in_flight: the slots of the CommandRing the frames are recorded with.
+  Swapchain(const Context& context, ::vk::SurfaceKHR surface, ::vk::Extent2D wanted,
+            uint32_t frames_in_flight);
   Swapchain(const Swapchain&) = delete;
   Swapchain& operator=(const Swapchain&) = delete;
   ~Swapchain();
 
-  // Rebuilds the images for a new size (after a resize, or when Present returned false). Waits for
-  // the device to be idle first.
+  // Rebuilds the images for a new size (after a resize, or when Acquire or Present returned
+  // false). Waits for the device to be idle first.
   void Recreate(::vk::Extent2D wanted);
 
-  // One frame: acquires an image, records `prepare` (the passes that fill `source`), copies `source`
-  // (GENERAL layout, the swapchain's extent; in format(), or in any blittable color format, then
-  // converted by a blit) into the image, records `overlay` inside the render pass, submits, waits,
-  // presents. Returns false when the swapchain is out of date or suboptimal and nothing (or a
-  // possibly stretched image) was shown: Recreate.
-  bool Present(const Image& source, const Recorder& prepare, const Recorder& overlay);
+  // Acquires the next image for the ring's current slot (after CommandRing::Begin). False when
+  // the swapchain is out of date: Recreate, and record nothing for this frame.
+  bool Acquire(const CommandRing& ring);
+  // Records the render pass over the acquired image: `draw` must write every pixel.
+  void RecordDraw(const ::vk::raii::CommandBuffer& cmd, const Recorder& draw) const;
+  // Submits the ring's command buffer (waiting for the acquire) and presents the image. False
+  // when the swapchain is out of date or suboptimal: Recreate.
+  bool SubmitAndPresent(CommandRing& ring);
 
   ::vk::Extent2D extent() const { return extent_; }
   ::vk::Format format() const { return format_; }
@@ -59,10 +64,10 @@ class Swapchain {
   // Per image, since a semaphore waited on by a present may still be in use until that image is
   // acquired again.
   std::vector<::vk::raii::Semaphore> rendered_;
-  ::vk::raii::Semaphore acquired_{nullptr};
-  ::vk::raii::Fence frame_done_{nullptr};
-  ::vk::raii::CommandPool command_pool_{nullptr};
-  ::vk::raii::CommandBuffer command_buffer_{nullptr};
+  // Per ring slot: reused once the slot's previous frame, which waited on it, has finished.
+  std::vector<::vk::raii::Semaphore> acquired_;
+  uint32_t image_ = 0;
+  bool suboptimal_ = false;
 };
 
 }  // namespace aerial::vk

@@ -1,11 +1,10 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Composite, sky pixels (the depth test passes only where no geometry was drawn): the inscatter
-// of the whole view ray with the phase functions from the pixel's own ray, plus what lies behind
-// it: the sun disc, or the bare planet where the ray meets the ground beyond the scene's geometry.
-// In froxel mode all of it comes from the per-frame sky-view table (3 bilinear taps); in
-// per-pixel mode, from the tables. Sky and geometry pixels are separate passes because a CPU
-// rasterizer runs every branch its 8-wide lanes reach.
+// The sky, drawn after the opaque geometry into the same target where none was drawn (the depth
+// test passes only there): the inscatter of the whole view ray with the phase functions from the
+// pixel's own ray, plus what lies behind it: the sun disc, or the bare planet where the ray meets
+// the ground beyond the scene's geometry. In froxel mode all of it comes from the sky-view table
+// (3 bilinear taps); in per-pixel mode, from the tables.
 #include "froxel.glsl"
 #include "frame.glsl"
 #include "surface.glsl"
@@ -18,6 +17,9 @@ layout(set = 0, binding = 6) uniform sampler2D irradiance_texture;
 layout(set = 0, binding = 7) uniform sampler2D rayleigh_sky;
 layout(set = 0, binding = 8) uniform sampler2D mie_sky;
 layout(set = 0, binding = 9) uniform sampler2D background_sky;
+layout(location = 0) in vec3 view_ray;
+layout(location = 1) flat in vec3 up;
+layout(location = 2) flat in vec3 toward_sun;
 layout(location = 0) out vec4 color;
 
 // The whole view ray's inscatter, and in `transmittance` the background through the atmosphere
@@ -30,8 +32,6 @@ Inscatter GetPixelSky(vec3 ray, float r, float mu, float mu_s, float nu) {
                                                        ray, r, mu, sky.transmittance);
     return sky;
   }
-  vec3 up, toward_sun, side;
-  GetSkyViewFrame(up, toward_sun, side);
   vec3 horizontal = ray - mu * up;
   float cos_phi = dot(horizontal, horizontal) > 1e-12 ? dot(normalize(horizontal), toward_sun) : 1.0;
   vec2 uv = GetSkyViewUv(r, cos_phi, acos(clamp(mu, -1.0, 1.0)), textureSize(rayleigh_sky, 0));
@@ -43,8 +43,7 @@ Inscatter GetPixelSky(vec3 ray, float r, float mu, float mu_s, float nu) {
 }
 
 void main() {
-  vec2 uv = gl_FragCoord.xy / frame.viewport.xy;
-  vec3 ray = ViewRayFromScreen(uv);
+  vec3 ray = normalize(view_ray);
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
   Inscatter sky = GetPixelSky(ray, r, mu, mu_s, nu);

@@ -2,8 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // Debug views of the aerial perspective alone, per pixel: the Rayleigh term I_R P_R(nu), the Mie
 // term I_M P_M(nu) or the transmittance T of L = L_surface T + I_R P_R + I_M P_M (the composite's
-// equation). For pixels with geometry the segment ends at the surface (distance in the opaque
-// pass's alpha) and is read from the froxel volume in froxel mode, exactly as the composite reads
+// equation). For pixels with geometry the segment ends at the surface (its distance from the
+// depth buffer) and is read from the froxel volume in froxel mode, exactly as the composite reads
 // it, or from the tables in per-pixel mode. For sky pixels the whole view ray is read from the
 // tables: the renderer's per-frame sky-view table is internal to it (it resamples these same
 // lookups). Left out: the surface's own radiance and the sun disc. Inscatter is tone mapped with
@@ -11,7 +11,6 @@
 #include "froxel.glsl"
 #include "frame.glsl"
 #include "tone_map.glsl"
-layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
 layout(set = 0, binding = 3) uniform sampler3D rayleigh_texture;
 layout(set = 0, binding = 4) uniform sampler3D mie_texture;
@@ -19,24 +18,25 @@ layout(set = 0, binding = 5) uniform sampler3D multiple_texture;
 layout(set = 0, binding = 6) uniform sampler3D rayleigh_froxels;
 layout(set = 0, binding = 7) uniform sampler3D mie_froxels;
 layout(set = 0, binding = 8) uniform sampler3D transmittance_froxels;
-layout(set = 0, binding = 9) uniform sampler2D surface_texture;  // rgb: radiance, a: distance
-layout(set = 0, binding = 10) writeonly uniform image2D display;  // 8-bit UNORM, RGBA or BGRA
+layout(set = 0, binding = 9) uniform sampler2D depth_texture;  // reversed Z, 0 where sky
 layout(push_constant) uniform Push {
+  vec2 target_size;  // the window's pixels
   int term;          // 0: Rayleigh, 1: Mie, 2: transmittance
   int from_froxels;  // 1 in froxel mode
   float exposure;
 } push;
+layout(location = 0) out vec4 color;  // 8-bit UNORM, RGBA or BGRA
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(pixel, imageSize(display)))) return;
-  vec2 uv = (vec2(pixel) + 0.5) / frame.viewport.xy;  // the composite's gl_FragCoord / viewport
+  vec2 uv = gl_FragCoord.xy / push.target_size;
   vec3 ray = ViewRayFromScreen(uv);
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
-  float distance = texelFetch(surface_texture, pixel, 0).a;  // negative: no geometry
+  // The renderer's own depth texel under the pixel (its frame may be smaller: --render-scale).
+  float depth = texelFetch(depth_texture, ivec2(uv * frame.viewport.xy), 0).r;
+  float distance = DistanceFromDepth(uv, depth);
   Inscatter segment;
-  if (distance < 0.0) {
+  if (depth == 0.0) {
     segment = GetSkyInscatter(transmittance_texture, rayleigh_texture, mie_texture,
                               multiple_texture, r, mu, mu_s, nu);
   } else if (push.from_froxels == 1) {
@@ -54,5 +54,5 @@ void main() {
   } else {
     value = SrgbOetf(clamp(segment.transmittance, 0.0, 1.0));
   }
-  imageStore(display, pixel, vec4(value, 1.0));
+  color = vec4(value, 1.0);
 }

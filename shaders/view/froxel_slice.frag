@@ -7,20 +7,19 @@
 // (times 1 / 4 pi) with the exposure and the tone map; the transmittance is only sRGB-encoded.
 #include "definitions.glsl"
 #include "tone_map.glsl"
-layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 0) uniform sampler3D rayleigh_froxels;
 layout(set = 0, binding = 1) uniform sampler3D mie_froxels;
 layout(set = 0, binding = 2) uniform sampler3D transmittance_froxels;
-layout(set = 0, binding = 3) writeonly uniform image2D display;  // 8-bit UNORM, RGBA or BGRA
 layout(push_constant) uniform Push {
+  vec2 target_size;  // the window's pixels
   int slice;
   float exposure;
 } push;
+layout(location = 0) out vec4 color;  // 8-bit UNORM, RGBA or BGRA
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  ivec2 size = imageSize(display);
-  if (any(greaterThanEqual(pixel, size))) return;
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  ivec2 size = ivec2(push.target_size);
   int column = min(pixel.x * 3 / size.x, 2);
   float column_width = float(size.x) / 3.0;
   vec2 within = vec2((float(pixel.x) - column * column_width) / column_width,
@@ -36,5 +35,5 @@ void main() {
   } else {
     value = SrgbOetf(clamp(texelFetch(transmittance_froxels, froxel, 0).rgb, 0.0, 1.0));
   }
-  imageStore(display, pixel, vec4(value, 1.0));
+  color = vec4(value, 1.0);
 }

@@ -1,0 +1,12 @@
+#pragma once
+// Resampling an image to another size.
+#include "aerial/image/image.h"
+
+namespace aerial {
+
+// Bilinear, with texel centers at (i + 0.5) / size on both images and clamping at the edges: what
+// a GPU's linear sampler with clamp-to-edge returns, so that `aerial render --render-scale` and
+// the viewer's display upscale a frame the same way.
+ImageRgbF ResizeBilinear(const ImageRgbF& image, int width, int height);
+
+}  // namespace aerial

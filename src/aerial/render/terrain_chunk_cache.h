@@ -1,0 +1,58 @@
+#pragma once
+// The terrain chunks on the GPU: a fixed pool of chunk-sized slots in one host-visible vertex
+// buffer, and the index buffer every chunk shares. Chunks are built on the CPU when the LOD
+// selection first asks for them (terrain/lod_selection.h), written into a free slot, and kept
+// until the pool is full; then the chunk used longest ago goes, but never one that a frame still
+// in flight may draw.
+#include <chrono>
+#include <map>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "aerial/terrain/lod_selection.h"
+#include "aerial/vk/resources.h"
+
+namespace aerial {
+
+class TerrainChunkCache : public terrain::ChunkSource {
+ public:
+  // capacity: chunk slots (each kChunkVertices vertices); frames_in_flight: how many frames after
+  // its last use a slot may still be read by the GPU.
+  TerrainChunkCache(const vk::Context& context, double planet_radius_m, uint32_t capacity,
+                    uint32_t frames_in_flight);
+
+  // Starts a frame: building stops once budget_ms of building has been spent in it (0: no limit).
+  void BeginFrame(double budget_ms);
+
+  const terrain::ChunkInfo* Find(const terrain::ChunkId& id) override;
+  void Build(std::span<const terrain::ChunkId> ids) override;
+
+  // The first vertex of a built chunk in vertices().
+  int32_t VertexOffset(const terrain::ChunkId& id) const;
+  const vk::Buffer& vertices() const { return vertices_; }
+  const vk::Buffer& indices() const { return indices_; }  // terrain::ChunkIndices()
+
+  int built_this_frame() const { return built_this_frame_; }
+  size_t size() const { return chunks_.size(); }
+
+ private:
+  struct Entry {
+    terrain::ChunkInfo info;
+    uint32_t slot;
+    uint64_t last_used;
+  };
+  std::optional<uint32_t> TakeSlot();
+
+  double planet_radius_m_;
+  uint32_t capacity_, frames_in_flight_;
+  vk::Buffer vertices_, indices_;
+  std::map<terrain::ChunkId, Entry> chunks_;
+  std::vector<uint32_t> free_slots_;
+  uint64_t frame_ = 0;
+  std::chrono::steady_clock::time_point deadline_;
+  bool limited_ = false;
+  int built_this_frame_ = 0;
+};
+
+}  // namespace aerial

@@ -1,0 +1,150 @@
+#include "aerial/terrain/lod_selection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+
+#include "aerial/scene/camera.h"
+#include "aerial/scene/terrain.h"
+
+namespace aerial::terrain {
+namespace {
+
+// The sea-level footprint is not exactly the surface's: a point h above sea level sits at
+// (R + h) / R times its sea-level x and y (SurfacePoint), 0.08% further out at h = 5 km.
+constexpr double kHorizontalSpread = 2e-3;
+
+// Conservative bounds of a child that is not built yet: its footprint, widened for the spread,
+// over its parent's heights, raised by the parent's error (the surface may rise that far above
+// the parent's triangles between its vertices).
+Bounds EstimateChildBounds(const ChunkId& child, const ChunkInfo& parent) {
+  Footprint f = FootprintOf(child);
+  auto widen = [](double lo, double hi) {
+    double margin = kHorizontalSpread * std::max(std::fabs(lo), std::fabs(hi)) + 1.0;
+    return std::array<double, 2>{lo - margin, hi + margin};
+  };
+  auto x = widen(f.x0, f.x0 + f.size), y = widen(f.y0, f.y0 + f.size);
+  return {{x[0], y[0], parent.bounds.min.z - parent.geometric_error_m},
+          {x[1], y[1], parent.bounds.max.z + parent.geometric_error_m}};
+}
+
+bool WithinTerrain(const ChunkId& id) {
+  Footprint f = FootprintOf(id);
+  double dx = std::max({f.x0, 0.0, -(f.x0 + f.size)});
+  double dy = std::max({f.y0, 0.0, -(f.y0 + f.size)});
+  return std::hypot(dx, dy) < kTerrainRadiusM;
+}
+
+// A side needs no skirt where the chunk across it is drawn at the same level: both share the
+// side's vertices exactly.
+void MarkSkirts(std::vector<SelectedChunk>& chunks) {
+  std::set<ChunkId> drawn;
+  for (const SelectedChunk& chunk : chunks) drawn.insert(chunk.id);
+  for (SelectedChunk& chunk : chunks) {
+    const ChunkId& c = chunk.id;
+    std::array<std::pair<ChunkId, uint32_t>, 4> neighbours = {
+        std::pair{ChunkId{c.level, c.x, c.y - 1}, uint32_t(kSouth)},
+        std::pair{ChunkId{c.level, c.x + 1, c.y}, uint32_t(kEast)},
+        std::pair{ChunkId{c.level, c.x, c.y + 1}, uint32_t(kNorth)},
+        std::pair{ChunkId{c.level, c.x - 1, c.y}, uint32_t(kWest)}};
+    chunk.skirts = 0;
+    for (const auto& [neighbour, side] : neighbours)
+      if (!drawn.count(neighbour)) chunk.skirts |= side;
+  }
+}
+
+}  // namespace
+
+LodView MakeLodView(const Camera& camera, double aspect, int height_px, double max_error_px,
+                    int min_height_px) {
+  LodView view;
+  view.camera = camera.position;
+  view.max_error_px = max_error_px;
+  double tan_half = std::tan(camera.vertical_fov_deg * std::numbers::pi / 360.0);
+  view.pixels_per_radian = double(std::max(height_px, min_height_px)) / (2.0 * tan_half);
+  // Gribb and Hartmann, "Fast Extraction of Viewing Frustum Planes from the World-View-Projection
+  // Matrix" (2001), for Vulkan's clip space with reversed Z: -w <= x, y <= w and z <= w (near).
+  glm::dmat4 m = ProjectionMatrix(camera, aspect) * ViewMatrix(camera);
+  auto row = [&](int r) { return glm::dvec4(m[0][r], m[1][r], m[2][r], m[3][r]); };
+  view.planes = {row(3) + row(0), row(3) - row(0), row(3) + row(1), row(3) - row(1), row(3) - row(2)};
+  for (glm::dvec4& plane : view.planes) plane /= glm::length(glm::dvec3(plane));
+  return view;
+}
+
+double DistanceToBounds(const glm::dvec3& p, const Bounds& bounds) {
+  return glm::length(p - glm::clamp(p, bounds.min, bounds.max));
+}
+
+double ScreenSpaceErrorPx(const LodView& view, double geometric_error_m, const Bounds& bounds) {
+  double distance = DistanceToBounds(view.camera, bounds);
+  if (distance <= 0.0) return geometric_error_m > 0.0 ? INFINITY : 0.0;
+  return geometric_error_m * view.pixels_per_radian / distance;
+}
+
+bool IntersectsFrustum(const LodView& view, const Bounds& bounds) {
+  for (const glm::dvec4& plane : view.planes) {
+    // The box's corner furthest along the plane's normal.
+    glm::dvec3 corner(plane.x >= 0 ? bounds.max.x : bounds.min.x, plane.y >= 0 ? bounds.max.y : bounds.min.y,
+                      plane.z >= 0 ? bounds.max.z : bounds.min.z);
+    if (glm::dot(glm::dvec3(plane), corner) + plane.w < 0.0) return false;
+  }
+  return true;
+}
+
+Selection SelectChunks(const LodView& view, ChunkSource& source) {
+  Selection selection;
+  const ChunkId root{};
+  if (!source.Find(root)) source.Build(std::span(&root, 1));
+  std::vector<ChunkId> level = {root};
+  while (!level.empty()) {
+    // This level's visible chunks that are too coarse, and the children they need built.
+    std::vector<ChunkId> refine, missing;
+    for (const ChunkId& id : level) {
+      const ChunkInfo* info = source.Find(id);
+      if (!info || !IntersectsFrustum(view, info->bounds)) continue;
+      if (id.level == kMaxChunkLevel ||
+          ScreenSpaceErrorPx(view, info->geometric_error_m, info->bounds) <= view.max_error_px) {
+        selection.chunks.push_back({id});
+        continue;
+      }
+      refine.push_back(id);
+      for (const ChunkId& child : Children(id)) {
+        if (WithinTerrain(child) && !source.Find(child) &&
+            IntersectsFrustum(view, EstimateChildBounds(child, *info)))
+          missing.push_back(child);
+      }
+    }
+    if (!missing.empty()) source.Build(missing);
+    std::vector<ChunkId> next;
+    for (const ChunkId& id : refine) {
+      const ChunkInfo& info = *source.Find(id);
+      std::vector<ChunkId> children;
+      bool ready = true;
+      for (const ChunkId& child : Children(id)) {
+        if (!WithinTerrain(child)) continue;
+        if (source.Find(child)) {
+          children.push_back(child);
+        } else if (IntersectsFrustum(view, EstimateChildBounds(child, info))) {
+          ready = false;
+        }
+      }
+      if (ready) {
+        next.insert(next.end(), children.begin(), children.end());
+      } else {
+        selection.chunks.push_back({id});
+        ++selection.deferred;
+      }
+    }
+    level = std::move(next);
+  }
+  MarkSkirts(selection.chunks);
+  std::sort(selection.chunks.begin(), selection.chunks.end(),
+            [&](const SelectedChunk& a, const SelectedChunk& b) {
+              return DistanceToBounds(view.camera, source.Find(a.id)->bounds) <
+                     DistanceToBounds(view.camera, source.Find(b.id)->bounds);
+            });
+  return selection;
+}
+
+}  // namespace aerial::terrain

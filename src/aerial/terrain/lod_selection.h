@@ -1,0 +1,72 @@
+#pragma once
+// Which terrain chunks to draw for a camera: chunked level of detail (Ulrich 2002). Walking the
+// quadtree from the root, a chunk outside the view frustum is dropped, a chunk whose geometric
+// error projects to more than max_error_px pixels is replaced by its four children, and any
+// other is drawn. The projected error of a chunk is its geometric error (terrain_chunk.h) seen
+// from its nearest point, rho = error * K / distance with K = height_px / (2 tan(fov_y / 2))
+// (Ulrich's equation 1 with the viewport's pixels per radian), so every drawn chunk is within
+// max_error_px of the surface on screen, wherever the camera is.
+#include <array>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "aerial/scene/scene.h"
+#include "aerial/terrain/terrain_chunk.h"
+
+namespace aerial::terrain {
+
+struct LodView {
+  glm::dvec3 camera{0.0};
+  // The frustum's four sides and its near plane in the scene frame: a point p is inside when
+  // dot(plane.xyz, p) + plane.w >= 0 for all five (there is no far plane).
+  std::array<glm::dvec4, 5> planes{};
+  double pixels_per_radian = 0.0;
+  double max_error_px = 1.0;
+};
+
+// The error bound is kept at least as fine as max_error_px at min_height_px rows, so that small
+// renders (thumbnails, tests) show the same terrain as a 720p frame.
+LodView MakeLodView(const Camera& camera, double aspect, int height_px, double max_error_px,
+                    int min_height_px = 720);
+
+double DistanceToBounds(const glm::dvec3& p, const Bounds& bounds);
+double ScreenSpaceErrorPx(const LodView& view, double geometric_error_m, const Bounds& bounds);
+bool IntersectsFrustum(const LodView& view, const Bounds& bounds);
+
+// What the selection knows of a chunk once it is built.
+struct ChunkInfo {
+  double geometric_error_m = 0.0;
+  Bounds bounds;
+};
+
+// Where chunks come from: built on demand (on the CPU, then uploaded) and kept.
+class ChunkSource {
+ public:
+  virtual ~ChunkSource() = default;
+  // The chunk's info if it is built, else null.
+  virtual const ChunkInfo* Find(const ChunkId& id) = 0;
+  // Builds the chunks (those it can within its time budget; the rest stay unbuilt).
+  virtual void Build(std::span<const ChunkId> ids) = 0;
+};
+
+struct SelectedChunk {
+  ChunkId id;
+  // The sides whose neighbour is not drawn at the same level (ChunkSide bits): the only sides
+  // where a crack can open, so the only ones that need the skirt.
+  uint32_t skirts = kAllSides;
+};
+
+struct Selection {
+  std::vector<SelectedChunk> chunks;  // to draw, nearest first
+  // Chunks that should have replaced a drawn one but were not built yet: a chunk is drawn in its
+  // children's place until all of them are built, so the view is never left with holes.
+  int deferred = 0;
+};
+
+// The chunks of the terrain within kTerrainRadiusM of the origin (chunks entirely beyond it are
+// not drawn) for the view. Builds what it needs through source; the root chunk first.
+Selection SelectChunks(const LodView& view, ChunkSource& source);
+
+}  // namespace aerial::terrain

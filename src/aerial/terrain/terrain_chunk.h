@@ -1,0 +1,63 @@
+#pragma once
+// One chunk of the built-in terrain (scene/terrain.h) as a mesh: a regular grid of
+// (kChunkCells + 1)^2 vertices on the curved ground, with a skirt hanging down from its four
+// edges to close the cracks where it meets a chunk of another level (Ulrich 2002, section 4.3).
+//
+// Cracks. Along an edge shared with a coarser chunk, the coarser side interpolates linearly
+// between vertices that the finer side also has, so the vertical gap is, at each vertex of the
+// finer side, the distance between the surface and the coarser side's interpolation. The skirt
+// depth covers that distance for every coarser level this chunk could meet (measured at its own
+// edge vertices), and its own interpolation error along the edges (measured at quarter cells):
+// whichever side is higher hangs a skirt below the other.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "aerial/scene/scene.h"
+#include "aerial/terrain/chunk_id.h"
+
+namespace aerial::terrain {
+
+// Axis-aligned bounds in the scene frame.
+struct Bounds {
+  glm::dvec3 min{0.0}, max{0.0};
+};
+
+struct TerrainChunk {
+  ChunkId id;
+  // Grid vertices first, row by row (x fastest), then the skirt's lower vertices in the order of
+  // SkirtEdgeVertices.
+  std::vector<Vertex> vertices;
+  // The largest radial distance between the mesh and the surface, measured at every cell centre
+  // (the middle of the triangles' shared diagonal) and at quarter points along the chunk's edges.
+  double geometric_error_m = 0.0;
+  double skirt_depth_m = 0.0;
+  Bounds bounds;  // of every vertex, the skirt included
+};
+
+TerrainChunk BuildTerrainChunk(const ChunkId& id, double planet_radius_m);
+
+inline constexpr uint32_t kChunkGridVertices = (kChunkCells + 1) * (kChunkCells + 1);
+inline constexpr uint32_t kChunkVertices = kChunkGridVertices + 4 * kChunkCells;
+
+// The chunk's sides, as bits of a skirt mask: a skirt is only needed along a side where the
+// neighbouring chunk is drawn at another level (or not drawn).
+enum ChunkSide : uint32_t { kSouth = 1, kEast = 2, kNorth = 4, kWest = 8 };
+inline constexpr uint32_t kAllSides = kSouth | kEast | kNorth | kWest;
+
+// The triangle lists every chunk shares, one per skirt mask (counter-clockwise seen from above
+// and, for the skirts, from outside the chunk): two triangles per cell, then two per skirt
+// segment of the masked sides. ChunkIndexRange(mask) is where mask's list lies in ChunkIndices().
+const std::vector<uint32_t>& ChunkIndices();
+struct IndexRange {
+  uint32_t first = 0, count = 0;
+};
+IndexRange ChunkIndexRange(uint32_t skirt_mask);
+
+// The grid vertex indices around the chunk's border, counter-clockwise seen from above, starting
+// at the corner (0, 0): 4 * kChunkCells of them, kChunkCells per side in the order south, east,
+// north, west. Skirt vertex kChunkGridVertices + k hangs below border vertex k.
+std::vector<uint32_t> SkirtEdgeVertices();
+
+}  // namespace aerial::terrain
