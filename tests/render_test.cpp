@@ -13,6 +13,7 @@
 #include "aerial/render/renderer.h"
 #include "aerial/scene/presets.h"
 #include "gpu_fixture.h"
+#include "image_compare.h"
 
 namespace aerial::testing {
 namespace {
@@ -26,19 +27,6 @@ ImageRgbF RenderPreset(const std::string& preset, AerialMode mode, LutVariant va
   Renderer renderer(tables, scene, {.width = kWidth, .height = kHeight, .mode = mode});
   renderer.Render(scene);
   return renderer.ReadOutput();
-}
-
-double RelativeRmse(const ImageRgbF& a, const ImageRgbF& b, const std::vector<bool>* mask = nullptr) {
-  double sum_squared = 0.0, sum_reference = 0.0;
-  for (size_t p = 0; p < a.rgba.size() / 4; ++p) {
-    if (mask && !(*mask)[p]) continue;
-    for (int c = 0; c < 3; ++c) {
-      double x = a.rgba[4 * p + c], y = b.rgba[4 * p + c];
-      sum_squared += (x - y) * (x - y);
-      sum_reference += y * y;
-    }
-  }
-  return std::sqrt(sum_squared / sum_reference);
 }
 
 class Render : public GpuTest {};

@@ -14,6 +14,7 @@
 
 #include "aerial/image/image_writer.h"
 #include "command_run.h"
+#include "image_compare.h"
 
 namespace aerial::testing {
 namespace {
@@ -25,16 +26,6 @@ std::filesystem::path ScratchDir() {
   std::filesystem::path dir = std::filesystem::temp_directory_path() / ("aerial-view-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   return dir;
-}
-
-double RelativeRmse(const ImageRgbF& a, const ImageRgbF& b) {
-  double squared = 0.0, reference = 0.0;
-  for (size_t i = 0; i < a.rgba.size(); ++i) {
-    if (i % 4 == 3) continue;
-    squared += (a.rgba[i] - b.rgba[i]) * double(a.rgba[i] - b.rgba[i]);
-    reference += double(b.rgba[i]) * b.rgba[i];
-  }
-  return std::sqrt(squared / reference);
 }
 
 TEST(ViewCli, RendersFramesLikeRenderAndWritesStats) {

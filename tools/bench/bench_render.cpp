@@ -102,7 +102,7 @@ void Bench(const BenchOptions& cli) {
   });
   for (size_t c = 0; c < configurations.size(); ++c) configurations[c].frames = std::move(frames[c]);
   const Configuration& frame = configurations[0];
-  const aerial::TerrainFrameStats& terrain = renderers[0]->terrain_stats();
+  const aerial::FrameInfo& terrain = renderers[0]->frame_info();
 
   std::printf("device: %s\n%dx%d, froxels %s, %s tables, preset noon, terrain error <= %.2f px "
               "(%zu chunks, %zu triangles)\n",

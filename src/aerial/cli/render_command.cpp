@@ -40,7 +40,7 @@ void RunRender(const RenderCommandOptions& options) {
       total += pass.milliseconds;
     }
     std::printf("  %-24s %9.2f ms\n", "total", total);
-    const TerrainFrameStats& terrain = renderer.terrain_stats();
+    const FrameInfo& terrain = renderer.frame_info();
     if (terrain.chunks > 0)
       std::printf("  terrain: %zu chunks, %zu triangles\n", terrain.chunks, terrain.triangles);
   }

@@ -138,7 +138,6 @@ Renderer::~Renderer() = default;
 
 // The chunks to draw, nearest first (terrain/lod_selection.h), built as needed.
 void Renderer::SelectTerrain(const Scene& scene, bool complete) {
-  terrain_stats_ = {};
   terrain_chunks_.clear();
   if (!terrain_ || !options_.passes.terrain) return;
   // The first frame builds all it needs, so that a window opens on the whole terrain.
@@ -150,10 +149,10 @@ void Renderer::SelectTerrain(const Scene& scene, bool complete) {
   terrain_chunks_ = std::move(selection.chunks);
   size_t indices = 0;
   for (const terrain::SelectedChunk& chunk : terrain_chunks_) indices += terrain::ChunkIndexRange(chunk.skirts).count;
-  terrain_stats_ = {.chunks = terrain_chunks_.size(),
-                    .triangles = indices / 3,
-                    .deferred = selection.deferred,
-                    .built = terrain_->built_this_frame()};
+  frame_info_.chunks = terrain_chunks_.size();
+  frame_info_.triangles = indices / 3;
+  frame_info_.deferred = selection.deferred;
+  frame_info_.built = terrain_->built_this_frame();
 }
 
 // The sky-view table depends on the camera's distance from the planet's center and the sun's
@@ -166,6 +165,7 @@ void Renderer::RecordSkyView(const ::vk::raii::CommandBuffer& cmd, const vk::Buf
   std::array<float, 2> key = {r, (p[0] * s[0] + p[1] * s[1] + p[2] * s[2]) / r};
   if (sky_view_key_ == key) return;
   sky_view_key_ = key;
+  frame_info_.sky_view_updated = true;
   ::vk::Sampler sampler = tables_.sampler();
   auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
   sky_view_.Dispatch(cmd,
@@ -219,6 +219,7 @@ void Renderer::Record(const ::vk::raii::CommandBuffer& cmd, const Scene& scene, 
                                       options_.render_height(), options_.froxels);
   frame_buffers_[slot].Write(std::as_bytes(std::span(&frame_uniforms_, 1)));
   geometry_.SortTransparent(scene.camera.position, slot);
+  frame_info_ = {};
   SelectTerrain(scene, complete);
 
   ::vk::Sampler sampler = tables_.sampler();

@@ -60,10 +60,12 @@ struct RenderOptions {
   int render_height() const;
 };
 
-struct TerrainFrameStats {
-  size_t chunks = 0, triangles = 0;
-  int deferred = 0;  // chunks drawn in place of finer ones not built yet
-  int built = 0;     // chunks built for this frame
+// What the last recorded frame did besides drawing.
+struct FrameInfo {
+  size_t chunks = 0, triangles = 0;  // terrain drawn
+  int deferred = 0;  // terrain chunks drawn in place of finer ones not built yet
+  int built = 0;     // terrain chunks built for this frame
+  bool sky_view_updated = false;  // the sky-view table was remade (the camera's r or mu_s moved)
 };
 
 class Renderer {
@@ -99,7 +101,7 @@ class Renderer {
   const FroxelVolume& froxels() const { return froxels_; }
   const FrameUniforms& frame_uniforms() const { return frame_uniforms_; }  // of the last frame
   const RenderOptions& options() const { return options_; }
-  const TerrainFrameStats& terrain_stats() const { return terrain_stats_; }
+  const FrameInfo& frame_info() const { return frame_info_; }
 
  private:
   void SelectTerrain(const Scene& scene, bool complete);
@@ -113,7 +115,7 @@ class Renderer {
   SceneGeometry geometry_;
   std::unique_ptr<TerrainChunkCache> terrain_;  // null without a terrain or with the fixed mesh
   std::vector<terrain::SelectedChunk> terrain_chunks_;
-  TerrainFrameStats terrain_stats_;
+  FrameInfo frame_info_;
   uint64_t frames_recorded_ = 0;
   uint32_t last_slot_ = 0;
   FroxelVolume froxels_;

@@ -1,0 +1,96 @@
+#include "aerial/terrain/terrain_chunk.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+
+#include "aerial/scene/terrain.h"
+
+namespace aerial::terrain {
+namespace {
+
+constexpr double kR = 6360e3;  // the default atmosphere's bottom radius
+const glm::dvec3 kCenter(0.0, 0.0, -kR);
+
+double Radial(const glm::dvec3& p) { return glm::length(p - kCenter); }
+
+// The terrain height at the sea-level point below p (on the radial line through it).
+double SurfaceHeightBelow(const glm::dvec3& p) {
+  glm::dvec3 sea_level = kCenter + kR * glm::normalize(p - kCenter);
+  return TerrainHeightM(sea_level.x, sea_level.y);
+}
+
+// A flat valley chunk at the origin, a mountain chunk on the corridor's wall 20 km out and a
+// coarse one reaching 100 km.
+const std::vector<ChunkId> kChunks = {ChunkId{13, 4096, 4096}, ChunkId{9, 250, 281}, ChunkId{3, 6, 7}};
+
+TEST(TerrainChunk, GridVerticesLieOnTheSurface) {
+  for (const ChunkId& id : kChunks) {
+    TerrainChunk chunk = BuildTerrainChunk(id, kR);
+    ASSERT_EQ(chunk.vertices.size(), kChunkVertices);
+    for (uint32_t k = 0; k < kChunkGridVertices; ++k) {
+      glm::dvec3 p(chunk.vertices[k].position);
+      // Float positions up to 100 km out are rounded to ~4 mm per axis; slopes below 3 turn that
+      // into at most ~1.2 cm of height along the radial line, so 5 cm leaves room.
+      ASSERT_NEAR(Radial(p) - kR, SurfaceHeightBelow(p), 0.05) << "level " << id.level << " vertex " << k;
+    }
+  }
+}
+
+TEST(TerrainChunk, SkirtsHangStraightDownByTheirDepth) {
+  for (const ChunkId& id : kChunks) {
+    TerrainChunk chunk = BuildTerrainChunk(id, kR);
+    std::vector<uint32_t> border = SkirtEdgeVertices();
+    ASSERT_EQ(border.size(), 4u * kChunkCells);
+    EXPECT_GT(chunk.skirt_depth_m, 0.0);
+    for (uint32_t k = 0; k < border.size(); ++k) {
+      glm::dvec3 top(chunk.vertices[border[k]].position);
+      glm::dvec3 low(chunk.vertices[kChunkGridVertices + k].position);
+      // Straight down the local vertical, by the depth (float rounding as above).
+      EXPECT_NEAR(Radial(top) - Radial(low), chunk.skirt_depth_m, 0.05);
+      EXPECT_LT(glm::length(glm::cross(glm::normalize(top - kCenter), top - low)), 0.05);
+    }
+  }
+}
+
+TEST(TerrainChunk, IndexListsHoldTheGridAndTheMaskedSides) {
+  const std::vector<uint32_t>& indices = ChunkIndices();
+  constexpr uint32_t kGrid = kChunkCells * kChunkCells * 6, kSide = kChunkCells * 6;
+  for (uint32_t mask = 0; mask <= kAllSides; ++mask) {
+    IndexRange range = ChunkIndexRange(mask);
+    uint32_t sides = std::popcount(mask);
+    EXPECT_EQ(range.count, kGrid + sides * kSide) << mask;
+    ASSERT_LE(range.first + range.count, indices.size());
+    for (uint32_t i = range.first; i < range.first + range.count; ++i) ASSERT_LT(indices[i], kChunkVertices);
+  }
+}
+
+// Counter-clockwise seen from the side the terrain faces: grid triangles face up, skirt
+// triangles face away from the chunk, so back faces can be culled.
+TEST(TerrainChunk, TrianglesFaceUpAndSkirtsFaceOut) {
+  TerrainChunk chunk = BuildTerrainChunk(kChunks[0], kR);  // flat valley floor
+  const std::vector<uint32_t>& indices = ChunkIndices();
+  IndexRange all = ChunkIndexRange(kAllSides);
+  glm::dvec3 middle(chunk.vertices[kChunkGridVertices / 2].position);
+  int grid = 0, skirt = 0;
+  for (uint32_t i = all.first; i < all.first + all.count; i += 3) {
+    glm::dvec3 a(chunk.vertices[indices[i]].position), b(chunk.vertices[indices[i + 1]].position),
+        c(chunk.vertices[indices[i + 2]].position);
+    glm::dvec3 normal = glm::cross(b - a, c - a);
+    if (i - all.first < kChunkCells * kChunkCells * 6) {
+      EXPECT_GT(normal.z, 0.0) << "grid triangle " << i / 3;
+      ++grid;
+    } else {
+      glm::dvec3 outward = (a + b + c) / 3.0 - middle;
+      outward.z = 0.0;
+      EXPECT_GT(glm::dot(normal, outward), 0.0) << "skirt triangle " << i / 3;
+      ++skirt;
+    }
+  }
+  EXPECT_EQ(grid, kChunkCells * kChunkCells * 2);
+  EXPECT_EQ(skirt, 4 * kChunkCells * 2);
+}
+
+}  // namespace
+}  // namespace aerial::terrain
