@@ -62,5 +62,22 @@ TEST(ViewCli, RendersFramesLikeRenderAndWritesStats) {
   std::filesystem::remove_all(dir);
 }
 
+// The window's picture is drawn at half the size and upscaled by the display pass; the screenshot
+// holds the frame at the asked size, as `aerial render --render-scale 0.5` writes it.
+TEST(ViewCli, RenderScaleKeepsTheWindowSize) {
+  std::filesystem::path dir = ScratchDir();
+  CommandRun view = RunAerial("view" + kSmall + " --render-scale 0.5 --frames 3 --screenshot " +
+                                  (dir / "view.exr").string(),
+                              kXvfb);
+  ASSERT_EQ(view.exit_code, 0) << view.err;
+  CommandRun render = RunAerial("render" + kSmall + " --render-scale 0.5 --out " + (dir / "render.exr").string());
+  ASSERT_EQ(render.exit_code, 0) << render.err;
+  ImageRgbF a = ReadExr(dir / "view.exr"), b = ReadExr(dir / "render.exr");
+  EXPECT_EQ(a.width, 160);
+  EXPECT_EQ(a.height, 90);
+  EXPECT_LT(RelativeRmse(a, b), 1e-4);  // the same computation, as in the test above
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace aerial::testing
