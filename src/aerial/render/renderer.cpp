@@ -136,6 +136,13 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
 
 Renderer::~Renderer() = default;
 
+void Renderer::SetTerrainErrorPx(double error_px) {
+  RenderOptions changed = options_;
+  changed.terrain_error_px = error_px;
+  changed.Validate();
+  options_ = changed;
+}
+
 // The chunks to draw, nearest first (terrain/lod_selection.h), built as needed.
 void Renderer::SelectTerrain(const Scene& scene, bool complete) {
   terrain_chunks_.clear();

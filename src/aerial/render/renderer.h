@@ -80,6 +80,9 @@ class Renderer {
   // that the frame is the one `aerial render` makes of the same view.
   void Record(const ::vk::raii::CommandBuffer& cmd, const Scene& scene, uint32_t slot = 0,
               bool complete = false);
+  // The terrain's error bound for the next frames (RenderOptions::terrain_error_px, validated):
+  // only the selection uses it, so it may change from frame to frame.
+  void SetTerrainErrorPx(double error_px);
   // GPU time of each pass of the slot's last frame; call once that frame has finished.
   std::vector<vk::PassTime> PassTimes(uint32_t slot = 0) const;
   // Records one frame, submits it and waits for it. Returns the GPU time of each pass.

@@ -92,8 +92,24 @@ bool SunSection(ViewSettings& s) {
   return moved;
 }
 
+// A few render scales (each one makes a new renderer, so not a continuous slider).
+void RenderScaleCombo(float& scale) {
+  constexpr std::array<float, 4> kScales = {1.0f, 0.75f, 0.5f, 0.25f};
+  char current[16];
+  std::snprintf(current, sizeof current, "%.2f", scale);
+  if (ImGui::BeginCombo("Render scale", current)) {
+    for (float choice : kScales) {
+      char label[16];
+      std::snprintf(label, sizeof label, "%.2f", choice);
+      if (ImGui::Selectable(label, choice == scale)) scale = choice;
+    }
+    ImGui::EndCombo();
+  }
+}
+
 void Timings(const PanelInfo& info) {
   ImGui::Text("%.1f FPS, %.1f ms per frame", info.fps, info.frame_ms);
+  ImGui::Text("terrain: %zu chunks, %zu triangles", info.terrain_chunks, info.terrain_triangles);
   double total = 0.0;
   for (const vk::PassTime& pass : info.passes) {
     ImGui::Text("  %-20s %7.2f ms", pass.pass.c_str(), pass.milliseconds);
@@ -133,6 +149,9 @@ PanelEvents DrawPanel(ViewSettings& s, const PanelInfo& info) {
     ImGui::RadioButton("per pixel", &per_pixel, 1);
     s.mode = per_pixel ? AerialMode::kPerPixel : AerialMode::kFroxel;
     FroxelSection(s.froxels);
+    RenderScaleCombo(s.render_scale);
+    ImGui::SliderFloat("Terrain error", &s.terrain_error_px, 0.25f, 64.0f, "%.2f px",
+                       ImGuiSliderFlags_Logarithmic);
     ImGui::SliderFloat("Exposure", &s.exposure, 0.1f, 100.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
     DebugSection(s, info);
   }

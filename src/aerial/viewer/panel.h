@@ -12,7 +12,8 @@ namespace aerial::viewer {
 
 struct PanelInfo {
   double fps = 0, frame_ms = 0;       // medians over the last frames
-  std::vector<vk::PassTime> passes;   // GPU time of each pass of the last frame
+  std::vector<vk::PassTime> passes;   // GPU time of each pass of the last finished frame
+  size_t terrain_chunks = 0, terrain_triangles = 0;  // drawn in the last frame
   TableWorkStatus work;
   std::string tables;                 // the tables in use
   std::string message;                // the last screenshot, export or table error

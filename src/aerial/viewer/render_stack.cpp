@@ -5,7 +5,7 @@ namespace aerial::viewer {
 bool SameRenderOptions(const RenderOptions& a, const RenderOptions& b) {
   return a.width == b.width && a.height == b.height && a.mode == b.mode &&
          a.render_scale == b.render_scale && a.terrain == b.terrain &&
-         a.terrain_error_px == b.terrain_error_px && a.frames_in_flight == b.frames_in_flight &&
+         a.frames_in_flight == b.frames_in_flight &&
          a.froxels.width == b.froxels.width && a.froxels.height == b.froxels.height &&
          a.froxels.depth == b.froxels.depth && a.froxels.far_m == b.froxels.far_m;
 }
@@ -27,6 +27,7 @@ Renderer* RenderStack::Get(LutVariant variant, const RenderOptions& options) {
     entry.renderer.reset();
     entry.renderer = std::make_unique<Renderer>(*entry.tables, scene_, options);
   }
+  entry.renderer->SetTerrainErrorPx(options.terrain_error_px);
   return entry.renderer.get();
 }
 

@@ -24,6 +24,9 @@ struct ViewSettings {
   // Frame: changing these recreates the renderer (the aerial mode is a specialization constant).
   FroxelGrid froxels;
   AerialMode mode = AerialMode::kFroxel;
+  float render_scale = 1.0f;
+  // Changes from frame to frame without a new renderer (only the terrain's selection uses it).
+  float terrain_error_px = 4.0f;
   // Display.
   float exposure = 8.0f;
   DebugView view = DebugView::kFinal;

@@ -159,6 +159,8 @@ Viewer::Impl::Impl(ViewerOptions options)
   settings_.knobs = applied_knobs_ = ReadKnobs(options_.atmosphere);
   settings_.froxels = options_.render.froxels;
   settings_.mode = options_.render.mode;
+  settings_.render_scale = float(options_.render.render_scale);
+  settings_.terrain_error_px = float(options_.render.terrain_error_px);
   settings_.exposure = float(options_.exposure);
   requested_[options_.variant] = options_.atmosphere.Hash();
   last_frame_end_ = Clock::now();
@@ -170,6 +172,8 @@ RenderOptions Viewer::Impl::CurrentRenderOptions() const {
   render.height = int(swapchain_.extent().height);
   render.froxels = settings_.froxels;
   render.mode = settings_.mode;
+  render.render_scale = settings_.render_scale;
+  render.terrain_error_px = settings_.terrain_error_px;
   return render;
 }
 
@@ -333,6 +337,8 @@ PanelInfo Viewer::Impl::MakePanelInfo(const Renderer& primary) const {
   return {.fps = frame_ms > 0.0 ? 1000.0 / frame_ms : 0.0,
           .frame_ms = frame_ms,
           .passes = last_passes_,
+          .terrain_chunks = primary.frame_info().chunks,
+          .terrain_triangles = primary.frame_info().triangles,
           .work = worker_.status(),
           .tables = tables.options().Describe() +
                     (tables.atmosphere().Hash() == wanted_.Hash() ? "" : " (previous atmosphere)"),
