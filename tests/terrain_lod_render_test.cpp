@@ -108,6 +108,27 @@ TEST_F(LeanFrame, NoCracksBetweenLevels) {
   EXPECT_EQ(holes, 0u);
 }
 
+// Chunks that nearer terrain hides are left out, and nothing else: the picture is the same bit for
+// bit, at the default view and looking down from 2 km, where little is hidden.
+TEST_F(LeanFrame, OcclusionCullingLeavesOutOnlyHiddenChunks) {
+  double R = FullTables().atmosphere().bottom_radius_m;
+  Scene noon = BuildPreset("noon", R);
+  Scene above = noon;
+  above.camera.position = SurfacePoint(-1500.0, 9000.0, 2000.0 + TerrainHeightM(-1500.0, 9000.0), R);
+  above.camera.pitch_deg = -55.0;
+  above.camera.yaw_deg = 300.0;
+  for (const Scene* scene : {&noon, &above}) {
+    Renderer culled(FullTables(), *scene, {.width = kWidth, .height = kHeight});
+    Renderer all(FullTables(), *scene, {.width = kWidth, .height = kHeight, .terrain_occlusion_culling = false});
+    culled.Render(*scene);
+    all.Render(*scene);
+    std::printf("%d of %zu chunks hidden\n", culled.frame_info().hidden,
+                culled.frame_info().chunks + culled.frame_info().hidden);
+    EXPECT_EQ(culled.frame_info().chunks + culled.frame_info().hidden, all.frame_info().chunks);
+    EXPECT_EQ(culled.ReadOutput().rgba, all.ReadOutput().rgba);
+  }
+}
+
 // --render-scale 0.5 draws a quarter of the pixels and upscales to the asked size: the same
 // picture, blurred at its edges.
 TEST_F(LeanFrame, RenderScaleUpscalesToTheOutputSize) {

@@ -42,7 +42,8 @@ void RunRender(const RenderCommandOptions& options) {
     std::printf("  %-24s %9.2f ms\n", "total", total);
     const FrameInfo& terrain = renderer.frame_info();
     if (terrain.chunks > 0)
-      std::printf("  terrain: %zu chunks, %zu triangles\n", terrain.chunks, terrain.triangles);
+      std::printf("  terrain: %zu chunks, %zu triangles (%d chunks hidden by nearer ones)\n", terrain.chunks,
+                  terrain.triangles, terrain.hidden);
   }
 }
 

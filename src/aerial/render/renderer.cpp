@@ -151,7 +151,9 @@ void Renderer::SelectTerrain(const Scene& scene, bool complete) {
   terrain_->BeginFrame(complete || frames_recorded_ == 0 ? 0.0 : options_.terrain_build_budget_ms);
   double aspect = double(options_.render_width()) / double(options_.render_height());
   terrain::LodView view =
-      terrain::MakeLodView(scene.camera, aspect, options_.render_height(), options_.terrain_error_px);
+      terrain::MakeLodView(scene.camera, aspect, options_.render_height(), options_.terrain_error_px,
+                           tables_.atmosphere().bottom_radius_m);
+  view.occlusion_culling = options_.terrain_occlusion_culling;
   terrain::Selection selection = terrain::SelectChunks(view, *terrain_);
   terrain_chunks_ = std::move(selection.chunks);
   size_t indices = 0;
@@ -159,6 +161,7 @@ void Renderer::SelectTerrain(const Scene& scene, bool complete) {
   frame_info_.chunks = terrain_chunks_.size();
   frame_info_.triangles = indices / 3;
   frame_info_.deferred = selection.deferred;
+  frame_info_.hidden = selection.hidden;
   frame_info_.built = terrain_->built_this_frame();
 }
 

@@ -48,6 +48,9 @@ struct RenderOptions {
   AerialMode mode = AerialMode::kFroxel;
   TerrainMode terrain = TerrainMode::kLod;
   double terrain_error_px = kDefaultTerrainErrorPx;
+  // Leave out terrain chunks that nearer ones hide (terrain/screen_horizon.h): the image is the
+  // same either way; off only to measure what it saves.
+  bool terrain_occlusion_culling = true;
   // CPU time a frame may spend building terrain chunks (ms); until they are built their parents
   // are drawn. 0: every chunk the frame needs is built first (one-off renders, tests).
   double terrain_build_budget_ms = 0.0;
@@ -64,6 +67,7 @@ struct RenderOptions {
 struct FrameInfo {
   size_t chunks = 0, triangles = 0;  // terrain drawn
   int deferred = 0;  // terrain chunks drawn in place of finer ones not built yet
+  int hidden = 0;    // terrain chunks left out because nearer ones hide them
   int built = 0;     // terrain chunks built for this frame
   bool sky_view_updated = false;  // the sky-view table was remade (the camera's r or mu_s moved)
 };

@@ -88,7 +88,7 @@ void TerrainChunkCache::Build(std::span<const ChunkId> ids) {
       if (limited_ && std::chrono::steady_clock::now() > deadline_) return;
       terrain::TerrainChunk chunk = terrain::BuildTerrainChunk(work[i].first, planet_radius_m_);
       std::memcpy(vertices_.mapped() + work[i].second * kSlotBytes, chunk.vertices.data(), kSlotBytes);
-      infos[i] = terrain::ChunkInfo{chunk.geometric_error_m, chunk.bounds};
+      infos[i] = terrain::InfoOf(chunk);
     }
   };
   unsigned threads = std::clamp(std::thread::hardware_concurrency(), 1u, unsigned(work.size()));

@@ -23,7 +23,7 @@ double SmoothStep(double edge0, double edge1, double x) {
 double RidgedMultifractal(double x, double y) {
   constexpr int kOctaves = 6;
   constexpr double kGradientNoiseMax = 0.7071;  // sqrt(2)/2, the 2D extreme
-  const double c = std::cos(0.6458), s = std::sin(0.6458);
+  static const double c = std::cos(0.6458), s = std::sin(0.6458);
   double frequency = 1.0 / 18000.0, amplitude = 1.0, weight = 1.0, sum = 0.0, total = 0.0;
   for (int octave = 0; octave < kOctaves; ++octave) {
     double n = GradientNoise(x * frequency, y * frequency, 101 + octave) / kGradientNoiseMax;

@@ -7,6 +7,7 @@
 
 #include "aerial/scene/camera.h"
 #include "aerial/scene/terrain.h"
+#include "aerial/terrain/screen_horizon.h"
 
 namespace aerial::terrain {
 namespace {
@@ -36,6 +37,46 @@ bool WithinTerrain(const ChunkId& id) {
   return std::hypot(dx, dy) < kTerrainRadiusM;
 }
 
+// Quadtree order from the camera (its sea-level point): at every node, the child on the camera's
+// side of both splitting lines first, the one across both last. Two chunks are ordered at the
+// first node where their paths from the root part.
+void SortFrontToBack(const LodView& view, std::vector<SelectedChunk>& chunks) {
+  const glm::dvec3 center(0.0, 0.0, -view.planet_radius_m);
+  glm::dvec3 eye = center + view.planet_radius_m * glm::normalize(view.camera - center);
+  auto rank_path = [&](const ChunkId& id) {
+    std::vector<int> ranks;
+    for (int level = 0; level < id.level; ++level) {
+      int shift = id.level - level - 1;  // the bit of x and y that picks the child at this level
+      ChunkId node{level, id.x >> (shift + 1), id.y >> (shift + 1)};
+      Footprint f = FootprintOf(node);
+      int camera_x = eye.x >= f.x0 + f.size / 2 ? 1 : 0, camera_y = eye.y >= f.y0 + f.size / 2 ? 1 : 0;
+      int child_x = (id.x >> shift) & 1, child_y = (id.y >> shift) & 1;
+      ranks.push_back((child_x != camera_x ? 1 : 0) + (child_y != camera_y ? 2 : 0));
+    }
+    return ranks;
+  };
+  std::vector<std::pair<std::vector<int>, SelectedChunk>> keyed;
+  for (const SelectedChunk& chunk : chunks) keyed.push_back({rank_path(chunk.id), chunk});
+  std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (size_t i = 0; i < chunks.size(); ++i) chunks[i] = keyed[i].second;
+}
+
+// Front to back, each chunk either hidden by those drawn before it or drawn and then an occluder.
+void LeaveOutHidden(const LodView& view, ChunkSource& source, Selection& selection) {
+  ScreenHorizon horizon(view.view_projection, view.camera, view.planet_radius_m);
+  std::vector<SelectedChunk> drawn;
+  for (const SelectedChunk& chunk : selection.chunks) {
+    const ChunkInfo& info = *source.Find(chunk.id);
+    if (horizon.Hides(info.bounds)) {
+      ++selection.hidden;
+      continue;
+    }
+    drawn.push_back(chunk);
+    horizon.AddOccluders(FootprintOf(chunk.id), info.cell_lowest_m);
+  }
+  selection.chunks = std::move(drawn);
+}
+
 // A side needs no skirt where the chunk across it is drawn at the same level: both share the
 // side's vertices exactly.
 void MarkSkirts(std::vector<SelectedChunk>& chunks) {
@@ -57,15 +98,17 @@ void MarkSkirts(std::vector<SelectedChunk>& chunks) {
 }  // namespace
 
 LodView MakeLodView(const Camera& camera, double aspect, int height_px, double max_error_px,
-                    int min_height_px) {
+                    double planet_radius_m, int min_height_px) {
   LodView view;
   view.camera = camera.position;
+  view.planet_radius_m = planet_radius_m;
   view.max_error_px = max_error_px;
   double tan_half = std::tan(camera.vertical_fov_deg * std::numbers::pi / 360.0);
   view.pixels_per_radian = double(std::max(height_px, min_height_px)) / (2.0 * tan_half);
   // Gribb and Hartmann, "Fast Extraction of Viewing Frustum Planes from the World-View-Projection
   // Matrix" (2001), for Vulkan's clip space with reversed Z: -w <= x, y <= w and z <= w (near).
   glm::dmat4 m = ProjectionMatrix(camera, aspect) * ViewMatrix(camera);
+  view.view_projection = m;
   auto row = [&](int r) { return glm::dvec4(m[0][r], m[1][r], m[2][r], m[3][r]); };
   view.planes = {row(3) + row(0), row(3) - row(0), row(3) + row(1), row(3) - row(1), row(3) - row(2)};
   for (glm::dvec4& plane : view.planes) plane /= glm::length(glm::dvec3(plane));
@@ -138,12 +181,9 @@ Selection SelectChunks(const LodView& view, ChunkSource& source) {
     }
     level = std::move(next);
   }
+  SortFrontToBack(view, selection.chunks);
+  if (view.occlusion_culling) LeaveOutHidden(view, source, selection);
   MarkSkirts(selection.chunks);
-  std::sort(selection.chunks.begin(), selection.chunks.end(),
-            [&](const SelectedChunk& a, const SelectedChunk& b) {
-              return DistanceToBounds(view.camera, source.Find(a.id)->bounds) <
-                     DistanceToBounds(view.camera, source.Find(b.id)->bounds);
-            });
   return selection;
 }
 

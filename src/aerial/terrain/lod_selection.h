@@ -19,6 +19,10 @@ namespace aerial::terrain {
 
 struct LodView {
   glm::dvec3 camera{0.0};
+  glm::dmat4 view_projection{1.0};  // scene frame to clip space
+  double planet_radius_m = 0.0;
+  // Leave out chunks hidden behind nearer ones (screen_horizon.h).
+  bool occlusion_culling = true;
   // The frustum's four sides and its near plane in the scene frame: a point p is inside when
   // dot(plane.xyz, p) + plane.w >= 0 for all five (there is no far plane).
   std::array<glm::dvec4, 5> planes{};
@@ -29,7 +33,7 @@ struct LodView {
 // The error bound is kept at least as fine as max_error_px at min_height_px rows, so that small
 // renders (thumbnails, tests) show the same terrain as a 720p frame.
 LodView MakeLodView(const Camera& camera, double aspect, int height_px, double max_error_px,
-                    int min_height_px = 720);
+                    double planet_radius_m, int min_height_px = 720);
 
 double DistanceToBounds(const glm::dvec3& p, const Bounds& bounds);
 double ScreenSpaceErrorPx(const LodView& view, double geometric_error_m, const Bounds& bounds);
@@ -39,7 +43,12 @@ bool IntersectsFrustum(const LodView& view, const Bounds& bounds);
 struct ChunkInfo {
   double geometric_error_m = 0.0;
   Bounds bounds;
+  std::array<float, kChunkCells * kChunkCells> cell_lowest_m{};  // TerrainChunk::cell_lowest_m
 };
+
+inline ChunkInfo InfoOf(const TerrainChunk& chunk) {
+  return {chunk.geometric_error_m, chunk.bounds, chunk.cell_lowest_m};
+}
 
 // Where chunks come from: built on demand (on the CPU, then uploaded) and kept.
 class ChunkSource {
@@ -59,14 +68,17 @@ struct SelectedChunk {
 };
 
 struct Selection {
-  std::vector<SelectedChunk> chunks;  // to draw, nearest first
+  std::vector<SelectedChunk> chunks;  // to draw, front to back
+  int hidden = 0;  // chunks left out because nearer ones hide them
   // Chunks that should have replaced a drawn one but were not built yet: a chunk is drawn in its
   // children's place until all of them are built, so the view is never left with holes.
   int deferred = 0;
 };
 
 // The chunks of the terrain within kTerrainRadiusM of the origin (chunks entirely beyond it are
-// not drawn) for the view. Builds what it needs through source; the root chunk first.
+// not drawn) for the view, in front-to-back order: quadtree order from the camera, so that along
+// any view ray a chunk comes after every chunk in front of it. Builds what it needs through
+// source; the root chunk first.
 Selection SelectChunks(const LodView& view, ChunkSource& source);
 
 }  // namespace aerial::terrain

@@ -34,7 +34,7 @@ class CpuChunks : public ChunkSource {
       if (budget_ && *budget_ <= 0) return;
       if (budget_) --*budget_;
       TerrainChunk chunk = BuildTerrainChunk(id, kR);
-      chunks_[id] = {ChunkInfo{chunk.geometric_error_m, chunk.bounds}, std::move(chunk)};
+      chunks_[id] = {InfoOf(chunk), std::move(chunk)};
     }
   }
   const TerrainChunk& Chunk(const ChunkId& id) const { return chunks_.at(id).chunk; }
@@ -82,7 +82,7 @@ double HeightError(const glm::dvec3& mesh) {
 
 TEST(LodSelection, EveryDrawnChunkMeetsTheErrorBound) {
   CpuChunks chunks;
-  LodView view = MakeLodView(NoonCamera(), kAspect, 720, kErrorPx);
+  LodView view = MakeLodView(NoonCamera(), kAspect, 720, kErrorPx, kR);
   Selection selection = SelectChunks(view, chunks);
   ASSERT_GT(selection.chunks.size(), 100u);
   EXPECT_EQ(selection.deferred, 0);
@@ -101,7 +101,7 @@ TEST(LodSelection, EveryDrawnChunkMeetsTheErrorBound) {
 TEST(LodSelection, RandomPointsOfTheMeshStayWithinTheBoundOnScreen) {
   CpuChunks chunks;
   Camera camera = NoonCamera();
-  LodView view = MakeLodView(camera, kAspect, 720, kErrorPx);
+  LodView view = MakeLodView(camera, kAspect, 720, kErrorPx, kR);
   Selection selection = SelectChunks(view, chunks);
   std::mt19937 random(7);
   std::uniform_real_distribution<double> unit(0.0, kChunkCells);
@@ -131,7 +131,7 @@ TEST(LodSelection, SameBoundUnderTheCamera40KmAway) {
     CpuChunks chunks;
     Camera down = camera;
     down.pitch_deg = -60.0;  // the ground around the camera in view
-    LodView view = MakeLodView(down, kAspect, 720, kErrorPx);
+    LodView view = MakeLodView(down, kAspect, 720, kErrorPx, kR);
     Selection selection = SelectChunks(view, chunks);
     std::mt19937 random(11);
     std::uniform_real_distribution<double> unit(0.0, kChunkCells);
@@ -158,7 +158,7 @@ TEST(LodSelection, SameBoundUnderTheCamera40KmAway) {
 // the finer one, the higher edge's skirt reaches below the lower edge.
 TEST(LodSelection, SkirtsCloseTheCracksBetweenLevels) {
   CpuChunks chunks;
-  Selection selection = SelectChunks(MakeLodView(NoonCamera(), kAspect, 720, kErrorPx), chunks);
+  Selection selection = SelectChunks(MakeLodView(NoonCamera(), kAspect, 720, kErrorPx, kR), chunks);
   std::map<ChunkId, uint32_t> drawn;
   for (const SelectedChunk& s : selection.chunks) drawn[s.id] = s.skirts;
   // The height of a chunk's edge at world coordinate w along its south (y0) or west (x0) side.
@@ -207,27 +207,55 @@ TEST(LodSelection, SkirtsCloseTheCracksBetweenLevels) {
 // root, the root alone is drawn and the refinement it lacks is counted.
 TEST(LodSelection, UnbuiltChildrenLeaveTheirParentDrawn) {
   CpuChunks root_only(1);
-  Selection selection = SelectChunks(MakeLodView(NoonCamera(), kAspect, 720, kErrorPx), root_only);
+  Selection selection = SelectChunks(MakeLodView(NoonCamera(), kAspect, 720, kErrorPx, kR), root_only);
   ASSERT_EQ(selection.chunks.size(), 1u);
   EXPECT_EQ(selection.chunks[0].id, ChunkId{});
   EXPECT_EQ(selection.deferred, 1);
 }
 
-TEST(LodSelection, NearestChunkFirst) {
+// Front to back: whenever the line from the camera (seen from above) to a chunk's center crosses
+// another chunk, that one is in front and must come first.
+TEST(LodSelection, FrontToBack) {
   CpuChunks chunks;
-  LodView view = MakeLodView(NoonCamera(), kAspect, 720, kErrorPx);
+  LodView view = MakeLodView(NoonCamera(), kAspect, 720, kErrorPx, kR);
+  view.occlusion_culling = false;  // every chunk in view
   Selection selection = SelectChunks(view, chunks);
-  for (size_t i = 1; i < selection.chunks.size(); ++i) {
-    ASSERT_LE(DistanceToBounds(view.camera, chunks.Find(selection.chunks[i - 1].id)->bounds),
-              DistanceToBounds(view.camera, chunks.Find(selection.chunks[i].id)->bounds));
+  glm::dvec3 eye = kCenter + kR * glm::normalize(view.camera - kCenter);
+  // Liang and Barsky: whether the segment from a to b meets the open rectangle f.
+  auto crosses = [](glm::dvec2 a, glm::dvec2 b, const Footprint& f) {
+    double t0 = 0.0, t1 = 1.0;
+    glm::dvec2 d = b - a;
+    for (auto [p, q] : {std::pair{-d.x, a.x - f.x0}, std::pair{d.x, f.x0 + f.size - a.x},
+                        std::pair{-d.y, a.y - f.y0}, std::pair{d.y, f.y0 + f.size - a.y}}) {
+      if (p == 0.0) {
+        if (q <= 0.0) return false;
+      } else if (p < 0.0) {
+        t0 = std::max(t0, q / p);
+      } else {
+        t1 = std::min(t1, q / p);
+      }
+    }
+    return t0 < t1;
+  };
+  int checked = 0;
+  for (size_t b = 0; b < selection.chunks.size(); ++b) {
+    Footprint fb = FootprintOf(selection.chunks[b].id);
+    glm::dvec2 center(fb.x0 + fb.size / 2, fb.y0 + fb.size / 2);
+    for (size_t a = 0; a < selection.chunks.size(); ++a) {
+      if (a == b || !crosses(glm::dvec2(eye), center, FootprintOf(selection.chunks[a].id))) continue;
+      ++checked;
+      ASSERT_LT(a, b) << "level " << selection.chunks[a].id.level << " chunk in front of level "
+                      << selection.chunks[b].id.level << " comes after it";
+    }
   }
+  EXPECT_GT(checked, 1000);
 }
 
 // Behind the camera nothing is drawn: the frustum's planes cull it.
 TEST(LodSelection, NothingBehindTheCamera) {
   CpuChunks chunks;
   Camera camera = NoonCamera();  // looking north from the origin
-  Selection selection = SelectChunks(MakeLodView(camera, kAspect, 720, kErrorPx), chunks);
+  Selection selection = SelectChunks(MakeLodView(camera, kAspect, 720, kErrorPx, kR), chunks);
   for (const SelectedChunk& s : selection.chunks)
     EXPECT_GT(chunks.Find(s.id)->bounds.max.y, camera.position.y - 1.0) << s.id.level;
 }

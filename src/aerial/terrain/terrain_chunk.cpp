@@ -184,6 +184,14 @@ TerrainChunk BuildTerrainChunk(const ChunkId& id, double planet_radius_m) {
                                              grid(i, j + 1) - grid(i, j - 1), R));
     }
   }
+  for (int j = 0; j < N; ++j) {
+    for (int i = 0; i < N; ++i) {
+      double lowest = INFINITY;
+      for (int corner = 0; corner < 4; ++corner)
+        lowest = std::min(lowest, Radial(grid(i + (corner & 1), j + (corner >> 1)), R) - R);
+      chunk.cell_lowest_m[j * N + i] = float(lowest);
+    }
+  }
   EdgeGaps gaps = MeasureEdges(id, grid, R);
   chunk.geometric_error_m = std::max(InteriorError(grid, R), gaps.edge_error);
   chunk.skirt_depth_m = kSkirtMargin * std::max(gaps.edge_error, gaps.coarser_gap) + kSkirtMinimumM;

@@ -9,6 +9,7 @@
 // depth covers that distance for every coarser level this chunk could meet (measured at its own
 // edge vertices), and its own interpolation error along the edges (measured at quarter cells):
 // whichever side is higher hangs a skirt below the other.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -33,6 +34,9 @@ struct TerrainChunk {
   // (the middle of the triangles' shared diagonal) and at quarter points along the chunk's edges.
   double geometric_error_m = 0.0;
   double skirt_depth_m = 0.0;
+  // Per cell (row by row), the height above the sphere of its lowest corner: the mesh over the
+  // cell never dips below it (occluders, screen_horizon.h).
+  std::array<float, kChunkCells * kChunkCells> cell_lowest_m{};
   Bounds bounds;  // of every vertex, the skirt included
 };
 
