@@ -30,7 +30,7 @@ class ViewerDebugViews : public GpuTest {
     renderer_ = new Renderer(SmallTables(), *scene_, RenderOptions{.width = kWidth, .height = kHeight});
     renderer_->Render(*scene_);
     target_ = new DisplayTarget(SharedContext(), kWidth, kHeight);
-    passes_ = new viewer::DisplayPasses(SharedContext(), target_->render_pass());
+    passes_ = new viewer::DisplayPasses(SharedContext(), target_->render_pass(), ::vk::Format::eR8G8B8A8Unorm);
   }
   static void TearDownTestSuite() {
     delete passes_;

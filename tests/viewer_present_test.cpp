@@ -75,17 +75,19 @@ TEST_F(ViewerToneMap, GpuMatchesCpuBeforeRounding) {
 }
 
 // The viewer's present pass, exposure included, against the PNG encoder: equal bytes except where
-// the two sit on either side of a rounding boundary (1 step, given the 1e-3 above). In both display
-// formats: the swapchain's is often BGRA, and the shader's store must land in the right channels.
+// the two sit on either side of a rounding boundary (1 step, given the 1e-3 above). In every display
+// format: the swapchain's is often BGRA, and the shader's store must land in the right channels;
+// an _SRGB one encodes with the driver's conversion instead of the shader's.
 TEST_F(ViewerToneMap, PresentPassMatchesPngBytes) {
   vk::Context& context = SharedContext();
   const float exposure = 8.0f;
   ImageRgbF ramp = Ramp(1.0 / exposure);
   vk::Image input = Upload(ramp);
   std::vector<uint8_t> png = ToneMapToSrgb8(ramp, {.exposure = exposure});
-  for (auto [format, red] : {std::pair{::vk::Format::eR8G8B8A8Unorm, 0}, std::pair{::vk::Format::eB8G8R8A8Unorm, 2}}) {
+  for (auto [format, red] : {std::pair{::vk::Format::eR8G8B8A8Unorm, 0}, std::pair{::vk::Format::eB8G8R8A8Unorm, 2},
+                             std::pair{::vk::Format::eR8G8B8A8Srgb, 0}, std::pair{::vk::Format::eB8G8R8A8Srgb, 2}}) {
     DisplayTarget target(context, kRampSize, 1, format);
-    viewer::DisplayPasses passes(context, target.render_pass());
+    viewer::DisplayPasses passes(context, target.render_pass(), format);
     std::vector<uint8_t> display =
         target.Draw([&](const auto& cmd) { passes.RecordToneMap(cmd, target.extent(), input, exposure); });
     int worst = 0, differing = 0;

@@ -20,6 +20,7 @@ layout(set = 0, binding = 9) uniform sampler2D background_sky;
 layout(location = 0) in vec3 view_ray;
 layout(location = 1) flat in vec3 up;
 layout(location = 2) flat in vec3 toward_sun;
+layout(location = 3) flat in vec2 horizon;  // x: its zenith angle, y: its cos
 layout(location = 0) out vec4 color;
 
 // The whole view ray's inscatter, and in `transmittance` the background through the atmosphere
@@ -34,7 +35,7 @@ Inscatter GetPixelSky(vec3 ray, float r, float mu, float mu_s, float nu) {
   }
   vec3 horizontal = ray - mu * up;
   float cos_phi = dot(horizontal, horizontal) > 1e-12 ? dot(normalize(horizontal), toward_sun) : 1.0;
-  vec2 uv = GetSkyViewUv(r, cos_phi, acos(clamp(mu, -1.0, 1.0)), textureSize(rayleigh_sky, 0));
+  vec2 uv = GetSkyViewUv(horizon.x, cos_phi, acos(clamp(mu, -1.0, 1.0)), textureSize(rayleigh_sky, 0));
   Inscatter sky;
   sky.rayleigh = textureLod(rayleigh_sky, uv, 0.0).rgb;
   sky.mie = textureLod(mie_sky, uv, 0.0).rgb;
@@ -47,5 +48,7 @@ void main() {
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
   Inscatter sky = GetPixelSky(ray, r, mu, mu_s, nu);
-  color = vec4(ApplyPhaseFunctions(sky, nu) + ShadeBackground(sky.transmittance, r, mu, nu), 1.0);
+  // The ray meets the ground below the horizon: RayIntersectsGround, with the frame's horizon.
+  bool meets_ground = kAerialPerPixel == 1 ? RayIntersectsGround(r, mu) : mu < horizon.y;
+  color = vec4(ApplyPhaseFunctions(sky, nu) + ShadeBackground(sky.transmittance, meets_ground, nu), 1.0);
 }

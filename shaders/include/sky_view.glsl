@@ -15,9 +15,9 @@ float HorizonZenithAngle(float r) {
   return PI - asin(clamp(atmosphere.bottom_radius / r, 0.0, 1.0));
 }
 
-// (u, v) of a direction: cos_phi relative to the sun's azimuth, theta the zenith angle.
-vec2 GetSkyViewUv(float r, float cos_phi, float theta, ivec2 size) {
-  float theta_h = HorizonZenithAngle(r);
+// (u, v) of a direction: cos_phi relative to the sun's azimuth, theta the zenith angle, theta_h
+// the horizon's (HorizonZenithAngle of the camera's r: the same for every direction of a frame).
+vec2 GetSkyViewUv(float theta_h, float cos_phi, float theta, ivec2 size) {
   float v;
   if (theta < theta_h) {
     float x = 1.0 - sqrt(max(1.0 - theta / theta_h, 0.0));  // 0 at the zenith, 1 at the horizon

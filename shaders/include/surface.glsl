@@ -32,12 +32,12 @@ vec3 GetBackgroundThroughAtmosphere(sampler2D transmittance_texture, sampler2D i
                                          atmosphere.ground_albedo.rgb);
 }
 
-// The sky pixel's radiance behind the inscatter: the background above, or on the sun disc (at its
-// true angular size) the sun seen through the atmosphere.
-vec3 ShadeBackground(vec3 background, float r, float mu, float nu) {
-  bool on_sun = !RayIntersectsGround(r, mu) && nu > cos(atmosphere.sun_angular_radius);
-  return RayIntersectsGround(r, mu) ? background
-                                    : (on_sun ? GetSolarRadiance() * background : vec3(0.0));
+// The sky pixel's radiance behind the inscatter: the background where the ray meets the ground
+// (RayIntersectsGround), or on the sun disc (at its true angular size) the sun seen through the
+// atmosphere.
+vec3 ShadeBackground(vec3 background, bool meets_ground, float nu) {
+  if (meets_ground) return background;
+  return nu > cos(atmosphere.sun_angular_radius) ? GetSolarRadiance() * background : vec3(0.0);
 }
 
 #endif

@@ -26,9 +26,10 @@ vec3 SanitizeRadiance(vec3 x) {
   return mix(vec3(0.0), min(x, vec3(1e4)), positive);
 }
 
+// Radiance times exposure to linear display values in [0, 1], before the sRGB encoding.
+vec3 ToneMapLinear(vec3 exposed_radiance) { return AcesFilmic(SanitizeRadiance(exposed_radiance)); }
+
 // Radiance times exposure to sRGB-encoded values in [0, 1] (ToneMapChannel in tone_map.cpp).
-vec3 ToneMap(vec3 exposed_radiance) {
-  return SrgbOetf(AcesFilmic(SanitizeRadiance(exposed_radiance)));
-}
+vec3 ToneMap(vec3 exposed_radiance) { return SrgbOetf(ToneMapLinear(exposed_radiance)); }
 
 #endif

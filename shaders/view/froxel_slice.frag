@@ -6,7 +6,7 @@
 // filtering. The inscatter is stored without phase, so it is shown as if scattered isotropically
 // (times 1 / 4 pi) with the exposure and the tone map; the transmittance is only sRGB-encoded.
 #include "definitions.glsl"
-#include "tone_map.glsl"
+#include "display.glsl"
 layout(set = 0, binding = 0) uniform sampler3D rayleigh_froxels;
 layout(set = 0, binding = 1) uniform sampler3D mie_froxels;
 layout(set = 0, binding = 2) uniform sampler3D transmittance_froxels;
@@ -15,7 +15,7 @@ layout(push_constant) uniform Push {
   int slice;
   float exposure;
 } push;
-layout(location = 0) out vec4 color;  // 8-bit UNORM, RGBA or BGRA
+layout(location = 0) out vec4 color;  // 8-bit, RGBA or BGRA
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -29,11 +29,11 @@ void main() {
                        clamp(push.slice, 0, grid.z - 1));
   vec3 value;
   if (column == 0) {
-    value = ToneMap(texelFetch(rayleigh_froxels, froxel, 0).rgb * push.exposure / (4.0 * PI));
+    value = ToneMapLinear(texelFetch(rayleigh_froxels, froxel, 0).rgb * push.exposure / (4.0 * PI));
   } else if (column == 1) {
-    value = ToneMap(texelFetch(mie_froxels, froxel, 0).rgb * push.exposure / (4.0 * PI));
+    value = ToneMapLinear(texelFetch(mie_froxels, froxel, 0).rgb * push.exposure / (4.0 * PI));
   } else {
-    value = SrgbOetf(clamp(texelFetch(transmittance_froxels, froxel, 0).rgb, 0.0, 1.0));
+    value = (clamp(texelFetch(transmittance_froxels, froxel, 0).rgb, 0.0, 1.0));
   }
-  color = vec4(value, 1.0);
+  color = DisplayColor(value);
 }

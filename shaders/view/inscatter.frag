@@ -10,7 +10,7 @@
 // the exposure; transmittance, already in [0, 1], is only sRGB-encoded.
 #include "froxel.glsl"
 #include "frame.glsl"
-#include "tone_map.glsl"
+#include "display.glsl"
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
 layout(set = 0, binding = 3) uniform sampler3D rayleigh_texture;
 layout(set = 0, binding = 4) uniform sampler3D mie_texture;
@@ -25,7 +25,7 @@ layout(push_constant) uniform Push {
   int from_froxels;  // 1 in froxel mode
   float exposure;
 } push;
-layout(location = 0) out vec4 color;  // 8-bit UNORM, RGBA or BGRA
+layout(location = 0) out vec4 color;  // 8-bit, RGBA or BGRA
 
 void main() {
   vec2 uv = gl_FragCoord.xy / push.target_size;
@@ -48,11 +48,11 @@ void main() {
   }
   vec3 value;
   if (push.term == 0) {
-    value = ToneMap(segment.rayleigh * RayleighPhaseFunction(nu) * push.exposure);
+    value = ToneMapLinear(segment.rayleigh * RayleighPhaseFunction(nu) * push.exposure);
   } else if (push.term == 1) {
-    value = ToneMap(segment.mie * MiePhaseFunction(atmosphere.mie_phase_g, nu) * push.exposure);
+    value = ToneMapLinear(segment.mie * MiePhaseFunction(atmosphere.mie_phase_g, nu) * push.exposure);
   } else {
-    value = SrgbOetf(clamp(segment.transmittance, 0.0, 1.0));
+    value = (clamp(segment.transmittance, 0.0, 1.0));
   }
-  color = vec4(value, 1.0);
+  color = DisplayColor(value);
 }

@@ -2,8 +2,9 @@
 // Frames of several renderers of one scene, interleaved (frame i: every renderer in turn) so that
 // all see the same machine noise, after warm-up frames: lavapipe compiles each pipeline on its
 // first use, so the first frame of a renderer costs far more than the next ones. Each frame has
-// its GPU pass times and its wall-clock time: Renderer::Render from the call to the end of the
-// wait, the CPU's part (terrain selection, sorting, recording, submitting) included.
+// its GPU pass times, its wall-clock time (Renderer::Render from the call to the end of the wait,
+// the CPU's part: terrain selection, sorting, recording, submitting, included) and the process's
+// CPU time over it.
 #include <functional>
 #include <vector>
 

@@ -25,6 +25,12 @@ std::vector<double> WallTotals(const std::vector<RunResult>& runs) {
   return values;
 }
 
+std::vector<double> CpuTotals(const std::vector<RunResult>& runs) {
+  std::vector<double> values;
+  for (const auto& run : runs) values.push_back(run.cpu_ms);
+  return values;
+}
+
 Stats Summarize(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   size_t n = values.size();

@@ -16,12 +16,17 @@ namespace aerial::bench {
 struct RunResult {
   std::vector<vk::PassTime> passes;
   double wall_ms = 0.0;
+  // CPU time of the whole process over the run (frames only): lavapipe's threads and the caller's.
+  // Other processes on the machine lengthen wall and GPU times but barely this, so it tells a
+  // cost apart from noise on a shared machine.
+  double cpu_ms = 0.0;
   double GpuMs() const;
 };
 
-// One value per run: the summed GPU time of its passes, or its wall-clock time.
+// One value per run: the summed GPU time of its passes, its wall-clock time, or its CPU time.
 std::vector<double> GpuTotals(const std::vector<RunResult>& runs);
 std::vector<double> WallTotals(const std::vector<RunResult>& runs);
+std::vector<double> CpuTotals(const std::vector<RunResult>& runs);
 
 struct Stats {
   double median = 0.0, min = 0.0, max = 0.0;

@@ -70,6 +70,7 @@ struct FrameInfo {
   int hidden = 0;    // terrain chunks left out because nearer ones hide them
   int built = 0;     // terrain chunks built for this frame
   bool sky_view_updated = false;  // the sky-view table was remade (the camera's r or mu_s moved)
+  bool froxels_updated = false;   // the froxel volume was rebuilt (the camera or the sun moved)
 };
 
 class Renderer {
@@ -80,8 +81,9 @@ class Renderer {
 
   // Records one frame into cmd, with the per-frame resources of slot (< frames_in_flight). The
   // caller makes sure the slot's previous frame has finished (a CommandRing does). complete: build
-  // every terrain chunk the frame needs whatever the budget (the first frame always does), so
-  // that the frame is the one `aerial render` makes of the same view.
+  // every terrain chunk the frame needs whatever the budget (the first frame always does) and
+  // remake a sky-view table made for a nearby altitude, so that the frame is the one
+  // `aerial render` makes of the same view.
   void Record(const ::vk::raii::CommandBuffer& cmd, const Scene& scene, uint32_t slot = 0,
               bool complete = false);
   // The terrain's error bound for the next frames (RenderOptions::terrain_error_px, validated):
@@ -112,7 +114,7 @@ class Renderer {
 
  private:
   void SelectTerrain(const Scene& scene, bool complete);
-  void RecordSkyView(const ::vk::raii::CommandBuffer& cmd, const vk::Buffer& frame);
+  void RecordSkyView(const ::vk::raii::CommandBuffer& cmd, const vk::Buffer& frame, bool exact);
   std::vector<vk::Slot> MeshSlots(uint32_t slot) const;
   void DrawOpaque(const ::vk::raii::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
                   const std::vector<vk::Slot>& slots) const;
@@ -133,6 +135,7 @@ class Renderer {
   vk::Image sky_rayleigh_, sky_mie_, sky_background_;
   // (r, mu_s) the sky-view table was made for: it depends on nothing else of the frame.
   std::optional<std::array<float, 2>> sky_view_key_;
+  std::optional<FrameUniforms> froxels_key_;  // the frame the froxel volume was built for
   vk::ComputePipeline sky_view_;
   vk::GraphicsPipeline opaque_, sky_, transparent_, surface_;
 };

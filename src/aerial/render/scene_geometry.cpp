@@ -62,7 +62,7 @@ SceneGeometry::SceneGeometry(const vk::Context& context, const Packing& packing,
   }
   for (size_t i = 0; i + 2 < transparent.indices.size(); i += 3) {
     Triangle triangle{{transparent.indices[i], transparent.indices[i + 1], transparent.indices[i + 2]},
-                      glm::dvec3(0.0)};
+                      glm::dvec3(0.0), 0.0};
     for (uint32_t index : triangle.indices)
       triangle.centroid += glm::dvec3(transparent.vertices[index].position) / 3.0;
     transparent_triangles_.push_back(triangle);
@@ -72,10 +72,13 @@ SceneGeometry::SceneGeometry(const vk::Context& context, const Packing& packing,
 
 void SceneGeometry::SortTransparent(const glm::dvec3& camera_position, uint32_t slot) {
   if (transparent_triangles_.empty()) return;
+  // Squared distances, computed once per triangle: the order is the same.
+  for (Triangle& t : transparent_triangles_) {
+    glm::dvec3 d = t.centroid - camera_position;
+    t.distance_squared = glm::dot(d, d);
+  }
   std::sort(transparent_triangles_.begin(), transparent_triangles_.end(),
-            [&](const Triangle& a, const Triangle& b) {
-              return glm::distance(a.centroid, camera_position) > glm::distance(b.centroid, camera_position);
-            });
+            [](const Triangle& a, const Triangle& b) { return a.distance_squared > b.distance_squared; });
   sorted_.clear();
   for (const Triangle& t : transparent_triangles_) sorted_.insert(sorted_.end(), t.indices.begin(), t.indices.end());
   transparent_indices_[slot].Write(std::as_bytes(std::span(sorted_)));

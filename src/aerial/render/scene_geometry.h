@@ -34,6 +34,7 @@ class SceneGeometry {
   struct Triangle {
     std::array<uint32_t, 3> indices;
     glm::dvec3 centroid;
+    double distance_squared;  // from the camera of the last sort
   };
   struct Packed {
     std::vector<Vertex> vertices;

@@ -1,5 +1,7 @@
 #include "aerial/viewer/display_passes.h"
 
+#include "aerial/vk/swapchain.h"
+
 namespace aerial::viewer {
 namespace {
 
@@ -30,29 +32,32 @@ struct DifferencePush {
   float full_scale;
 };
 
-vk::GraphicsPipelineCreateInfo FullScreen(::vk::RenderPass render_pass, const std::string& fragment,
+// Constant 0 is frame.glsl's aerial mode (unused here), 1 display.glsl's kTargetEncodesSrgb.
+vk::GraphicsPipelineCreateInfo FullScreen(::vk::RenderPass render_pass, ::vk::Format format,
+                                          const std::string& fragment,
                                           std::vector<::vk::DescriptorType> slots, uint32_t push_bytes) {
   return {.vertex_shader = "frame/fullscreen.vert",
           .fragment_shader = fragment,
           .slot_types = std::move(slots),
           .push_constant_bytes = push_bytes,
           .render_pass = render_pass,
-          .depth_write = false};
+          .depth_write = false,
+          .specialization = {0, vk::EncodesSrgb(format) ? 1 : 0}};
 }
 
 }  // namespace
 
-DisplayPasses::DisplayPasses(const vk::Context& context, ::vk::RenderPass render_pass)
+DisplayPasses::DisplayPasses(const vk::Context& context, ::vk::RenderPass render_pass, ::vk::Format format)
     : linear_(vk::CreateLinearClampSampler(context)),
       nearest_(vk::CreateNearestClampSampler(context)),
-      tone_map_(context, FullScreen(render_pass, "view/present.frag", {kSampled}, sizeof(ToneMapPush))),
-      term_(context, FullScreen(render_pass, "view/inscatter.frag",
+      tone_map_(context, FullScreen(render_pass, format, "view/present.frag", {kSampled}, sizeof(ToneMapPush))),
+      term_(context, FullScreen(render_pass, format, "view/inscatter.frag",
                                 {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled,
                                  kSampled, kSampled, kSampled},
                                 sizeof(TermPush))),
-      froxel_slice_(context, FullScreen(render_pass, "view/froxel_slice.frag",
+      froxel_slice_(context, FullScreen(render_pass, format, "view/froxel_slice.frag",
                                         {kSampled, kSampled, kSampled}, sizeof(SlicePush))),
-      difference_(context, FullScreen(render_pass, "view/difference.frag", {kSampled, kSampled},
+      difference_(context, FullScreen(render_pass, format, "view/difference.frag", {kSampled, kSampled},
                                       sizeof(DifferencePush))) {}
 
 void DisplayPasses::RecordToneMap(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,

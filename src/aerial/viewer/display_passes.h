@@ -1,8 +1,9 @@
 #pragma once
 // The viewer's last passes, drawn straight into the window's image inside its render pass: the
-// renderer's frame tone mapped, or a debug view of it. Each is one full-screen triangle whose
-// fragment shader writes every pixel; nothing is copied. They only read the renderer's images:
-// the frame itself is always Renderer::Record's, as in `aerial render`.
+// renderer's frame tone mapped, or a debug view of it (shaders/include/display.glsl). Each is one
+// full-screen triangle whose fragment shader writes every pixel; nothing is copied. They only
+// read the renderer's images: the frame itself is always Renderer::Record's, as in
+// `aerial render`.
 #include "aerial/render/renderer.h"
 #include "aerial/vk/graphics_pipeline.h"
 
@@ -11,8 +12,9 @@ namespace aerial::viewer {
 class DisplayPasses {
  public:
   // render_pass: any render pass with one color attachment of the target's format (the
-  // swapchain's); the passes are recorded inside it, or inside a compatible one.
-  DisplayPasses(const vk::Context& context, ::vk::RenderPass render_pass);
+  // swapchain's); the passes are recorded inside it, or inside a compatible one. An _SRGB format
+  // encodes sRGB itself; with a UNORM one the shaders encode.
+  DisplayPasses(const vk::Context& context, ::vk::RenderPass render_pass, ::vk::Format format);
 
   // Each records one draw over a target of `extent` inside the caller's render pass.
   // The picture: radiance times exposure through ACES and sRGB (shaders/view/present.frag),

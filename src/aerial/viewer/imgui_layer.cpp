@@ -1,5 +1,7 @@
 #include "aerial/viewer/imgui_layer.h"
 
+#include <cmath>
+
 #include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
@@ -12,6 +14,19 @@ namespace {
 void CheckImGuiVulkanResult(VkResult result) {
   if (result < 0)
     throw Error("Dear ImGui Vulkan backend", ::vk::to_string(::vk::Result(result)), "VK_SUCCESS");
+}
+
+// Dear ImGui's colors are sRGB-encoded values; an _SRGB target encodes what it is given, so they
+// are decoded first (IEC 61966-2-1) to look the same.
+void LinearizeStyleColors(ImGuiStyle& style) {
+  auto decode = [](float c) {
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+  };
+  for (ImVec4& color : style.Colors) {
+    color.x = decode(color.x);
+    color.y = decode(color.y);
+    color.z = decode(color.z);
+  }
 }
 
 }  // namespace
@@ -30,6 +45,7 @@ ImGuiLayer::ImGuiLayer(const vk::Context& context, GLFWwindow* window,
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working directory
   ImGui::StyleColorsDark();
+  if (vk::EncodesSrgb(swapchain.format())) LinearizeStyleColors(ImGui::GetStyle());
   ImGui_ImplGlfw_InitForVulkan(window, true);
   ImGui_ImplVulkan_InitInfo info{};
   info.Instance = *context.instance();

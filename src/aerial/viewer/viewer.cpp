@@ -152,7 +152,7 @@ Viewer::Impl::Impl(ViewerOptions options)
       swapchain_(context_, window_.surface(), window_.framebuffer_extent(), kFramesInFlight),
       imgui_(context_, window_.handle(), swapchain_),
       input_(window_.handle()),
-      display_(context_, swapchain_.render_pass()) {
+      display_(context_, swapchain_.render_pass(), swapchain_.format()) {
   for (uint32_t slot = 0; slot < kFramesInFlight; ++slot)
     timers_.push_back(std::make_unique<vk::GpuTimer>(context_));
   settings_.variant = options_.variant;

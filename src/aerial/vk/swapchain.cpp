@@ -8,11 +8,12 @@
 namespace aerial::vk {
 namespace {
 
-// An 8-bit UNORM format the surface offers with the sRGB colour space (see the header for why not
-// an _SRGB format), and that can be drawn to.
+// An 8-bit format the surface offers with the sRGB colour space and that can be drawn to: an
+// _SRGB one (the format encodes) if there is one, else UNORM (the shaders encode).
 ::vk::Format ChooseFormat(const Context& context, ::vk::SurfaceKHR surface) {
   auto formats = context.physical_device().getSurfaceFormatsKHR(surface);
-  for (::vk::Format wanted : {::vk::Format::eB8G8R8A8Unorm, ::vk::Format::eR8G8B8A8Unorm}) {
+  for (::vk::Format wanted : {::vk::Format::eB8G8R8A8Srgb, ::vk::Format::eR8G8B8A8Srgb,
+                              ::vk::Format::eB8G8R8A8Unorm, ::vk::Format::eR8G8B8A8Unorm}) {
     bool offered = std::any_of(formats.begin(), formats.end(), [&](const auto& f) {
       return f.format == wanted && f.colorSpace == ::vk::ColorSpaceKHR::eSrgbNonlinear;
     });
@@ -21,7 +22,7 @@ namespace {
   }
   std::string offered;
   for (const auto& f : formats) offered += (offered.empty() ? "" : ", ") + ::vk::to_string(f.format);
-  throw Error("swapchain format", offered, "B8G8R8A8_UNORM or R8G8B8A8_UNORM, renderable");
+  throw Error("swapchain format", offered, "B8G8R8A8 or R8G8B8A8, SRGB or UNORM, renderable");
 }
 
 // Mailbox shows the newest frame without tearing and without waiting for vertical blank, so frame
@@ -33,6 +34,10 @@ namespace {
 }
 
 }  // namespace
+
+bool EncodesSrgb(::vk::Format format) {
+  return format == ::vk::Format::eB8G8R8A8Srgb || format == ::vk::Format::eR8G8B8A8Srgb;
+}
 
 Swapchain::Swapchain(const Context& context, ::vk::SurfaceKHR surface, ::vk::Extent2D wanted,
                      uint32_t frames_in_flight)

@@ -5,8 +5,8 @@
 // GPU draws this one. The frame's commands come from a CommandRing; the swapchain owns the
 // semaphores that order acquire, drawing and presentation.
 //
-// Images are 8-bit UNORM: aerial encodes sRGB in its own shaders, exactly as it does for PNG files,
-// so an sRGB swapchain format would encode twice.
+// Images are 8-bit, _SRGB when the surface offers it (the format encodes the display passes'
+// linear output), else UNORM (the passes encode it themselves, as for PNG files).
 #include <functional>
 #include <vector>
 
@@ -16,6 +16,9 @@
 namespace aerial::vk {
 
 using Recorder = std::function<void(const ::vk::raii::CommandBuffer&)>;
+
+// Whether a format sRGB-encodes what is stored to it (the _SRGB ones aerial uses).
+bool EncodesSrgb(::vk::Format format);
 
 class Swapchain {
  public:
