@@ -12,17 +12,25 @@ double ProcessCpuMs() {
   return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
 }
 
+Scene Moved(const Scene& scene, int frame) {
+  Scene moved = scene;
+  moved.camera.yaw_deg += 0.1 * frame;
+  if (frame % 2 == 1) moved.camera.position.z += 12.0;
+  return moved;
+}
+
 }  // namespace
 
-std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<Renderer*>& renderers, const Scene& scene,
+std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<FrameSource>& sources, const Scene& scene,
                                                   int warmup, int frames,
                                                   const std::function<void()>& on_frame) {
-  std::vector<std::vector<RunResult>> measured(renderers.size());
+  std::vector<std::vector<RunResult>> measured(sources.size());
   for (int i = 0; i < warmup + frames; ++i)
-    for (size_t r = 0; r < renderers.size(); ++r) {
+    for (size_t r = 0; r < sources.size(); ++r) {
+      Scene frame_scene = sources[r].motion == CameraMotion::kMoving ? Moved(scene, i) : scene;
       auto start = std::chrono::steady_clock::now();
       double cpu_start = ProcessCpuMs();
-      RunResult frame{.passes = renderers[r]->Render(scene)};
+      RunResult frame{.passes = sources[r].renderer->Render(frame_scene)};
       frame.cpu_ms = ProcessCpuMs() - cpu_start;
       frame.wall_ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -16,9 +16,20 @@ namespace aerial::bench {
 // The passes timed by the renderer that the frame statistics name (renderer.cpp).
 inline constexpr const char* kFroxelBuildPass = "froxel build";
 
-// frames[r] holds renderer r's measured frames, in order. on_frame (may be empty) is called after
+// A moving camera makes each frame rebuild what the renderer keeps for a still one (the froxel
+// volume, and the sky-view table past 10 m of altitude): frame i turns the camera by i x 0.1
+// degrees of yaw and lifts it by 12 m on odd frames, so every frame pays for both. A still camera
+// measures what a frame costs when nothing moves.
+enum class CameraMotion { kMoving, kStill };
+
+struct FrameSource {
+  Renderer* renderer;
+  CameraMotion motion = CameraMotion::kMoving;
+};
+
+// frames[r] holds source r's measured frames, in order. on_frame (may be empty) is called after
 // every frame, warm-up included.
-std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<Renderer*>& renderers, const Scene& scene,
+std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<FrameSource>& sources, const Scene& scene,
                                                   int warmup, int frames,
                                                   const std::function<void()>& on_frame);
 

@@ -100,8 +100,9 @@ void SpeedSection(std::ostringstream& md, const BenchResults& b) {
      << " warm-up, every variant and tier interleaved in one process. Frames: " << p.frame_width << "x"
      << p.frame_height << ", the built-in default scene (preset noon, transparent objects "
      << "included), median of " << p.frames << " frames after " << p.frame_warmup
-     << " warm-up, the four renderers of a tier (two variants, two paths) interleaved. All times are GPU "
-        "timestamps in ms.\n\n";
+     << " warm-up, the four renderers of a tier (two variants, two paths) interleaved, the camera "
+        "moving a little every frame so that each frame rebuilds its froxel volume and sky-view table "
+        "(a still camera keeps them). Times are GPU timestamps in ms, but for the wall-clock column.\n\n";
   md << SpeedTable(b) << "\n";
   PrecomputeKindsTable(md, b);
   md << "3D / 4D ratios (below 1: the 3D tables are cheaper):\n\n"

@@ -10,13 +10,13 @@ void MeasureVariantFrames(VariantResult& lut4d, const AtmosphereTables& tables4d
                           const AtmosphereTables& tables3d, const Scene& scene, const BenchPlan& plan,
                           const std::function<void()>& on_frame) {
   std::vector<std::unique_ptr<Renderer>> renderers;
-  std::vector<Renderer*> order;
+  std::vector<FrameSource> order;
   for (const AtmosphereTables* tables : {&tables4d, &tables3d})
     for (AerialMode mode : {AerialMode::kFroxel, AerialMode::kPerPixel}) {
       RenderOptions options{.width = plan.frame_width, .height = plan.frame_height, .mode = mode};
       options.Validate();
       renderers.push_back(std::make_unique<Renderer>(*tables, scene, options));
-      order.push_back(renderers.back().get());
+      order.push_back({renderers.back().get()});
     }
   auto frames = MeasureFrames(order, scene, plan.frame_warmup, plan.frames, on_frame);
   lut4d.froxel_frames = std::move(frames[0]);
