@@ -18,6 +18,9 @@ constexpr int kWidth = 640, kHeight = 360;
 
 class LeanFrame : public GpuTest {};
 
+// Frames drawn as the viewer draws them, one after another (Renderer::Record's complete = false).
+constexpr bool kStream = false;
+
 struct Frame {
   ImageRgbF radiance, surface;
 };
@@ -145,27 +148,27 @@ TEST_F(LeanFrame, RenderScaleUpscalesToTheOutputSize) {
   EXPECT_LT(rmse, 0.05);
 }
 
-// The sky-view table depends on the camera's r and mu_s only: remade on the first frame, when the
-// sun moves and when the camera climbs more than 10 m, not when the camera turns. The froxel
-// volume is kept while nothing moves.
+// The sky-view table depends on the camera's r and mu_s only: in a stream of frames (the viewer's),
+// remade on the first frame, when the sun moves and when the camera climbs more than 10 m, not
+// when the camera turns. The froxel volume is kept while nothing moves.
 TEST_F(LeanFrame, CachedTablesAreRemadeOnlyWhenTheirInputsChange) {
   Scene scene = BuildPreset("noon", FullTables().atmosphere().bottom_radius_m);
   Renderer renderer(FullTables(), scene, {.width = 160, .height = 90});
-  renderer.Render(scene);
+  renderer.Render(scene, kStream);
   EXPECT_TRUE(renderer.frame_info().sky_view_updated);
   EXPECT_TRUE(renderer.frame_info().froxels_updated);
-  renderer.Render(scene);
+  renderer.Render(scene, kStream);
   EXPECT_FALSE(renderer.frame_info().sky_view_updated);
   EXPECT_FALSE(renderer.frame_info().froxels_updated);
   scene.camera.yaw_deg += 30.0;
-  renderer.Render(scene);
+  renderer.Render(scene, kStream);
   EXPECT_FALSE(renderer.frame_info().sky_view_updated);
   EXPECT_TRUE(renderer.frame_info().froxels_updated);
   scene.camera.position.z += 5.0;
-  renderer.Render(scene);
+  renderer.Render(scene, kStream);
   EXPECT_FALSE(renderer.frame_info().sky_view_updated);
   scene.sun.zenith_deg += 5.0;
-  renderer.Render(scene);
+  renderer.Render(scene, kStream);
   EXPECT_TRUE(renderer.frame_info().sky_view_updated);
   // The remade table is the one a fresh renderer makes for that sun and camera.
   Renderer fresh(FullTables(), scene, {.width = 160, .height = 90});
@@ -180,9 +183,9 @@ TEST_F(LeanFrame, SkyViewTableTenMetersOffChangesLittle) {
   Scene scene = BuildPreset("sunset", FullTables().atmosphere().bottom_radius_m);
   scene.camera.pitch_deg = 10.0;  // mostly sky
   Renderer lagging(FullTables(), scene, {.width = 320, .height = 180});
-  lagging.Render(scene);
+  lagging.Render(scene, kStream);
   scene.camera.position.z += 9.9;
-  lagging.Render(scene);
+  lagging.Render(scene, kStream);
   ASSERT_FALSE(lagging.frame_info().sky_view_updated);
   Renderer fresh(FullTables(), scene, {.width = 320, .height = 180});
   fresh.Render(scene);
@@ -190,6 +193,23 @@ TEST_F(LeanFrame, SkyViewTableTenMetersOffChangesLittle) {
   std::printf("sky-view table 9.9 m off: relative RMSE %.4f%%\n", 100 * rmse);
   EXPECT_GT(rmse, 0.0);
   EXPECT_LT(rmse, 0.001);
+}
+
+// A one-off frame (Renderer::Render's default) is the exact frame of its view whatever the renderer
+// drew before: after noon, the high-altitude view needs terrain chunks that a frame of the stream
+// would defer past its building budget and a sky-view table for a new altitude. Bit for bit the
+// frame of a renderer that draws only that view.
+TEST_F(LeanFrame, OneOffFramesAreCompleteWhateverCameBefore) {
+  double R = FullTables().atmosphere().bottom_radius_m;
+  Scene scene = BuildPreset("noon", R);
+  Renderer reused(FullTables(), scene, {.width = kWidth, .height = kHeight});
+  reused.Render(scene);
+  ApplyPresetView(scene, "high-altitude", R);
+  reused.Render(scene, kStream);
+  EXPECT_EQ(reused.frame_info().deferred, 0);
+  Renderer fresh(FullTables(), scene, {.width = kWidth, .height = kHeight});
+  fresh.Render(scene);
+  EXPECT_EQ(reused.ReadOutput().rgba, fresh.ReadOutput().rgba);
 }
 
 }  // namespace

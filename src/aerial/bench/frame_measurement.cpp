@@ -30,7 +30,7 @@ std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<FrameSource>
       Scene frame_scene = sources[r].motion == CameraMotion::kMoving ? Moved(scene, i) : scene;
       auto start = std::chrono::steady_clock::now();
       double cpu_start = ProcessCpuMs();
-      RunResult frame{.passes = sources[r].renderer->Render(frame_scene)};
+      RunResult frame{.passes = sources[r].renderer->Render(frame_scene, /*complete=*/false)};
       frame.cpu_ms = ProcessCpuMs() - cpu_start;
       frame.wall_ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

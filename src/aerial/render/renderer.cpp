@@ -294,8 +294,8 @@ void Renderer::Record(const ::vk::raii::CommandBuffer& cmd, const Scene& scene, 
 
 std::vector<vk::PassTime> Renderer::PassTimes(uint32_t slot) const { return timers_[slot]->Collect(); }
 
-std::vector<vk::PassTime> Renderer::Render(const Scene& scene) {
-  tables_.context().Submit([&](const ::vk::raii::CommandBuffer& cmd) { Record(cmd, scene, 0); });
+std::vector<vk::PassTime> Renderer::Render(const Scene& scene, bool complete) {
+  tables_.context().Submit([&](const ::vk::raii::CommandBuffer& cmd) { Record(cmd, scene, 0, complete); });
   return PassTimes(0);
 }
 

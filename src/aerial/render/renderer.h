@@ -91,8 +91,10 @@ class Renderer {
   void SetTerrainErrorPx(double error_px);
   // GPU time of each pass of the slot's last frame; call once that frame has finished.
   std::vector<vk::PassTime> PassTimes(uint32_t slot = 0) const;
-  // Records one frame, submits it and waits for it. Returns the GPU time of each pass.
-  std::vector<vk::PassTime> Render(const Scene& scene);
+  // Records one frame, submits it and waits for it. Returns the GPU time of each pass. A one-off
+  // frame is complete (Record): each call draws the exact frame of its view, whatever the views
+  // before it; a caller that draws a stream of frames as the viewer does passes false.
+  std::vector<vk::PassTime> Render(const Scene& scene, bool complete = true);
 
   // Linear radiance of the last frame at the output size (upscaled when render_scale < 1).
   ImageRgbF ReadOutput() const;
