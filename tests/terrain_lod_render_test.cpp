@@ -196,20 +196,33 @@ TEST_F(LeanFrame, SkyViewTableTenMetersOffChangesLittle) {
 }
 
 // A one-off frame (Renderer::Render's default) is the exact frame of its view whatever the renderer
-// drew before: after noon, the high-altitude view needs terrain chunks that a frame of the stream
-// would defer past its building budget and a sky-view table for a new altitude. Bit for bit the
-// frame of a renderer that draws only that view.
+// drew before, bit for bit the frame of a renderer that draws only that view: here after a frame
+// 5 m lower (a frame of the stream would keep that sky-view table) and with a terrain building
+// budget of 1 us (a frame of the stream would draw parents of the chunks it has no time to build).
 TEST_F(LeanFrame, OneOffFramesAreCompleteWhateverCameBefore) {
-  double R = FullTables().atmosphere().bottom_radius_m;
-  Scene scene = BuildPreset("noon", R);
-  Renderer reused(FullTables(), scene, {.width = kWidth, .height = kHeight});
-  reused.Render(scene);
-  ApplyPresetView(scene, "high-altitude", R);
-  reused.Render(scene, kStream);
+  Scene scene = BuildPreset("noon", FullTables().atmosphere().bottom_radius_m);
+  scene.camera.yaw_deg += 90.0;  // ground the first frame did not need
+  RenderOptions options{.width = kWidth, .height = kHeight, .terrain_build_budget_ms = 0.001};
+  Scene lower = scene;
+  lower.camera.position.z -= 5.0;
+  Scene first = BuildPreset("noon", FullTables().atmosphere().bottom_radius_m);
+  Renderer reused(FullTables(), first, options);
+  reused.Render(first);
+  reused.Render(lower);
   EXPECT_EQ(reused.frame_info().deferred, 0);
-  Renderer fresh(FullTables(), scene, {.width = kWidth, .height = kHeight});
+  reused.Render(scene);
+  EXPECT_TRUE(reused.frame_info().sky_view_updated);
+  Renderer fresh(FullTables(), scene, options);
   fresh.Render(scene);
   EXPECT_EQ(reused.ReadOutput().rgba, fresh.ReadOutput().rgba);
+  // The same frames streamed defer chunks and keep the table: what the one-off default avoids.
+  Renderer streamed(FullTables(), first, options);
+  streamed.Render(first, kStream);
+  streamed.Render(lower, kStream);
+  EXPECT_GT(streamed.frame_info().deferred, 0);
+  streamed.Render(scene, kStream);
+  EXPECT_FALSE(streamed.frame_info().sky_view_updated);
+  EXPECT_NE(streamed.ReadOutput().rgba, fresh.ReadOutput().rgba);
 }
 
 }  // namespace
