@@ -200,12 +200,12 @@ TEST_F(LeanFrame, SkyViewTableTenMetersOffChangesLittle) {
 // 5 m lower (a frame of the stream would keep that sky-view table) and with a terrain building
 // budget of 1 us (a frame of the stream would draw parents of the chunks it has no time to build).
 TEST_F(LeanFrame, OneOffFramesAreCompleteWhateverCameBefore) {
-  Scene scene = BuildPreset("noon", FullTables().atmosphere().bottom_radius_m);
+  Scene first = BuildPreset("noon", FullTables().atmosphere().bottom_radius_m);
+  Scene scene = first;
   scene.camera.yaw_deg += 90.0;  // ground the first frame did not need
-  RenderOptions options{.width = kWidth, .height = kHeight, .terrain_build_budget_ms = 0.001};
   Scene lower = scene;
   lower.camera.position.z -= 5.0;
-  Scene first = BuildPreset("noon", FullTables().atmosphere().bottom_radius_m);
+  RenderOptions options{.width = kWidth, .height = kHeight, .terrain_build_budget_ms = 0.001};
   Renderer reused(FullTables(), first, options);
   reused.Render(first);
   reused.Render(lower);

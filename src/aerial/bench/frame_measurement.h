@@ -19,8 +19,8 @@ inline constexpr const char* kFroxelBuildPass = "froxel build";
 // A moving camera makes each frame rebuild what the renderer keeps for a still one (the froxel
 // volume, and the sky-view table past 10 m of altitude): frame i turns the camera by i x 0.1
 // degrees of yaw and lifts it by 12 m on odd frames, so every frame pays for both. A still camera
-// measures what a frame costs when nothing moves. Frames are drawn as the viewer draws them (not
-// complete: the terrain's building has its per-frame budget, Renderer::Record).
+// measures what a frame costs when nothing moves. Frames are drawn as the viewer draws them, not
+// complete (Renderer::Record): a sky-view table made within 10 m of altitude is kept.
 enum class CameraMotion { kMoving, kStill };
 
 struct FrameSource {
