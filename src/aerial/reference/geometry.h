@@ -48,23 +48,4 @@ inline double CosHorizon(double r, double bottom_radius) {
   return -SafeSqrt(1.0 - sin_theta_h * sin_theta_h);
 }
 
-// Fraction of the solar disc (uniform, angular radius alpha) above the horizon, seen from radius
-// r with the disc centre at zenith cosine mu_s. With x the centre's height above the horizon in
-// disc radii, x = (mu_s - cos_theta_h) / (sin_theta_h alpha) clamped to [-1, 1], the visible area
-// is the disc segment f(x) = 1/2 + (x sqrt(1 - x^2) + asin(x)) / pi.
-inline double SunVisibleFraction(double r, double mu_s, double bottom_radius, double alpha) {
-  double sin_theta_h = std::min(bottom_radius / r, 1.0);
-  double cos_theta_h = -SafeSqrt(1.0 - sin_theta_h * sin_theta_h);
-  double x = std::clamp((mu_s - cos_theta_h) / (sin_theta_h * alpha), -1.0, 1.0);
-  return 0.5 + (x * std::sqrt(1.0 - x * x) + std::asin(x)) / std::numbers::pi;
-}
-
-// Bruneton 2017's "average cosine" of the solar disc over a horizontal surface
-// (ComputeDirectIrradiance): 0 below -alpha, mu_s above alpha, (mu_s + alpha)^2 / (4 alpha) between.
-inline double SunAverageCosine(double mu_s, double alpha) {
-  if (mu_s < -alpha) return 0.0;
-  if (mu_s > alpha) return mu_s;
-  return (mu_s + alpha) * (mu_s + alpha) / (4.0 * alpha);
-}
-
 }  // namespace aerial::reference

@@ -28,18 +28,6 @@ TEST(Geometry, GroundIntersectionStartsBelowTheHorizon) {
   EXPECT_TRUE(RayIntersectsInnerSphere(R, -1e-9, R));
 }
 
-// The visible fraction of the solar disc is 1 above the horizon by more than its radius, 0 below,
-// 1/2 when the centre is on the horizon.
-TEST(Geometry, SunVisibleFractionIsADiscSegment) {
-  double r = R + 2000.0, alpha = 0.004675, horizon = CosHorizon(r, R);
-  EXPECT_EQ(SunVisibleFraction(r, horizon + 2.0 * alpha, R, alpha), 1.0);
-  EXPECT_EQ(SunVisibleFraction(r, horizon - 2.0 * alpha, R, alpha), 0.0);
-  EXPECT_NEAR(SunVisibleFraction(r, horizon, R, alpha), 0.5, 1e-12);
-  EXPECT_EQ(SunAverageCosine(-2.0 * alpha, alpha), 0.0);
-  EXPECT_EQ(SunAverageCosine(0.5, alpha), 0.5);
-  EXPECT_NEAR(SunAverageCosine(0.0, alpha), alpha / 4.0, 1e-15);
-}
-
 // AroundAxis returns unit vectors at the asked cosine from the axis, for any axis.
 TEST(Vec3, AroundAxisKeepsTheCosine) {
   for (Vec3 n : {Vec3{0, 0, 1}, Vec3{0, 0, -1}, Normalize(Vec3{1, -2, 0.5})}) {

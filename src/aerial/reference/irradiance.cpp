@@ -5,16 +5,14 @@
 #include "aerial/reference/geometry.h"
 #include "aerial/reference/optical_depth.h"
 #include "aerial/reference/path_tracer.h"
+#include "aerial/reference/solar_disc.h"
 
 namespace aerial::reference {
 
 Spectrum ComputeDirectIrradiance(const Medium& medium, Accuracy accuracy, double r, double mu_s) {
   const AtmosphereParameters& a = medium.atmosphere();
-  double average_cosine = SunAverageCosine(mu_s, a.sun_angular_radius_rad);
-  if (average_cosine == 0.0) return {};
-  Spectrum t = ComputeTransmittanceToSun(medium, accuracy, r, mu_s);
-  return {a.solar_irradiance[0] * t[0] * average_cosine, a.solar_irradiance[1] * t[1] * average_cosine,
-          a.solar_irradiance[2] * t[2] * average_cosine};
+  Spectrum f = SunDiscHorizontalIrradianceFactor(medium, accuracy, r, mu_s);
+  return {a.solar_irradiance[0] * f[0], a.solar_irradiance[1] * f[1], a.solar_irradiance[2] * f[2]};
 }
 
 OrderEstimates EstimateSkyIrradianceOrders(const Medium& medium, double r, double mu_s, int max_order,
@@ -22,7 +20,7 @@ OrderEstimates EstimateSkyIrradianceOrders(const Medium& medium, double r, doubl
   const Vec3 x{0.0, 0.0, r}, normal{0.0, 0.0, 1.0};
   const Vec3 sun{SafeSqrt(1.0 - mu_s * mu_s), 0.0, mu_s};
   return RunChunks(options, max_order, [&](int, Rng& rng, std::vector<Spectrum>& sums) {
-    PathTracer tracer(medium, sun, 1, max_order);
+    PathTracer tracer(medium, sun, 1, max_order, options.roulette_from_order);
     Strata strata(rng);
     for (int i = 0; i < kChunkPaths; ++i) {
       // E = int L cos dw, estimated as L(w) cos(w) / pdf(w) = pi L(w) (cos / pi) / pdf(w).

@@ -1,8 +1,7 @@
 #pragma once
 // Irradiance on a horizontal surface at radius r.
-//  - Direct: E_0 = E_sun T(r, mu_s -> top) c(mu_s), with c Bruneton 2017's average cosine of the
-//    solar disc (SunAverageCosine; ComputeDirectIrradiance). No planet-shadow factor: c already
-//    fades the sun out over the disc's angular radius around mu_s = 0.
+//  - Direct: E_0 = E_sun <V T max(mu, 0)>_disc, the disc's visible part, each through its own
+//    slant of the atmosphere (solar_disc.h).
 //  - Sky: E_sky = sum_{j=1..M} int_{upper hemisphere} L_j(x, w) cos(w) dw (Bruneton 2017's
 //    ComputeIndirectIrradiance),
 //    L_j the radiance of order j, estimated by the path tracer from cosine-sampled directions.

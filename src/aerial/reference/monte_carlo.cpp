@@ -58,6 +58,7 @@ std::array<double, 2> Strata::Sample2D(int path, Rng& rng) const {
 }
 
 OrderEstimates RunChunks(const MonteCarloOptions& options, int max_order, const ChunkTracer& trace) {
+  const int reported = std::min(max_order, kReportedOrders);
   const int chunks = std::max(2, (options.paths_per_query + kChunkPaths - 1) / kChunkPaths);
   const int threads = std::clamp<int>(
       options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency()),
@@ -68,7 +69,7 @@ OrderEstimates RunChunks(const MonteCarloOptions& options, int max_order, const 
   auto worker = [&] {
     for (int c; (c = next_chunk.fetch_add(1)) < chunks;) {
       Rng rng(options.seed, static_cast<uint64_t>(c));
-      std::vector<Spectrum> sums(max_order + 1, Spectrum{});
+      std::vector<Spectrum> sums(reported + 1, Spectrum{});
       trace(c, rng, sums);
       for (Spectrum& s : sums)
         for (double& v : s) v /= kChunkPaths;
@@ -95,12 +96,12 @@ OrderEstimates RunChunks(const MonteCarloOptions& options, int max_order, const 
     return e;
   };
   OrderEstimates result;
-  result.orders.resize(max_order + 1);
-  for (int k = 1; k <= max_order; ++k)
+  result.orders.resize(reported + 1);
+  for (int k = 1; k <= reported; ++k)
     result.orders[k] = estimate([&](int c) { return means[c][k]; });
   result.total = estimate([&](int c) {
     Spectrum s{};
-    for (int k = 1; k <= max_order; ++k)
+    for (int k = 1; k <= reported; ++k)
       for (int i = 0; i < 3; ++i) s[i] += means[c][k][i];
     return s;
   });

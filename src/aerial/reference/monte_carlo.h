@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "aerial/atmosphere/parameters.h"
@@ -28,9 +29,17 @@ struct MonteCarloOptions {
   int paths_per_query = 131072;  // rounded up to a multiple of kChunkPaths, at least 2 chunks.
   uint64_t seed = 1;
   int threads = 0;  // 0: std::thread::hardware_concurrency().
+  // Russian roulette from this path vertex on (path_tracer.h); kAllOrders: never.
+  int roulette_from_order = 4;
 };
 
 inline constexpr int kChunkPaths = 256;
+
+// max_order for the whole series: paths go on until Russian roulette ends them (path_tracer.h).
+inline constexpr int kAllOrders = std::numeric_limits<int>::max();
+// Orders are reported one by one up to this one; the estimate of the last reported order holds
+// the sum of it and all higher orders.
+inline constexpr int kReportedOrders = 12;
 
 // xoshiro256** (Blackman & Vigna 2018), seeded through splitmix64.
 class Rng {
@@ -55,14 +64,16 @@ class Strata {
   std::array<uint16_t, kChunkPaths> perm_1d_, perm_2d_;
 };
 
-// Per-order estimates: orders[k] for k in [1, max_order] (orders[0] unused), and their sum.
+// Per-order estimates: orders[k] for k in [1, min(max_order, kReportedOrders)] (orders[0] unused;
+// the last one includes the orders above it), and their sum.
 struct OrderEstimates {
   std::vector<Estimate> orders;
   Estimate total;
 };
 
 // trace(chunk, rng, sums) adds, for each order k, the sum over the chunk's kChunkPaths paths of
-// their order-k contributions to sums[k] (sums has max_order + 1 zeroed entries).
+// their order-k contributions to sums[min(k, kReportedOrders)] (sums has
+// min(max_order, kReportedOrders) + 1 zeroed entries).
 using ChunkTracer = std::function<void(int chunk, Rng& rng, std::vector<Spectrum>& sums)>;
 OrderEstimates RunChunks(const MonteCarloOptions& options, int max_order, const ChunkTracer& trace);
 

@@ -30,7 +30,7 @@ OrderEstimates EstimateRadianceOrders(const Medium& medium, double r, double mu,
   first_vertex.Build(medium, view);
   return RunChunks(options, max_order, [&](int, Rng& rng, std::vector<Spectrum>& sums) {
     if (!(length > 0.0)) return;
-    PathTracer tracer(medium, frame.sun, first_order, max_order);
+    PathTracer tracer(medium, frame.sun, first_order, max_order, options.roulette_from_order);
     Strata strata(rng);
     for (int i = 0; i < kChunkPaths; ++i) {
       double pdf;

@@ -35,12 +35,6 @@ Spectrum ComputeTransmittance(const Medium& medium, Accuracy accuracy, double r,
   return medium.Transmittance(ComputeColumn(medium, accuracy, r, mu, length));
 }
 
-Spectrum ComputeTransmittanceToSun(const Medium& medium, Accuracy accuracy, double r, double mu_s) {
-  double mu = std::max(mu_s, CosHorizon(r, medium.bottom_radius()));
-  return ComputeTransmittance(medium, accuracy, r, mu,
-                              DistanceToOuterSphere(r, mu, medium.top_radius()));
-}
-
 void RayColumns::Build(const Medium& medium, Accuracy accuracy, double r, double mu, double length) {
   medium_ = &medium;
   accuracy_ = accuracy;

@@ -51,12 +51,6 @@ Column ComputeColumn(const Medium& medium, Accuracy accuracy, double r, double m
 Spectrum ComputeTransmittance(const Medium& medium, Accuracy accuracy, double r, double mu,
                               double length);
 
-// Transmittance from radius r to the top of the atmosphere towards the centre of the solar disc
-// at zenith cosine mu_s. When the centre is below the horizon (only its visible part matters, see
-// SunVisibleFraction) the horizon-grazing ray is used, as a transmittance table clamped at its
-// horizon edge does (Bruneton 2017's GetTransmittanceToTopAtmosphereBoundary).
-Spectrum ComputeTransmittanceToSun(const Medium& medium, Accuracy accuracy, double r, double mu_s);
-
 // The pieces of one ray with the column densities accumulated up to each cut, so that the column
 // up to any s costs one piece's quadrature. Reusable (Build keeps its storage).
 class RayColumns {

@@ -81,15 +81,5 @@ TEST(RayColumns, ColumnToIsAdditive) {
   }
 }
 
-// Below the horizon the sun ray is the horizon-grazing one (no path through the planet).
-TEST(TransmittanceToSun, BelowHorizonUsesTheHorizonRay) {
-  Medium medium(AtmosphereParameters::Earth());
-  double r = medium.bottom_radius() + 1000.0;
-  double horizon = CosHorizon(r, medium.bottom_radius());
-  Spectrum below = ComputeTransmittanceToSun(medium, Accuracy::kReference, r, horizon - 0.003);
-  Spectrum at = ComputeTransmittanceToSun(medium, Accuracy::kReference, r, horizon);
-  for (int c = 0; c < 3; ++c) EXPECT_EQ(below[c], at[c]);
-}
-
 }  // namespace
 }  // namespace aerial::reference

@@ -5,6 +5,7 @@
 #include "aerial/reference/geometry.h"
 #include "aerial/reference/irradiance.h"
 #include "aerial/reference/phase_functions.h"
+#include "aerial/reference/solar_disc.h"
 
 namespace aerial::reference {
 namespace {
@@ -15,27 +16,45 @@ double Mean(const Spectrum& s) { return (s[0] + s[1] + s[2]) / 3.0; }
 
 }  // namespace
 
-PathTracer::PathTracer(const Medium& medium, Vec3 sun, int first_order, int max_order)
-    : medium_(medium), sun_(sun), first_order_(first_order), max_order_(max_order) {
+PathTracer::PathTracer(const Medium& medium, Vec3 sun, int first_order, int max_order,
+                       int roulette_from_order)
+    : medium_(medium),
+      sun_(sun),
+      first_order_(first_order),
+      max_order_(max_order),
+      roulette_from_order_(roulette_from_order) {
   // The sun lobe pays off only where the Mie forward peak is sharp; 20% keeps the phase lobes'
   // weights within 1.25x of pure phase sampling.
   const AtmosphereParameters& a = medium.atmosphere();
   sun_lobe_ = Mean(a.mie_scattering) > 0.0 && a.mie_phase_g > 0.3 ? 0.2 : 0.0;
 }
 
+double PathTracer::BounceEnergy(const PathVertex& v, const Densities& d, const Spectrum& f,
+                                const PathVertex& next, const Spectrum& weight) const {
+  auto extinction = [&](const Densities& at) {
+    return medium_.OpticalDepth(Column{at.rayleigh, at.mie, at.absorption});  // per meter
+  };
+  Spectrum from = v.ground ? Spectrum{1.0, 1.0, 1.0} : extinction(d);
+  Spectrum to = next.ground ? Spectrum{1.0, 1.0, 1.0}
+                            : extinction(medium_.At(Length(next.p) - medium_.bottom_radius()));
+  double energy = 0.0;
+  for (int c = 0; c < 3; ++c)
+    if (from[c] > 0.0) energy = std::max(energy, f[c] / from[c] * weight[c] * to[c]);
+  return energy;
+}
+
 Spectrum PathTracer::AtmosphereNextEvent(const PathVertex& v, const Densities& d) const {
   const AtmosphereParameters& a = medium_.atmosphere();
   double r = Length(v.p);
   double mu_s = ClampCosine(Dot(v.p, sun_) / r);
-  double f = SunVisibleFraction(r, mu_s, medium_.bottom_radius(), a.sun_angular_radius_rad);
-  if (f == 0.0) return {};
-  Spectrum t_sun = ComputeTransmittanceToSun(medium_, Accuracy::kMonteCarlo, r, mu_s);
+  Spectrum t_sun = SunDiscTransmittance(medium_, Accuracy::kMonteCarlo, r, mu_s);
+  if (t_sun == Spectrum{}) return {};
   double nu = ClampCosine(Dot(v.w_in, sun_));
   double phase_r = RayleighPhaseFunction(nu), phase_m = CornetteShanksPhaseFunction(a.mie_phase_g, nu);
   Spectrum out;
   for (int c = 0; c < 3; ++c) {
     out[c] = (a.rayleigh_scattering[c] * d.rayleigh * phase_r + a.mie_scattering[c] * d.mie * phase_m) *
-             a.solar_irradiance[c] * t_sun[c] * f;
+             a.solar_irradiance[c] * t_sun[c];
   }
   return out;
 }
@@ -136,9 +155,10 @@ void PathTracer::Continue(PathVertex v, Spectrum beta, int order, Rng& rng,
     if (!v.ground) d = medium_.At(Length(v.p) - medium_.bottom_radius());
     if (order >= first_order_) {
       Spectrum e = v.ground ? GroundNextEvent(v) : AtmosphereNextEvent(v, d);
-      for (int c = 0; c < 3; ++c) sums[order][c] += beta[c] * e[c];
+      Spectrum& sum = sums[std::min<size_t>(order, sums.size() - 1)];
+      for (int c = 0; c < 3; ++c) sum[c] += beta[c] * e[c];
     }
-    if (order >= max_order_) return;
+    if (order >= max_order_ || order >= kMaxPathVertices) return;
     std::array<double, 2> u = first_u ? *first_u : std::array<double, 2>{rng.Uniform(), rng.Uniform()};
     first_u = nullptr;
     double u_lobe = rng.Uniform();
@@ -157,6 +177,11 @@ void PathTracer::Continue(PathVertex v, Spectrum beta, int order, Rng& rng,
     double u_choice = rng.Uniform(), u_distance = rng.Uniform();
     if (!SampleSegment(v.p, w, u_choice, u_distance, &next, &weight)) return;
     for (int c = 0; c < 3; ++c) beta[c] *= weight[c];
+    if (order >= roulette_from_order_) {
+      double survival = std::min(1.0, BounceEnergy(v, d, f, next, weight));
+      if (!(rng.Uniform() < survival)) return;
+      for (double& b : beta) b /= survival;
+    }
     v = next;
     ++order;
   }

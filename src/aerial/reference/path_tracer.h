@@ -3,9 +3,9 @@
 // each an atmospheric scattering or a Lambertian ground reflection; each vertex raises the
 // scattering order by one. At the k-th vertex, next-event estimation towards the sun adds the
 // order-k contribution:
-//  - atmosphere: beta * sum_species beta_s rho P(w_in . sun) * E_sun T_sun f (f: visible disc);
+//  - atmosphere: beta * sum_species beta_s rho P(w_in . sun) * E_sun <V T>_disc (solar_disc.h);
 //  - ground:     beta * albedo / pi * E_0 (direct irradiance, irradiance.h).
-// Then the path continues, up to max_order vertices:
+// Then the path continues, up to max_order vertices (kAllOrders: the whole series):
 //  - direction: one sample from a mixture of the local phase lobes about w_in (Rayleigh exactly,
 //    Cornette-Shanks through Henyey-Greenstein) or of the cosine lobe at the ground, and, with
 //    probability 0.2 (if Mie's g > 0.3), of a Henyey-Greenstein lobe about the sun, which the
@@ -14,9 +14,15 @@
 //    balances the expected ground and atmosphere contributions; otherwise a scattering point on
 //    the segment is drawn by DistanceSampler (forced scattering: paths never escape). The weight
 //    is T / (probability x pdf).
+//  - Russian roulette (Arvo & Kirk 1990) from vertex roulette_from_order on (monte_carlo.h): the path survives a
+//    bounce with probability q = min(1, BounceEnergy), the fraction of energy the bounce carries
+//    on, and its throughput is divided by q. Unbiased; it ends the series' paths where
+//    their contribution fades. By default the orders the tables compute (up to 4) are never cut.
+//    A path is stopped at kMaxPathVertices regardless: after 256 bounces, each survived with
+//    q < 0.9 or so, the weight left is below 1e-11 of the path's start.
 // This is an unbiased estimator of the recursion that Bruneton 2017 evaluates with tables
 // (ComputeScatteringDensity, ComputeIndirectIrradiance, ComputeMultipleScattering), with the sun
-// as a directional source of irradiance E_sun f.
+// as a disc of irradiance E_sun.
 #include <array>
 #include <vector>
 
@@ -34,15 +40,17 @@ struct PathVertex {
   bool ground;  // Lambertian ground reflection, else atmospheric scattering.
 };
 
+inline constexpr int kMaxPathVertices = 256;
+
 // Not thread-safe (scratch storage): one per thread.
 class PathTracer {
  public:
   // Contributions of orders below first_order are not computed (their next-event estimates are
   // skipped), orders above max_order not traced.
-  PathTracer(const Medium& medium, Vec3 sun, int first_order, int max_order);
+  PathTracer(const Medium& medium, Vec3 sun, int first_order, int max_order, int roulette_from_order);
 
   // Continues a path whose order-th vertex is v, reached with throughput beta, adding each order's
-  // contribution to sums[order]. first_u, if given, is the (stratified) 2D sample of the first
+  // contribution to sums[min(order, sums.size() - 1)] (monte_carlo.h, kReportedOrders). first_u, if given, is the (stratified) 2D sample of the first
   // direction.
   void Continue(PathVertex v, Spectrum beta, int order, Rng& rng,
                 const std::array<double, 2>* first_u, std::vector<Spectrum>& sums);
@@ -61,12 +69,19 @@ class PathTracer {
   Spectrum SampleSurfaceDirection(Vec3 normal, double u_lobe, std::array<double, 2> u, Vec3* w) const;
 
  private:
+  // The bounce from v to next as a dimensionless fraction of energy, the largest over channels:
+  // the weights f (per meter at an atmospheric vertex) and T / p (meters towards an atmospheric
+  // vertex) are made unitless by the extinction coefficients at both ends, which gives about the
+  // single-scattering albedo times the chance of scattering before leaving the atmosphere (the
+  // ground's albedo times the transmittance to it, for a ground vertex).
+  double BounceEnergy(const PathVertex& v, const Densities& d, const Spectrum& f, const PathVertex& next,
+                      const Spectrum& weight) const;
   Spectrum AtmosphereNextEvent(const PathVertex& v, const Densities& d) const;
   Spectrum GroundNextEvent(const PathVertex& v) const;
 
   const Medium& medium_;
   Vec3 sun_;
-  int first_order_, max_order_;
+  int first_order_, max_order_, roulette_from_order_;
   double sun_lobe_;  // mixture probability of the sun lobe.
   RayColumns columns_;
   DistanceSampler distances_;

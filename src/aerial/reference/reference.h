@@ -2,7 +2,8 @@
 // aerial::reference: an independent double-precision CPU reference for the precomputed tables.
 // It shares no code with the shaders and uses no tables: transmittance and single scattering are
 // direct deterministic quadratures along rays (optical_depth.h, single_scattering.h), higher
-// orders and the sky irradiance are path traced (path_tracer.h) with standard errors.
+// orders and the sky irradiance are path traced (path_tracer.h) with standard errors. The sun is
+// a disc, each part of it seen through its own slant of the atmosphere (solar_disc.h).
 //
 // Conventions (shared/design.md): r is the distance to the planet centre in meters, mu the
 // cosine of the view zenith angle, mu_s of the sun zenith angle, nu of the view-sun angle. nu is
@@ -31,13 +32,14 @@ class Reference {
   // Single scattering over the first distance_m of the ray (infinity: to the boundary).
   SingleScattering ComputeSingleScattering(double r, double mu, double mu_s, double nu,
                                            double distance_m = INFINITY) const;
-  // Sum of orders 1..orders with phase functions, over the first distance_m of the view ray.
-  // Order 1 is deterministic (ComputeSingleScattering); std_error covers orders >= 2.
+  // Sum of orders 1..orders with phase functions, over the first distance_m of the view ray;
+  // orders = kAllOrders: the whole series (Russian roulette ends the paths). Order 1 is
+  // deterministic (ComputeSingleScattering); std_error covers orders >= 2.
   Estimate ComputeRadiance(double r, double mu, double mu_s, double nu, int orders,
                            double distance_m = INFINITY, const MonteCarloOptions& = {}) const;
   // Horizontal surface at radius r.
   Spectrum ComputeDirectIrradiance(double r, double mu_s) const;
-  // Sum of sky irradiance orders 1..orders on a horizontal surface at radius r.
+  // Sum of sky irradiance orders 1..orders (or kAllOrders) on a horizontal surface at radius r.
   Estimate ComputeSkyIrradiance(double r, double mu_s, int orders, const MonteCarloOptions& = {}) const;
   static double RayleighPhase(double nu);
   double MiePhase(double nu) const;

@@ -3,12 +3,14 @@
 #include "aerial/reference/geometry.h"
 #include "aerial/reference/optical_depth.h"
 #include "aerial/reference/quadrature.h"
+#include "aerial/reference/solar_disc.h"
 
 namespace aerial::reference {
 namespace {
 
-// Where the view ray enters or leaves the penumbra: the unclamped disc position
-// x = (mu_s_p - cos_theta_h) / (sin_theta_h alpha) of SunVisibleFraction crosses -1 or +1.
+// Where the view ray enters or leaves the penumbra, i.e. where the elevation of the disc centre
+// over the horizon, in disc radii, x ~ (mu_s_p - cos_theta_h) / (sin_theta_h alpha), crosses -1
+// or +1 (solar_disc.h; the integrand has kinks there).
 // Sign changes on a 1024-step scan, refined by bisection.
 void AddPenumbraEdges(const Medium& medium, double r, double mu, double mu_s, double nu,
                       double length, std::vector<double>* cuts) {
@@ -51,13 +53,12 @@ SingleScattering ComputeSingleScattering(const Medium& medium, double r, double 
     Values<6> out{};
     double r_p = RadiusAt(r, mu, s);
     double mu_s_p = ClampCosine((r * mu_s + s * nu) / r_p);
-    double f = SunVisibleFraction(r_p, mu_s_p, bottom, atmosphere.sun_angular_radius_rad);
-    if (f == 0.0) return out;
+    Spectrum t_sun = SunDiscTransmittance(medium, Accuracy::kReference, r_p, mu_s_p);
+    if (t_sun == Spectrum{}) return out;
     Spectrum t_view = medium.Transmittance(view.ColumnTo(s));
-    Spectrum t_sun = ComputeTransmittanceToSun(medium, Accuracy::kReference, r_p, mu_s_p);
     Densities d = medium.At(r_p - bottom);
     for (int c = 0; c < 3; ++c) {
-      double light = t_view[c] * t_sun[c] * f * atmosphere.solar_irradiance[c];
+      double light = t_view[c] * t_sun[c] * atmosphere.solar_irradiance[c];
       out[c] = light * atmosphere.rayleigh_scattering[c] * d.rayleigh;
       out[3 + c] = light * atmosphere.mie_scattering[c] * d.mie;
     }
