@@ -1,6 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Pass 7 (orders >= 2): adds the order-n multiple scattering to the final tables. 4D: to the
+// Pass 7 (orders >= 2): adds the order-n multiple scattering to the final tables; after the last
+// order, with the series closed, the orders beyond it too (SumSeriesFromLastOrder). 4D: to the
 // Rayleigh table, divided by the Rayleigh phase so that render-time lookups multiply one phase
 // back in (Bruneton 2017
 // "ComputeMultipleScatteringTexture": multiple scattering is nearly isotropic, and this keeps the
@@ -18,8 +19,10 @@
 #include "scattering.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 1) uniform sampler3D delta_multiple_scattering_texture;
+layout(set = 0, binding = 2) uniform sampler3D previous_order_texture;  // order n-1
 // 4D: the Rayleigh table; 3D: the multiple scattering table.
-layout(set = 0, binding = 2, rgba32f) uniform image3D accumulator;
+layout(set = 0, binding = 3, rgba32f) uniform image3D accumulator;
+layout(push_constant) uniform Series { int close_series; } pass;
 
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
@@ -30,6 +33,11 @@ void main() {
                                  ray_r_mu_intersects_ground);
   vec3 radiance = GetScatteringClampedNu(delta_multiple_scattering_texture, atmosphere.density_size, r, mu,
                                 mu_s, nu, ray_r_mu_intersects_ground);
+  if (pass.close_series != 0) {
+    radiance = SumSeriesFromLastOrder(
+        radiance, GetScatteringClampedNu(previous_order_texture, atmosphere.density_size, r, mu, mu_s,
+                                         nu, ray_r_mu_intersects_ground));
+  }
   if (TablesDropNu()) {
     // 3D: the table of multiple scattering takes the radiance as it is.
     imageStore(accumulator, texel, imageLoad(accumulator, texel) + vec4(radiance, 0.0));

@@ -58,7 +58,7 @@ std::vector<ViewReference> SampleViews(const AtmosphereTables& tables, Scene& sc
   reference::Reference model(atmosphere);
   ReferenceSampling sampling{.columns = plan.reference_columns,
                              .rows = plan.reference_rows,
-                             .orders = tables.options().orders,
+                             .orders = tables.options().RepresentedOrders(),
                              .monte_carlo = {.paths_per_query = plan.reference_paths}};
   std::unique_ptr<Renderer> renderer = ImageRenderer(tables, scene, plan, AerialMode::kFroxel);
   std::vector<ViewReference> references;

@@ -31,12 +31,9 @@ Spectrum GroundRadiance(const reference::Reference& model, const glm::dvec3& gro
   const AtmosphereParameters& atmosphere = model.medium().atmosphere();
   double r = atmosphere.bottom_radius_m;
   double mu_s = std::clamp(glm::dot(glm::normalize(ground_point), sun), -1.0, 1.0);
-  Spectrum irradiance = model.ComputeDirectIrradiance(r, mu_s);
-  if (sampling.orders > 1) {
-    reference::Estimate sky = model.ComputeSkyIrradiance(r, mu_s, sampling.orders - 1, sampling.monte_carlo);
-    irradiance = Add(irradiance, sky.value);
-    *std_error = sky.std_error;
-  }
+  reference::Estimate sky = model.ComputeSkyIrradiance(r, mu_s, sampling.orders, sampling.monte_carlo);
+  Spectrum irradiance = Add(model.ComputeDirectIrradiance(r, mu_s), sky.value);
+  *std_error = sky.std_error;
   Spectrum radiance;
   for (int c = 0; c < 3; ++c) {
     radiance[c] = atmosphere.ground_albedo[c] / std::numbers::pi * irradiance[c];

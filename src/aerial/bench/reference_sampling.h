@@ -3,10 +3,10 @@
 // rendered view. Each pixel's ray is rebuilt exactly as the composite shaders build it
 // (shaders/include/frame.glsl: ViewRayFromScreen, GetCameraRayParameters), from the frame's own
 // uniforms (Renderer::frame_uniforms), in double precision. What each pixel is compared with:
-//   sky pixels (no geometry): the sky radiance along the whole view ray, orders 1..N with N the
-//     tables' orders: L = S. Where the ray meets the bare planet the renderer adds the ground's
-//     Lambertian reflection, so the reference adds T albedo / pi (E_sun + E_sky) at the ground
-//     point, E_sky of orders 1..N-1 as the tables hold it (Bruneton 2008, Algorithm 4.1).
+//   sky pixels (no geometry): the sky radiance along the whole view ray, of the orders the tables
+//     stand for (PrecomputeOptions::RepresentedOrders): L = S. Where the ray meets the bare
+//     planet the renderer adds the ground's Lambertian reflection, so the reference adds
+//     T albedo / pi (E_sun + E_sky) at the ground point, E_sky of the same orders.
 //   opaque pixels: aerial perspective over the segment to the surface, L = L_surface T + S, with
 //     the renderer's own L_surface (Renderer::ReadSurface), so only aerial perspective differs.
 // Pixels that see the sun disc are left out: the disc is not a scattering quantity.
@@ -35,7 +35,7 @@ struct ReferencePixel {
 
 struct ReferenceSampling {
   int columns = 16, rows = 9;
-  int orders = 4;
+  int orders = 4;  // or reference::kAllOrders
   reference::MonteCarloOptions monte_carlo;
 };
 

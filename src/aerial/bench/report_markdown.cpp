@@ -5,6 +5,7 @@
 
 #include "aerial/bench/results_files.h"
 #include "aerial/bench/variant_comparison.h"
+#include "aerial/reference/monte_carlo.h"
 
 namespace aerial::bench {
 namespace {
@@ -164,10 +165,13 @@ void AccuracySection(std::ostringstream& md, const BenchResults& b) {
      << "- **Against the CPU reference**: the double-precision reference (src/aerial/reference) on a "
      << p.reference_columns << "x" << p.reference_rows
      << " grid of pixel centers per view, each pixel's ray rebuilt from the frame's uniforms as the "
-        "frame's shaders build it. Sky pixels: the sky radiance along the whole ray, orders 1.."
-     << (b.results.empty() ? 4 : b.results[0].precompute.options.orders)
-     << " (the tables' orders); where the ray meets the bare planet, plus T albedo/pi (E_sun + E_sky) of "
-        "the ground, E_sky of one order less, as the tables hold it. Opaque pixels: aerial perspective, "
+        "frame's shaders build it. Sky pixels: the sky radiance along the whole ray, of the orders the "
+        "tables stand for ("
+     << (b.results.empty() || b.results[0].precompute.options.RepresentedOrders() == reference::kAllOrders
+             ? std::string("all orders: the reference's paths end by Russian roulette")
+             : "orders 1.." + std::to_string(b.results[0].precompute.options.orders))
+     << "); where the ray meets the bare planet, plus T albedo/pi (E_sun + E_sky) of "
+        "the ground, E_sky of the same orders. Opaque pixels: aerial perspective, "
         "L = L_surface T + inscatter over the segment to the surface, with the renderer's own L_surface, so "
         "only aerial perspective is compared. Pixels that see the sun disc are left out. Orders >= 2 are "
         "Monte Carlo with "

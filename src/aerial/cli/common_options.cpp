@@ -10,6 +10,10 @@ void TableOptions::AddTo(CLI::App& command) {
   command.add_option("--lut", lut, "Scattering table variant: 4d (r, mu, mu_s, nu) or 3d (nu dropped)")
       ->check(CLI::IsMember({"4d", "3d"}));
   command.add_option("--orders", orders, "Scattering orders to precompute (1-16)")->check(CLI::Range(1, 16));
+  command.add_option("--series-tail", series_tail,
+                     "After the last order, add the orders beyond it as a geometric series: on (default; "
+                     "the whole series) or off (exactly orders 1..N)")
+      ->check(CLI::IsMember({"on", "off"}));
   command.add_flag("--half", half_precision, "Store the scattering tables as 16-bit floats");
   command.add_flag("--small-tables", small_tables, "Quarter-resolution tables (tests, quick looks)");
   command.add_option("--transmittance-size", transmittance_size, "Transmittance table MU,R (default 256,64)")
@@ -47,6 +51,7 @@ PrecomputeOptions TableOptions::MakePrecomputeOptions() const {
                               scattering_size[3]);
   }
   options.orders = orders;
+  options.close_series = series_tail == "on";
   options.precision = half_precision ? TablePrecision::kFloat16 : TablePrecision::kFloat32;
   options.Validate();
   return options;

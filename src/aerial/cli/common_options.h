@@ -18,6 +18,7 @@ struct TableOptions {
   std::filesystem::path atmosphere_file;
   std::string lut = "4d";
   int orders = 4;
+  std::string series_tail = "on";
   bool half_precision = false;
   bool small_tables = false;
   std::vector<int> transmittance_size;  // mu, r

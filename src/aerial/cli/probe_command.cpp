@@ -33,9 +33,7 @@ ProbeResult ProbeWithReference(const AtmosphereParameters& atmosphere, const Ray
   result.sky_radiance = model.ComputeRadiance(ray.r, ray.mu, ray.mu_s, ray.nu, orders).value;
   result.transmittance = model.TransmittanceToBoundary(ray.r, ray.mu);
   result.sun_irradiance = model.ComputeDirectIrradiance(ray.r, ray.mu_s);
-  // The tables hold the sky irradiance of orders 1..N-1 (Bruneton 2008 Algorithm 4.1).
-  if (orders > 1)
-    result.sky_irradiance = model.ComputeSkyIrradiance(ray.r, ray.mu_s, orders - 1).value;
+  result.sky_irradiance = model.ComputeSkyIrradiance(ray.r, ray.mu_s, orders).value;
   double alpha = atmosphere.sun_angular_radius_rad;
   for (int i = 0; i < 3; ++i)
     result.solar_radiance[i] = atmosphere.solar_irradiance[i] / (M_PI * alpha * alpha);
@@ -57,7 +55,7 @@ void RunProbe(const ProbeOptions& options) {
 
   ProbeResult result;
   if (options.reference) {
-    result = ProbeWithReference(atmosphere, ray, options.distance_m, precompute.orders);
+    result = ProbeWithReference(atmosphere, ray, options.distance_m, precompute.RepresentedOrders());
   } else {
     auto context = options.tables.MakeContext();
     LoadedTables loaded =

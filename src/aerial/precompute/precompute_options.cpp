@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <string>
 
 #include "aerial/core/error.h"
@@ -106,8 +107,12 @@ void PrecomputeOptions::Validate() const {
   CheckRange("density directions", (s.density_theta_up + s.density_theta_down) * s.density_phi, 1, 1024);
 }
 
+int PrecomputeOptions::RepresentedOrders() const {
+  return close_series && orders >= 3 ? std::numeric_limits<int>::max() : orders;
+}
+
 uint64_t PrecomputeOptions::Hash() const {
-  const int values[] = {int(variant), int(precision), orders,
+  const int values[] = {kTableLayout, int(variant), int(precision), orders, int(close_series),
                         resolution.transmittance_mu, resolution.transmittance_r,
                         resolution.irradiance_mu_s, resolution.irradiance_r, resolution.scattering_r,
                         resolution.scattering_mu, resolution.scattering_mu_s, resolution.scattering_nu,
@@ -127,7 +132,8 @@ uint64_t PrecomputeOptions::Hash() const {
 std::string PrecomputeOptions::Describe() const {
   const TableResolution& r = resolution;
   return ToString(variant) + (precision == TablePrecision::kFloat32 ? " float32" : " float16") +
-         ", " + std::to_string(orders) + " orders, transmittance " +
+         ", " + std::to_string(orders) + " orders" + (close_series && orders >= 3 ? " + series tail" : "") +
+         ", transmittance " +
          std::to_string(r.transmittance_mu) + "x" + std::to_string(r.transmittance_r) +
          ", irradiance " + std::to_string(r.irradiance_mu_s) + "x" + std::to_string(r.irradiance_r) +
          ", scattering R" + std::to_string(r.scattering_r) + " MU" + std::to_string(r.scattering_mu) +

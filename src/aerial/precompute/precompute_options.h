@@ -46,10 +46,17 @@ struct SampleCounts {
   int density_nu = 8;
 };
 
+// What the tables' texels mean (their coordinate mappings, the orders the irradiance holds):
+// part of the cache key, raised whenever a change makes tables computed before it wrong.
+inline constexpr int kTableLayout = 2;
+
 struct PrecomputeOptions {
   LutVariant variant = LutVariant::k4D;
   TablePrecision precision = TablePrecision::kFloat32;
   int orders = 4;
+  // After the last order, add the orders beyond it as a geometric series per texel (the tables then
+  // stand for the whole series); off: exactly orders 1..N. Needs orders >= 3.
+  bool close_series = true;
   TableResolution resolution;
   SampleCounts samples;
 
@@ -57,6 +64,10 @@ struct PrecomputeOptions {
   static PrecomputeOptions Default(LutVariant variant = LutVariant::k4D);
   // Small tables for quick tests; same shape, roughly 1/16 of the texels.
   static PrecomputeOptions Small(LutVariant variant = LutVariant::k4D);
+
+  // The scattering orders the tables stand for: 1..orders, or the whole series (INT_MAX, which is
+  // reference::kAllOrders) when it is closed.
+  int RepresentedOrders() const;
 
   // Sets the scattering tables' size; the per-order density and multiple scattering tables follow
   // (same r, mu_s and nu, half the mu: see SampleCounts). Validate() checks the result.

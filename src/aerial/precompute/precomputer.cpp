@@ -1,5 +1,6 @@
 #include "aerial/precompute/precomputer.h"
 
+#include <array>
 #include <optional>
 
 #include "aerial/core/progress.h"
@@ -12,6 +13,13 @@ using vk::kSampled;
 using vk::kStorageBuffer;
 using vk::kStorageImage;
 using vk::kUniform;
+
+// Push constants of the passes that add an order to a final table: the order, and whether it is
+// the last one and the orders beyond are to be added as a geometric series.
+struct SeriesStep {
+  int order;
+  int close_series;
+};
 
 // The passes' pipelines; slot order = binding order in each shader.
 struct Pipelines {
@@ -26,22 +34,26 @@ struct Pipelines {
         scattering_density(c, "precompute/scattering_density.comp",
                            {kUniform, kStorageBuffer, kStorageBuffer, kStorageImage}),
         indirect_irradiance(c, "precompute/indirect_irradiance.comp",
-                            {kUniform, kSampled, kSampled, kSampled, kStorageImage, kStorageImage},
-                            sizeof(int)),
+                            {kUniform, kSampled, kSampled, kSampled, kSampled, kStorageImage, kStorageImage},
+                            sizeof(SeriesStep)),
         multiple_scattering(c, "precompute/multiple_scattering.comp",
                             {kUniform, kSampled, kSampled, kStorageImage}),
         accumulate(c, "precompute/accumulate_multiple_scattering.comp",
-                   {kUniform, kSampled, kStorageImage}) {}
+                   {kUniform, kSampled, kSampled, kStorageImage}, sizeof(int)) {}
   vk::ComputePipeline transmittance, direct_irradiance, single_scattering, incident_radiance,
       scattering_density, indirect_irradiance, multiple_scattering, accumulate;
 };
 
-// Intermediate tables that only live during the precomputation.
+// Intermediate tables that only live during the precomputation. The per-order ground irradiance
+// and multiple scattering are kept for two consecutive orders (index: order % 2), so that the last
+// order can be compared with the one before it.
 struct Scratch {
   Scratch(const vk::Context& c, const AtmosphereTables& tables)
-      : delta_irradiance(c, {.extent = tables.irradiance().extent()}),
+      : delta_irradiance{vk::Image(c, {.extent = tables.irradiance().extent()}),
+                         vk::Image(c, {.extent = tables.irradiance().extent()})},
         delta_rayleigh(c, {.extent = tables.rayleigh().extent()}),
-        delta_multiple(c, {.extent = DensityExtent(tables)}),
+        delta_multiple{vk::Image(c, {.extent = DensityExtent(tables)}),
+                       vk::Image(c, {.extent = DensityExtent(tables)})},
         density(c, {.extent = DensityExtent(tables)}),
         incident_radiance(c, {.size = IncidentBytes(tables), .usage = ::vk::BufferUsageFlagBits::eStorageBuffer}),
         directions(c, {.size = DirectionBytes(tables), .usage = ::vk::BufferUsageFlagBits::eStorageBuffer}) {
@@ -68,7 +80,10 @@ struct Scratch {
     return DirectionCount(t) * t.options().samples.density_r * 16;
   }
 
-  vk::Image delta_irradiance, delta_rayleigh, delta_multiple, density;
+  std::array<vk::Image, 2> delta_irradiance;
+  vk::Image delta_rayleigh;
+  std::array<vk::Image, 2> delta_multiple;
+  vk::Image density;
   vk::Buffer incident_radiance, directions;
   std::optional<vk::Image> rayleigh_f32, mie_f32, multiple_f32;
 };
@@ -92,8 +107,9 @@ void BlitConvert(const ::vk::raii::CommandBuffer& cmd, const vk::Image& from, co
 }  // namespace
 
 int PrecomputePassCount(const PrecomputeOptions& options) {
-  // transmittance, direct irradiance, single scattering, then 5 passes per order >= 2.
-  return 3 + 5 * (options.orders - 1);
+  // transmittance, direct irradiance, single scattering, 5 passes per order >= 2, and the ground
+  // irradiance of the last order.
+  return 3 + 5 * (options.orders - 1) + 1;
 }
 
 std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progress) {
@@ -129,8 +145,9 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   };
 
   context.Submit([&](const auto& cmd) {
-    for (const vk::Image* image : {&scratch.delta_irradiance, &scratch.delta_rayleigh,
-                                   &scratch.delta_multiple, &scratch.density})
+    for (const vk::Image* image : {&scratch.delta_irradiance[0], &scratch.delta_irradiance[1],
+                                   &scratch.delta_rayleigh, &scratch.delta_multiple[0],
+                                   &scratch.delta_multiple[1], &scratch.density})
       image->InitializeLayout(cmd);
     if (scratch.rayleigh_f32) {
       scratch.rayleigh_f32->InitializeLayout(cmd);
@@ -149,12 +166,12 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
                                            vk::StorageImageSlot{&tables.transmittance()}},
                                      Extent2D(tables.transmittance()), {8, 8, 1});
   });
-  // Step 2: direct irradiance, the ground's order-0 light (delta E).
+  // Step 2: direct irradiance, the ground's order-0 light (delta E_0).
   run("direct irradiance", [&](const auto& cmd) {
     pipelines.direct_irradiance.Dispatch(
         cmd, {vk::UniformBufferSlot{&uniforms}, sampled(tables.transmittance()),
-              vk::StorageImageSlot{&scratch.delta_irradiance}},
-        Extent2D(scratch.delta_irradiance), {8, 8, 1});
+              vk::StorageImageSlot{&scratch.delta_irradiance[0]}},
+        Extent2D(scratch.delta_irradiance[0]), {8, 8, 1});
   });
   // Step 3: single scattering, Rayleigh (delta S_R, and the accumulated table) and Mie.
   run("single scattering", [&](const auto& cmd) {
@@ -164,16 +181,32 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
               vk::StorageImageSlot{&rayleigh}},
         scattering_threads, {8, 8, 1});
   });
+  // The ground irradiance of radiance order n: delta E_n, added to the irradiance table (with the
+  // orders beyond it when closing the series). delta E_0 is the direct irradiance.
+  const int orders = tables.options().orders;
+  const bool close_series = tables.options().close_series && orders >= 3;
+  auto add_ground_irradiance = [&](int radiance_order) {
+    SeriesStep step{radiance_order, close_series && radiance_order == orders};
+    run("indirect irradiance (order " + std::to_string(radiance_order) + ")", [&](const auto& cmd) {
+      pipelines.indirect_irradiance.Dispatch(
+          cmd, {vk::UniformBufferSlot{&uniforms}, sampled(scratch.delta_rayleigh), sampled(mie),
+                sampled(scratch.delta_multiple[radiance_order % 2]),
+                sampled(scratch.delta_irradiance[(radiance_order + 1) % 2]),
+                vk::StorageImageSlot{&scratch.delta_irradiance[radiance_order % 2]},
+                vk::StorageImageSlot{&tables.irradiance()}},
+          Extent2D(tables.irradiance()), {8, 8, 1}, &step);
+    });
+  };
   // Step 4: for each order n >= 2, the scattering density J_n (from the order n-1 radiance and
-  // the order n-2 ground irradiance), the ground irradiance of order n-1, and the order n
-  // scattering S_n (at the density resolution), then added to the Rayleigh table.
-  for (int order = 2; order <= tables.options().orders; ++order) {
+  // the ground irradiance of order n-2), the ground irradiance of order n-1, and the order n
+  // scattering S_n (at the density resolution), then added to the final table.
+  for (int order = 2; order <= orders; ++order) {
     std::string suffix = " (order " + std::to_string(order) + ")";
     run("incident radiance" + suffix, [&](const auto& cmd) {
       pipelines.incident_radiance.Dispatch(
           cmd, {vk::UniformBufferSlot{&uniforms}, sampled(tables.transmittance()),
-                sampled(scratch.delta_rayleigh), sampled(mie), sampled(scratch.delta_multiple),
-                sampled(scratch.delta_irradiance), vk::StorageBufferSlot{&scratch.incident_radiance},
+                sampled(scratch.delta_rayleigh), sampled(mie), sampled(scratch.delta_multiple[(order - 1) % 2]),
+                sampled(scratch.delta_irradiance[order % 2]), vk::StorageBufferSlot{&scratch.incident_radiance},
                 vk::StorageBufferSlot{&scratch.directions}},
           {uint32_t(Scratch::DirectionCount(tables)), uint32_t(samples.density_mu_s),
            uint32_t(samples.density_r)},
@@ -185,26 +218,24 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
                 vk::StorageBufferSlot{&scratch.directions}, vk::StorageImageSlot{&scratch.density}},
           {density_threads.height, density_threads.width, density_threads.depth}, {64, 1, 1});
     });
-    int radiance_order = order - 1;
-    run("indirect irradiance" + suffix, [&](const auto& cmd) {
-      pipelines.indirect_irradiance.Dispatch(
-          cmd, {vk::UniformBufferSlot{&uniforms}, sampled(scratch.delta_rayleigh), sampled(mie),
-                sampled(scratch.delta_multiple), vk::StorageImageSlot{&scratch.delta_irradiance},
-                vk::StorageImageSlot{&tables.irradiance()}},
-          Extent2D(tables.irradiance()), {8, 8, 1}, &radiance_order);
-    });
+    add_ground_irradiance(order - 1);
     run("multiple scattering" + suffix, [&](const auto& cmd) {
       pipelines.multiple_scattering.Dispatch(
           cmd, {vk::UniformBufferSlot{&uniforms}, sampled(tables.transmittance()),
-                sampled(scratch.density), vk::StorageImageSlot{&scratch.delta_multiple}},
+                sampled(scratch.density), vk::StorageImageSlot{&scratch.delta_multiple[order % 2]}},
           density_threads, {8, 8, 1});
     });
+    int last = close_series && order == orders;
     run("accumulate" + suffix, [&](const auto& cmd) {
-      pipelines.accumulate.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, sampled(scratch.delta_multiple),
+      pipelines.accumulate.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, sampled(scratch.delta_multiple[order % 2]),
+                                          sampled(scratch.delta_multiple[(order - 1) % 2]),
                                           vk::StorageImageSlot{&multiple_accumulator}},
-                                    scattering_threads, {8, 8, 1});
+                                    scattering_threads, {8, 8, 1}, &last);
     });
   }
+  // Step 5: the ground irradiance of the last order, so that the irradiance table holds the same
+  // orders as the radiance (Bruneton 2008's Algorithm 4.1 stops at N-1).
+  add_ground_irradiance(orders);
   if (scratch.rayleigh_f32) {
     context.Submit([&](const auto& cmd) {
       BlitConvert(cmd, *scratch.rayleigh_f32, tables.rayleigh());

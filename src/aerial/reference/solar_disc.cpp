@@ -14,13 +14,32 @@ namespace {
 // quadrature is skipped.
 constexpr double kCentreOnlyElevation = 20.0 * std::numbers::pi / 180.0;
 
-// (2 / pi) integral_0^{t_h} sin^2 t V T(mu) w(mu) dt over the visible part of the disc, with
-// w(mu) = 1 or max(mu, 0). 8-point Gauss-Legendre in t, on four pieces where the horizon cuts the
-// disc (the integrand is smooth in t; the horizon only moves the upper limit).
+// Below this elevation the transmittance varies fast enough across the disc to need 8 nodes.
+constexpr double kFewNodesElevation = 3.0 * std::numbers::pi / 180.0;
+
+// (2 / pi) integral_{-1}^{1} sqrt(1 - y^2) T(mu(y)) w(mu(y)) dy over a wholly visible disc, with
+// w(mu) = 1 or max(mu, 0), by the n-node Gauss-Chebyshev rule of the second kind (Abramowitz &
+// Stegun 25.4.40; exact for polynomials of degree 2n - 1 in y): y_i = cos(i pi / (n + 1)),
+// weights pi / (n + 1) sin^2(i pi / (n + 1)).
+template <typename Node>
+void ForEachChebyshevNode(int n, Node&& node) {
+  for (int i = 1; i <= n; ++i) {
+    double angle = i * std::numbers::pi / (n + 1);
+    node(std::cos(angle), std::numbers::pi / (n + 1) * std::sin(angle) * std::sin(angle));
+  }
+}
+
+// The disc average. Wholly visible: Gauss-Chebyshev, 3 nodes above kFewNodesElevation and 8 below.
+// Cut by the horizon: with y = cos t, (2 / pi) integral_0^{t_h} sin^2 t T(mu) w(mu) dt, t_h the
+// horizon's t, by 4 x 8-node Gauss-Legendre (the integrand is smooth in t; the horizon only moves
+// the upper limit). solar_disc_test bounds each case against a brute-force integral.
 Spectrum DiscAverage(const Medium& medium, Accuracy accuracy, double r, double mu_s, bool cosine) {
   const double alpha = medium.atmosphere().sun_angular_radius_rad;
   const double theta_s = std::acos(ClampCosine(mu_s));
-  const double theta_horizon = std::acos(CosHorizon(r, medium.bottom_radius()));
+  // Where the disc is cut off: the planet's horizon, and for a horizontal surface also its plane
+  // (max(mu, 0) has a kink there).
+  double theta_horizon = std::acos(CosHorizon(r, medium.bottom_radius()));
+  if (cosine) theta_horizon = std::min(theta_horizon, std::numbers::pi / 2.0);
   if (theta_horizon - theta_s > kCentreOnlyElevation) {
     Spectrum t = ComputeTransmittance(medium, accuracy, r, mu_s,
                                       DistanceToOuterSphere(r, mu_s, medium.top_radius()));
@@ -32,17 +51,24 @@ Spectrum DiscAverage(const Medium& medium, Accuracy accuracy, double r, double m
   if (y_horizon >= 1.0) return {};
   const double t_horizon = std::acos(std::max(y_horizon, -1.0));
   Spectrum sum{};
-  const int pieces = y_horizon > -1.0 ? 4 : 1;
-  for (int p = 0; p < pieces; ++p) {
-    ForEachGaussLegendreNode(kGaussLegendre8X, kGaussLegendre8W, t_horizon * p / pieces,
-                             t_horizon * (p + 1) / pieces, [&](double t, double weight) {
-      double mu = std::cos(theta_s - alpha * std::cos(t));
-      double w = std::sin(t) * std::sin(t) * weight * (cosine ? std::max(mu, 0.0) : 1.0);
-      if (w == 0.0) return;
-      Spectrum transmittance = ComputeTransmittance(medium, accuracy, r, mu,
-                                                    DistanceToOuterSphere(r, mu, medium.top_radius()));
-      for (int c = 0; c < 3; ++c) sum[c] += w * transmittance[c];
-    });
+  // The disc point at y, with quadrature weight `weight` for sqrt(1 - y^2) dy.
+  auto add_point = [&](double y, double weight) {
+    double mu = std::cos(theta_s - alpha * y);
+    double w = weight * (cosine ? std::max(mu, 0.0) : 1.0);
+    Spectrum transmittance =
+        ComputeTransmittance(medium, accuracy, r, mu, DistanceToOuterSphere(r, mu, medium.top_radius()));
+    for (int c = 0; c < 3; ++c) sum[c] += w * transmittance[c];
+  };
+  if (y_horizon <= -1.0) {
+    ForEachChebyshevNode(theta_horizon - theta_s > kFewNodesElevation ? 3 : 8, add_point);
+  } else {
+    const int pieces = 4;
+    for (int p = 0; p < pieces; ++p) {
+      ForEachGaussLegendreNode(kGaussLegendre8X, kGaussLegendre8W, t_horizon * p / pieces,
+                               t_horizon * (p + 1) / pieces, [&](double t, double weight) {
+        add_point(std::cos(t), weight * std::sin(t) * std::sin(t));
+      });
+    }
   }
   for (double& s : sum) s *= 2.0 / std::numbers::pi;
   return sum;

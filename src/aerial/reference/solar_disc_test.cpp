@@ -46,8 +46,9 @@ Spectrum BruteForceDiscAverage(const Medium& medium, double r, double mu_s, bool
 // The chord-quadrature disc average against the brute-force one, on the ground and at 10 km, with
 // the disc high, low, cut by the horizon and just hidden. Tolerance 2e-4 relative: the flat-disc
 // chord density (O(alpha^2) = 2e-5), the brute force's horizon row (~1e-5) and the Monte Carlo
-// accuracy of the transmittance (1e-4, medium.h) of the brute force; plus 1e-12 absolute for a
-// disc that is all but hidden.
+// accuracy of the transmittance (1e-4, medium.h) of the brute force; plus 1e-9 absolute (of
+// averages that are ~0.1-1 for a high sun) for slivers of the disc that the brute force's grid
+// resolves coarsely, such as the 1e-8 left above the horizontal plane at 10 km.
 TEST(SolarDisc, AveragesMatchABruteForceIntegralOverTheDisc) {
   AtmosphereParameters a = AtmosphereParameters::Earth();
   Medium medium(a);
@@ -56,14 +57,14 @@ TEST(SolarDisc, AveragesMatchABruteForceIntegralOverTheDisc) {
     double r = a.bottom_radius_m + altitude;
     double mu_horizon = CosHorizon(r, a.bottom_radius_m);
     double theta_h = std::acos(mu_horizon);
-    for (double offset_in_radii : {200.0, 20.0, 1.5, 0.5, 0.0, -0.5}) {
+    for (double offset_in_radii : {200.0, 76.0, 20.0, 11.0, 1.5, 0.5, 0.0, -0.5}) {
       double mu_s = std::cos(theta_h - offset_in_radii * alpha);
       for (bool cosine : {false, true}) {
         Spectrum expected = BruteForceDiscAverage(medium, r, mu_s, cosine);
         Spectrum actual = cosine ? SunDiscHorizontalIrradianceFactor(medium, Accuracy::kReference, r, mu_s)
                                  : SunDiscTransmittance(medium, Accuracy::kReference, r, mu_s);
         for (int c = 0; c < 3; ++c)
-          EXPECT_NEAR(actual[c], expected[c], 2e-4 * expected[c] + 1e-12)
+          EXPECT_NEAR(actual[c], expected[c], 2e-4 * expected[c] + 1e-9)
               << "altitude " << altitude << ", disc centre " << offset_in_radii
               << " radii above the horizon, cosine " << cosine << ", channel " << c;
       }
