@@ -1,6 +1,7 @@
-// `aerial bench --quick` as users run it: the report's files and structure, sane numbers, and the
-// property the command exists to show (the 3D tables are smaller than the 4D ones), from one run
-// (about 45 s with the validation layers on).
+// `aerial bench --quick` as users run it: the report's files and structure, comparisons that cover
+// every pixel, and what the command exists to show, at the README's figures (the 3D tables are
+// smaller, close to the 4D ones in daylight and far from them at sunset), from one run (about 45 s
+// with the validation layers on).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -8,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -60,7 +62,17 @@ void CheckFilesAndStructure(const fs::path& dir, const nlohmann::json& results) 
   EXPECT_EQ(variants, (std::set<std::string>{"3d", "4d"}));
 }
 
-void CheckNumbersArePositiveAndFinite(const nlohmann::json& results) {
+// README, "Choosing 3D or 4D tables": --quick renders 320x180 images and samples the reference
+// at 8x5 pixels.
+constexpr int kImagePixels = 320 * 180;
+constexpr int kReferencePixels = 8 * 5;
+
+// Times are positive, errors finite, and each comparison covers all its pixels: those of the
+// image (sky and opaque), or, against the reference, the grid's but those that see the sun disc.
+void CheckNumbersAndCoverage(const nlohmann::json& results) {
+  std::map<std::string, int> sun_pixels;
+  for (const auto& reference : results["reference"])
+    sun_pixels[reference["view"].get<std::string>()] = reference["sun_pixels_left_out"].get<int>();
   for (const auto& entry : results["results"]) {
     for (const char* key : {"table_bytes", "precompute_ms", "frame_ms", "per_pixel_frame_ms",
                             "froxel_build_ms", "frame_wall_ms"}) {
@@ -69,33 +81,72 @@ void CheckNumbersArePositiveAndFinite(const nlohmann::json& results) {
           << entry["variant"] << " " << entry["tier"] << " " << key << " = " << v;
     }
     for (const auto& [view, comparisons] : entry["accuracy"].items())
-      for (const auto& [name, classes] : comparisons.items())
-        for (const auto& [pixels, e] : classes.items()) {
-          if (e["pixels"] == 0) continue;  // a class the view does not show
+      for (const auto& [name, classes] : comparisons.items()) {
+        std::string where = entry["variant"].get<std::string>() + " " + entry["tier"].get<std::string>() +
+                            " " + view + " " + name;
+        int pixels = 0;
+        for (const auto& [pixel_class, e] : classes.items()) {
+          pixels += e["pixels"].get<int>();
           double rmse = e["rel_rmse"].get<double>(), max = e["rel_max"].get<double>();
-          std::string where = view + " " + name + " " + pixels;
-          EXPECT_TRUE(std::isfinite(rmse) && std::isfinite(max)) << where;
-          EXPECT_GE(rmse, 0.0) << where;
-          EXPECT_GE(max, rmse) << where << ": the maximum bounds the RMS";
+          EXPECT_TRUE(std::isfinite(rmse) && std::isfinite(max) && rmse >= 0.0) << where << " " << pixel_class;
         }
+        bool against_reference = name.ends_with("_vs_reference");
+        ASSERT_TRUE(sun_pixels.count(view)) << view;
+        EXPECT_EQ(pixels, against_reference ? kReferencePixels - sun_pixels[view] : kImagePixels) << where;
+      }
   }
 }
 
-void CheckThreeDTablesAreSmallerAndAgreeAtNoon(const nlohmann::json& results) {
-  for (const auto& a : results["results"])
-    for (const auto& b : results["results"]) {
-      if (a["tier"] != b["tier"] || a["variant"] != "3d" || b["variant"] != "4d") continue;
-      // Same r, mu and mu_s, 1 nu slice instead of 8: the scattering tables are 8x smaller.
-      EXPECT_LT(a["table_bytes"].get<double>(), b["table_bytes"].get<double>()) << a["tier"];
-      // At noon the 3D assumption (the sun keeps its zenith angle along the ray) costs little:
-      // README "The 3D tables" measured at most 3.9% against 4D in daylight, at any view; the
-      // RMS over a view must stay below that.
-      EXPECT_LT(a["accuracy"]["noon"]["3d_vs_4d"]["sky"]["rel_rmse"].get<double>(), 0.039) << a["tier"];
-    }
+const nlohmann::json& Entry(const nlohmann::json& results, const std::string& variant, const std::string& tier) {
+  for (const auto& entry : results["results"])
+    if (entry["variant"] == variant && entry["tier"] == tier) return entry;
+  static const nlohmann::json kNone;
+  ADD_FAILURE() << "no " << variant << " entry for tier " << tier;
+  return kNone;
+}
+
+double MiB(const nlohmann::json& entry) { return entry["table_bytes"].get<double>() / (1 << 20); }
+
+// The figures the README states for the two variants, in both tiers of the quick run.
+void CheckThreeDAgainstFourD(const nlohmann::json& results) {
+  // README's table of speed and size, "small" rows (16x64x16 scattering, Small() otherwise):
+  // 4.07 and 0.82 MiB, to the printed 0.01 MiB.
+  EXPECT_NEAR(MiB(Entry(results, "4d", "small")), 4.07, 0.005);
+  EXPECT_NEAR(MiB(Entry(results, "3d", "small")), 0.82, 0.005);
+  for (const char* tier : {"tiny", "small"}) {
+    SCOPED_TRACE(tier);
+    const nlohmann::json& lut3d = Entry(results, "3d", tier);
+    // One nu slice instead of 8: the scattering tables are 8x smaller.
+    EXPECT_LT(lut3d["table_bytes"].get<double>(), Entry(results, "4d", tier)["table_bytes"].get<double>());
+    auto difference = [&](const char* view, const char* pixels) -> const nlohmann::json& {
+      return lut3d["accuracy"][view]["3d_vs_4d"][pixels];
+    };
+    // README, "Choosing 3D or 4D tables": in daylight (noon, afternoon, 30 km up) the 3D tables
+    // stay within 1% RMSE of the 4D ones (there measured with the default tables; the error is the
+    // 3D assumption's, which every tier shares). Not 0: they drop the nu axis, so equal frames
+    // would mean the bench compared a variant with itself.
+    for (const char* view : {"noon", "afternoon", "high-altitude"})
+      for (const char* pixels : {"sky", "opaque"}) {
+        double rmse = difference(view, pixels)["rel_rmse"].get<double>();
+        EXPECT_GT(rmse, 0.0) << view << " " << pixels;
+        EXPECT_LT(rmse, 0.01) << view << " " << pixels;
+      }
+    // README, "The 3D tables": at most 3.9% from the 4D sky in daylight (sun zenith <= 80
+    // degrees, cameras 0-30 km, views above the horizon): the largest sky pixel's error in the
+    // two daylight views from the ground.
+    for (const char* view : {"noon", "afternoon"})
+      EXPECT_LT(difference(view, "sky")["rel_max"].get<double>(), 0.039) << view;
+    // README: with the sun at or below the horizon the 3D tables lose the Earth's shadow along the
+    // view ray, 23% (sunset) and 77% (twilight) from the 4D sky. The loss is their
+    // parameterization's, at any resolution: it must stand ten times above the daylight 1%, or
+    // the bench no longer shows why 4D is chosen for sunsets.
+    for (const char* view : {"sunset", "twilight"})
+      EXPECT_GT(difference(view, "sky")["rel_rmse"].get<double>(), 0.10) << view;
+  }
 }
 
 // One run (a test process each would run it again) checked for three things.
-TEST(BenchQuick, ReportStructureSaneNumbersSmaller3dTables) {
+TEST(BenchQuick, ReportStructureCoverageAndReadmeFigures) {
   fs::path dir = fs::temp_directory_path() / ("aerial-bench-test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   CommandRun run = RunAerial("bench --quick --quiet --out " + dir.string());
@@ -106,12 +157,12 @@ TEST(BenchQuick, ReportStructureSaneNumbersSmaller3dTables) {
     CheckFilesAndStructure(dir, results);
   }
   {
-    SCOPED_TRACE("numbers");
-    CheckNumbersArePositiveAndFinite(results);
+    SCOPED_TRACE("numbers and coverage");
+    CheckNumbersAndCoverage(results);
   }
   {
     SCOPED_TRACE("3D against 4D");
-    CheckThreeDTablesAreSmallerAndAgreeAtNoon(results);
+    CheckThreeDAgainstFourD(results);
   }
   fs::remove_all(dir);
 }

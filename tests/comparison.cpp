@@ -45,4 +45,16 @@ std::string WorstError::Summary() const {
   return text + where_;
 }
 
+::testing::AssertionResult ComparedExactly(const WorstError& worst, int samples) {
+  if (worst.samples() == samples) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "compared " << worst.samples() << " samples, expected exactly "
+                                       << samples << " (" << worst.Summary() << ")";
+}
+
+::testing::AssertionResult ComparedAtLeast(const WorstError& worst, int samples) {
+  if (worst.samples() >= samples) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "compared " << worst.samples() << " samples, expected at least "
+                                       << samples << " (" << worst.Summary() << ")";
+}
+
 }  // namespace aerial::testing

@@ -1,5 +1,7 @@
 #pragma once
 // Helpers of the tables-vs-reference tests: a grid of views and the worst relative error over it.
+#include <gtest/gtest.h>
+
 #include <string>
 #include <vector>
 
@@ -34,5 +36,11 @@ class WorstError {
   std::string where_;
   int samples_ = 0;
 };
+
+// A worst error over no samples is 0 and passes any bound, so every comparison also checks how
+// many samples it compared (those at or above its floor): exactly, where the grid and the
+// expected values fix the count, or at least a minimum the caller justifies.
+::testing::AssertionResult ComparedExactly(const WorstError& worst, int samples);
+::testing::AssertionResult ComparedAtLeast(const WorstError& worst, int samples);
 
 }  // namespace aerial::testing

@@ -35,6 +35,9 @@ TEST_F(Lut3d, SingleScatteringMatchesReferenceOnVerticalRays) {
     rayleigh.Add(results[i].rayleigh, expected.rayleigh, Describe(views[i]));
     mie.Add(results[i].mie, expected.mie, Describe(views[i]));
   }
+  // Every view (2 altitudes x 4 suns) and channel: looking up in daylight, no value is near 1e-12.
+  EXPECT_TRUE(ComparedExactly(rayleigh, 2 * 4 * 3));
+  EXPECT_TRUE(ComparedExactly(mie, 2 * 4 * 3));
   std::printf("3d single rayleigh: %s\n3d single mie: %s\n", rayleigh.Summary().c_str(), mie.Summary().c_str());
   // 4D bounds for the same cameras: 0.5% on the ground; 2% at 10 km (r-slice spacing).
   EXPECT_LT(rayleigh.value(), 2e-2) << rayleigh.Summary();
@@ -53,6 +56,7 @@ TEST_F(Lut3d, FourOrderZenithSkyMatchesReference) {
     auto expected = reference.ComputeRadiance(ray.r, ray.mu, ray.mu_s, ray.nu, 4, INFINITY, {.paths_per_query = 16384});
     worst.Add(results[i].sky_radiance, expected.value, Describe(views[i]));
   }
+  EXPECT_TRUE(ComparedExactly(worst, 3 * 3));  // every sun and channel: daylight, far above 1e-12
   std::printf("3d 4-order zenith sky: %s\n", worst.Summary().c_str());
   EXPECT_LT(worst.value(), 2e-2) << worst.Summary();
 }
@@ -70,6 +74,8 @@ TEST_F(Lut3d, DaylightSkyWithinMeasuredBoundOf4d) {
   WorstError worst(1e-12);
   for (size_t i = 0; i < views.size(); ++i)
     worst.Add(results_3d[i].sky_radiance, results_4d[i].sky_radiance, Describe(views[i]));
+  // Every view (4 x 6 x 6 x 5) and channel: daylight skies, far above 1e-12.
+  EXPECT_TRUE(ComparedExactly(worst, 4 * 6 * 6 * 5 * 3));
   std::printf("3d vs 4d, daylight: %s\n", worst.Summary().c_str());
   EXPECT_LT(worst.value(), 0.05) << worst.Summary();
 }

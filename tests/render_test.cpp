@@ -4,14 +4,13 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 
-#include "aerial/image/image_writer.h"
 #include "aerial/probe/table_probe.h"
 #include "aerial/render/renderer.h"
 #include "aerial/scene/presets.h"
+#include "golden_image.h"
 #include "gpu_fixture.h"
 #include "image_compare.h"
 
@@ -117,24 +116,21 @@ TEST_F(Render, SunHaloIsCenteredOnTheSun) {
 
 // Small golden images of two presets, stored as EXR (tests/data/golden). The tolerance is 1%
 // relative RMSE: lavapipe is deterministic, so this leaves room for other drivers' rounding and
-// texture filtering while catching any change of the physics or the passes. Rebuild them with
-// AERIAL_UPDATE_GOLDEN=1 after an intended change, and say why in the commit. The goldens hold
-// the fixed terrain mesh: the level of detail's terrain is measured against that mesh on its own
-// (terrain_lod_render_test.cpp), so that a change of the passes and a change of the terrain
-// each show where they belong.
+// texture filtering while catching any change of the physics or the passes. After an intended
+// change, a run with AERIAL_UPDATE_GOLDEN=1 rewrites them and fails: review them, commit them
+// saying why, and run again without the variable. The goldens hold the fixed terrain mesh: the
+// level of detail's terrain is measured against that mesh on its own
+// (terrain_lod_render_test.cpp), so that a change of the passes and a change of the terrain each
+// show where they belong.
 TEST_F(Render, MatchesGoldenImages) {
   for (const char* preset : {"noon", "sunset"}) {
     const AtmosphereTables& tables = FullTables();
     Scene scene = BuildPreset(preset, tables.atmosphere().bottom_radius_m);
     Renderer renderer(tables, scene, {.width = 96, .height = 54, .terrain = TerrainMode::kStaticMesh});
     renderer.Render(scene);
-    ImageRgbF image = renderer.ReadOutput();
     std::filesystem::path golden =
         std::filesystem::path(AERIAL_SOURCE_DIR) / "tests/data/golden" / (std::string(preset) + ".exr");
-    if (std::getenv("AERIAL_UPDATE_GOLDEN")) WriteImage(golden, image, {});
-    double rmse = RelativeRmse(image, ReadExr(golden));
-    std::printf("%s against its golden image: relative RMSE %.4f%%\n", preset, 100 * rmse);
-    EXPECT_LT(rmse, 0.01) << preset;
+    EXPECT_TRUE(MatchesGolden(renderer.ReadOutput(), golden, 0.01));
   }
 }
 
