@@ -56,14 +56,35 @@ void GetRMuFromTransmittanceTextureUv(vec2 uv, out float r, out float mu) {
   mu = ClampCosine(mu);
 }
 
-// ---- Irradiance table: linear in mu_s, rho/H in r. ----
+// ---- The sun's zenith cosine on the scattering and irradiance tables' mu_s axes. ----
+// The Earth's shadow moves through the atmosphere as the sun goes down: from sun zenith 85 to
+// 108 degrees the sky changes by orders of magnitude per few degrees, while from 0 to 60 it
+// hardly changes. The axis follows Yusov 2013's arctangent mapping of mu_s (which centres it on
+// the horizon for mu_s >= -0.2), centred on MU_S_DENSEST with a width 1 / MU_S_SPREAD, over
+// [mu_s_min, 1].
+const float MU_S_DENSEST = -0.1;
+const float MU_S_SPREAD = 6.0;
+
+float GetUnitRangeFromMuS(float mu_s) {
+  float low = atan(MU_S_SPREAD * (atmosphere.mu_s_min - MU_S_DENSEST));
+  float high = atan(MU_S_SPREAD * (1.0 - MU_S_DENSEST));
+  return clamp((atan(MU_S_SPREAD * (mu_s - MU_S_DENSEST)) - low) / (high - low), 0.0, 1.0);
+}
+
+float GetMuSFromUnitRange(float x) {
+  float low = atan(MU_S_SPREAD * (atmosphere.mu_s_min - MU_S_DENSEST));
+  float high = atan(MU_S_SPREAD * (1.0 - MU_S_DENSEST));
+  return ClampCosine(MU_S_DENSEST + tan(low + x * (high - low)) / MU_S_SPREAD);
+}
+
+// ---- Irradiance table: the mu_s axis above, rho/H in r. ----
 // Bruneton 2017 maps r linearly; the sky irradiance changes fastest near the ground (Mie's 1.2 km
 // scale height), where a linear axis of 16 texels puts 4 km between the first two: interpolated at
 // 1 km the red irradiance was 7% high. rho = sqrt(r^2 - R^2), as on the scattering tables, puts
 // texels at 0, 0.27, 1.1, 2.4 km... for the same cost.
 vec2 GetIrradianceTextureUvFromRMuS(float r, float mu_s) {
   float x_r = sqrt(SquaredHorizonDistance(r)) / HorizonDistanceFromGround();
-  float x_mu_s = mu_s * 0.5 + 0.5;
+  float x_mu_s = GetUnitRangeFromMuS(mu_s);
   return vec2(GetTextureCoordFromUnitRange(x_mu_s, atmosphere.irradiance_size.x),
               GetTextureCoordFromUnitRange(x_r, atmosphere.irradiance_size.y));
 }
@@ -73,36 +94,18 @@ void GetRMuSFromIrradianceTextureUv(vec2 uv, out float r, out float mu_s) {
   float x_r = GetUnitRangeFromTextureCoord(uv.y, atmosphere.irradiance_size.y);
   float rho = x_r * HorizonDistanceFromGround();
   r = sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
-  mu_s = ClampCosine(2.0 * x_mu_s - 1.0);
+  mu_s = GetMuSFromUnitRange(x_mu_s);
 }
 
 // ---- Scattering tables: (u_nu, u_mu_s, u_mu, u_r) in [0,1]^4. ----
 // `size` is (r, mu, mu_s, nu): atmosphere.scattering_size for the final tables,
 // atmosphere.density_size for the scattering density and multiple scattering of one order.
-// mu_s is mapped through the distance to the top boundary from the ground, normalized so that
-// mu_s_min maps to 0; this spends more texels near the horizon where scattering changes fastest.
 float GetScatteringUMuS(ivec4 size, float mu_s) {
-  float H = HorizonDistanceFromGround();
-  float d_min = atmosphere.top_radius - atmosphere.bottom_radius;
-  float d_max = H;
-  float a = (DistanceToTopAtmosphereBoundary(atmosphere.bottom_radius, mu_s) - d_min) /
-            (d_max - d_min);
-  float D = DistanceToTopAtmosphereBoundary(atmosphere.bottom_radius, atmosphere.mu_s_min);
-  float A = (D - d_min) / (d_max - d_min);
-  return GetTextureCoordFromUnitRange(max(1.0 - a / A, 0.0) / (1.0 + a), size.z);
+  return GetTextureCoordFromUnitRange(GetUnitRangeFromMuS(mu_s), size.z);
 }
 
 float GetMuSFromScatteringUMuS(ivec4 size, float u_mu_s) {
-  float H = HorizonDistanceFromGround();
-  float x_mu_s = GetUnitRangeFromTextureCoord(u_mu_s, size.z);
-  float d_min = atmosphere.top_radius - atmosphere.bottom_radius;
-  float d_max = H;
-  float D = DistanceToTopAtmosphereBoundary(atmosphere.bottom_radius, atmosphere.mu_s_min);
-  float A = (D - d_min) / (d_max - d_min);
-  float a = (A - x_mu_s * A) / (1.0 + x_mu_s * A);
-  float d = d_min + min(a, A) * (d_max - d_min);
-  return d == 0.0 ? 1.0
-                  : ClampCosine((H * H - d * d) / (2.0 * atmosphere.bottom_radius * d));
+  return GetMuSFromUnitRange(GetUnitRangeFromTextureCoord(u_mu_s, size.z));
 }
 
 float GetScatteringUR(ivec4 size, float r) {

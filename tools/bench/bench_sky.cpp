@@ -1,0 +1,74 @@
+// aerial_bench_sky: the tables against the CPU reference with all orders, by region of sun zenith
+// angle and camera altitude, per wavelength (aerial/bench/sky_accuracy.h): the figures of the
+// README's "Accuracy against the physical sky". The reference takes minutes and is kept in
+// --reference-file, so that several table configurations (--scattering-size, --orders,
+// --series-tail ...) are compared against the same reference samples.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "aerial/bench/sky_accuracy.h"
+#include "aerial/cli/common_options.h"
+#include "aerial/core/atomic_file.h"
+#include "aerial/core/error.h"
+#include "aerial/precompute/table_store.h"
+#include "bench_main.h"
+
+namespace {
+
+struct BenchOptions {
+  aerial::cli::TableOptions tables;
+  std::string grid = "full";
+  int paths = 16384;
+  std::string reference_file;
+  std::string markdown_file;
+};
+
+void Bench(const BenchOptions& cli) {
+  aerial::AtmosphereParameters atmosphere = cli.tables.LoadAtmosphere();
+  aerial::PrecomputeOptions options = cli.tables.MakePrecomputeOptions();
+  if (!cli.markdown_file.empty()) aerial::CheckWritable(cli.markdown_file);
+  aerial::bench::SkyReference reference;
+  if (!cli.reference_file.empty() && std::filesystem::exists(cli.reference_file)) {
+    reference = aerial::bench::ReadSkyReference(cli.reference_file);
+    if (reference.orders != options.RepresentedOrders())
+      throw aerial::Error("--reference-file", cli.reference_file,
+                          "a reference of the orders these tables stand for (made with other --orders or --series-tail)");
+    std::fprintf(stderr, "reference: %zu samples from %s\n", reference.samples.size(), cli.reference_file.c_str());
+  } else {
+    aerial::bench::SkyGrid grid = cli.grid == "quick" ? aerial::bench::SkyGrid::Quick() : aerial::bench::SkyGrid::Full();
+    reference = aerial::bench::ComputeSkyReference(
+        atmosphere, grid, options.RepresentedOrders(), {.paths_per_query = cli.paths},
+        [](size_t done, size_t total) {
+          if (done % 100 == 0 || done == total) std::fprintf(stderr, "reference: %zu / %zu\n", done, total);
+        });
+    if (!cli.reference_file.empty()) aerial::bench::WriteSkyReference(reference, cli.reference_file);
+  }
+  auto context = cli.tables.MakeContext();
+  aerial::LoadedTables loaded = aerial::LoadOrPrecompute(*context, atmosphere, options, cli.tables.MakeStoreOptions());
+  auto regions = aerial::bench::CompareSkyWithTables(*loaded.tables, reference);
+  std::string table = aerial::bench::FormatSkyAccuracy(regions);
+  std::fprintf(stderr, "%s\n", aerial::bench::FormatWorstSamples(regions).c_str());
+  std::printf("tables: %s\nreference: %d paths per query, %s\n\n%s", options.Describe().c_str(),
+              reference.paths_per_query,
+              reference.orders == aerial::reference::kAllOrders ? "all orders" : ("orders 1.." + std::to_string(reference.orders)).c_str(),
+              table.c_str());
+  if (!cli.markdown_file.empty()) aerial::WriteFileAtomically(cli.markdown_file, table);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"aerial_bench_sky: the tables against the CPU reference with all orders, by region and wavelength"};
+  BenchOptions cli;
+  cli.tables.AddTo(app);
+  app.add_option("--grid", cli.grid, "Views: full (~7400 reference queries) or quick (the test's grid)")
+      ->check(CLI::IsMember({"full", "quick"}));
+  app.add_option("--paths", cli.paths, "Reference paths per query")->check(CLI::Range(512, 1 << 24));
+  app.add_option("--reference-file", cli.reference_file,
+                 "Reference samples: read if the file exists, else computed and written there (JSON)");
+  app.add_option("--markdown", cli.markdown_file, "Also write the table to this file");
+  return aerial::bench::ParseAndRun(app, argc, argv, "aerial_bench_sky", [&] { Bench(cli); });
+}
