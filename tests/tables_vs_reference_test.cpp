@@ -20,8 +20,6 @@ const std::vector<double> kAltitudes = {0.0, 10e3, 50e3};
 // 50 km the geometric horizon is 3.2 and 7.2 degrees below the horizontal), and down to the nadir.
 const std::vector<double> kViewZeniths = {0.0,  30.0,  60.0,  80.0,  85.0,  88.0, 89.5, 90.0,
                                           90.5, 92.0, 95.0, 100.0, 120.0, 150.0, 180.0};
-// Noon to the lowest sun elevation the tables cover (sun zenith 120 degrees).
-const std::vector<double> kSunZeniths = {0.0, 30.0, 60.0, 80.0, 88.0, 90.0, 92.0, 96.0, 100.0, 110.0, 120.0};
 const std::vector<double> kAzimuths = {0.0, 90.0, 180.0};
 
 std::vector<ProbeQuery> ToQueries(const std::vector<ViewAngles>& views, double distance_m = 0.0) {
@@ -61,19 +59,10 @@ TEST_F(TablesVsReference, TransmittanceWithinOneTenthPercent) {
   EXPECT_LT(grazing.value(), 1.5e-3) << grazing.Summary();
 }
 
-// Regions of the view grid: camera altitude times sun elevation. The targets hold in daylight;
-// near and below the horizon the tables' mu_s resolution (32 texels over [-0.5, 1]) cannot follow
-// the Earth's shadow, which moves across many texels per degree. With MU_S = 128 the twilight
-// error at (ground, sun zenith 92, view zenith 85) drops from 15% to 0.4%, which shows that it is
-// table resolution and not the integration. Those regions are pinned at their measured size so a
-// change in either direction is noticed.
-struct Region {
-  const char* name;
-  double altitude_m;
-  double min_sun_zenith_deg, max_sun_zenith_deg;
-};
+// Regions of the view grid: camera altitude times a band of sun zenith angles (issue 12's bands).
 std::string RegionName(const ViewAngles& v) {
-  const char* sun = v.sun_zenith_deg <= 80.0 ? "day" : v.sun_zenith_deg <= 90.0 ? "low sun" : "twilight";
+  double z = v.sun_zenith_deg;
+  const char* sun = z <= 60.0 ? "day" : z < 85.0 ? "afternoon" : z <= 95.0 ? "low sun" : "twilight";
   char text[64];
   std::snprintf(text, sizeof text, "%s, camera at %.0f km", sun, v.altitude_m / 1000.0);
   return text;
@@ -94,8 +83,12 @@ void ExpectRegionsWithin(const std::map<std::string, WorstError>& regions,
   }
 }
 
-TEST_F(TablesVsReference, SingleScatteringWithinHalfPercentInDaylight) {
-  auto views = ViewGrid(kAltitudes, kViewZeniths, kSunZeniths, kAzimuths);
+// Single scattering in daylight and in the afternoon (sun zenith 0-80), where its own error is
+// still visible in the total; near and below the horizon it crosses the edge of the Earth's
+// shadow, which moves across several mu_s texels per degree (70-120% on the ground, in values
+// 1e-2 to 1e-4 of the noon sky), and physical_sky_test holds the total there to issue 12's bands.
+TEST_F(TablesVsReference, SingleScatteringWithinTargetsInDaylight) {
+  auto views = ViewGrid(kAltitudes, kViewZeniths, {0.0, 30.0, 60.0, 80.0}, kAzimuths);
   auto results = ProbeTables(FullTables(/*orders=*/1), ToQueries(views));
   reference::Reference reference(AtmosphereParameters::Earth());
   // Floor: 1e-4 of the zenith-sun, zenith-view value at the ground, as for the total below.
@@ -111,90 +104,49 @@ TEST_F(TablesVsReference, SingleScatteringWithinHalfPercentInDaylight) {
     mie.try_emplace(region, 1e-4 * noon_single.mie[2])
         .first->second.Add(results[i].mie, expected.mie, Describe(views[i]));
   }
-  // Daylight: the 0.5% target on the ground (measured 0.34%). Cameras high above most of the
-  // medium see it through r slices 1.6 km (10 km) and 3.5 km (50 km) apart: measured 1.5%, bound
-  // 2%. Low sun (zenith 88-90) and twilight: measured worst relative errors (Rayleigh or Mie,
-  // whichever is larger) of 407%, 44%, 155% and 1522%, 358%, 637% at 0, 10 and 50 km, in values
-  // that are 1e-2 to 1e-4 of the noon sky; bounds are 1.3 times those.
+  // Day on the ground: the 0.5% target (measured 0.32% Rayleigh, 0.37% Mie). Cameras high above
+  // most of the medium see it through r slices 1.6 km (10 km) and 3.5 km (50 km) apart: the 2%
+  // target of the first issue (measured 1.52% Mie at 10 km, 1.51% Rayleigh at 50 km). The
+  // afternoon has no target of its own; 2%, between the daylight targets and the low sun's 3%
+  // (measured 1.10%, 1.48%, 1.52%).
   std::map<std::string, double> bounds = {
-      {"day, camera at 0 km", 5e-3},       {"day, camera at 10 km", 2e-2},
-      {"day, camera at 50 km", 2e-2},      {"low sun, camera at 0 km", 5.3},
-      {"low sun, camera at 10 km", 0.58},  {"low sun, camera at 50 km", 2.0},
-      {"twilight, camera at 0 km", 20.0},  {"twilight, camera at 10 km", 4.7},
-      {"twilight, camera at 50 km", 8.3}};
+      {"day, camera at 0 km", 5e-3},        {"day, camera at 10 km", 2e-2},
+      {"day, camera at 50 km", 2e-2},       {"afternoon, camera at 0 km", 2e-2},
+      {"afternoon, camera at 10 km", 2e-2}, {"afternoon, camera at 50 km", 2e-2}};
   ExpectRegionsWithin(rayleigh, bounds, "single rayleigh");
   ExpectRegionsWithin(mie, bounds, "single mie");
 }
 
-TEST_F(TablesVsReference, FourOrderSkyWithinOnePercentInDaylight) {
-  auto views = ViewGrid(kAltitudes, {0.0, 60.0, 85.0, 89.5, 95.0, 120.0}, {30.0, 80.0, 90.0, 95.0},
-                        {0.0, 180.0});
-  auto results = ProbeTables(FullTables(), ToQueries(views));
-  reference::Reference reference(AtmosphereParameters::Earth());
-  reference::MonteCarloOptions mc{.paths_per_query = 16384};
-  RayParameters noon = ToRayParameters({0.0, 0.0, 0.0, 0.0}, AtmosphereParameters::Earth());
-  double floor =
-      1e-4 * reference.ComputeRadiance(noon.r, noon.mu, noon.mu_s, noon.nu, 4, INFINITY, mc).value[2];
-  std::map<std::string, WorstError> regions;
-  for (size_t i = 0; i < views.size(); ++i) {
-    RayParameters ray = ToRayParameters(views[i], AtmosphereParameters::Earth());
-    auto expected = reference.ComputeRadiance(ray.r, ray.mu, ray.mu_s, ray.nu, 4, INFINITY, mc);
-    for (int c = 0; c < 3; ++c) {
-      char where[256];
-      std::snprintf(where, sizeof where, "%s channel %d (reference %.4g +- %.2g%%, tables %.4g)",
-                    Describe(views[i]).c_str(), c, expected.value[c],
-                    100 * expected.std_error[c] / std::max(expected.value[c], 1e-30),
-                    results[i].sky_radiance[c]);
-      regions.try_emplace(RegionName(views[i]), floor)
-          .first->second.Add(results[i].sky_radiance[c], expected.value[c], where);
-    }
-  }
-  // Measured worst errors (reference standard errors 0.1-0.5% in daylight): day 1.47%, 3.0%,
-  // 2.47% at 0, 10 and 50 km; low sun 10.6%, 7.5%, 3.6%; twilight 47%, 73%, 39% (values 1e-3 to
-  // 1e-4 of noon, reference noise up to 7%). The 1% target is missed in daylight by the
-  // multiple-scattering orders: they are tabulated at nu texels clamped to what (mu, mu_s) allow,
-  // and near mu_s = 1 the allowed nu range collapses, so interpolating across mu_s mixes values
-  // taken at different scattering angles (worst when looking down from altitude). Bounds are 1.3x
-  // the measurements.
-  std::map<std::string, double> bounds = {
-      {"day, camera at 0 km", 2e-2},       {"day, camera at 10 km", 4e-2},
-      {"day, camera at 50 km", 3.5e-2},    {"low sun, camera at 0 km", 0.14},
-      {"low sun, camera at 10 km", 0.10},  {"low sun, camera at 50 km", 0.05},
-      {"twilight, camera at 0 km", 0.61},  {"twilight, camera at 10 km", 0.95},
-      {"twilight, camera at 50 km", 0.50}};
-  ExpectRegionsWithin(regions, bounds, "4-order sky");
-}
-
-// Sky irradiance on a horizontal surface: the table holds orders 1..N-1 (Bruneton 2008,
-// Algorithm 4.1), so it is compared with the reference's orders 1..3. Measured 0.5% on the ground,
-// 0.9% at 1 and 5 km, 3.8% at 20 km (where it is 1/10 of the ground value and the rho axis has
-// 2.5 km between texels); bounds 1.5% up to 5 km, 5% at 20 km.
-TEST_F(TablesVsReference, SkyIrradianceWithinBounds) {
-  struct Case { double altitude_m, bound; };
+// The sun's direct irradiance on a horizontal surface as the disc sets, on the ground and at 10 km
+// (where the horizon is 3.2 degrees below the horizontal), against the reference's exact disc
+// (src/aerial/reference/solar_disc.h). The shaders average four taps over the disc's visible part
+// (GetSunDiscAverage); the centre's transmittance times the visible fraction, which they used
+// before, was 13-62% low with the centre on the horizon. Bound 1% wherever the irradiance is above
+// 1e-4 of the noon value: the transmittance table's own error near the horizon is 0.11%, and the
+// four taps' quadrature error on a disc cut by the horizon is the rest.
+TEST_F(TablesVsReference, DirectSunIrradianceFollowsTheDiscThroughSunset) {
   std::vector<ViewAngles> views;
-  std::vector<double> bounds;
-  for (Case c : {Case{0.0, 1.5e-2}, Case{1e3, 1.5e-2}, Case{5e3, 1.5e-2}, Case{20e3, 5e-2}}) {
-    for (double sun : {0.0, 45.0, 70.0}) {
-      views.push_back({c.altitude_m, 0.0, sun, 0.0});
-      bounds.push_back(c.bound);
-    }
-  }
+  for (double sun : {80.0, 88.0, 89.5, 89.9, 90.0, 90.1, 90.2}) views.push_back({0.0, 0.0, sun, 0.0});
+  for (double sun : {89.0, 89.9, 90.0, 90.1, 90.2, 90.25}) views.push_back({10e3, 0.0, sun, 0.0});
   auto results = ProbeTables(FullTables(), ToQueries(views));
   reference::Reference reference(AtmosphereParameters::Earth());
+  RayParameters noon = ToRayParameters({0.0, 0.0, 0.0, 0.0}, AtmosphereParameters::Earth());
+  WorstError worst(1e-4 * reference.ComputeDirectIrradiance(noon.r, noon.mu_s)[2]);
   for (size_t i = 0; i < views.size(); ++i) {
     RayParameters ray = ToRayParameters(views[i], AtmosphereParameters::Earth());
-    auto expected = reference.ComputeSkyIrradiance(ray.r, ray.mu_s, 3, {.paths_per_query = 8192});
-    WorstError worst(0.0);
-    worst.Add(results[i].sky_irradiance, expected.value, Describe(views[i]));
-    EXPECT_TRUE(ComparedExactly(worst, 3));  // floor 0: all three channels, unless one is NaN
-    EXPECT_LT(worst.value(), bounds[i]) << worst.Summary();
+    worst.Add(results[i].sun_irradiance, reference.ComputeDirectIrradiance(ray.r, ray.mu_s), Describe(views[i]));
   }
+  std::printf("direct sun irradiance through sunset: %s\n", worst.Summary().c_str());
+  // 13 views x 3 channels; the other 19 are the reddened, nearly set disc below the floor.
+  EXPECT_TRUE(ComparedExactly(worst, 20));
+  EXPECT_LT(worst.value(), 1e-2) << worst.Summary();
 }
 
 // Radiance and transmittance to a point at a known distance (the aerial perspective of an object):
-// S(x) - T(x, p) S(p) from the tables against the reference integrated over the segment. Measured
-// 0.5% on the ground, 1.7% for a horizontal segment 1 km up; bound 3% (the subtraction doubles the
-// table's interpolation error where S(p) is close to S(x)). Transmittance: 0.1%.
+// S(x) - T(x, p) S(p) from the tables against the reference with all orders, integrated over the
+// segment, in daylight (sun zenith <= 60) at 5 to 30 km. Bound 1.5%, issue 12's daylight target
+// above the ground (one camera is 1 km up; measured 1.22% there, on a horizontal segment, where
+// the subtraction doubles the table's interpolation error). Transmittance: 0.1%.
 TEST_F(TablesVsReference, RadianceToPointWithinBounds) {
   std::vector<ViewAngles> views = {{0.0, 60.0, 30.0, 0.0}, {0.0, 85.0, 60.0, 180.0},
                                    {1e3, 90.0, 45.0, 90.0}, {0.0, 80.0, 20.0, 0.0}};
@@ -207,8 +159,8 @@ TEST_F(TablesVsReference, RadianceToPointWithinBounds) {
   WorstError radiance(0.0), transmittance(0.0);
   for (size_t i = 0; i < views.size(); ++i) {
     const RayParameters& ray = queries[i].ray;
-    auto expected = reference.ComputeRadiance(ray.r, ray.mu, ray.mu_s, ray.nu, 4, distances[i],
-                                              {.paths_per_query = 16384});
+    auto expected = reference.ComputeRadiance(ray.r, ray.mu, ray.mu_s, ray.nu, reference::kAllOrders,
+                                              distances[i], {.paths_per_query = 16384});
     radiance.Add(results[i].radiance_to_point, expected.value, Describe(views[i]));
     transmittance.Add(results[i].transmittance_to_point,
                       reference.Transmittance(ray.r, ray.mu, distances[i]), Describe(views[i]));
@@ -217,7 +169,7 @@ TEST_F(TablesVsReference, RadianceToPointWithinBounds) {
   EXPECT_TRUE(ComparedExactly(transmittance, 4 * 3));
   std::printf("radiance to point: %s\ntransmittance to point: %s\n", radiance.Summary().c_str(),
               transmittance.Summary().c_str());
-  EXPECT_LT(radiance.value(), 3e-2) << radiance.Summary();
+  EXPECT_LT(radiance.value(), 1.5e-2) << radiance.Summary();
   EXPECT_LT(transmittance.value(), 1e-3) << transmittance.Summary();
 }
 

@@ -4,17 +4,12 @@
 #define AERIAL_IRRADIANCE_GLSL
 #include "scattering.glsl"
 
-// Direct irradiance on a horizontal surface. The cosine is averaged over the sun disc while it
-// crosses the horizon: 0 below -alpha, mu_s above alpha, (mu_s + alpha)^2 / (4 alpha) between
-// (Bruneton 2017 "ComputeDirectIrradiance").
+// Direct irradiance on a horizontal surface: the sun's disc above both the horizon and the
+// surface's plane, each part with its own transmittance and cosine (GetSunDiscAverage; this
+// replaces Bruneton 2017's average cosine (mu_s + alpha)^2 / (4 alpha) of "ComputeDirectIrradiance").
 vec3 ComputeDirectIrradiance(sampler2D transmittance_texture, float r, float mu_s) {
-  float alpha_s = atmosphere.sun_angular_radius;
-  float average_cosine_factor =
-      mu_s < -alpha_s ? 0.0
-                      : (mu_s > alpha_s ? mu_s : (mu_s + alpha_s) * (mu_s + alpha_s) / (4.0 * alpha_s));
   return atmosphere.solar_irradiance.rgb *
-         GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, mu_s) *
-         average_cosine_factor;
+         GetSunDiscAverage(transmittance_texture, r, mu_s, max(GetHorizonCosine(r), 0.0), true);
 }
 
 // Indirect irradiance of order `order`: the radiance of that order integrated over the upper

@@ -14,11 +14,11 @@
 namespace aerial::bench {
 namespace {
 
-constexpr int kFileVersion = 1;
+constexpr int kFileVersion = 2;
 constexpr double kFloorFraction = 1e-4;
 // The reference's noise goal per compared value, and how far the path count may grow to meet it.
-constexpr double kTargetRelativeStdError = 0.005;
-constexpr int kMaxPathsFactor = 64;
+constexpr double kTargetRelativeStdError = 0.01;
+constexpr int kMaxPathsFactor = 4;
 
 // One reference query: its quantity and view.
 struct Query {
@@ -153,10 +153,17 @@ SkyReference ComputeSkyReference(const AtmosphereParameters& atmosphere, const S
       if (noise <= kTargetRelativeStdError || more.paths_per_query >= kMaxPathsFactor * options.paths_per_query) break;
       more.paths_per_query *= 4;
     }
-    result.samples.push_back({q.quantity, q.band, q.view, e.value, e.std_error});
+    result.samples.push_back({q.quantity, q.band, q.view, e.value, e.std_error, more.paths_per_query});
     if (progress) progress(i + 1, queries.size());
   }
   return result;
+}
+
+reference::Estimate RecomputeSkySample(const AtmosphereParameters& atmosphere, const SkyReference& reference,
+                                       const SkySample& sample) {
+  reference::Reference model(atmosphere);
+  return Evaluate(model, atmosphere, sample.quantity, sample.view, reference.point_distance_m, reference.orders,
+                  {.paths_per_query = sample.paths});
 }
 
 void WriteSkyReference(const SkyReference& reference, const std::filesystem::path& path) {
@@ -170,9 +177,10 @@ void WriteSkyReference(const SkyReference& reference, const std::filesystem::pat
     j["samples"].push_back({{"quantity", int(s.quantity)}, {"band", s.band},
                             {"view", {s.view.altitude_m, s.view.view_zenith_deg, s.view.sun_zenith_deg,
                                       s.view.azimuth_deg}},
-                            {"value", ToJson(s.value)}, {"std_error", ToJson(s.std_error)}});
+                            {"value", ToJson(s.value)}, {"std_error", ToJson(s.std_error)},
+                            {"paths", s.paths}});
   }
-  WriteFileAtomically(path, j.dump(1));
+  WriteFileAtomically(path, j.dump());
 }
 
 SkyReference ReadSkyReference(const std::filesystem::path& path) {
@@ -191,7 +199,7 @@ SkyReference ReadSkyReference(const std::filesystem::path& path) {
       const nlohmann::json& v = s.at("view");
       r.samples.push_back({SkyQuantity(quantity), s.at("band").get<std::string>(),
                            {v.at(0).get<double>(), v.at(1).get<double>(), v.at(2).get<double>(), v.at(3).get<double>()},
-                           SpectrumFrom(s.at("value")), SpectrumFrom(s.at("std_error"))});
+                           SpectrumFrom(s.at("value")), SpectrumFrom(s.at("std_error")), s.at("paths").get<int>()});
     }
     return r;
   } catch (const nlohmann::json::exception& e) {

@@ -18,10 +18,10 @@ void TableOptions::AddTo(CLI::App& command) {
   command.add_flag("--small-tables", small_tables, "Quarter-resolution tables (tests, quick looks)");
   command.add_option("--transmittance-size", transmittance_size, "Transmittance table MU,R (default 256,64)")
       ->delimiter(',')->expected(2);
-  command.add_option("--irradiance-size", irradiance_size, "Irradiance table MU_S,R (default 64,16)")
+  command.add_option("--irradiance-size", irradiance_size, "Irradiance table MU_S,R (default 64,32)")
       ->delimiter(',')->expected(2);
   command.add_option("--scattering-size", scattering_size,
-                     "Scattering table R,MU,MU_S,NU (default 32,128,32,8; NU must be 1 with --lut 3d)")
+                     "Scattering table R,MU,MU_S,NU (default 32,128,40,8; NU must be 1 with --lut 3d)")
       ->delimiter(',')->expected(4);
   command.add_option("--cache-dir", cache_dir, "Table cache directory (default ~/.cache/aerial)");
   command.add_flag("--no-cache", no_cache, "Recompute the tables even when a cached copy exists");
