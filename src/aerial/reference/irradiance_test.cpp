@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "aerial/reference/geometry.h"
 #include "aerial/reference/optical_depth.h"
 #include "aerial/reference/phase_functions.h"
@@ -50,7 +52,7 @@ TEST(SkyIrradiance, OrderOneMatchesHemisphereIntegralOfSingleScattering) {
     return out;
   };
   Values<3> expected = IntegrateAdaptive<3>(radiance_times_mu, {0.0, 0.1, 1.0}, 1e-5);
-  OrderEstimates e = EstimateSkyIrradianceOrders(medium, r, mu_s, 1, {32768, 1, 0});
+  OrderEstimates e = EstimateSkyIrradianceOrders(medium, r, mu_s, 1.0, mu_s, 1, {32768, 1, 0});
   for (int c = 0; c < 3; ++c) {
     EXPECT_NEAR(e.orders[1].value[c], expected[c], 4.0 * e.orders[1].std_error[c] + 1e-4 * expected[c]) << c;
     EXPECT_LT(e.orders[1].std_error[c], 3e-3 * expected[c]);
@@ -61,12 +63,37 @@ TEST(SkyIrradiance, OrderOneMatchesHemisphereIntegralOfSingleScattering) {
 // previous beyond 4 standard errors (as for radiance, multiple_scattering_test.cpp).
 TEST(SkyIrradiance, OrdersArePositiveAndDecrease) {
   Medium medium(AtmosphereParameters::Earth());
-  OrderEstimates e = EstimateSkyIrradianceOrders(medium, medium.bottom_radius(), 0.7, 3, {4096, 1, 0});
+  OrderEstimates e = EstimateSkyIrradianceOrders(medium, medium.bottom_radius(), 0.7, 1.0, 0.7, 3, {4096, 1, 0});
   for (int c = 0; c < 3; ++c) {
     for (int k = 1; k <= 3; ++k) EXPECT_GT(e.orders[k].value[c], 0.0);
     for (int k = 2; k <= 3; ++k) {
       EXPECT_LT(e.orders[k].value[c] + 4.0 * e.orders[k].std_error[c],
                 e.orders[k - 1].value[c] - 4.0 * e.orders[k - 1].std_error[c]);
+    }
+  }
+}
+
+// A surface on the ground facing straight down sees only the ground beside it, through no air:
+// a Lambertian ground of albedo a lit by E_0 + E_sky has radiance a / pi (E_0 + E_sky), so the
+// downward irradiance is a (E_0 + E_sky), one order up: order 1 is a E_0, order k + 1 is a times
+// order k of the upward sky irradiance. Tolerance: 4 standard errors of both plus 1e-4 (the Monte
+// Carlo direct irradiance at the ground vertex, medium.h).
+TEST(SkyIrradiance, FacingDownOnTheGroundSeesTheLitGround) {
+  Medium medium(AtmosphereParameters::Earth());
+  const double R = medium.bottom_radius(), mu_s = 0.6;
+  const Spectrum& albedo = medium.atmosphere().ground_albedo;
+  OrderEstimates down = EstimateSkyIrradianceOrders(medium, R, mu_s, -1.0, -mu_s, 3, {8192, 1, 0});
+  OrderEstimates up = EstimateSkyIrradianceOrders(medium, R, mu_s, 1.0, mu_s, 2, {8192, 2, 0});
+  Spectrum direct = ComputeDirectIrradiance(medium, Accuracy::kReference, R, mu_s);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(down.orders[1].value[c], albedo[c] * direct[c],
+                4.0 * down.orders[1].std_error[c] + 1e-4 * albedo[c] * direct[c]) << c;
+    for (int k = 1; k <= 2; ++k) {
+      double expected = albedo[c] * up.orders[k].value[c];
+      EXPECT_NEAR(down.orders[k + 1].value[c], expected,
+                  4.0 * std::hypot(down.orders[k + 1].std_error[c], albedo[c] * up.orders[k].std_error[c]) +
+                      1e-4 * expected)
+          << "order " << k + 1 << ", channel " << c;
     }
   }
 }
