@@ -6,7 +6,8 @@
 //   sky pixels (no geometry): the sky radiance along the whole view ray, of the orders the tables
 //     stand for (PrecomputeOptions::RepresentedOrders): L = S. Where the ray meets the bare
 //     planet the renderer adds the ground's Lambertian reflection, so the reference adds
-//     T L_ground, the ground lit as lambertian_radiance.h lights a surface facing up.
+//     T albedo / pi (E_sun + E_sky) of the ground, lit as lambertian_radiance.h lights a surface
+//     facing up.
 //   opaque pixels: L = S + T L_surface over the segment to the surface, the surface lit by the
 //     reference itself (lambertian_radiance.h: sun and tilted-sky irradiance of the same orders, no
 //     shadows) at the point, normal and albedo the scene has there (scene_surface.h). The
