@@ -31,8 +31,8 @@ std::optional<LambertianSurface> SurfaceAtDepth(const Scene& scene, double plane
                              .albedo = ToSpectrum(hit->albedo)};
   if (!scene.terrain || (hit && hit->distance_m < depth_m)) return std::nullopt;
   glm::dvec3 point = camera + depth_m * ray;
-  if (std::fabs(HeightAboveTerrainM(point, planet_radius_m)) > terrain_tolerance_per_m * depth_m + terrain::kSkirtMinimumM)
-    return std::nullopt;
+  double terrain_tolerance = terrain_tolerance_per_m * depth_m + terrain::kSkirtMinimumM;
+  if (std::fabs(HeightAboveTerrainM(point, planet_radius_m)) > terrain_tolerance) return std::nullopt;
   glm::dvec3 sea_level = SeaLevelPoint(point, planet_radius_m);
   TerrainSurface surface = TerrainSurfaceAt(sea_level.x, sea_level.y, planet_radius_m);
   return LambertianSurface{.point = surface.point + planet_offset,
