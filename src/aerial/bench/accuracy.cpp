@@ -26,10 +26,9 @@ VariantImages Render(Renderer& froxel, Renderer& per_pixel, const Scene& scene) 
   return {froxel.ReadOutput(), per_pixel.ReadOutput(), per_pixel.ReadSurface()};
 }
 
-ClassErrors AgainstReference(const ViewReference& reference, const ImageRgbF& rendered,
-                             const ImageRgbF& surface) {
-  return {CompareSamples(ReferenceSamples(reference, rendered, surface, PixelClass::kSky)),
-          CompareSamples(ReferenceSamples(reference, rendered, surface, PixelClass::kOpaque))};
+ClassErrors AgainstReference(const ViewReference& reference, const ImageRgbF& rendered) {
+  return {CompareSamples(ReferenceSamples(reference, rendered, PixelClass::kSky)),
+          CompareSamples(ReferenceSamples(reference, rendered, PixelClass::kOpaque))};
 }
 
 ClassErrors AgainstImage(const ImageRgbF& actual, const ImageRgbF& expected, const ImageRgbF& surface) {
@@ -39,8 +38,8 @@ ClassErrors AgainstImage(const ImageRgbF& actual, const ImageRgbF& expected, con
 
 ViewAccuracy Measure(const std::string& view, const VariantImages& images, const ViewReference& reference) {
   return {.view = view,
-          .froxel_vs_reference = AgainstReference(reference, images.froxel, images.surface),
-          .per_pixel_vs_reference = AgainstReference(reference, images.per_pixel, images.surface),
+          .froxel_vs_reference = AgainstReference(reference, images.froxel),
+          .per_pixel_vs_reference = AgainstReference(reference, images.per_pixel),
           .froxel_vs_per_pixel = AgainstImage(images.froxel, images.per_pixel, images.surface)};
 }
 
@@ -56,17 +55,18 @@ std::vector<ViewReference> SampleViews(const AtmosphereTables& tables, Scene& sc
                                        const std::function<void()>& on_pixel) {
   const AtmosphereParameters& atmosphere = tables.atmosphere();
   reference::Reference model(atmosphere);
+  std::unique_ptr<Renderer> renderer = ImageRenderer(tables, scene, plan, AerialMode::kFroxel);
   ReferenceSampling sampling{.columns = plan.reference_columns,
                              .rows = plan.reference_rows,
                              .orders = tables.options().RepresentedOrders(),
-                             .monte_carlo = {.paths_per_query = plan.reference_paths}};
-  std::unique_ptr<Renderer> renderer = ImageRenderer(tables, scene, plan, AerialMode::kFroxel);
+                             .monte_carlo = {.paths_per_query = plan.reference_paths},
+                             .terrain_error_px = renderer->options().terrain_error_px};
   std::vector<ViewReference> references;
   for (const std::string& view : plan.views) {
     ApplyPresetView(scene, view, atmosphere.bottom_radius_m);
     renderer->Render(scene);
     references.push_back(
-        SampleReference(model, renderer->frame_uniforms(), renderer->ReadSurface(), sampling, on_pixel));
+        SampleReference(model, scene, renderer->frame_uniforms(), renderer->ReadSurface(), sampling, on_pixel));
   }
   return references;
 }

@@ -1,10 +1,10 @@
 #pragma once
 // Accuracy of one table tier over the plan's views. The views are rendered without the scene's
-// transparent meshes, so every pixel is sky or an opaque surface whose aerial perspective the
-// reference can compute. For each variant: both paths against the CPU reference (at the sampled
-// pixels, reference_sampling.h) and the froxel path against the per-pixel path (every pixel);
-// for the 3D tables also 3D against 4D on the per-pixel path (every pixel), where the difference
-// is the tables' alone.
+// transparent meshes, so every pixel is sky or an opaque surface whose lighting and aerial
+// perspective the reference can compute. For each variant: both paths against the CPU reference
+// (at the sampled pixels, reference_sampling.h) and the froxel path against the per-pixel path
+// (every pixel); for the 3D tables also 3D against 4D on the per-pixel path (every pixel), where
+// the difference is the tables' alone.
 #include <functional>
 #include <vector>
 

@@ -42,6 +42,7 @@ struct VariantResult {
 struct ReferenceSummary {
   std::string view;
   int sky_pixels = 0, opaque_pixels = 0, sun_pixels = 0;
+  int unmatched_pixels = 0;  // opaque pixels where the scene has no surface at the renderer's depth
   double median_relative_std_error = 0.0;  // Monte Carlo noise of the reference
 };
 

@@ -20,6 +20,7 @@ int ProgressSteps(const BenchPlan& p) {
 ReferenceSummary SummarizeReference(const std::string& view, const ViewReference& reference) {
   ReferenceSummary summary{.view = view,
                            .sun_pixels = reference.sun_pixels,
+                           .unmatched_pixels = reference.unmatched_pixels,
                            .median_relative_std_error = reference.median_relative_std_error};
   for (const ReferencePixel& p : reference.pixels) ++(p.sky ? summary.sky_pixels : summary.opaque_pixels);
   return summary;

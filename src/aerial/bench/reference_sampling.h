@@ -6,10 +6,15 @@
 //   sky pixels (no geometry): the sky radiance along the whole view ray, of the orders the tables
 //     stand for (PrecomputeOptions::RepresentedOrders): L = S. Where the ray meets the bare
 //     planet the renderer adds the ground's Lambertian reflection, so the reference adds
-//     T albedo / pi (E_sun + E_sky) at the ground point, E_sky of the same orders.
-//   opaque pixels: aerial perspective over the segment to the surface, L = L_surface T + S, with
-//     the renderer's own L_surface (Renderer::ReadSurface), so only aerial perspective differs.
-// Pixels that see the sun disc are left out: the disc is not a scattering quantity.
+//     T albedo / pi (E_sun + E_sky) of the ground, lit as lambertian_radiance.h lights a surface
+//     facing up.
+//   opaque pixels: L = S + T L_surface over the segment to the surface, the surface lit by the
+//     reference itself (lambertian_radiance.h: sun and tilted-sky irradiance of the same orders, no
+//     shadows) at the point, normal and albedo the scene has there (scene_surface.h). The
+//     renderer's surface image (Renderer::ReadSurface) only gives the depth and tells sky from
+//     geometry: its lighting is what is checked, with the aerial perspective.
+// Pixels that see the sun disc are left out (the disc is not a scattering quantity), and opaque
+// pixels where the scene has no surface at the renderer's depth (scene_surface.h).
 #include <array>
 #include <functional>
 #include <glm/glm.hpp>
@@ -19,6 +24,7 @@
 #include "aerial/image/image.h"
 #include "aerial/reference/reference.h"
 #include "aerial/render/frame_uniforms.h"
+#include "aerial/scene/scene.h"
 
 namespace aerial::bench {
 
@@ -27,21 +33,27 @@ struct ReferencePixel {
   bool sky = false;
   Spectrum inscatter{};      // S: the whole ray (sky) or the segment to the surface (opaque)
   Spectrum transmittance{};  // T over the same ray or segment
-  Spectrum ground{};         // sky pixels meeting the planet: radiance leaving the ground
-  Spectrum std_error{};      // Monte Carlo standard error of the expected radiance
-  // The expected radiance; surface_rgba is the renderer's surface pixel (used for opaque pixels).
-  Spectrum Expected(const float* surface_rgba) const;
+  // Radiance leaving what ends the ray: the lit surface (opaque pixels), the lit ground (sky
+  // pixels meeting the planet), else 0.
+  Spectrum surface{};
+  Spectrum std_error{};  // Monte Carlo standard error of the expected radiance
+  Spectrum Expected() const;  // S + T surface
 };
 
 struct ReferenceSampling {
   int columns = 16, rows = 9;
   int orders = 4;  // or reference::kAllOrders
   reference::MonteCarloOptions monte_carlo;
+  // The renderer's terrain error bound (RenderOptions::terrain_error_px): how far its terrain may
+  // lie from the height function's surface (scene_surface.h).
+  double terrain_error_px = 0.0;
 };
 
 struct ViewReference {
   std::vector<ReferencePixel> pixels;
   int sun_pixels = 0;  // grid pixels left out because they see the sun disc
+  // Opaque grid pixels left out because the scene has no surface at the renderer's depth there.
+  int unmatched_pixels = 0;
   // Median over the pixels of the largest relative standard error of a channel (relative to the
   // expected radiance): the noise floor of the comparisons against this reference.
   double median_relative_std_error = 0.0;
@@ -56,14 +68,15 @@ glm::dvec3 PixelRay(const FrameUniforms& frame, int x, int y);
 // pixel.
 std::vector<std::array<int, 2>> GridPixels(int width, int height, int columns, int rows);
 
-// surface: the view's Renderer::ReadSurface (distances; sky where alpha < 0). on_pixel (may be
-// empty) is called after each grid pixel.
-ViewReference SampleReference(const reference::Reference& model, const FrameUniforms& frame,
+// scene: what was rendered (its camera, meshes and terrain); frame and surface: the view's
+// Renderer::frame_uniforms and Renderer::ReadSurface (distances; sky where alpha < 0). on_pixel
+// (may be empty) is called after each grid pixel.
+ViewReference SampleReference(const reference::Reference& model, const Scene& scene, const FrameUniforms& frame,
                               const ImageRgbF& surface, const ReferenceSampling& sampling,
                               const std::function<void()>& on_pixel);
 
-// The reference's pixels of one class against a rendered image (and that renderer's surface).
+// The reference's pixels of one class against a rendered image.
 std::vector<PixelSample> ReferenceSamples(const ViewReference& reference, const ImageRgbF& rendered,
-                                          const ImageRgbF& surface, PixelClass pixels);
+                                          PixelClass pixels);
 
 }  // namespace aerial::bench

@@ -171,10 +171,16 @@ void AccuracySection(std::ostringstream& md, const BenchResults& b) {
              ? std::string("all orders: the reference's paths end by Russian roulette")
              : "orders 1.." + std::to_string(b.results[0].precompute.options.orders))
      << "); where the ray meets the bare planet, plus T albedo/pi (E_sun + E_sky) of "
-        "the ground, E_sky of the same orders. Opaque pixels: aerial perspective, "
-        "L = L_surface T + inscatter over the segment to the surface, with the renderer's own L_surface, so "
-        "only aerial perspective is compared. Pixels that see the sun disc are left out. Orders >= 2 are "
-        "Monte Carlo with "
+        "the ground, E_sky of the same orders. Opaque pixels: the surface's lighting and its aerial "
+        "perspective, L = L_surface T + inscatter over the segment to the surface, L_surface computed by "
+        "the reference too: albedo/pi (E_sun <T>_disc max(n.sun, 0) + E_sky(n)), with the sky irradiance "
+        "of the tilted surface itself (its whole hemisphere: below the horizon, the air and the lit bare "
+        "ground; the renderer scales the horizontal irradiance by (1 + n.up)/2) and no shadows (the "
+        "renderer has none), at the point, normal and albedo the scene has where the "
+        "renderer's depth puts the surface: a CPU ray cast's mesh hit, or the terrain's height function "
+        "(its exact normal, where the renderer draws a level of detail with per-vertex lighting). Pixels "
+        "that see the sun disc are left out, and opaque pixels where the scene has no surface at the "
+        "renderer's depth (beyond the terrain's level-of-detail bound). Orders >= 2 are Monte Carlo with "
      << p.reference_paths << " paths per query; the noise is listed below.\n"
      << "- **Froxel path against per-pixel path**: every pixel of the frame on the froxel path (froxel "
         "volume and sky-view table) against the same tables read per pixel.\n\n";
@@ -187,11 +193,12 @@ void AccuracySection(std::ostringstream& md, const BenchResults& b) {
   md << "### Froxel path against per-pixel path\n\n";
   AccuracyTable(md, b, "froxel_vs_per_pixel", true);
   md << "### Reference sampling\n\n"
-     << "| view | sky pixels | opaque pixels | sun pixels left out | Monte Carlo noise (median relative "
-        "standard error) |\n|---|---|---|---|---|\n";
+     << "| view | sky pixels | opaque pixels | sun pixels left out | opaque pixels left out (no scene "
+        "surface at the renderer's depth) | Monte Carlo noise (median relative standard error) |\n"
+        "|---|---|---|---|---|---|\n";
   for (const ReferenceSummary& s : b.references)
     md << "| " << s.view << " | " << s.sky_pixels << " | " << s.opaque_pixels << " | " << s.sun_pixels
-       << " | " << Percent(s.median_relative_std_error) << " |\n";
+       << " | " << s.unmatched_pixels << " | " << Percent(s.median_relative_std_error) << " |\n";
   md << "\n";
 }
 

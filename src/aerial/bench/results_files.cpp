@@ -123,6 +123,7 @@ nlohmann::json ResultsJson(const BenchResults& b) {
                                 {"sky_pixels", s.sky_pixels},
                                 {"opaque_pixels", s.opaque_pixels},
                                 {"sun_pixels_left_out", s.sun_pixels},
+                                {"unmatched_pixels_left_out", s.unmatched_pixels},
                                 {"median_relative_std_error", s.median_relative_std_error}});
   return doc;
 }

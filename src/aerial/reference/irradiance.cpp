@@ -2,7 +2,7 @@
 
 #include <numbers>
 
-#include "aerial/reference/geometry.h"
+#include "aerial/reference/multiple_scattering.h"
 #include "aerial/reference/optical_depth.h"
 #include "aerial/reference/path_tracer.h"
 #include "aerial/reference/solar_disc.h"
@@ -15,12 +15,14 @@ Spectrum ComputeDirectIrradiance(const Medium& medium, Accuracy accuracy, double
   return {a.solar_irradiance[0] * f[0], a.solar_irradiance[1] * f[1], a.solar_irradiance[2] * f[2]};
 }
 
-OrderEstimates EstimateSkyIrradianceOrders(const Medium& medium, double r, double mu_s, int max_order,
-                                           const MonteCarloOptions& options) {
-  const Vec3 x{0.0, 0.0, r}, normal{0.0, 0.0, 1.0};
-  const Vec3 sun{SafeSqrt(1.0 - mu_s * mu_s), 0.0, mu_s};
+OrderEstimates EstimateSkyIrradianceOrders(const Medium& medium, double r, double mu_s, double mu_n,
+                                           double nu_n, int max_order, const MonteCarloOptions& options) {
+  // The normal stands where a view direction would: at (0, 0, r), in the xz plane, the sun placed
+  // at nu_n from it (for a horizontal surface: the normal up, the sun in the xz plane).
+  const ViewFrame frame = MakeViewFrame(r, mu_n, mu_s, nu_n);
+  const Vec3 x = frame.camera, normal = frame.view;
   return RunChunks(options, max_order, [&](int, Rng& rng, std::vector<Spectrum>& sums) {
-    PathTracer tracer(medium, sun, 1, max_order, options.roulette_from_order);
+    PathTracer tracer(medium, frame.sun, 1, max_order, options.roulette_from_order);
     Strata strata(rng);
     for (int i = 0; i < kChunkPaths; ++i) {
       // E = int L cos dw, estimated as L(w) cos(w) / pdf(w) = pi L(w) (cos / pi) / pdf(w).

@@ -1,10 +1,12 @@
 #pragma once
-// Irradiance on a horizontal surface at radius r.
-//  - Direct: E_0 = E_sun <V T max(mu, 0)>_disc, the disc's visible part, each through its own
-//    slant of the atmosphere (solar_disc.h).
-//  - Sky: E_sky = sum_{j=1..M} int_{upper hemisphere} L_j(x, w) cos(w) dw (Bruneton 2017's
-//    ComputeIndirectIrradiance),
-//    L_j the radiance of order j, estimated by the path tracer from cosine-sampled directions.
+// Irradiance on a surface at radius r.
+//  - Direct, horizontal surface: E_0 = E_sun <V T max(mu, 0)>_disc, the disc's visible part, each
+//    through its own slant of the atmosphere (solar_disc.h).
+//  - Sky: E_sky = sum_{j=1..M} int_{hemisphere about n} L_j(x, w) (n . w) dw (Bruneton 2017's
+//    ComputeIndirectIrradiance for n up), L_j the radiance of order j, estimated by the path
+//    tracer from cosine-sampled directions. A tilted normal's hemisphere dips below the horizon:
+//    there it sees the ground (Lambertian, ground_albedo, lit by the sun and the sky) through the
+//    air, a ground vertex of the path like any other.
 #include "aerial/reference/medium.h"
 #include "aerial/reference/monte_carlo.h"
 
@@ -12,8 +14,10 @@ namespace aerial::reference {
 
 Spectrum ComputeDirectIrradiance(const Medium& medium, Accuracy accuracy, double r, double mu_s);
 
-// Orders 1..max_order of the sky irradiance, each with its standard error.
-OrderEstimates EstimateSkyIrradianceOrders(const Medium& medium, double r, double mu_s,
-                                           int max_order, const MonteCarloOptions& options);
+// Orders 1..max_order of the sky irradiance, each with its standard error, on a surface whose
+// unit normal n has zenith cosine mu_n = n . up and cosine nu_n = n . sun to the sun (horizontal:
+// mu_n = 1, nu_n = mu_s; nu_n must be feasible, see ClampNu).
+OrderEstimates EstimateSkyIrradianceOrders(const Medium& medium, double r, double mu_s, double mu_n,
+                                           double nu_n, int max_order, const MonteCarloOptions& options);
 
 }  // namespace aerial::reference

@@ -119,7 +119,14 @@ bool PathTracer::SampleSegment(Vec3 p, Vec3 w, double u_choice, double u_distanc
   bool ground = RayIntersectsInnerSphere(r, mu, bottom);
   double length = ground ? DistanceToInnerSphere(r, mu, bottom)
                          : DistanceToOuterSphere(r, mu, medium_.top_radius());
-  if (!(length > 0.0)) return false;
+  if (!(length > 0.0)) {
+    // On the ground and going down (a tilted surface's hemisphere there): the ground at once,
+    // through no air, with probability 1.
+    if (!ground) return false;
+    *next = {(bottom / r) * p, w, true};
+    *weight = {1.0, 1.0, 1.0};
+    return true;
+  }
   columns_.Build(medium_, Accuracy::kMonteCarlo, r, mu, length);
   // Ground vs atmosphere, in proportion to rough estimates of what each returns: the ground
   // ~ T albedo E_sun / (4 pi) x 10 (direct plus sky irradiance ~ E_sun / 2, reflected / pi)

@@ -56,7 +56,7 @@ class PathTracer {
                 const std::array<double, 2>* first_u, std::vector<Spectrum>& sums);
 
   // Samples the next vertex along the ray from p in direction w; *weight gets T / probability.
-  // Returns false for an empty segment.
+  // Returns false for an empty segment, but for a ray from the ground into it, which meets it at p.
   bool SampleSegment(Vec3 p, Vec3 w, double u_choice, double u_distance, PathVertex* next,
                      Spectrum* weight);
 

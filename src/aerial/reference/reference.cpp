@@ -119,10 +119,18 @@ Spectrum Reference::ComputeDirectIrradiance(double r, double mu_s) const {
 
 Estimate Reference::ComputeSkyIrradiance(double r, double mu_s, int orders,
                                          const MonteCarloOptions& options) const {
+  return ComputeTiltedSkyIrradiance(r, mu_s, 1.0, mu_s, orders, options);
+}
+
+Estimate Reference::ComputeTiltedSkyIrradiance(double r, double mu_s, double mu_n, double nu_n, int orders,
+                                               const MonteCarloOptions& options) const {
   CheckOrders(orders);
   CheckOptions(options);
-  return EstimateSkyIrradianceOrders(medium_, CheckRadius(r), CheckCosine("mu_s", mu_s), orders, options)
-      .total;
+  r = CheckRadius(r);
+  mu_s = CheckCosine("mu_s", mu_s);
+  mu_n = CheckCosine("mu_n", mu_n);
+  nu_n = ClampNu(mu_n, mu_s, CheckCosine("nu_n", nu_n));
+  return EstimateSkyIrradianceOrders(medium_, r, mu_s, mu_n, nu_n, orders, options).total;
 }
 
 double Reference::RayleighPhase(double nu) { return RayleighPhaseFunction(CheckCosine("nu", nu)); }

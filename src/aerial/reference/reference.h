@@ -41,6 +41,11 @@ class Reference {
   Spectrum ComputeDirectIrradiance(double r, double mu_s) const;
   // Sum of sky irradiance orders 1..orders (or kAllOrders) on a horizontal surface at radius r.
   Estimate ComputeSkyIrradiance(double r, double mu_s, int orders, const MonteCarloOptions& = {}) const;
+  // The same on a tilted surface whose unit normal n has mu_n = n . up and nu_n = n . sun (nu_n is
+  // clamped to the range mu_n and mu_s allow): the hemisphere about n, its part below the horizon
+  // seeing the lit ground through the air (irradiance.h).
+  Estimate ComputeTiltedSkyIrradiance(double r, double mu_s, double mu_n, double nu_n, int orders,
+                                      const MonteCarloOptions& = {}) const;
   static double RayleighPhase(double nu);
   double MiePhase(double nu) const;
 

@@ -23,6 +23,7 @@ TEST(Reference, RejectsInvalidInputs) {
   EXPECT_THROW(ref.ComputeRadiance(R, 0.5, 0.5, 0.5, 0), Error);
   EXPECT_THROW(ref.ComputeSkyIrradiance(R, 0.5, 0), Error);
   EXPECT_THROW(ref.ComputeSkyIrradiance(R, 0.5, 2, {0, 1, 0}), Error);
+  EXPECT_THROW(ref.ComputeTiltedSkyIrradiance(R, 0.5, -1.5, 0.5, 2), Error);
   EXPECT_THROW(Reference::RayleighPhase(2.0), Error);
   try {
     ref.ComputeDirectIrradiance(R, 1.5);

@@ -70,6 +70,16 @@ glm::dvec3 TerrainAlbedo(double height_m, double cos_slope) {
   return glm::mix(glm::mix(kGrass, kRock, rock), kSnow, snow);
 }
 
+// The surface at p whose normal is across_x x across_y, with its albedo.
+TerrainSurface SurfaceFromDifferences(const glm::dvec3& p, const glm::dvec3& across_x,
+                                      const glm::dvec3& across_y, double planet_radius_m) {
+  const glm::dvec3 center(0.0, 0.0, -planet_radius_m);
+  glm::dvec3 normal = glm::normalize(glm::cross(across_x, across_y));
+  glm::dvec3 up = glm::normalize(p - center);
+  double height = glm::length(p - center) - planet_radius_m;
+  return {p, normal, TerrainAlbedo(height, glm::dot(normal, up))};
+}
+
 }  // namespace
 
 glm::dvec3 TerrainPoint(double x, double y, double planet_radius_m) {
@@ -78,11 +88,14 @@ glm::dvec3 TerrainPoint(double x, double y, double planet_radius_m) {
 
 Vertex TerrainVertex(const glm::dvec3& p, const glm::dvec3& across_x, const glm::dvec3& across_y,
                      double planet_radius_m) {
-  const glm::dvec3 center(0.0, 0.0, -planet_radius_m);
-  glm::dvec3 normal = glm::normalize(glm::cross(across_x, across_y));
-  glm::dvec3 up = glm::normalize(p - center);
-  double height = glm::length(p - center) - planet_radius_m;
-  return {glm::vec3(p), glm::vec3(normal), glm::vec3(TerrainAlbedo(height, glm::dot(normal, up))), 1.0f};
+  TerrainSurface s = SurfaceFromDifferences(p, across_x, across_y, planet_radius_m);
+  return {glm::vec3(s.point), glm::vec3(s.normal), glm::vec3(s.albedo), 1.0f};
+}
+
+TerrainSurface TerrainSurfaceAt(double x, double y, double planet_radius_m) {
+  const double h = kTerrainNormalStepM, R = planet_radius_m;
+  return SurfaceFromDifferences(TerrainPoint(x, y, R), TerrainPoint(x + h, y, R) - TerrainPoint(x - h, y, R),
+                                TerrainPoint(x, y + h, R) - TerrainPoint(x, y - h, R), R);
 }
 
 double TerrainHeightM(double x, double y) {
@@ -100,6 +113,17 @@ glm::dvec3 SurfacePoint(double x, double y, double height_m, double planet_radiu
   const double r = planet_radius_m;
   glm::dvec3 up{x / r, y / r, std::sqrt(std::max(0.0, r * r - x * x - y * y)) / r};
   return glm::dvec3(0.0, 0.0, -r) + (r + height_m) * up;
+}
+
+glm::dvec3 SeaLevelPoint(const glm::dvec3& p, double planet_radius_m) {
+  const glm::dvec3 center(0.0, 0.0, -planet_radius_m);
+  return center + planet_radius_m * glm::normalize(p - center);
+}
+
+double HeightAboveTerrainM(const glm::dvec3& p, double planet_radius_m) {
+  glm::dvec3 sea_level = SeaLevelPoint(p, planet_radius_m);
+  double altitude = glm::length(p - glm::dvec3(0.0, 0.0, -planet_radius_m)) - planet_radius_m;
+  return altitude - TerrainHeightM(sea_level.x, sea_level.y);
 }
 
 GroundFrame GroundFrameAt(double x, double y, double planet_radius_m) {

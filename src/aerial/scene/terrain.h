@@ -22,6 +22,11 @@ double TerrainHeightM(double x_m, double y_m);
 // (0, 0, -R): center + (R + height) * u, u the unit vector from the center through (x, y, .).
 glm::dvec3 SurfacePoint(double x_m, double y_m, double height_m, double planet_radius_m);
 
+// The inverse of SurfacePoint: the sea-level point on the radial line through the world point p
+// (its x and y name it), and p's height above the terrain there.
+glm::dvec3 SeaLevelPoint(const glm::dvec3& p, double planet_radius_m);
+double HeightAboveTerrainM(const glm::dvec3& p, double planet_radius_m);
+
 // A right-handed frame standing on the terrain at (x, y): origin on the surface, up radial (the
 // local vertical, not the terrain normal), east and north horizontal there. Objects built in it
 // stand upright even 100 km away, where the vertical tilts 0.9 degrees from +z.
@@ -39,6 +44,17 @@ glm::dvec3 TerrainPoint(double x_m, double y_m, double planet_radius_m);
 // as shimmer). The albedo follows height and slope: grass, rock, snow.
 Vertex TerrainVertex(const glm::dvec3& p, const glm::dvec3& across_x, const glm::dvec3& across_y,
                      double planet_radius_m);
+
+// The terrain as its height function defines it at the sea-level point (x, y), in double
+// precision, for checks of what the renderer draws: the surface point, the unit normal of the
+// surface itself (its differences over kTerrainNormalStepM to either side in x and in y: the
+// height function is smooth but at the ridges' crests, and its finest detail, the 560 m octave,
+// makes the central difference's error ~(2 pi 0.5 / 560)^2 / 6 ~ 5e-6), and TerrainVertex's albedo.
+struct TerrainSurface {
+  glm::dvec3 point, normal, albedo;
+};
+inline constexpr double kTerrainNormalStepM = 0.5;
+TerrainSurface TerrainSurfaceAt(double x_m, double y_m, double planet_radius_m);
 
 // The terrain as one static opaque mesh named "terrain", centered on the scene origin: a polar
 // grid whose rings are kTerrainMinStepM apart near the origin and then grow geometrically so

@@ -12,11 +12,6 @@ namespace {
 
 constexpr int N = kChunkCells;
 
-// The skirt's depth beyond the measured gaps: the measurements sample the edges at quarter
-// cells, so a peak of the surface between two samples may reach a little further.
-constexpr double kSkirtMargin = 1.25;
-constexpr double kSkirtMinimumM = 0.1;
-
 // Surface heights of a chunk's grid with a border of one cell (for the normals' differences):
 // sample (i, j), i and j in [-1, N + 1], at x0 + i * cell, y0 + j * cell.
 class HeightGrid {

@@ -42,6 +42,12 @@ struct TerrainChunk {
 
 TerrainChunk BuildTerrainChunk(const ChunkId& id, double planet_radius_m);
 
+// The skirt's depth beyond the measured gaps, kSkirtMargin times them plus kSkirtMinimumM: the
+// measurements sample the edges at quarter cells, so a peak of the surface between two samples
+// may reach a little further.
+inline constexpr double kSkirtMargin = 1.25;
+inline constexpr double kSkirtMinimumM = 0.1;
+
 inline constexpr uint32_t kChunkGridVertices = (kChunkCells + 1) * (kChunkCells + 1);
 inline constexpr uint32_t kChunkVertices = kChunkGridVertices + 4 * kChunkCells;
 
