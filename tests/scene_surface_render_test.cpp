@@ -53,7 +53,9 @@ TEST_F(SceneSurfaceRender, FoundAtTheRenderersDepthAtAlmostEveryOpaquePixel) {
       }
     }
     EXPECT_LE(missing, opaque / 10000) << opaque << " opaque pixels";
-    if (preset == "noon") EXPECT_GT(landmark, 50) << "the landmarks, found by the ray cast";
+    if (preset == "noon") {
+      EXPECT_GT(landmark, 50) << "the landmarks, found by the ray cast";
+    }
   }
 }
 

@@ -61,7 +61,9 @@ TEST(LambertianRadiance, TiltedScalesTheSunByTheCosineOnTheSurface) {
       double expected = kAlbedo[c] / std::numbers::pi * (direct + sky.value[c]);
       EXPECT_NEAR(radiance.value[c] / expected, 1.0, 1e-12) << "azimuth " << azimuth << ", channel " << c;
     }
-    if (k == 5) EXPECT_LT(cos_sun, 0.0) << "one normal faces away from the sun";
+    if (k == 5) {
+      EXPECT_LT(cos_sun, 0.0) << "one normal faces away from the sun";
+    }
   }
 }
 
