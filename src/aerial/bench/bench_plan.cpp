@@ -20,10 +20,11 @@ std::string ScatteringSize(const TableResolution& r) {
 BenchPlan BenchPlan::Full() {
   BenchPlan plan;
   // Small(), the defaults, and the defaults with twice the mu_s resolution: the axis that limits
-  // accuracy near sunset (README, "Accuracy against the CPU reference").
+  // accuracy near sunset (README, "Accuracy against the physical sky").
+  const TableResolution d = PrecomputeOptions::Default().resolution;
   plan.tiers = {{"small", true, 16, 64, 16, 8},
-                {"default", false, 32, 128, 32, 8},
-                {"fine-mu_s", false, 32, 128, 64, 8}};
+                {"default", false, d.scattering_r, d.scattering_mu, d.scattering_mu_s, d.scattering_nu},
+                {"fine-mu_s", false, d.scattering_r, d.scattering_mu, 2 * d.scattering_mu_s, d.scattering_nu}};
   plan.figure_tier = 1;
   plan.views = PresetNames();
   return plan;
