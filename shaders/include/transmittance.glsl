@@ -91,13 +91,16 @@ vec3 GetTransmittance(sampler2D transmittance_texture, float r, float mu, float 
 // horizontal surface also its plane); cosine_weighted: average T max(mu, 0) instead of T.
 const float SUN_DISC_ONE_TAP_ELEVATION = 0.1745;  // 10 degrees
 
-// The transmittance towards the disc's point y disc radii above its centre (zenith cosine to
-// O(alpha^4) = 1e-9).
+// The zenith cosine of the disc's point y disc radii above its centre, to O(alpha^4) = 1e-9.
+float GetDiscPointCosine(float mu_s, float sin_s, float y) {
+  float y_alpha = y * atmosphere.sun_angular_radius;
+  return mu_s * (1.0 - 0.5 * y_alpha * y_alpha) + sin_s * y_alpha;
+}
+
 vec3 GetTransmittanceAtDiscPoint(sampler2D transmittance_texture, float r, float mu_s, float sin_s,
                                  float y) {
-  float y_alpha = y * atmosphere.sun_angular_radius;
-  float mu = mu_s * (1.0 - 0.5 * y_alpha * y_alpha) + sin_s * y_alpha;
-  return GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, mu);
+  return GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r,
+                                                 GetDiscPointCosine(mu_s, sin_s, y));
 }
 vec3 GetSunDiscAverage(sampler2D transmittance_texture, float r, float mu_s, float cut_off_cosine,
                        bool cosine_weighted) {
@@ -128,8 +131,7 @@ vec3 GetSunDiscAverage(sampler2D transmittance_texture, float r, float mu_s, flo
   for (int i = 0; i < 4; ++i) {
     float t = 0.5 * t_h * (1.0 + (i < 2 ? -node[i] : node[i - 2]));
     float w = weight[i % 2] * sin(t) * sin(t);
-    float y_alpha = cos(t) * alpha;
-    float mu = mu_s * cos(y_alpha) + sin_s * sin(y_alpha);
+    float mu = GetDiscPointCosine(mu_s, sin_s, cos(t));
     sum += w * GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, mu) *
            (cosine_weighted ? max(mu, 0.0) : 1.0);
     weights += w;
@@ -137,10 +139,8 @@ vec3 GetSunDiscAverage(sampler2D transmittance_texture, float r, float mu_s, flo
   return sum / weights * visible;
 }
 
-float GetHorizonCosine(float r) {
-  float sin_theta_h = atmosphere.bottom_radius / r;
-  return -sqrt(max(1.0 - sin_theta_h * sin_theta_h, 0.0));
-}
+// -sqrt(1 - (R / r)^2), from the horizon distance without cancellation.
+float GetHorizonCosine(float r) { return -sqrt(SquaredHorizonDistance(r)) / r; }
 
 // Transmittance of sunlight to radius r, over the part of the disc above the horizon.
 vec3 GetTransmittanceToSun(sampler2D transmittance_texture, float r, float mu_s) {

@@ -108,7 +108,7 @@ void PrecomputeOptions::Validate() const {
 }
 
 int PrecomputeOptions::RepresentedOrders() const {
-  return close_series && orders >= 3 ? std::numeric_limits<int>::max() : orders;
+  return ClosesSeries() ? std::numeric_limits<int>::max() : orders;
 }
 
 uint64_t PrecomputeOptions::Hash() const {
@@ -132,7 +132,7 @@ uint64_t PrecomputeOptions::Hash() const {
 std::string PrecomputeOptions::Describe() const {
   const TableResolution& r = resolution;
   return ToString(variant) + (precision == TablePrecision::kFloat32 ? " float32" : " float16") +
-         ", " + std::to_string(orders) + " orders" + (close_series && orders >= 3 ? " + series tail" : "") +
+         ", " + std::to_string(orders) + " orders" + (ClosesSeries() ? " + series tail" : "") +
          ", transmittance " +
          std::to_string(r.transmittance_mu) + "x" + std::to_string(r.transmittance_r) +
          ", irradiance " + std::to_string(r.irradiance_mu_s) + "x" + std::to_string(r.irradiance_r) +

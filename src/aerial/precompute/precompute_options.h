@@ -70,6 +70,10 @@ struct PrecomputeOptions {
   // Small tables for quick tests; same shape, roughly 1/16 of the texels.
   static PrecomputeOptions Small(LutVariant variant = LutVariant::k4D);
 
+  // Whether the last order is followed by the series' tail (close_series, and orders >= 3 so that
+  // the last two orders are both multiple scattering).
+  bool ClosesSeries() const { return close_series && orders >= 3; }
+
   // The scattering orders the tables stand for: 1..orders, or the whole series (INT_MAX, which is
   // reference::kAllOrders) when it is closed.
   int RepresentedOrders() const;

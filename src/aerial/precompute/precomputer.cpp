@@ -184,7 +184,7 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   // The ground irradiance of radiance order n: delta E_n, added to the irradiance table (with the
   // orders beyond it when closing the series). delta E_0 is the direct irradiance.
   const int orders = tables.options().orders;
-  const bool close_series = tables.options().close_series && orders >= 3;
+  const bool close_series = tables.options().ClosesSeries();
   auto add_ground_irradiance = [&](int radiance_order) {
     SeriesStep step{radiance_order, close_series && radiance_order == orders};
     run("indirect irradiance (order " + std::to_string(radiance_order) + ")", [&](const auto& cmd) {
