@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Configures and builds aerial (Release) into ./build.
+# Configures and builds aerial (Release) into ./build. ccache is used when it is installed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+launcher=()
+if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" >/dev/null
 cmake --build build --parallel "$(nproc)"
