@@ -14,6 +14,9 @@ packages=(
   libimgui-dev libtinygltf-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-openvdb
+  # sanitizer and fuzzing builds (tools/run-sanitizer-tests.sh, tools/fuzz.sh): clang, its
+  # runtimes (ASan, UBSan, libFuzzer) and llvm-symbolizer for readable reports
+  clang libclang-rt-dev llvm
 )
 
 missing=()

@@ -105,8 +105,8 @@ Rendering::Rendering(const ::vk::raii::CommandBuffer& cmd, const RenderTargets& 
         .imageLayout = ::vk::ImageLayout::eGeneral,
         .loadOp = clear ? ::vk::AttachmentLoadOp::eClear : ::vk::AttachmentLoadOp::eLoad,
         .storeOp = ::vk::AttachmentStoreOp::eStore,
-        .clearValue = ::vk::ClearValue{.color = ::vk::ClearColorValue(
-            clear ? *targets.clear_colors[i] : std::array<float, 4>{0, 0, 0, 0})}});
+        .clearValue = ::vk::ClearValue{.color = ::vk::ClearColorValue{
+            .float32 = clear ? *targets.clear_colors[i] : std::array<float, 4>{0, 0, 0, 0}}}});
   }
   ::vk::RenderingAttachmentInfo depth;
   if (targets.depth) {

@@ -107,7 +107,7 @@ void Image::InitializeLayout(const ::vk::raii::CommandBuffer& cmd) const {
 
 void Image::Clear(const ::vk::raii::CommandBuffer& cmd) const {
   cmd.clearColorImage(*image_, ::vk::ImageLayout::eGeneral,
-                      ::vk::ClearColorValue(std::array<float, 4>{0, 0, 0, 0}), WholeRange(format_));
+                      ::vk::ClearColorValue{.float32 = std::array<float, 4>{0, 0, 0, 0}}, WholeRange(format_));
 }
 
 namespace {
