@@ -13,6 +13,7 @@
 # then commit the input so the replay keeps it fixed. Fuzzing goes on after a finding (fork mode),
 # and the last line per target gives runs, runs per second, coverage and findings.
 set -euo pipefail
+if [[ ${1:-} == --replay ]]; then replay_binary=$(realpath "$3"); fi
 cd "$(dirname "$0")/.."
 root=$PWD
 
@@ -39,11 +40,11 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 
 if [[ ${1:-} == --replay ]]; then
-  target=$2 binary=$3
+  target=$2
   work=$(mktemp -d)
   trap 'rm -rf "$work"' EXIT
   seeds=$(seed_dir "$work" "$target")
-  exec "$binary" -runs=0 -rss_limit_mb=2048 -timeout=10 "$seeds" "tests/fuzz/regressions/$target"
+  exec "$replay_binary" -runs=0 -rss_limit_mb=2048 -timeout=10 "$seeds" "tests/fuzz/regressions/$target"
 fi
 
 seconds=600
@@ -60,7 +61,7 @@ for target in "${targets[@]}"; do
   mkdir -p "build-sanitize/corpus/$target"
   log=build-sanitize/fuzz-$target.log
   echo "fuzz.sh: $target for $seconds s (log: $log)"
-  (cd "build-sanitize" && ./fuzz_"$target" -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
+  (cd build-sanitize && tests/fuzz/fuzz_"$target" -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
       -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 -max_len=16384 -print_final_stats=1 \
       -artifact_prefix="$root/tests/fuzz/regressions/$target/" \
       "corpus/$target" "$root/$seeds" "$root/tests/fuzz/regressions/$target") >"$log" 2>&1 || true
