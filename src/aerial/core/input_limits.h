@@ -1,0 +1,14 @@
+#pragma once
+// Limits on input files, in one place (README, "### Files"): far above what real inputs need,
+// far below what would exhaust memory, time or the stack.
+#include <cstddef>
+
+namespace aerial {
+
+inline constexpr size_t kMiB = size_t{1} << 20;
+
+// An atmosphere, scene or camera path TOML file. The largest example is under 4 KiB; 1 MiB is a
+// few hundred times that, and toml++ parses it in well under a second.
+inline constexpr size_t kMaxTomlFileBytes = 1 * kMiB;
+
+}  // namespace aerial
