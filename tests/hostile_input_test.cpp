@@ -1,6 +1,8 @@
-// Hostile input files (issue 13): each is refused by the command with exit status 1 and a
-// message naming the field and the value; never a crash, a hang or a raw std:: exception. Huge
-// and special files (FIFOs, devices, directories) are made here at run time.
+// Hostile input files (issue 13): each is refused with an aerial::Error naming the field and the
+// value, and by the command with exit status 1 and that message; never a crash, a hang, an
+// out-of-bounds read or a raw std:: exception. The crafted files are in tests/data/hostile/
+// (its README says what each one does); huge, deep and special files (FIFOs, devices,
+// directories) are made here at run time.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -10,7 +12,9 @@
 #include <fstream>
 #include <string>
 
+#include "aerial/core/error.h"
 #include "aerial/core/input_limits.h"
+#include "aerial/scene/gltf_loader.h"
 #include "command_run.h"
 #include "scratch_directory.h"
 
@@ -18,6 +22,54 @@ namespace aerial::testing {
 namespace {
 
 namespace fs = std::filesystem;
+
+const fs::path kHostile = fs::path(AERIAL_SOURCE_DIR) / "tests/data/hostile";
+
+// The Error LoadGltfMesh(path) throws.
+Error GltfError(const fs::path& path) {
+  try {
+    LoadGltfMesh(path, "hostile");
+  } catch (const Error& e) {
+    return e;
+  }
+  ADD_FAILURE() << "loaded " << path;
+  return Error("", "", "");
+}
+
+struct CraftedGltf {
+  std::string file;
+  std::string field;
+  std::string value;
+};
+
+void PrintTo(const CraftedGltf& input, std::ostream* out) { *out << input.file; }
+
+class HostileGltfFile : public ::testing::TestWithParam<CraftedGltf> {};
+
+TEST_P(HostileGltfFile, IsRefusedNamingTheGltfField) {
+  fs::path path = kHostile / GetParam().file;
+  Error e = GltfError(path);
+  EXPECT_EQ(e.field(), GetParam().field) << e.what();
+  EXPECT_EQ(e.value(), GetParam().value) << e.what();
+  EXPECT_EQ(e.where(), path.string());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    CraftedFiles, HostileGltfFile,
+    ::testing::Values(
+        CraftedGltf{"view_offset_wraps.gltf", "bufferViews[0].byteOffset", "18446744073709551612"},
+        CraftedGltf{"accessor_offset_wraps.gltf", "accessors[0].byteOffset", "18446744073709551604"},
+        CraftedGltf{"count_near_2_63.gltf", "accessors[0].count", "9223372036854775808"},
+        CraftedGltf{"stride_below_element.gltf", "bufferViews[0].byteStride", "4"},
+        CraftedGltf{"view_past_buffer.gltf", "bufferViews[0].byteLength", "40"},
+        CraftedGltf{"position_as_short.gltf", "accessors[0].componentType", "5123"},
+        CraftedGltf{"strided_count_past_view.gltf", "accessors[0].count", "3"}),
+    [](const ::testing::TestParamInfo<CraftedGltf>& info) { return "case" + std::to_string(info.index); });
+
+TEST(HostileGltf, CountBoundFollowsTheStride) {
+  // 36 bytes hold elements of 12 bytes every 16 at 0 and 16; a third would end at byte 44.
+  EXPECT_EQ(GltfError(kHostile / "strided_count_past_view.gltf").allowed().rfind("at most 2,", 0), 0u);
+}
 
 // Files made at run time in a fresh directory.
 class HostileFiles : public ::testing::Test {
@@ -82,6 +134,11 @@ TEST_F(HostileFiles, CommandRefusesAFileOverTheTomlCap) {
   fs::path big = Sparse("big.toml", kMaxTomlFileBytes + 1);
   ExpectRefused(kRender + " --scene " + big.string(), "--scene = " + big.string(),
                 "at most " + std::to_string(kMaxTomlFileBytes) + " bytes");
+}
+
+TEST(HostileCommand, SceneWithAWrappingGltfNamesTheGltfField) {
+  ExpectRefused(kRender + " --scene " + (kHostile / "scene_with_wrapping_gltf.toml").string(),
+                "mesh[0].gltf", "bufferViews[0].byteOffset = 18446744073709551612");
 }
 
 }  // namespace

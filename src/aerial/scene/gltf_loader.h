@@ -15,7 +15,8 @@
 // vertex colors, skins and morph targets are ignored. Only TRIANGLES primitives are accepted.
 //
 // Errors throw aerial::Error with the path as where: a missing or unparsable file, a primitive
-// of another mode (naming it), a missing POSITION, out-of-range data, or no triangles at all.
+// of another mode (naming it), a missing POSITION, data outside its buffer (naming the glTF
+// field, "accessors[2].count"), or no triangles at all.
 #include <filesystem>
 #include <string>
 
