@@ -71,6 +71,13 @@ TEST(HostileGltf, CountBoundFollowsTheStride) {
   EXPECT_EQ(GltfError(kHostile / "strided_count_past_view.gltf").allowed().rfind("at most 2,", 0), 0u);
 }
 
+TEST(HostileGltf, DirectoryAsBufferNamesTheBuffer) {
+  Error e = GltfError(kHostile / "buffer_uri_dot.gltf");
+  EXPECT_EQ(e.field(), "buffers[1].uri");
+  EXPECT_EQ(e.value(), (kHostile / ".").string());
+  EXPECT_EQ(e.allowed(), "a regular file, not a directory");
+}
+
 // Files made at run time in a fresh directory.
 class HostileFiles : public ::testing::Test {
  protected:
@@ -89,9 +96,43 @@ class HostileFiles : public ::testing::Test {
     fs::resize_file(path, size);
     return path;
   }
+  // A .gltf whose only buffer is the file uri (no meshes: tinygltf reads the buffers first).
+  fs::path GltfWithBuffer(const std::string& uri, size_t byte_length) {
+    return Write("model.gltf",
+                 R"({"asset": {"version": "2.0"}, "buffers": [{"uri": ")" + uri +
+                     R"(", "byteLength": )" + std::to_string(byte_length) + "}]}");
+  }
 
   ScratchDirectory dir_{"hostile"};
 };
+
+TEST_F(HostileFiles, FifoAsBufferIsRefusedWithoutBlocking) {
+  fs::path fifo = Fifo("buffer.bin");
+  ::alarm(10);  // should opening the FIFO regress, the test's process ends instead of hanging
+  Error e = GltfError(GltfWithBuffer("buffer.bin", 36));
+  ::alarm(0);
+  EXPECT_EQ(e.field(), "buffers[0].uri");
+  EXPECT_EQ(e.value(), fifo.string());
+  EXPECT_EQ(e.allowed(), "a regular file, not a FIFO (named pipe)");
+}
+
+TEST_F(HostileFiles, OversizeBufferIsRefusedBeforeReading) {
+  fs::path big = Sparse("big.bin", kMaxGltfBytes + 1);
+  Error e = GltfError(GltfWithBuffer("big.bin", kMaxGltfBytes + 1));
+  EXPECT_EQ(e.field(), "buffers[0].uri");
+  EXPECT_EQ(e.value(), big.string());
+  EXPECT_NE(e.allowed().find("a glTF model and its buffers share " + std::to_string(kMaxGltfBytes) +
+                             " bytes"),
+            std::string::npos)
+      << e.allowed();
+}
+
+TEST_F(HostileFiles, OversizeGltfIsRefusedBeforeReading) {
+  Error e = GltfError(Sparse("big.gltf", kMaxGltfBytes + 1));
+  EXPECT_EQ(e.field(), "glTF file");
+  EXPECT_EQ(e.allowed(), "a regular file of at most " + std::to_string(kMaxGltfBytes) +
+                             " bytes (it has " + std::to_string(kMaxGltfBytes + 1) + ")");
+}
 
 const char* kOut = "/tmp/aerial-hostile-test.png";
 const std::string kRender = std::string("render --small-tables --quiet --out ") + kOut;

@@ -11,4 +11,9 @@ inline constexpr size_t kMiB = size_t{1} << 20;
 // few hundred times that, and toml++ parses it in well under a second.
 inline constexpr size_t kMaxTomlFileBytes = 1 * kMiB;
 
+// A glTF model: the .gltf or .glb file and all its external buffers together. Big enough for
+// millions of triangles (a vertex takes 24 bytes with its normal); tinygltf takes the file's size
+// as a 32-bit unsigned int, so the cap also keeps it well inside that.
+inline constexpr size_t kMaxGltfBytes = 256 * kMiB;
+
 }  // namespace aerial
