@@ -106,6 +106,36 @@ class HostileFiles : public ::testing::Test {
   ScratchDirectory dir_{"hostile"};
 };
 
+// JSON nesting levels deep, inside an otherwise valid glTF.
+std::string DeepGltfJson(size_t levels) {
+  return R"({"asset": {"version": "2.0"}, "extras": )" + std::string(levels, '[') +
+         std::string(levels, ']') + "}";
+}
+
+TEST_F(HostileFiles, DeeplyNestedGltfIsRefusedBeforeParsing) {
+  fs::path path = Write("deep.gltf", DeepGltfJson(100000));
+  Error e = GltfError(path);
+  EXPECT_EQ(e.field(), "JSON nesting");
+  EXPECT_EQ(e.value(), "100001 levels");  // the extras and the root object
+  EXPECT_EQ(e.where(), path.string());
+}
+
+TEST_F(HostileFiles, DeeplyNestedGlbIsRefusedBeforeParsing) {
+  // glTF 2.0 spec, "Binary glTF Layout": header, then the JSON chunk padded with spaces.
+  std::string json = DeepGltfJson(100000);
+  json.resize((json.size() + 3) / 4 * 4, ' ');
+  std::string glb = "glTF";
+  auto u32 = [&](uint32_t value) { glb.append(reinterpret_cast<const char*>(&value), 4); };
+  u32(2);
+  u32(static_cast<uint32_t>(12 + 8 + json.size()));
+  u32(static_cast<uint32_t>(json.size()));
+  u32(0x4E4F534A);  // "JSON"
+  fs::path path = Write("deep.glb", glb + json);
+  Error e = GltfError(path);
+  EXPECT_EQ(e.field(), "JSON nesting");
+  EXPECT_EQ(e.value(), "100001 levels");
+}
+
 TEST_F(HostileFiles, FifoAsBufferIsRefusedWithoutBlocking) {
   fs::path fifo = Fifo("buffer.bin");
   ::alarm(10);  // should opening the FIFO regress, the test's process ends instead of hanging

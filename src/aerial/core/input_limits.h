@@ -16,4 +16,9 @@ inline constexpr size_t kMaxTomlFileBytes = 1 * kMiB;
 // as a 32-bit unsigned int, so the cap also keeps it well inside that.
 inline constexpr size_t kMaxGltfBytes = 256 * kMiB;
 
+// Levels of nested arrays and objects in a JSON text (a glTF's JSON). glTF itself needs about 8
+// (extras and extensions may add a few); tinygltf's JSON parser recurses once per level, and
+// 100,000 levels overflow the stack.
+inline constexpr size_t kMaxJsonDepth = 64;
+
 }  // namespace aerial

@@ -12,6 +12,7 @@
 
 #include "aerial/core/error.h"
 #include "aerial/core/input_limits.h"
+#include "aerial/core/json_depth.h"
 #include "aerial/scene/gltf_accessors.h"
 #include "aerial/scene/gltf_file_system.h"
 #include "aerial/scene/tiny_gltf_config.h"
@@ -151,6 +152,17 @@ void AppendMesh(const GltfReader& reader, const tinygltf::Model& model, int mesh
   }
 }
 
+// The JSON chunk of a .glb (glTF 2.0 spec, "Binary glTF Layout": a 12-byte header, then the
+// chunk's length, its type and its bytes). A malformed header gives what there is, and tinygltf
+// rejects the file afterwards.
+std::string_view GlbJson(const std::vector<unsigned char>& bytes) {
+  if (bytes.size() < 20) return {};
+  uint32_t length;
+  std::memcpy(&length, bytes.data() + 12, 4);  // little-endian, like the machines this runs on
+  return {reinterpret_cast<const char*>(bytes.data()) + 20,
+          std::min<size_t>(length, bytes.size() - 20)};
+}
+
 tinygltf::Model ReadModel(const std::filesystem::path& path) {
   tinygltf::Model model;
   GltfFileSystem files(model, kMaxGltfBytes);
@@ -160,6 +172,7 @@ tinygltf::Model ReadModel(const std::filesystem::path& path) {
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   bool binary = extension == ".glb";
   std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  CheckJsonDepth(binary ? GlbJson(bytes) : text, path.string());
 
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks(files.Callbacks());

@@ -15,9 +15,10 @@
 // vertex colors, skins and morph targets are ignored. Only TRIANGLES primitives are accepted.
 //
 // Errors throw aerial::Error with the path as where: a missing, unparsable or non-regular file,
-// a model whose files hold more than kMaxGltfBytes together (core/input_limits.h), a primitive
-// of another mode (naming it), a missing POSITION, data outside its buffer (naming the glTF
-// field, "accessors[2].count"), or no triangles at all.
+// a model whose files hold more than kMaxGltfBytes together or whose JSON nests deeper than
+// kMaxJsonDepth (core/input_limits.h), a primitive of another mode (naming it), a missing
+// POSITION, data outside its buffer (naming the glTF field, "accessors[2].count"), or no
+// triangles at all.
 #include <filesystem>
 #include <string>
 
