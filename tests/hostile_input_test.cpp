@@ -78,6 +78,17 @@ TEST(HostileGltf, DirectoryAsBufferNamesTheBuffer) {
   EXPECT_EQ(e.allowed(), "a regular file, not a directory");
 }
 
+TEST(HostileGltf, LongDataUriIsShortenedInTheMessage) {
+  // The URI is 3,037 characters. The message holds the path, kMaxShownBytes of tinygltf's report
+  // of the URI and under 100 characters of its own words.
+  fs::path path = kHostile / "long_data_uri.gltf";
+  Error e = GltfError(path);
+  std::string message = e.what();
+  EXPECT_EQ(e.field(), "glTF file");
+  EXPECT_LT(message.size(), path.string().size() + kMaxShownBytes + 100) << message;
+  EXPECT_NE(message.find("\u2026 ("), std::string::npos) << message;
+}
+
 // Files made at run time in a fresh directory.
 class HostileFiles : public ::testing::Test {
  protected:

@@ -191,7 +191,7 @@ tinygltf::Model ReadModel(const std::filesystem::path& path) {
   files.RethrowFailure();
   if (!ok) {
     while (!error.empty() && error.back() == '\n') error.pop_back();
-    throw Error("glTF file", path.string(), "valid glTF 2.0 (" + error + ")");
+    throw Error("glTF file", path.string(), "valid glTF 2.0 (" + Shortened(error) + ")");
   }
   return model;
 }
