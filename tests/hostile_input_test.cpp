@@ -223,5 +223,10 @@ TEST(HostileCommand, SceneWithAWrappingGltfNamesTheGltfField) {
                 "mesh[0].gltf", "bufferViews[0].byteOffset = 18446744073709551612");
 }
 
+TEST(HostileCommand, CameraPathWithoutAKeyNamesTheKey) {
+  ExpectRefused("view --camera-path " + (kHostile / "camera_path_missing_yaw.toml").string(),
+                "keyframe[1].yaw_deg = missing", "a number (degrees)");
+}
+
 }  // namespace
 }  // namespace aerial::testing
