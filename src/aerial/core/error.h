@@ -2,15 +2,26 @@
 // One error type for every boundary of the program (configs, CLI values, files, Vulkan results).
 // It names what was wrong (field), the offending value and what was allowed, so a message is
 // actionable on its own. It is thrown at the boundary and caught once, in main().
+#include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace aerial {
+
+// The longest value a message shows whole: any path one would type, but not a data URI.
+inline constexpr size_t kMaxShownBytes = 200;
+
+// text as a message shows it: whole up to kMaxShownBytes bytes, else its first kMaxShownBytes
+// (less, not to split a UTF-8 character) and "… (N bytes)", so a value like a pasted data URI
+// cannot flood the terminal.
+std::string Shortened(std::string_view text);
 
 class Error : public std::runtime_error {
  public:
   // field: dotted name of the input ("rayleigh.scattering[1]", "--altitude-m", "cache header").
-  // value: the bad value as text. allowed: the accepted range or form. where: file or context.
+  // value: the bad value as text (what() shows it Shortened; value() keeps it whole).
+  // allowed: the accepted range or form. where: file or context.
   Error(std::string field, std::string value, std::string allowed, std::string where = "");
 
   const std::string& field() const { return field_; }

@@ -1,14 +1,13 @@
 #include "aerial/core/toml_reader.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <memory>
 
+#include "aerial/core/bounded_file.h"
 #include "aerial/core/error.h"
+#include "aerial/core/input_limits.h"
 
 namespace aerial {
 
@@ -41,20 +40,8 @@ std::string TomlString(std::string_view text) {
 }
 
 std::string ReadTomlFile(const std::filesystem::path& path, const std::string& field) {
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                       &std::fclose);
-  std::string text;
-  if (file) {
-    char chunk[4096];
-    size_t got;
-    while ((got = std::fread(chunk, 1, sizeof chunk, file.get())) > 0) text.append(chunk, got);
-  }
-  // Reading a directory opens fine and fails in fread (EISDIR).
-  if (!file || std::ferror(file.get())) {
-    throw Error(field, path.string(),
-                std::string("a readable TOML file (") + std::strerror(errno) + ")");
-  }
-  return text;
+  std::vector<unsigned char> bytes = ReadBoundedFile(path, field, kMaxTomlFileBytes);
+  return std::string(bytes.begin(), bytes.end());
 }
 
 toml::table TomlReader::Parse(std::string_view text) const {

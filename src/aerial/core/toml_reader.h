@@ -5,7 +5,7 @@
 // written and what was expected, with "file:line:column" as where.
 //
 //   TomlReader r(path.string());
-//   toml::table root = r.Parse(ReadTomlFile(path, "scene file"));
+//   toml::table root = r.Parse(ReadTomlFile(path, "--scene"));
 //   r.RejectUnknownKeys(root, "", {"camera"});
 //   IfPresent(root, "camera", [&](const toml::node& n) {
 //     const toml::table& camera = r.Table(n, "camera");
@@ -33,9 +33,9 @@ std::string TomlFloat(double value);
 // A TOML basic string: quotes, backslashes and control characters escaped.
 std::string TomlString(std::string_view text);
 
-// The whole file as text. A missing or unreadable file throws
-// Error(field, path, "a readable TOML file (<reason>)"); field names the kind of file
-// ("scene file").
+// The whole file as text, read by ReadBoundedFile (bounded_file.h) with the cap
+// kMaxTomlFileBytes: a missing, unreadable, oversized or non-regular file throws
+// Error(field, path, ...); field names the option ("--scene").
 std::string ReadTomlFile(const std::filesystem::path& path, const std::string& field);
 
 // Applies one optional key: calls read(node) if table has the key.

@@ -1,6 +1,8 @@
 #pragma once
 // Typed reads of glTF accessors with every index and byte range checked, so a malformed file
-// is an aerial::Error (where = the file's path) and never an out-of-bounds read.
+// is an aerial::Error (where = the file's path) and never an out-of-bounds read. Errors name the
+// glTF's own field ("accessors[2].count", "bufferViews[0].byteOffset") and say which use of the
+// accessor read it ("meshes[0].primitives[1].POSITION").
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <string>
@@ -19,17 +21,25 @@ class GltfReader {
   [[noreturn]] void Fail(const std::string& field, const std::string& value,
                          const std::string& allowed) const;
 
-  // A float VEC3 accessor (POSITION, NORMAL). field names it in errors.
-  std::vector<glm::dvec3> ReadVec3(int accessor_index, const std::string& field) const;
+  // A float VEC3 accessor (POSITION, NORMAL). used_as names the use in errors.
+  std::vector<glm::dvec3> ReadVec3(int accessor_index, const std::string& used_as) const;
 
   // A SCALAR accessor of unsigned byte, short or int (triangle indices).
-  std::vector<uint32_t> ReadIndices(int accessor_index, const std::string& field) const;
+  std::vector<uint32_t> ReadIndices(int accessor_index, const std::string& used_as) const;
 
  private:
-  const tinygltf::Accessor& Get(int index, const std::string& field) const;
-  const unsigned char* Data(const tinygltf::Accessor& accessor, size_t element_size,
-                            const std::string& field) const;
-  size_t Stride(const tinygltf::Accessor& accessor) const;
+  // count elements, the first at first, one every stride bytes.
+  struct Elements {
+    const unsigned char* first;
+    size_t stride;
+    size_t count;
+  };
+
+  const tinygltf::Accessor& Get(int index, const std::string& used_as) const;
+  // Checks the accessor's type and component type, then its bytes (Locate).
+  Elements Find(int index, int type, const std::vector<int>& component_types,
+                const std::string& allowed_types, const std::string& used_as) const;
+  Elements Locate(int index, size_t element_size, const std::string& used_as) const;
 
   const tinygltf::Model& model_;
   std::string where_;

@@ -6,11 +6,15 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "aerial/core/error.h"
+#include "aerial/core/input_limits.h"
+#include "aerial/core/json_depth.h"
 #include "aerial/scene/gltf_accessors.h"
+#include "aerial/scene/gltf_file_system.h"
 #include "aerial/scene/tiny_gltf_config.h"
 
 namespace aerial {
@@ -148,25 +152,46 @@ void AppendMesh(const GltfReader& reader, const tinygltf::Model& model, int mesh
   }
 }
 
+// The JSON chunk of a .glb (glTF 2.0 spec, "Binary glTF Layout": a 12-byte header, then the
+// chunk's length, its type and its bytes). A malformed header gives what there is, and tinygltf
+// rejects the file afterwards.
+std::string_view GlbJson(const std::vector<unsigned char>& bytes) {
+  if (bytes.size() < 20) return {};
+  uint32_t length;
+  std::memcpy(&length, bytes.data() + 12, 4);  // little-endian, like the machines this runs on
+  return {reinterpret_cast<const char*>(bytes.data()) + 20,
+          std::min<size_t>(length, bytes.size() - 20)};
+}
+
 tinygltf::Model ReadModel(const std::filesystem::path& path) {
-  std::error_code ignored;
-  if (!std::filesystem::is_regular_file(path, ignored))
-    throw Error("glTF file", path.string(), "an existing .gltf or .glb file");
+  tinygltf::Model model;
+  GltfFileSystem files(model, kMaxGltfBytes);
+  std::vector<unsigned char> bytes = files.ReadModelFile(path);
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  bool binary = extension == ".glb";
+  std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  CheckJsonDepth(binary ? GlbJson(bytes) : text, path.string());
+
   tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks(files.Callbacks());
   // Textures are not used: accept images without decoding them (no stb_image in this build).
   loader.SetImageLoader([](tinygltf::Image*, const int, std::string*, std::string*, int, int,
                            const unsigned char*, int, void*) { return true; },
                         nullptr);
-  tinygltf::Model model;
   std::string error, warning;
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  bool ok = extension == ".glb" ? loader.LoadBinaryFromFile(&model, &error, &warning, path.string())
-                                : loader.LoadASCIIFromFile(&model, &error, &warning, path.string());
+  // kMaxGltfBytes keeps the size inside tinygltf's unsigned int.
+  auto size = static_cast<unsigned int>(bytes.size());
+  std::string base_dir = path.parent_path().string();
+  bool ok = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(), size,
+                                                 base_dir)
+                   : loader.LoadASCIIFromString(&model, &error, &warning, text.data(), size,
+                                                base_dir);
+  files.RethrowFailure();
   if (!ok) {
     while (!error.empty() && error.back() == '\n') error.pop_back();
-    throw Error("glTF file", path.string(), "valid glTF 2.0 (" + error + ")");
+    throw Error("glTF file", path.string(), "valid glTF 2.0 (" + Shortened(error) + ")");
   }
   return model;
 }

@@ -14,8 +14,11 @@
 // opacity when alphaMode is BLEND (then the mesh is transparent) and 1 otherwise. Textures,
 // vertex colors, skins and morph targets are ignored. Only TRIANGLES primitives are accepted.
 //
-// Errors throw aerial::Error with the path as where: a missing or unparsable file, a primitive
-// of another mode (naming it), a missing POSITION, out-of-range data, or no triangles at all.
+// Errors throw aerial::Error with the path as where: a missing, unparsable or non-regular file,
+// a model whose files hold more than kMaxGltfBytes together or whose JSON nests deeper than
+// kMaxJsonDepth (core/input_limits.h), a primitive of another mode (naming it), a missing
+// POSITION, data outside its buffer (naming the glTF field, "accessors[2].count"), or no
+// triangles at all.
 #include <filesystem>
 #include <string>
 

@@ -171,7 +171,7 @@ Scene ParseSceneToml(std::string_view text, const std::string& where,
 }
 
 Scene LoadSceneFile(const std::filesystem::path& path, double planet_radius_m) {
-  Scene scene = ParseSceneToml(ReadTomlFile(path, "scene file"), path.string(), path.parent_path(),
+  Scene scene = ParseSceneToml(ReadTomlFile(path, "--scene"), path.string(), path.parent_path(),
                                planet_radius_m);
   scene.name = path.stem().string();
   return scene;

@@ -9,10 +9,15 @@
 namespace aerial::viewer {
 namespace {
 
-const toml::node& Required(TomlReader& r, const toml::table& t, const toml::node& table_node,
-                           const std::string& field, std::string_view key) {
+// The keyframe's key; a missing one is named with what it should be, at the keyframe's line.
+const toml::node& Required(const TomlReader& r, const toml::table& t, const toml::node& table_node,
+                           const std::string& field, std::string_view key,
+                           const std::string& allowed) {
   const toml::node* node = t.get(key);
-  if (!node) r.Fail(table_node, TomlReader::Join(field, key), "a value (every keyframe key is required)");
+  if (!node) {
+    throw Error(TomlReader::Join(field, key), "missing",
+                allowed + " (every keyframe key is required)", r.At(table_node));
+  }
   return *node;
 }
 
@@ -22,17 +27,18 @@ CameraKeyframe ReadKeyframe(TomlReader& r, const toml::node& node, const std::st
   r.RejectUnknownKeys(t, field, {"time_s", "position_m", "yaw_deg", "pitch_deg"});
   auto key = [&](std::string_view k) { return TomlReader::Join(field, k); };
   CameraKeyframe k;
-  const toml::node& time = Required(r, t, node, field, "time_s");
+  const toml::node& time = Required(r, t, node, field, "time_s", "a number (s)");
   k.time_s = r.Number(time, key("time_s"), "s");
   if (!(k.time_s >= 0.0 && std::isfinite(k.time_s))) r.Fail(time, key("time_s"), ">= 0 s and finite");
-  const toml::node& position = Required(r, t, node, field, "position_m");
+  const toml::node& position =
+      Required(r, t, node, field, "position_m", "an array of 3 numbers (m)");
   std::vector<double> p = r.Numbers(position, key("position_m"), 3, 3, "m");
   k.position_m = {p[0], p[1], p[2]};
   CheckCameraPosition(k.position_m, planet_radius_m, key("position_m"), r.At(position));
-  const toml::node& yaw = Required(r, t, node, field, "yaw_deg");
+  const toml::node& yaw = Required(r, t, node, field, "yaw_deg", "a number (degrees)");
   k.yaw_deg = r.Number(yaw, key("yaw_deg"), "degrees");
   CheckAzimuthDeg(k.yaw_deg, key("yaw_deg"), r.At(yaw));
-  const toml::node& pitch = Required(r, t, node, field, "pitch_deg");
+  const toml::node& pitch = Required(r, t, node, field, "pitch_deg", "a number (degrees)");
   k.pitch_deg = r.Number(pitch, key("pitch_deg"), "degrees");
   CheckPitchDeg(k.pitch_deg, key("pitch_deg"), r.At(pitch));
   return k;

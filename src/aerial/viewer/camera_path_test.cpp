@@ -73,6 +73,20 @@ TEST_P(CameraPathRejects, NamingTheField) {
   }
 }
 
+// The missing key is named with what it should be, not shown as its table ("(a table)").
+TEST(CameraPath, MissingKeyIsNamedWithItsForm) {
+  try {
+    std::string third = "[[keyframe]]\ntime_s = 3.0\nposition_m = [0.0, 0.0, 30.0]\npitch_deg = 0.0\n";
+    CameraPath::Parse(kPath + third, "path.toml", kR);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.field(), "keyframe[2].yaw_deg");
+    EXPECT_EQ(e.value(), "missing");
+    EXPECT_EQ(e.allowed(), "a number (degrees) (every keyframe key is required)");
+    EXPECT_EQ(e.where(), "path.toml:13:1") << "the keyframe's line";
+  }
+}
+
 const std::string kFirst = "[[keyframe]]\ntime_s = 0.0\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 0.0\npitch_deg = 0.0\n";
 
 INSTANTIATE_TEST_SUITE_P(

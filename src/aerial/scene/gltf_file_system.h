@@ -1,0 +1,52 @@
+#pragma once
+// The files of one glTF model, read for tinygltf through ReadBoundedFile (core/bounded_file.h):
+// the .gltf or .glb itself (ReadModelFile) and its external buffers (tinygltf calls Callbacks()
+// for those). All of them together may hold at most max_bytes (kMaxGltfBytes), so a model
+// cannot make the program read more than that by naming the same big file in many buffers.
+//
+// A buffer's file that cannot be read is an Error naming the buffer ("buffers[1].uri"). It cannot
+// cross tinygltf, which expects a bool, so it is kept and thrown by RethrowFailure() once
+// tinygltf returns.
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "aerial/core/error.h"
+#include "aerial/scene/tiny_gltf_config.h"
+
+namespace aerial {
+
+class GltfFileSystem {
+ public:
+  // model is the one tinygltf fills: the number of buffers it holds so far is the index of the
+  // buffer being read, as tinygltf appends each buffer once its file is read.
+  GltfFileSystem(const tinygltf::Model& model, size_t max_bytes)
+      : model_(model), left_bytes_(max_bytes), max_bytes_(max_bytes) {}
+
+  // The model's own file (field "glTF file").
+  std::vector<unsigned char> ReadModelFile(const std::filesystem::path& path);
+
+  // For TinyGLTF::SetFsCallbacks. Only valid while this object lives.
+  tinygltf::FsCallbacks Callbacks();
+
+  // Throws the Error a callback met, if any.
+  void RethrowFailure() const;
+
+ private:
+  std::vector<unsigned char> Read(const std::filesystem::path& path, const std::string& field);
+
+  static bool FileExists(const std::string& path, void* self);
+  static std::string ExpandFilePath(const std::string& path, void* self);
+  static bool ReadWholeFile(std::vector<unsigned char>* out, std::string* err,
+                            const std::string& path, void* self);
+  static bool WriteWholeFile(std::string* err, const std::string& path,
+                             const std::vector<unsigned char>& contents, void* self);
+
+  const tinygltf::Model& model_;
+  size_t left_bytes_, max_bytes_;
+  std::optional<Error> failure_;
+};
+
+}  // namespace aerial
