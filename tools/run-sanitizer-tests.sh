@@ -16,7 +16,9 @@ cmake --build build-sanitize --parallel "$(nproc)" --target aerial aerial_tests 
   fuzz_atmosphere_toml fuzz_scene_toml fuzz_gltf fuzz_camera_path fuzz_table_cache
 
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-/tmp}
-export ASAN_OPTIONS=detect_leaks=1:check_initialization_order=1:strict_init_order=1
+# fast_unwind_on_malloc=0: allocations inside the Vulkan loader and driver (built without frame
+# pointers) get whole stacks, so that lsan.supp can match the loader's frame.
+export ASAN_OPTIONS=detect_leaks=1:fast_unwind_on_malloc=0:check_initialization_order=1:strict_init_order=1
 export LSAN_OPTIONS=suppressions=$PWD/tools/sanitizers/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
@@ -26,6 +28,10 @@ gpu_suites="Render.*:VdbExport.*:VdbPaths.*:TableCacheIntegration.*:TableSanity.
 gpu_suites+=":ViewerToneMap.*:TablesVsReference.*:GraphicsPipelineTest.*:SceneSurfaceRender.*"
 gpu_suites+=":ViewerDebugViews.*:LeanFrame.*:Lut3d.*:MappingRoundTrip.*:GoldenImage.*"
 gpu_suites+=":Cli.*:ViewCli.*:BenchQuick.*:ViewerSession.*:Exr.*:Png.*:ImageWriter.*"
+# Not here: the stored sky reference is checked bit for bit against a fresh Monte Carlo run, whose
+# paths fork on the last bit of a float, so another compiler's rounding (clang here, gcc in the
+# main suite) changes the samples; the main suite runs it.
+cpu_only_elsewhere="PhysicalSkyReference.StoredReferenceIsTodaysReference"
 # The short GPU list: small-table precompute and its cache round trip, one froxel frame, the VDB
 # export, and the command end to end (including its errors).
 gpu_short="TableSanity.*:TableCacheIntegration.*:Render.*:VdbExport.*:Cli.*"
@@ -33,6 +39,6 @@ gpu_short="TableSanity.*:TableCacheIntegration.*:Render.*:VdbExport.*:Cli.*"
 cd build-sanitize
 ctest --output-on-failure --timeout 1500 -R '^fuzz_regressions\.'
 AERIAL_VALIDATION=1 AERIAL_CACHE_DIR=$PWD/test-cache ./aerial_tests --gtest_brief=1 \
-  --gtest_filter="-$gpu_suites"
+  --gtest_filter="-$gpu_suites:$cpu_only_elsewhere"
 AERIAL_VALIDATION=1 AERIAL_CACHE_DIR=$PWD/test-cache ./aerial_tests --gtest_brief=1 \
   --gtest_filter="$gpu_short"

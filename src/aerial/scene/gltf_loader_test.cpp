@@ -286,7 +286,8 @@ TEST_F(GltfFiles, TexturedModelLoadsWithoutDecodingImages) {
 
 TEST_F(GltfFiles, SceneWithoutTrianglesIsAnError) {
   Document d = CubeDocument();
-  d.gltf["nodes"] = {json::object()};  // a node without a mesh
+  // json::array: a braced list of one object reads as that object with clang.
+  d.gltf["nodes"] = json::array({json::object()});  // a node without a mesh
   fs::path path = WriteGltf("empty.gltf", d);
   try {
     LoadGltfMesh(path, "empty");

@@ -188,8 +188,11 @@ void ScreenHorizon::AddOccluder(double x0, double y0, double size, double lowest
 
 bool ScreenHorizon::RisesAbove(double x_min, double x_max, double up) const {
   int columns = int(horizon_.size());
-  int first = std::max(0, int(std::ceil((x_min + 1.0) * 0.5 * columns)));
-  int last = std::min(columns, int(std::floor((x_max + 1.0) * 0.5 * columns)));
+  // Clamped as doubles: an occluder far off screen projects to x beyond any int (fmax and fmin
+  // also send a NaN to a bound).
+  auto column_edge = [&](double edge) { return int(std::fmin(std::fmax(edge, 0.0), columns)); };
+  int first = column_edge(std::ceil((x_min + 1.0) * 0.5 * columns));
+  int last = column_edge(std::floor((x_max + 1.0) * 0.5 * columns));
   for (int column = first; column < last; ++column)
     if (up > horizon_[column]) return true;
   return false;
@@ -210,8 +213,11 @@ void ScreenHorizon::RaiseHorizon(const std::vector<std::array<double, 2>>& polyg
   x_min = std::max(x_min, span_min);
   x_max = std::min(x_max, span_max);
   // Only whole columns inside that span can be covered.
-  int first = std::max(0, int(std::ceil((x_min + 1.0) * 0.5 * columns)));
-  int last = std::min(columns, int(std::floor((x_max + 1.0) * 0.5 * columns)));
+  // Clamped as doubles: an occluder far off screen projects to x beyond any int (fmax and fmin
+  // also send a NaN to a bound).
+  auto column_edge = [&](double edge) { return int(std::fmin(std::fmax(edge, 0.0), columns)); };
+  int first = column_edge(std::ceil((x_min + 1.0) * 0.5 * columns));
+  int last = column_edge(std::floor((x_max + 1.0) * 0.5 * columns));
   if (first >= last) return;
   // A column's right side is the next one's left side: each side is measured once.
   std::optional<std::array<double, 2>> left = ExtentAt(polygon, 2.0 * first / columns - 1.0);
