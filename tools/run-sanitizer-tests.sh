@@ -16,9 +16,7 @@ cmake --build build-sanitize --parallel "$(nproc)" --target aerial aerial_tests 
   fuzz_atmosphere_toml fuzz_scene_toml fuzz_gltf fuzz_camera_path fuzz_table_cache
 
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-/tmp}
-# fast_unwind_on_malloc=0: allocations inside the Vulkan loader and driver (built without frame
-# pointers) get whole stacks, so that lsan.supp can match the loader's frame.
-export ASAN_OPTIONS=detect_leaks=1:fast_unwind_on_malloc=0:check_initialization_order=1:strict_init_order=1
+export ASAN_OPTIONS=detect_leaks=1:check_initialization_order=1:strict_init_order=1
 export LSAN_OPTIONS=suppressions=$PWD/tools/sanitizers/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 

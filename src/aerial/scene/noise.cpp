@@ -36,7 +36,10 @@ double Corner(int64_t ix, int64_t iy, uint32_t seed, double dx, double dy) {
 
 double GradientNoise(double x, double y, uint32_t seed) {
   double fx = std::floor(x), fy = std::floor(y);
-  auto ix = static_cast<int64_t>(fx), iy = static_cast<int64_t>(fy);
+  // The hash reads lattice coordinates modulo 2^32, so they are reduced there first (exactly:
+  // fmod is exact), which also keeps a far-away x within int64 (converting it would overflow).
+  auto lattice = [](double f) { return static_cast<int64_t>(std::fmod(f, 4294967296.0)); };
+  int64_t ix = lattice(fx), iy = lattice(fy);
   double dx = x - fx, dy = y - fy;
   double u = Fade(dx), v = Fade(dy);
   double bottom = Corner(ix, iy, seed, dx, dy) * (1 - u) + Corner(ix + 1, iy, seed, dx - 1, dy) * u;
