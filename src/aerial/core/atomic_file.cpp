@@ -57,12 +57,13 @@ fs::path TemporaryNameFor(const fs::path& path) {
   return temporary;
 }
 
-void WriteAll(int fd, const std::byte* data, size_t size, const fs::path& temporary) {
+// Failures name the target, the path the user asked for; the temporary is removed by the caller.
+void WriteAll(int fd, const std::byte* data, size_t size, const fs::path& path) {
   while (size > 0) {
     ssize_t written = ::write(fd, data, size);
     if (written < 0) {
       if (errno == EINTR) continue;
-      Fail(temporary, "write", errno);
+      Fail(path, "write", errno);
     }
     data += written;
     size -= static_cast<size_t>(written);
@@ -80,10 +81,10 @@ void SyncDirectory(const fs::path& directory) {
 // Syncs and closes the written temporary, then renames it over path. close() can report a
 // deferred write error (NFS, quota), so it is checked rather than left to the destructor.
 void CommitTemporary(Fd& file, const fs::path& temporary, const fs::path& path) {
-  if (::fsync(file.fd) != 0) Fail(temporary, "sync", errno);
+  if (::fsync(file.fd) != 0) Fail(path, "write (sync)", errno);
   int fd = file.fd;
   file.fd = -1;
-  if (::close(fd) != 0) Fail(temporary, "close", errno);
+  if (::close(fd) != 0) Fail(path, "write (close)", errno);
   if (::rename(temporary.c_str(), path.c_str()) != 0) Fail(path, "rename a file over", errno);
 }
 
@@ -95,7 +96,7 @@ void WriteFileAtomically(const fs::path& path, std::span<const std::byte> bytes)
   Fd file{::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)};
   if (file.fd < 0) Fail(path, "create the temporary " + temporary.filename().string(), errno);
   try {
-    WriteAll(file.fd, bytes.data(), bytes.size(), temporary);
+    WriteAll(file.fd, bytes.data(), bytes.size(), path);
     CommitTemporary(file, temporary, path);
   } catch (...) {
     ::unlink(temporary.c_str());
@@ -106,22 +107,6 @@ void WriteFileAtomically(const fs::path& path, std::span<const std::byte> bytes)
 
 void WriteFileAtomically(const fs::path& path, std::string_view text) {
   WriteFileAtomically(path, std::as_bytes(std::span(text.data(), text.size())));
-}
-
-void WriteFileAtomicallyWith(const fs::path& path,
-                             const std::function<void(const fs::path& temporary)>& write) {
-  EnsureParentDirectory(path);
-  const fs::path temporary = TemporaryNameFor(path);
-  try {
-    write(temporary);
-    Fd file{::open(temporary.c_str(), O_WRONLY | O_CLOEXEC)};
-    if (file.fd < 0) Fail(temporary, "open the written temporary", errno);
-    CommitTemporary(file, temporary, path);
-  } catch (...) {
-    ::unlink(temporary.c_str());
-    throw;
-  }
-  SyncDirectory(ParentOf(path));
 }
 
 std::vector<std::byte> ReadFile(const fs::path& path) {

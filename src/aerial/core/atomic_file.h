@@ -6,7 +6,6 @@
 // reason.
 #include <cstddef>
 #include <filesystem>
-#include <functional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -18,12 +17,6 @@ namespace aerial {
 // directory after it, so the new content also survives a power cut.
 void WriteFileAtomically(const std::filesystem::path& path, std::span<const std::byte> bytes);
 void WriteFileAtomically(const std::filesystem::path& path, std::string_view text);
-
-// The same for a writer that must be given a file name (a library that opens the file itself):
-// write(temporary) creates the temporary, which is then synced and renamed over path; if write
-// throws, the temporary is removed and the exception passes on.
-void WriteFileAtomicallyWith(const std::filesystem::path& path,
-                             const std::function<void(const std::filesystem::path& temporary)>& write);
 
 // Reads the whole file.
 std::vector<std::byte> ReadFile(const std::filesystem::path& path);
