@@ -63,5 +63,23 @@ TEST_F(FullDisk, ExportVdbKeepsTheOldFileAndFails) {
   EXPECT_EQ(Entries(dir_ / "out"), std::vector<std::string>{"froxels.vdb"}) << "no temporary left";
 }
 
+// A cache write that fails for want of room warns, like a read-only cache directory, and the
+// render still writes its image; it used to fail after computing the tables.
+TEST_F(FullDisk, RenderWritesItsImageWhenTheCacheDoesNotFit) {
+  const fs::path cache = dir_ / "cache", out = dir_ / "out" / "frame.png";
+  // 1 MiB: a 64x64 PNG (3 KB) fits, the small tables' cache file (4.3 MB) does not.
+  CommandRun run = RunAerial("render --small-tables --quiet --width 64 --height 64 --cache-dir " +
+                                 cache.string() + " --out " + out.string(),
+                             {.file_size_limit_bytes = 1 << 20});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(fs::exists(out));
+  EXPECT_GT(fs::file_size(out), 0u);
+  EXPECT_NE(run.err.find("aerial: warning: not caching the tables (file = " + cache.string() + "/tables-"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("File too large"), std::string::npos) << run.err;
+  EXPECT_TRUE(Entries(cache).empty()) << "no partial cache file or temporary left";
+}
+
 }  // namespace
 }  // namespace aerial::testing
