@@ -1,6 +1,7 @@
 #include "aerial/core/atomic_file.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -8,6 +9,7 @@
 #include <cstring>
 #include <random>
 #include <string>
+#include <string_view>
 #include <system_error>
 
 #include "aerial/core/error.h"
@@ -46,7 +48,12 @@ void EnsureParentDirectory(const fs::path& path) {
     Fail(path, "use " + parent.string() + " as a directory", ENOTDIR);
 }
 
-// The pid separates concurrent processes; the random part separates threads and reused pids.
+// The pid separates concurrent processes (and tells RemoveStaleTemporaries whether the writer
+// still runs); the random part separates threads and reused pids. The constants spell out the
+// format below for TemporaryOwner.
+constexpr std::string_view kTemporaryMarker = ".tmp-";
+constexpr size_t kRandomDigits = 16;
+
 fs::path TemporaryNameFor(const fs::path& path) {
   static thread_local std::mt19937_64 random{std::random_device{}()};
   char suffix[64];
@@ -55,6 +62,25 @@ fs::path TemporaryNameFor(const fs::path& path) {
   fs::path temporary = path;
   temporary += suffix;
   return temporary;
+}
+
+// The writer's pid when name is "<target>.tmp-<pid>-<16 lowercase hex digits>" with a target
+// starting with target_prefix, else 0.
+pid_t TemporaryOwner(std::string_view name, std::string_view target_prefix) {
+  if (!name.starts_with(target_prefix)) return 0;
+  size_t marker = name.rfind(kTemporaryMarker);
+  if (marker == std::string_view::npos || marker == 0 || marker < target_prefix.size()) return 0;
+  std::string_view rest = name.substr(marker + kTemporaryMarker.size());  // "<pid>-<hex>"
+  size_t dash = rest.find('-');
+  if (dash == std::string_view::npos || dash == 0 || rest.size() - dash - 1 != kRandomDigits) return 0;
+  long pid = 0;
+  for (char c : rest.substr(0, dash)) {
+    if (c < '0' || c > '9' || pid > 1'000'000'000) return 0;
+    pid = pid * 10 + (c - '0');
+  }
+  for (char c : rest.substr(dash + 1))
+    if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'))) return 0;
+  return static_cast<pid_t>(pid);
 }
 
 // Failures name the target, the path the user asked for; the temporary is removed by the caller.
@@ -107,6 +133,19 @@ void WriteFileAtomically(const fs::path& path, std::span<const std::byte> bytes)
 
 void WriteFileAtomically(const fs::path& path, std::string_view text) {
   WriteFileAtomically(path, std::as_bytes(std::span(text.data(), text.size())));
+}
+
+std::vector<fs::path> RemoveStaleTemporaries(const fs::path& directory, std::string_view target_prefix) {
+  std::vector<fs::path> removed;
+  std::error_code ec;
+  for (fs::directory_iterator it(directory, ec), end; !ec && it != end; it.increment(ec)) {
+    std::error_code ignored;
+    pid_t owner = TemporaryOwner(it->path().filename().string(), target_prefix);
+    if (owner <= 0 || !it->is_regular_file(ignored)) continue;
+    if (::kill(owner, 0) == 0 || errno != ESRCH) continue;  // running, or not ours to signal
+    if (fs::remove(it->path(), ignored)) removed.push_back(it->path());
+  }
+  return removed;
 }
 
 std::vector<std::byte> ReadFile(const fs::path& path) {

@@ -38,6 +38,10 @@ LoadedTables LoadOrPrecompute(const vk::Context& context, const AtmosphereParame
   std::filesystem::path dir = store.cache_dir.empty() ? DefaultCacheDirectory() : store.cache_dir;
   loaded.cache_file = CacheFilePath(dir, atmosphere, options);
 
+  for (const std::filesystem::path& stale : RemoveStaleTemporaries(dir, "tables-")) {
+    if (!store.quiet)
+      std::fprintf(stderr, "aerial: removed %s, left by a table cache write that was killed\n", stale.c_str());
+  }
   if (store.read_cache && std::filesystem::exists(loaded.cache_file)) {
     try {
       loaded.tables->Upload(ReadTableCache(loaded.cache_file, loaded.tables->cache_key()));

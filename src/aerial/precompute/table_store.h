@@ -1,7 +1,8 @@
 #pragma once
 // Tables for an atmosphere and options: read from the cache when a valid file for exactly these
 // parameters exists, precomputed (and cached, atomically) otherwise. A corrupt, truncated or stale
-// cache file is reported and rebuilt, never used.
+// cache file is reported and rebuilt, never used. Temporaries that a killed cache write left in the
+// cache directory are removed first (core/atomic_file.h, RemoveStaleTemporaries).
 #include <filesystem>
 #include <memory>
 #include <vector>
