@@ -50,6 +50,16 @@ TEST(Cli, ExportVdbWritesTheFroxelVolume) {
   std::filesystem::remove_all(dir);
 }
 
+// Without a Vulkan driver the message says so and how to install one, instead of the loader's
+// "vkCreateInstance: ErrorIncompatibleDriver".
+TEST(Cli, NoVulkanDriverSaysHowToInstallOne) {
+  CommandRun run = RunAerial(kProbe, "env VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json");
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find("Vulkan driver = none found"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("apt install mesa-vulkan-drivers"), std::string::npos) << run.err;
+  EXPECT_TRUE(run.out.empty()) << run.out;
+}
+
 struct BadInput {
   std::string arguments;
   std::string must_mention;
