@@ -48,5 +48,48 @@ TEST(ResourceLimits, TablesBeyondTheTexelCapsFailBeforeAnyWork) {
                  {"scattering size (--scattering-size) = 256x512x64x8", "at most 4194304 texels"});
 }
 
+TEST(ResourceLimits, OverTheDefaultBudgetFailsBeforeAnyWork) {
+  ExpectRejected("render --width 16384 --height 16384 --out /tmp/aerial-budget-test.png",
+                 {"--width/--height = 16384x16384 is invalid",
+                  "--width/--height 16384x16384: render targets, read-back and encoded image 21504.9 MiB",
+                  "> budget 2048.0 MiB (the default"});
+  EXPECT_FALSE(fs::exists("/tmp/aerial-budget-test.png"));
+  ExpectRejected("export-vdb --froxels 256x256x256 --out /tmp/aerial-budget-test.vdb",
+                 {"--froxels = 256x256x256 is invalid", "froxel export copies 5120.0 MiB",
+                  "> budget 2048.0 MiB"});
+  // The viewer checks before opening its window, so this needs no display.
+  ExpectRejected("view --width 16384 --height 16384",
+                 {"--width/--height = 16384x16384 is invalid", "swapchain images 4096.0 MiB",
+                  "> budget 2048.0 MiB"});
+}
+
+// A budget beyond what the device has lets the allocation fail: the last resort names what ran out
+// and what to lower, instead of the bare ErrorOutOfDeviceMemory. (lavapipe refuses the 4 GiB
+// radiance target of a 16384x16384 frame at once.)
+TEST(ResourceLimits, OutOfDeviceMemoryIsANamedError) {
+  CommandRun run = RunAerial("render --small-tables --quiet --width 16384 --height 16384 "
+                             "--max-memory-mib 100000 --out /tmp/aerial-budget-test.png");
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find("aerial: error: device memory = vk::Image::bindMemory: ErrorOutOfDeviceMemory is "
+                         "invalid; expected sizes that fit: lower --width/--height"),
+            std::string::npos)
+      << run.err;
+  EXPECT_FALSE(fs::exists("/tmp/aerial-budget-test.png"));
+}
+
+// The estimate of a 1024x1024 render with small tables is 139.8 MiB (printed in the message):
+// 128 MiB rejects it, 512 MiB lets it render.
+TEST(ResourceLimits, MaxMemoryMibSetsTheBudget) {
+  fs::path out = fs::temp_directory_path() / ("aerial-budget-" + std::to_string(::getpid()) + ".png");
+  const std::string render = "render --small-tables --quiet --width 1024 --height 1024 --out " + out.string();
+  ExpectRejected(render + " --max-memory-mib 128",
+                 {"--width/--height = 1024x1024 is invalid", "estimated 139.8 MiB", "> budget 128.0 MiB (--max-memory-mib 128)"});
+  EXPECT_FALSE(fs::exists(out));
+  CommandRun run = RunAerial(render + " --max-memory-mib 512");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(fs::exists(out));
+  fs::remove(out);
+}
+
 }  // namespace
 }  // namespace aerial::testing

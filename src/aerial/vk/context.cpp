@@ -177,6 +177,16 @@ void Context::Submit(const std::function<void(const ::vk::raii::CommandBuffer&)>
     throw Error("vkWaitForFences", "timeout", "completion");
 }
 
+uint64_t Context::largest_heap_bytes() const {
+  auto memory = physical_device_.getMemoryProperties();
+  uint64_t largest = 0;
+  for (uint32_t i = 0; i < memory.memoryHeapCount; ++i) {
+    if (memory.memoryHeaps[i].flags & ::vk::MemoryHeapFlagBits::eDeviceLocal)
+      largest = std::max<uint64_t>(largest, memory.memoryHeaps[i].size);
+  }
+  return largest;
+}
+
 uint32_t Context::FindMemoryType(uint32_t type_bits, ::vk::MemoryPropertyFlags properties) const {
   auto memory = physical_device_.getMemoryProperties();
   for (uint32_t i = 0; i < memory.memoryTypeCount; ++i) {
