@@ -50,6 +50,16 @@ TEST(Cli, ExportVdbWritesTheFroxelVolume) {
   std::filesystem::remove_all(dir);
 }
 
+// Without a Vulkan driver the message says so and how to install one, instead of the loader's
+// "vkCreateInstance: ErrorIncompatibleDriver".
+TEST(Cli, NoVulkanDriverSaysHowToInstallOne) {
+  CommandRun run = RunAerial(kProbe, "env VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json");
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find("Vulkan driver = none found"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("apt install mesa-vulkan-drivers"), std::string::npos) << run.err;
+  EXPECT_TRUE(run.out.empty()) << run.out;
+}
+
 struct BadInput {
   std::string arguments;
   std::string must_mention;
@@ -86,6 +96,17 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"precompute --small-tables --quiet --out /proc/aerial-cannot-write", "/proc/aerial-cannot-write"},
         BadInput{"precompute --atmosphere " AERIAL_SOURCE_DIR "/tests/data/bad_mie_g.toml", "mie.phase_g"},
         BadInput{"precompute --atmosphere " AERIAL_SOURCE_DIR "/tests/data/unknown_key.toml", "rayleigh.scatterring"},
+        // Finite doubles beyond float (issue 13): they gave null in the JSON and exit status 0.
+        BadInput{"probe --small-tables --quiet --altitude-m 1 --view-zenith-deg 45 --sun-zenith-deg 30 --azimuth-deg 0 "
+                 "--atmosphere " AERIAL_SOURCE_DIR "/tests/data/huge_solar_irradiance.toml",
+                 "solar_irradiance[0] = 1e+300 is invalid"},
+        BadInput{"probe --small-tables --quiet --altitude-m 1 --view-zenith-deg 45 --sun-zenith-deg 30 --azimuth-deg 0 "
+                 "--atmosphere " AERIAL_SOURCE_DIR "/tests/data/huge_rayleigh.toml",
+                 "rayleigh.scattering[1] = 1e+300 is invalid"},
+        BadInput{"render --small-tables --scene " AERIAL_SOURCE_DIR "/tests/data/huge_near.toml --out /tmp/aerial-cli-test.png",
+                 "camera.near_m = 1e+30 is invalid"},
+        BadInput{"render --small-tables --scene " AERIAL_SOURCE_DIR "/tests/data/huge_mesh_scale.toml --out /tmp/aerial-cli-test.png",
+                 "mesh[0].scale = 1e+300 (places a vertex"},
         BadInput{"render --preset no-such-preset --out /tmp/aerial-cli-test.png", "no-such-preset"},
         BadInput{"render --width 0 --height 10 --out /tmp/aerial-cli-test.png", "--width"},
         BadInput{"render --width 100000 --height 10 --out /tmp/aerial-cli-test.png", "--width"},

@@ -1,5 +1,8 @@
 #pragma once
 // Runs the built `aerial` command as users do, for the command-line tests.
+#include <sys/resource.h>
+
+#include <optional>
 #include <string>
 
 namespace aerial::testing {
@@ -10,8 +13,16 @@ struct CommandRun {
   std::string err;
 };
 
-// `aerial <arguments>`, optionally under a wrapper command ("xvfb-run -a"); stdout and stderr
-// captured separately.
+struct RunOptions {
+  // A command aerial runs under ("xvfb-run -a", "env NAME=value").
+  std::string wrapper;
+  // RLIMIT_FSIZE of the child, a full disk in miniature: with SIGXFSZ ignored (as the child
+  // inherits it), a write past the limit fails with EFBIG instead of killing the process.
+  std::optional<rlim_t> file_size_limit_bytes;
+};
+
+// `aerial <arguments>`; stdout and stderr captured separately.
+CommandRun RunAerial(const std::string& arguments, const RunOptions& options);
 CommandRun RunAerial(const std::string& arguments, const std::string& wrapper = "");
 
 }  // namespace aerial::testing

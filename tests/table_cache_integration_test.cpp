@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "aerial/precompute/table_store.h"
@@ -89,6 +90,31 @@ TEST_F(TableCacheIntegration, FileFromAnotherParameterSetIsNotUsed) {
   std::string log = ::testing::internal::GetCapturedStderr();
   EXPECT_FALSE(loaded.from_cache);
   EXPECT_NE(log.find("cache key"), std::string::npos) << log;
+}
+
+// A cache write killed with -9 leaves its temporary (33 MB with the default tables) behind; the
+// next use of the cache removes it once its writer is gone, and only then.
+TEST_F(TableCacheIntegration, TemporariesOfDeadWritersAreRemoved) {
+  fs::create_directories(dir_);
+  pid_t dead = ::fork();
+  if (dead == 0) ::_exit(0);
+  ASSERT_GT(dead, 0);
+  ::waitpid(dead, nullptr, 0);  // reaped: its pid names no process now (until the system reuses it)
+  auto temporary = [&](const std::string& target, pid_t pid, const std::string& random) {
+    fs::path path = dir_ / (target + ".tmp-" + std::to_string(pid) + "-" + random);
+    std::ofstream(path) << "half a cache";
+    return path;
+  };
+  const std::string cache = "tables-4d-0123456789abcdef-0123456789abcdef.bin";
+  fs::path stale = temporary(cache, dead, "0123456789abcdef");
+  fs::path live = temporary(cache, ::getpid(), "0123456789abcdef");        // a write in progress
+  fs::path foreign = temporary("notes.txt", dead, "0123456789abcdef");     // not a cache file's
+  fs::path unlike = temporary(cache, dead, "0123");                        // not our naming
+  Load();
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_TRUE(fs::exists(live));
+  EXPECT_TRUE(fs::exists(foreign));
+  EXPECT_TRUE(fs::exists(unlike));
 }
 
 }  // namespace

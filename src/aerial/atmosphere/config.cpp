@@ -1,6 +1,8 @@
 #include "aerial/atmosphere/config.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -48,31 +50,87 @@ DensityProfile ReadDensity(TomlReader& r, const toml::node& node, const std::str
   return profile;
 }
 
+// The physical ranges of Validate(), in one place. Each is checked on the value as the shaders
+// receive it, rounded to float (AtmosphereUniforms): a double such as 1e300 is finite but becomes
+// inf there, and 1e-50 becomes 0.
+// Planet radius: below 1000 km no body keeps an atmosphere (Pluto, 1188 km, is the smallest
+// known); above 100,000 km (Jupiter: 71,492 km) float, in which the shaders work with r,
+// resolves altitude to worse than 8 m.
+constexpr double kMinBottomRadiusM = 1e6, kMaxBottomRadiusM = 1e8;
+// Atmosphere thickness: at least 1 km, so that the tables' r axis spans some 2000 float steps of
+// r at Earth's radius (0.5 m each); at most 1000 km, beyond which exponential profiles and
+// thin-shell sampling do not describe an atmosphere well.
+constexpr double kMinThicknessM = 1e3, kMaxThicknessM = 1e6;
+// Solar spectral irradiance at the top of the atmosphere: the Sun gives about 2 W/m^2/nm at its
+// peak at 1 AU; 1000 is 500 times that (a planet 0.045 AU from a Sun-like star).
+constexpr double kMaxSolarIrradiance = 1e3;
+// Sun's angular radius: 1e-4 rad is the Sun seen from 47 AU (beyond Pluto); 0.1 rad a sun 20
+// times as wide as ours. With the irradiance above, the sun disc's radiance E / (pi r^2) stays
+// below 3.2e10, far inside float.
+constexpr double kMinSunRadiusRad = 1e-4, kMaxSunRadiusRad = 0.1;
+// Scattering, extinction and absorption coefficients: 0.1 m^-1 is a visibility (3.9 / beta) of
+// 39 m, thick fog; Earth's clear air is about 1e-5 m^-1.
+constexpr double kMaxCoefficientPerM = 0.1;
+// Density layer terms: the density is clamped to [0, 1], and float (7 significant digits) could
+// not resolve it from terms larger than 1e6, nor exp() past float's largest (e^88); so each term
+// must stay within +-1e6 at every altitude of the atmosphere.
+constexpr double kMaxDensityTerm = 1e6;
+
+// value as the shaders receive it. Beyond float's range it is +-inf (the conversion itself would
+// be undefined behavior), below its smallest denormal 0.
+double AsFloat(double value) {
+  if (std::fabs(value) > std::numeric_limits<float>::max() && std::isfinite(value))
+    return std::copysign(HUGE_VAL, value);
+  return static_cast<float>(value);
+}
+
 void Check(bool ok, const std::string& field, double value, const std::string& allowed,
            const std::string& where) {
   if (!ok) throw Error(field, TomlFloat(value), allowed, where);
 }
 
-void CheckSpectrum(const Spectrum& s, const std::string& field, double low, double high,
-                   const std::string& allowed, const std::string& where) {
-  for (size_t i = 0; i < 3; ++i) {
-    bool ok = s[i] >= low && s[i] <= high && std::isfinite(s[i]);
-    Check(ok, TomlReader::Index(field, i), s[i], allowed, where);
-  }
+// A value in [low, high] once rounded to float; NaN fails every comparison.
+void CheckRange(double value, const std::string& field, double low, double high,
+                const std::string& unit, const std::string& where) {
+  double f = AsFloat(value);
+  Check(f >= low && f <= high, field, value,
+        "in [" + TomlFloat(low) + ", " + TomlFloat(high) + "]" + unit + " (as float)", where);
 }
 
-void CheckDensity(const DensityProfile& profile, const std::string& field,
+void CheckSpectrum(const Spectrum& s, const std::string& field, double low, double high,
+                   const std::string& unit, const std::string& where) {
+  for (size_t i = 0; i < 3; ++i) CheckRange(s[i], TomlReader::Index(field, i), low, high, unit, where);
+}
+
+// Each term of density(h) = exp_term * exp(exp_scale_per_m * h) + linear_term_per_m * h +
+// constant_term within kMaxDensityTerm over h in [0, thickness], in float.
+void CheckDensity(const DensityProfile& profile, const std::string& field, double thickness_m,
                   const std::string& where) {
   std::vector<const DensityProfileLayer*> layers = config_layers::FileLayers(profile);
+  const std::string within = " (each term of the density within +-" + TomlFloat(kMaxDensityTerm) +
+                             " up to the top, " + TomlFloat(thickness_m) + " m)";
   for (size_t i = 0; i < layers.size(); ++i) {
     std::string layer_field = TomlReader::Index(field, i);
-    for (auto [key, member] : kFields) {
+    auto key = [&](const char* name) { return TomlReader::Join(layer_field, name); };
+    for (auto [name, member] : kFields) {
       double value = layers[i]->*member;
-      Check(std::isfinite(value), TomlReader::Join(layer_field, key), value, "a finite number",
-            where);
+      Check(std::isfinite(AsFloat(value)), key(name), value, "a finite number (as float)", where);
     }
-    Check(layers[i]->width_m >= 0.0, TomlReader::Join(layer_field, "width_m"), layers[i]->width_m,
-          ">= 0 m", where);
+    const DensityProfileLayer& l = *layers[i];
+    Check(l.width_m >= 0.0, key("width_m"), l.width_m, ">= 0 m", where);
+    Check(std::fabs(l.exp_term) <= kMaxDensityTerm, key("exp_term"), l.exp_term,
+          "at most " + TomlFloat(kMaxDensityTerm) + " in magnitude", where);
+    // The exponential is largest at one end of [0, thickness]. exp() itself must stay within the
+    // bound even when exp_term is 0, or 0 * inf gives NaN in the shaders. Compared as logarithms,
+    // so that exp() cannot overflow here either.
+    double growth = std::max(0.0, l.exp_scale_per_m * thickness_m);
+    Check(std::log(std::max(std::fabs(l.exp_term), 1.0)) + growth <= std::log(kMaxDensityTerm),
+          key("exp_scale_per_m"), l.exp_scale_per_m, "a scale that keeps exp_term * exp(scale * h)" + within,
+          where);
+    Check(std::fabs(l.linear_term_per_m) * thickness_m <= kMaxDensityTerm, key("linear_term_per_m"),
+          l.linear_term_per_m, "a slope that keeps linear_term_per_m * h" + within, where);
+    Check(std::fabs(l.constant_term) <= kMaxDensityTerm, key("constant_term"), l.constant_term,
+          "at most " + TomlFloat(kMaxDensityTerm) + " in magnitude", where);
   }
 }
 
@@ -176,45 +234,45 @@ AtmosphereParameters LoadAtmosphereFile(const std::filesystem::path& path) {
 }
 
 void Validate(const AtmosphereParameters& a, const std::string& where) {
-  const std::string non_negative = ">= 0 and finite";
-  CheckSpectrum(a.wavelengths_nm, "wavelengths_nm", 300.0, 1000.0, "[300, 1000] nm", where);
-  CheckSpectrum(a.solar_irradiance, "solar_irradiance", 0.0, HUGE_VAL, non_negative, where);
-  Check(a.sun_angular_radius_rad > 0.0 && a.sun_angular_radius_rad <= 0.1, "sun_angular_radius_rad",
-        a.sun_angular_radius_rad, "(0, 0.1] rad", where);
-  Check(a.bottom_radius_m > 0.0 && std::isfinite(a.bottom_radius_m), "bottom_radius_m",
-        a.bottom_radius_m, "> 0 m and finite", where);
-  // The tables parameterize altitude over [bottom, top]; a shell thicker than 1000 km is not an
-  // atmosphere this model (exponential profiles, thin-shell sampling) describes well.
-  Check(a.top_radius_m > a.bottom_radius_m && a.top_radius_m - a.bottom_radius_m <= 1e6,
-        "top_radius_m", a.top_radius_m,
-        "in (bottom_radius_m, bottom_radius_m + 1000 km] = (" + TomlFloat(a.bottom_radius_m) +
-            ", " + TomlFloat(a.bottom_radius_m + 1e6) + "] m",
+  const std::string per_m = " m^-1";
+  CheckSpectrum(a.wavelengths_nm, "wavelengths_nm", 300.0, 1000.0, " nm", where);
+  CheckSpectrum(a.solar_irradiance, "solar_irradiance", 0.0, kMaxSolarIrradiance, " W/m^2/nm", where);
+  CheckRange(a.sun_angular_radius_rad, "sun_angular_radius_rad", kMinSunRadiusRad, kMaxSunRadiusRad,
+             " rad", where);
+  CheckRange(a.bottom_radius_m, "bottom_radius_m", kMinBottomRadiusM, kMaxBottomRadiusM, " m", where);
+  // The tables parameterize altitude over [bottom, top], as floats.
+  double thickness_m = AsFloat(a.top_radius_m) - AsFloat(a.bottom_radius_m);
+  Check(thickness_m >= kMinThicknessM && thickness_m <= kMaxThicknessM, "top_radius_m", a.top_radius_m,
+        "in [bottom_radius_m + " + TomlFloat(kMinThicknessM / 1e3) + " km, bottom_radius_m + " +
+            TomlFloat(kMaxThicknessM / 1e3) + " km] = [" + TomlFloat(a.bottom_radius_m + kMinThicknessM) +
+            ", " + TomlFloat(a.bottom_radius_m + kMaxThicknessM) + "] m",
         where);
-  CheckSpectrum(a.ground_albedo, "ground_albedo", 0.0, 1.0, "[0, 1]", where);
-  if (!(a.mu_s_min >= -1.0 && a.mu_s_min <= 0.0)) {
+  CheckSpectrum(a.ground_albedo, "ground_albedo", 0.0, 1.0, "", where);
+  if (!(AsFloat(a.mu_s_min) >= -1.0 && AsFloat(a.mu_s_min) <= 0.0)) {
     throw Error("max_sun_zenith_deg",
                 TomlFloat(std::acos(a.mu_s_min) * 180.0 / std::numbers::pi) +
                     " (mu_s_min = " + TomlFloat(a.mu_s_min) + ")",
                 "[90, 180] degrees (mu_s_min in [-1, 0])", where);
   }
-  CheckSpectrum(a.rayleigh_scattering, "rayleigh.scattering", 0.0, HUGE_VAL, non_negative, where);
-  CheckDensity(a.rayleigh_density, "rayleigh.density", where);
-  CheckSpectrum(a.mie_scattering, "mie.scattering", 0.0, HUGE_VAL, non_negative, where);
-  CheckSpectrum(a.mie_extinction, "mie.extinction", 0.0, HUGE_VAL, non_negative, where);
+  CheckSpectrum(a.rayleigh_scattering, "rayleigh.scattering", 0.0, kMaxCoefficientPerM, per_m, where);
+  CheckDensity(a.rayleigh_density, "rayleigh.density", thickness_m, where);
+  CheckSpectrum(a.mie_scattering, "mie.scattering", 0.0, kMaxCoefficientPerM, per_m, where);
+  CheckSpectrum(a.mie_extinction, "mie.extinction", 0.0, kMaxCoefficientPerM, per_m, where);
   // Extinction = scattering + absorption, and absorption cannot be negative.
   for (size_t i = 0; i < 3; ++i) {
-    Check(a.mie_extinction[i] >= a.mie_scattering[i], TomlReader::Index("mie.extinction", i),
-          a.mie_extinction[i],
+    Check(AsFloat(a.mie_extinction[i]) >= AsFloat(a.mie_scattering[i]),
+          TomlReader::Index("mie.extinction", i), a.mie_extinction[i],
           ">= mie.scattering[" + std::to_string(i) + "] = " + TomlFloat(a.mie_scattering[i]) +
               " (extinction includes scattering)",
           where);
   }
-  // g = +-1 makes the Cornette-Shanks phase function a delta peak (division by zero at theta 0).
-  Check(a.mie_phase_g > -1.0 && a.mie_phase_g < 1.0, "mie.phase_g", a.mie_phase_g,
-        "in (-1, 1), open", where);
-  CheckDensity(a.mie_density, "mie.density", where);
-  CheckSpectrum(a.absorption_extinction, "ozone.absorption", 0.0, HUGE_VAL, non_negative, where);
-  CheckDensity(a.absorption_density, "ozone.density", where);
+  // g = +-1 makes the Cornette-Shanks phase function a delta peak (division by zero at theta 0);
+  // a g that rounds to +-1 in float does the same in the shaders.
+  Check(AsFloat(a.mie_phase_g) > -1.0 && AsFloat(a.mie_phase_g) < 1.0, "mie.phase_g", a.mie_phase_g,
+        "in (-1, 1), open (as float)", where);
+  CheckDensity(a.mie_density, "mie.density", thickness_m, where);
+  CheckSpectrum(a.absorption_extinction, "ozone.absorption", 0.0, kMaxCoefficientPerM, per_m, where);
+  CheckDensity(a.absorption_density, "ozone.density", thickness_m, where);
 }
 
 }  // namespace aerial

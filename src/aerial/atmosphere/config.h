@@ -26,11 +26,14 @@ AtmosphereParameters LoadAtmosphereFile(const std::filesystem::path& path);
 // Parses and validates TOML text; where names the source in messages (usually the path).
 AtmosphereParameters ParseAtmosphereToml(std::string_view text, const std::string& where);
 
-// Checks physical ranges: radii > 0 with 0 < top - bottom <= 1000 km; wavelengths in
-// [300, 1000] nm; irradiance, scattering, extinction and absorption >= 0 and finite, with Mie
-// extinction >= Mie scattering; sun angular radius in (0, 0.1] rad; Mie g in (-1, 1); albedo in
-// [0, 1]; mu_s_min in [-1, 0] (max_sun_zenith_deg in [90, 180]); density layer values finite with
-// width >= 0. Errors name fields by their TOML keys. where is copied into the Error.
+// Checks physical ranges, on each value as the shaders receive it (rounded to float): bottom
+// radius in [1000, 100000] km and thickness top - bottom in [1, 1000] km; wavelengths in
+// [300, 1000] nm; solar irradiance in [0, 1000] W/m^2/nm; sun angular radius in [1e-4, 0.1] rad;
+// scattering, extinction and absorption in [0, 0.1] m^-1, with Mie extinction >= Mie scattering;
+// Mie g in (-1, 1); albedo in [0, 1]; mu_s_min in [-1, 0] (max_sun_zenith_deg in [90, 180]);
+// density layers with width >= 0 and each term within +-1e6 at every altitude. Why each range:
+// config.cpp, next to the constants. Errors name fields by their TOML keys. where is copied into
+// the Error.
 void Validate(const AtmosphereParameters& atmosphere, const std::string& where = "");
 
 // Writes every field in the format above. Doubles are printed in their shortest form that reads

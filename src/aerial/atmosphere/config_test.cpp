@@ -101,15 +101,15 @@ TEST(AtmosphereConfig, MaxSunZenithAnglesGiveExactCosines) {
             MuSMinFromMaxSunZenithDeg(102.0));
 }
 
-// Awkward doubles (non-terminating binary fractions, tiny and huge exponents, an odd angle) and
+// Awkward doubles (non-terminating binary fractions, a denormal, an odd angle) and
 // a name that needs escaping must all survive the trip unchanged.
 TEST(AtmosphereConfig, ToTomlRoundTripsExactly) {
   AtmosphereParameters a = AtmosphereParameters::Earth();
   a.name = "odd \"name\" \\ with\ttab";
   a.wavelengths_nm = {1400.1 / 3.0, 0.1 + 0.2 + 500.0, 300.0};
-  a.solar_irradiance = {1.0 / 3.0, 5e-324, 1e300};
+  a.solar_irradiance = {1.0 / 3.0, 5e-324, 999.99999999999989};
   a.rayleigh_density.layers[0] = {1234.5678, 0.3, -1.0 / 7000.0, 1e-9, 0.1};
-  a.mie_phase_g = -0.999999999;
+  a.mie_phase_g = -0.9999999;
   a.mu_s_min = MuSMinFromMaxSunZenithDeg(97.123456789);
   for (const AtmosphereParameters& p : {AtmosphereParameters::Earth(), a}) {
     std::string text = ToToml(p);
@@ -150,6 +150,21 @@ TEST(AtmosphereConfig, ValidateNamesFieldOfParametersMadeInCode) {
   }
 }
 
+// The values of issue 13, finite as doubles but inf as the floats the shaders receive: the
+// message names the key and the value.
+TEST(AtmosphereConfig, ValuesBeyondFloatAreNamedWithTheirValue) {
+  for (auto [text, message] :
+       {std::pair{"solar_irradiance = [1e300, 1.0, 1.0]", "solar_irradiance[0] = 1e+300 is invalid"},
+        std::pair{"[rayleigh]\nscattering = [1e300, 1e-5, 1e-5]", "rayleigh.scattering[0] = 1e+300 is invalid"}}) {
+    try {
+      ParseAtmosphereToml(text, "snippet.toml");
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  }
+}
+
 struct BadSnippet {
   const char* toml;
   const char* field;  // the dotted key the error must name.
@@ -173,6 +188,27 @@ TEST(AtmosphereConfig, EveryInvalidFieldIsNamedInTheError) {
       {"wavelengths_nm = [680.0, 550.0]", "wavelengths_nm"},
       {"solar_irradiance = [1.0, -1.0, 1.0]", "solar_irradiance[1]"},
       {"solar_irradiance = [1.0, inf, 1.0]", "solar_irradiance[1]"},
+      // Finite doubles that become inf or 0 in float, or leave the physical range.
+      {"solar_irradiance = [1e300, 1.0, 1.0]", "solar_irradiance[0]"},
+      {"solar_irradiance = [1.0, 1.0, 1e39]", "solar_irradiance[2]"},
+      {"solar_irradiance = [1.0, 1.0, 1001.0]", "solar_irradiance[2]"},
+      {"sun_angular_radius_rad = 1e-300", "sun_angular_radius_rad"},
+      {"sun_angular_radius_rad = 5e-5", "sun_angular_radius_rad"},
+      {"bottom_radius_m = 1e300", "bottom_radius_m"},
+      {"bottom_radius_m = 1000.0", "bottom_radius_m"},
+      {"top_radius_m = 6360000.1", "top_radius_m"},  // the same float as the bottom.
+      {"[rayleigh]\nscattering = [1e-6, 1e300, 3e-6]", "rayleigh.scattering[1]"},
+      {"[rayleigh]\nscattering = [1e-6, 2e-6, 0.5]", "rayleigh.scattering[2]"},
+      {"[mie]\nextinction = [1e300, 1e-5, 1e-5]", "mie.extinction[0]"},
+      {"[ozone]\nabsorption = [1e300, 0.0, 0.0]", "ozone.absorption[0]"},
+      {"[mie]\nphase_g = 0.99999999999", "mie.phase_g"},  // 1 in float.
+      {"[rayleigh]\ndensity = [ { exp_term = 1e300 } ]", "rayleigh.density[0].exp_term"},
+      {"[rayleigh]\ndensity = [ { exp_term = 1.0, exp_scale_per_m = 0.01 } ]",
+       "rayleigh.density[0].exp_scale_per_m"},  // e^600 at the top.
+      {"[rayleigh]\ndensity = [ { exp_term = 0.0, exp_scale_per_m = 0.01 } ]",
+       "rayleigh.density[0].exp_scale_per_m"},  // 0 * inf in float.
+      {"[rayleigh]\ndensity = [ { linear_term_per_m = 1e30 } ]", "rayleigh.density[0].linear_term_per_m"},
+      {"[rayleigh]\ndensity = [ { constant_term = 1e39 } ]", "rayleigh.density[0].constant_term"},
       {"sun_angular_radius_rad = 0.0", "sun_angular_radius_rad"},
       {"sun_angular_radius_rad = 0.2", "sun_angular_radius_rad"},
       {"ground_albedo = [0.1, 2.0, 0.1]", "ground_albedo[1]"},

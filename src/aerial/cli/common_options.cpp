@@ -28,6 +28,10 @@ void TableOptions::AddTo(CLI::App& command) {
   command.add_option("--device", device, "Vulkan device to use: part of its name (or AERIAL_DEVICE)");
   command.add_flag("--validation", validation, "Enable the Vulkan validation layers (or AERIAL_VALIDATION=1)");
   command.add_flag("--quiet", quiet, "No progress bar");
+  command.add_option("--max-memory-mib", max_memory_mib,
+                     "Memory budget for tables, froxels and images, checked before allocating (default " +
+                         std::to_string(kDefaultMemoryBudgetMiB) + ", or the device's memory if smaller)")
+      ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 30));
 }
 
 AtmosphereParameters TableOptions::LoadAtmosphere() const {
@@ -63,6 +67,10 @@ vk::ContextCreateInfo TableOptions::MakeContextInfo() const {
 
 std::unique_ptr<vk::Context> TableOptions::MakeContext() const {
   return std::make_unique<vk::Context>(MakeContextInfo());
+}
+
+MemoryBudget TableOptions::MakeMemoryBudget(const vk::Context& context) const {
+  return aerial::MakeMemoryBudget(max_memory_mib, context.largest_heap_bytes());
 }
 
 TableStoreOptions TableOptions::MakeStoreOptions() const {

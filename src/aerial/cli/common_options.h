@@ -2,13 +2,16 @@
 // Options shared by every command that uses tables: the atmosphere file, the table variant and
 // resolution knobs, the cache, the Vulkan device.
 #include <filesystem>
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "aerial/atmosphere/parameters.h"
+#include "aerial/core/memory_budget.h"
 #include "aerial/precompute/table_store.h"
 #include "aerial/vk/context.h"
 
@@ -29,6 +32,7 @@ struct TableOptions {
   std::string device;
   bool validation = false;
   bool quiet = false;
+  std::optional<uint64_t> max_memory_mib;
 
   void AddTo(CLI::App& command);
   AtmosphereParameters LoadAtmosphere() const;
@@ -36,6 +40,8 @@ struct TableOptions {
   vk::ContextCreateInfo MakeContextInfo() const;  // --device, --validation
   std::unique_ptr<vk::Context> MakeContext() const;
   TableStoreOptions MakeStoreOptions() const;
+  // --max-memory-mib, else the default budget or the device's heap when smaller.
+  MemoryBudget MakeMemoryBudget(const vk::Context& context) const;
 };
 
 }  // namespace aerial::cli

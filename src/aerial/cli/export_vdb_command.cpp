@@ -8,6 +8,7 @@
 
 #include "aerial/cli/commands.h"
 #include "aerial/cli/common_options.h"
+#include "aerial/cli/memory_uses.h"
 #include "aerial/cli/scene_options.h"
 #include "aerial/export/froxel_export.h"
 #include "aerial/render/renderer.h"
@@ -30,13 +31,16 @@ void RunExportVdb(const ExportVdbCommandOptions& options) {
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
   PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
   FroxelGrid grid = options.froxels.Make();
-  RenderOptions{.width = options.size.width, .height = options.size.height, .froxels = grid}.Validate();
+  RenderOptions render{.width = options.size.width, .height = options.size.height, .froxels = grid};
+  render.Validate();
   Scene scene = options.scene.Load(atmosphere.bottom_radius_m);
   if (options.world_grid_m) {
     FroxelPlacement placement(CaptureFrameUniforms(scene, atmosphere.bottom_radius_m, grid, options.size), grid);
     CheckWorldGrid(*options.world_grid_m, placement);
   }
   auto context = options.tables.MakeContext();
+  options.tables.MakeMemoryBudget(*context).Check(
+      Combined(TableMemoryUses(precompute), Combined(FrameMemoryUses(render), FroxelExportMemoryUses(grid))));
   LoadedTables loaded = LoadOrPrecompute(*context, atmosphere, precompute, options.tables.MakeStoreOptions());
   FroxelFrame frame = CaptureFroxels(*loaded.tables, scene, grid, options.size);
   VdbVolume volume = options.world_grid_m ? MakeWorldSpaceVolume(frame, *options.world_grid_m)

@@ -2,6 +2,7 @@
 // values, files, Vulkan) arrive here as exceptions, are printed once and turn into exit status 1.
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -9,6 +10,23 @@
 #include "aerial/cli/commands.h"
 #include "aerial/core/error.h"
 #include "aerial/vk/context.h"
+
+namespace {
+
+int Fail(const std::exception& e) {
+  std::fprintf(stderr, "aerial: error: %s\n", e.what());
+  return 1;
+}
+
+// The last resort when memory runs out: the estimates checked against --max-memory-mib before
+// allocating should have caught it first.
+aerial::Error OutOfMemory(const std::string& memory, const std::string& reason) {
+  return aerial::Error(memory, reason,
+                       "sizes that fit: lower --width/--height, --froxels or the table sizes, or a "
+                       "--max-memory-mib that this machine has, so that the estimate stops it first");
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"aerial: precomputed atmospheric scattering (Bruneton 2008) on Vulkan"};
@@ -39,11 +57,15 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   } catch (const aerial::Error& e) {
-    std::fprintf(stderr, "aerial: error: %s\n", e.what());
-    return 1;
+    return Fail(e);
+  } catch (const ::vk::OutOfDeviceMemoryError& e) {
+    return Fail(OutOfMemory("device memory", e.what()));
+  } catch (const ::vk::OutOfHostMemoryError& e) {
+    return Fail(OutOfMemory("host memory", e.what()));
+  } catch (const std::bad_alloc& e) {
+    return Fail(OutOfMemory("host memory", e.what()));
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "aerial: error: %s\n", e.what());
-    return 1;
+    return Fail(e);
   }
   // With validation on, any message is a failure even if the command otherwise succeeded.
   if (int messages = aerial::vk::Context::ValidationMessageCount(); messages > 0) {

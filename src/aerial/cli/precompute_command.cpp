@@ -4,6 +4,7 @@
 
 #include "aerial/cli/commands.h"
 #include "aerial/cli/common_options.h"
+#include "aerial/cli/memory_uses.h"
 
 namespace aerial::cli {
 
@@ -16,6 +17,7 @@ void AddPrecomputeCommand(CLI::App& app) {
     AtmosphereParameters atmosphere = options->LoadAtmosphere();
     PrecomputeOptions precompute = options->MakePrecomputeOptions();
     auto context = options->MakeContext();
+    options->MakeMemoryBudget(*context).Check(TableMemoryUses(precompute));
     TableStoreOptions store = options->MakeStoreOptions();
     store.require_cache_write = true;
     LoadedTables loaded = LoadOrPrecompute(*context, atmosphere, precompute, store);

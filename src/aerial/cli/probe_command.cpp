@@ -10,6 +10,7 @@
 
 #include "aerial/cli/commands.h"
 #include "aerial/cli/common_options.h"
+#include "aerial/cli/memory_uses.h"
 #include "aerial/core/error.h"
 #include "aerial/probe/table_probe.h"
 #include "aerial/reference/reference.h"
@@ -58,6 +59,7 @@ void RunProbe(const ProbeOptions& options) {
     result = ProbeWithReference(atmosphere, ray, options.distance_m, precompute.RepresentedOrders());
   } else {
     auto context = options.tables.MakeContext();
+    options.tables.MakeMemoryBudget(*context).Check(TableMemoryUses(precompute));
     LoadedTables loaded =
         LoadOrPrecompute(*context, atmosphere, precompute, options.tables.MakeStoreOptions());
     ProbeQuery query{ray, options.distance_m.value_or(0.0)};

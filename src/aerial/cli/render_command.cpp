@@ -6,6 +6,7 @@
 
 #include "aerial/cli/commands.h"
 #include "aerial/cli/common_options.h"
+#include "aerial/cli/memory_uses.h"
 #include "aerial/cli/scene_options.h"
 #include "aerial/image/image_writer.h"
 #include "aerial/render/renderer.h"
@@ -26,9 +27,11 @@ void RunRender(const RenderCommandOptions& options) {
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
   RenderOptions render = options.frame.MakeRenderOptions();
   Scene scene = options.scene.Load(atmosphere.bottom_radius_m);
+  PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
   auto context = options.tables.MakeContext();
-  LoadedTables loaded = LoadOrPrecompute(*context, atmosphere, options.tables.MakePrecomputeOptions(),
-                                         options.tables.MakeStoreOptions());
+  options.tables.MakeMemoryBudget(*context).Check(Combined(TableMemoryUses(precompute), FrameMemoryUses(render)));
+  LoadedTables loaded =
+      LoadOrPrecompute(*context, atmosphere, precompute, options.tables.MakeStoreOptions());
   Renderer renderer(*loaded.tables, scene, render);
   renderer.Render(scene);  // the first frame includes lavapipe's shader compilation
   std::vector<vk::PassTime> times = renderer.Render(scene);

@@ -4,6 +4,7 @@
 
 #include "aerial/cli/commands.h"
 #include "aerial/cli/common_options.h"
+#include "aerial/cli/memory_uses.h"
 #include "aerial/cli/scene_options.h"
 #include "aerial/core/atomic_file.h"
 #include "aerial/core/error.h"
@@ -40,6 +41,17 @@ std::map<LutVariant, PrecomputeOptions> TableVariants(const TableOptions& tables
   return variants;
 }
 
+// Each variant's tables (the difference view shows both, each drawn by its own renderer), the
+// background precompute's scratch, and the window. A short-lived context on the same device gives
+// the budget its heap size, before the viewer allocates anything.
+void CheckViewerMemory(const TableOptions& tables, const viewer::ViewerOptions& viewer) {
+  std::vector<MemoryUse> uses = SwapchainMemoryUses(viewer.render);
+  for (const auto& [variant, precompute] : viewer.tables) uses = Combined(uses, TableMemoryUses(precompute));
+  uses = Combined(uses, FrameMemoryUses(viewer.render, int(viewer.tables.size())));
+  vk::Context device(viewer.context);
+  tables.MakeMemoryBudget(device).Check(uses);
+}
+
 void RunView(const ViewCommandOptions& options) {
   if (!options.screenshot.empty()) {
     if (options.frames == 0) {
@@ -59,6 +71,7 @@ void RunView(const ViewCommandOptions& options) {
   viewer.scene = options.scene.Load(viewer.atmosphere.bottom_radius_m);
   viewer.store = options.tables.MakeStoreOptions();
   viewer.context = options.tables.MakeContextInfo();
+  CheckViewerMemory(options.tables, viewer);
   viewer.exposure = options.frame.exposure;
   viewer.frames = options.frames;
   viewer.screenshot = options.screenshot;

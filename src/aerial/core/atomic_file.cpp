@@ -1,6 +1,7 @@
 #include "aerial/core/atomic_file.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -8,6 +9,7 @@
 #include <cstring>
 #include <random>
 #include <string>
+#include <string_view>
 #include <system_error>
 
 #include "aerial/core/error.h"
@@ -46,7 +48,12 @@ void EnsureParentDirectory(const fs::path& path) {
     Fail(path, "use " + parent.string() + " as a directory", ENOTDIR);
 }
 
-// The pid separates concurrent processes; the random part separates threads and reused pids.
+// The pid separates concurrent processes (and tells RemoveStaleTemporaries whether the writer
+// still runs); the random part separates threads and reused pids. The constants spell out the
+// format below for TemporaryOwner.
+constexpr std::string_view kTemporaryMarker = ".tmp-";
+constexpr size_t kRandomDigits = 16;
+
 fs::path TemporaryNameFor(const fs::path& path) {
   static thread_local std::mt19937_64 random{std::random_device{}()};
   char suffix[64];
@@ -57,12 +64,32 @@ fs::path TemporaryNameFor(const fs::path& path) {
   return temporary;
 }
 
-void WriteAll(int fd, const std::byte* data, size_t size, const fs::path& temporary) {
+// The writer's pid when name is "<target>.tmp-<pid>-<16 lowercase hex digits>" with a target
+// starting with target_prefix, else 0.
+pid_t TemporaryOwner(std::string_view name, std::string_view target_prefix) {
+  if (!name.starts_with(target_prefix)) return 0;
+  size_t marker = name.rfind(kTemporaryMarker);
+  if (marker == std::string_view::npos || marker == 0 || marker < target_prefix.size()) return 0;
+  std::string_view rest = name.substr(marker + kTemporaryMarker.size());  // "<pid>-<hex>"
+  size_t dash = rest.find('-');
+  if (dash == std::string_view::npos || dash == 0 || rest.size() - dash - 1 != kRandomDigits) return 0;
+  long pid = 0;
+  for (char c : rest.substr(0, dash)) {
+    if (c < '0' || c > '9' || pid > 1'000'000'000) return 0;
+    pid = pid * 10 + (c - '0');
+  }
+  for (char c : rest.substr(dash + 1))
+    if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'))) return 0;
+  return static_cast<pid_t>(pid);
+}
+
+// Failures name the target, the path the user asked for; the temporary is removed by the caller.
+void WriteAll(int fd, const std::byte* data, size_t size, const fs::path& path) {
   while (size > 0) {
     ssize_t written = ::write(fd, data, size);
     if (written < 0) {
       if (errno == EINTR) continue;
-      Fail(temporary, "write", errno);
+      Fail(path, "write", errno);
     }
     data += written;
     size -= static_cast<size_t>(written);
@@ -80,10 +107,10 @@ void SyncDirectory(const fs::path& directory) {
 // Syncs and closes the written temporary, then renames it over path. close() can report a
 // deferred write error (NFS, quota), so it is checked rather than left to the destructor.
 void CommitTemporary(Fd& file, const fs::path& temporary, const fs::path& path) {
-  if (::fsync(file.fd) != 0) Fail(temporary, "sync", errno);
+  if (::fsync(file.fd) != 0) Fail(path, "write (sync)", errno);
   int fd = file.fd;
   file.fd = -1;
-  if (::close(fd) != 0) Fail(temporary, "close", errno);
+  if (::close(fd) != 0) Fail(path, "write (close)", errno);
   if (::rename(temporary.c_str(), path.c_str()) != 0) Fail(path, "rename a file over", errno);
 }
 
@@ -95,7 +122,7 @@ void WriteFileAtomically(const fs::path& path, std::span<const std::byte> bytes)
   Fd file{::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)};
   if (file.fd < 0) Fail(path, "create the temporary " + temporary.filename().string(), errno);
   try {
-    WriteAll(file.fd, bytes.data(), bytes.size(), temporary);
+    WriteAll(file.fd, bytes.data(), bytes.size(), path);
     CommitTemporary(file, temporary, path);
   } catch (...) {
     ::unlink(temporary.c_str());
@@ -108,20 +135,17 @@ void WriteFileAtomically(const fs::path& path, std::string_view text) {
   WriteFileAtomically(path, std::as_bytes(std::span(text.data(), text.size())));
 }
 
-void WriteFileAtomicallyWith(const fs::path& path,
-                             const std::function<void(const fs::path& temporary)>& write) {
-  EnsureParentDirectory(path);
-  const fs::path temporary = TemporaryNameFor(path);
-  try {
-    write(temporary);
-    Fd file{::open(temporary.c_str(), O_WRONLY | O_CLOEXEC)};
-    if (file.fd < 0) Fail(temporary, "open the written temporary", errno);
-    CommitTemporary(file, temporary, path);
-  } catch (...) {
-    ::unlink(temporary.c_str());
-    throw;
+std::vector<fs::path> RemoveStaleTemporaries(const fs::path& directory, std::string_view target_prefix) {
+  std::vector<fs::path> removed;
+  std::error_code ec;
+  for (fs::directory_iterator it(directory, ec), end; !ec && it != end; it.increment(ec)) {
+    std::error_code ignored;
+    pid_t owner = TemporaryOwner(it->path().filename().string(), target_prefix);
+    if (owner <= 0 || !it->is_regular_file(ignored)) continue;
+    if (::kill(owner, 0) == 0 || errno != ESRCH) continue;  // running, or not ours to signal
+    if (fs::remove(it->path(), ignored)) removed.push_back(it->path());
   }
-  SyncDirectory(ParentOf(path));
+  return removed;
 }
 
 std::vector<std::byte> ReadFile(const fs::path& path) {

@@ -6,7 +6,6 @@
 // reason.
 #include <cstddef>
 #include <filesystem>
-#include <functional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -19,11 +18,13 @@ namespace aerial {
 void WriteFileAtomically(const std::filesystem::path& path, std::span<const std::byte> bytes);
 void WriteFileAtomically(const std::filesystem::path& path, std::string_view text);
 
-// The same for a writer that must be given a file name (a library that opens the file itself):
-// write(temporary) creates the temporary, which is then synced and renamed over path; if write
-// throws, the temporary is removed and the exception passes on.
-void WriteFileAtomicallyWith(const std::filesystem::path& path,
-                             const std::function<void(const std::filesystem::path& temporary)>& write);
+// Removes the temporaries that writes into directory left when their process died mid-write
+// (kill -9, a crash, a power cut): files named exactly as WriteFileAtomically names them,
+// "<target>.tmp-<pid>-<16 hex digits>", whose target name starts with target_prefix and whose pid
+// is no running process (kill(pid, 0) fails with ESRCH). A live or reused pid keeps its file.
+// Returns the removed paths; a directory that cannot be listed gives none.
+std::vector<std::filesystem::path> RemoveStaleTemporaries(const std::filesystem::path& directory,
+                                                          std::string_view target_prefix);
 
 // Reads the whole file.
 std::vector<std::byte> ReadFile(const std::filesystem::path& path);

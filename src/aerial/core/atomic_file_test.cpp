@@ -87,27 +87,6 @@ TEST_F(AtomicFile, FailedRenameRemovesTemporary) {
   EXPECT_EQ(Entries(), (std::vector<std::string>{"target", "target/inside"}));
 }
 
-TEST_F(AtomicFile, WriterCallbackWritesTheTemporaryThenRenames) {
-  fs::path written;
-  WriteFileAtomicallyWith(dir_ / "out.txt", [&](const fs::path& temporary) {
-    written = temporary;
-    EXPECT_EQ(temporary.parent_path(), dir_);
-    std::ofstream(temporary) << "via a writer";
-  });
-  EXPECT_NE(written, dir_ / "out.txt");
-  EXPECT_EQ(ReadFile(dir_ / "out.txt").size(), std::string("via a writer").size());
-  EXPECT_EQ(Entries(), std::vector<std::string>{"out.txt"});
-}
-
-TEST_F(AtomicFile, WriterCallbackThatThrowsLeavesNothing) {
-  auto half_write = [](const fs::path& temporary) {
-    std::ofstream(temporary) << "half";
-    throw std::runtime_error("writer failed");
-  };
-  EXPECT_THROW(WriteFileAtomicallyWith(dir_ / "out.txt", half_write), std::runtime_error);
-  EXPECT_TRUE(Entries().empty());
-}
-
 TEST_F(AtomicFile, ReadMissingFileNamesPath) {
   try {
     ReadFile(dir_ / "missing.bin");

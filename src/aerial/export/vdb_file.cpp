@@ -4,6 +4,7 @@
 #include <cmath>
 #include <mutex>
 #include <set>
+#include <sstream>
 
 #include <openvdb/openvdb.h>
 
@@ -69,6 +70,20 @@ VdbMetadata ExtractMetadata(const openvdb::MetaMap& map) {
   }
   return metadata;
 }
+
+// The archive format openvdb::io::File writes (seekable: grid offsets recorded, so readers can
+// load grids one by one), encoded into a string instead of a file stream.
+class VdbArchive : public openvdb::io::Archive {
+ public:
+  // Throws openvdb::Exception for what OpenVDB cannot encode, and when the string stream failed
+  // (only for want of memory).
+  std::string Encode(const openvdb::GridPtrVec& grids, const openvdb::MetaMap& metadata) const {
+    std::ostringstream out(std::ios_base::out | std::ios_base::binary);
+    write(out, grids, /*seekable=*/true, metadata);
+    if (!out) OPENVDB_THROW(openvdb::IoError, "out of memory while encoding");
+    return std::move(out).str();
+  }
+};
 
 void CheckVolume(const VdbVolume& volume) {
   if (!(volume.voxel_size_m > 0.0 && std::isfinite(volume.voxel_size_m)))
@@ -153,15 +168,16 @@ void WriteVdb(const std::filesystem::path& path, const VdbVolume& volume) {
   }
   openvdb::MetaMap file_metadata;
   InsertMetadata(file_metadata, volume.file_metadata);
-  WriteFileAtomicallyWith(path, [&](const std::filesystem::path& temporary) {
-    try {
-      openvdb::io::File file(temporary.string());
-      file.write(grids, file_metadata);
-      file.close();
-    } catch (const openvdb::Exception& e) {
-      throw Error("file", path.string(), std::string("a path where we can write a VDB file (") + e.what() + ")");
-    }
-  });
+  // Encoded in memory, then written with write(2), whose every error is checked: openvdb::io::File
+  // writes through an std::ofstream and never looks at its state, so a full disk gave a truncated
+  // file and no error.
+  std::string bytes;
+  try {
+    bytes = VdbArchive().Encode(grids, file_metadata);
+  } catch (const openvdb::Exception& e) {
+    throw Error("file", path.string(), std::string("a VDB file we can encode (") + e.what() + ")");
+  }
+  WriteFileAtomically(path, bytes);
 }
 
 std::array<double, 3> VdbGridData::IndexToWorld(double i, double j, double k) const {

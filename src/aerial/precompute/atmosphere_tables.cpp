@@ -18,7 +18,23 @@ namespace {
           uint32_t(r.scattering_r)};
 }
 
+TexelFormat ToTexelFormat(::vk::Format format) {
+  return format == ::vk::Format::eR16G16B16A16Sfloat ? TexelFormat::kRgba16f : TexelFormat::kRgba32f;
+}
+
+uint64_t Texels(const ::vk::Extent3D& e) { return uint64_t(e.width) * e.height * e.depth; }
+
 }  // namespace
+
+TableBytes TableMemory(const PrecomputeOptions& options) {
+  const TableResolution& r = options.resolution;
+  // Rayleigh and Mie; the 3D variant adds its multiple scattering table (1 texel in 4D, not counted).
+  int scattering_tables = options.variant == LutVariant::k3D ? 3 : 2;
+  return {.transmittance = uint64_t(r.transmittance_mu) * r.transmittance_r * 16,
+          .irradiance = uint64_t(r.irradiance_mu_s) * r.irradiance_r * 16,
+          .scattering = scattering_tables * Texels(ScatteringExtent(r)) *
+                        TexelBytes(ToTexelFormat(ScatteringFormat(options.precision)))};
+}
 
 AtmosphereTables::AtmosphereTables(const vk::Context& context,
                                    const AtmosphereParameters& atmosphere,
@@ -55,10 +71,7 @@ AtmosphereTables::AtmosphereTables(const vk::Context& context,
   });
 }
 
-size_t AtmosphereTables::table_bytes() const {
-  return transmittance_.byte_size() + irradiance_.byte_size() + rayleigh_.byte_size() +
-         mie_.byte_size() + (options_.variant == LutVariant::k3D ? multiple_.byte_size() : 0);
-}
+size_t AtmosphereTables::table_bytes() const { return TableMemory(options_).total(); }
 
 TableCacheKey MakeTableCacheKey(const AtmosphereParameters& atmosphere,
                                 const PrecomputeOptions& options) {
@@ -74,10 +87,6 @@ struct NamedImage {
   const char* name;
   const vk::Image* image;
 };
-
-TexelFormat ToTexelFormat(::vk::Format format) {
-  return format == ::vk::Format::eR16G16B16A16Sfloat ? TexelFormat::kRgba16f : TexelFormat::kRgba32f;
-}
 
 }  // namespace
 

@@ -20,6 +20,17 @@ namespace aerial {
 TableCacheKey MakeTableCacheKey(const AtmosphereParameters& atmosphere,
                                 const PrecomputeOptions& options);
 
+// Memory by what sizes it (the --transmittance-size, --irradiance-size and --scattering-size
+// options), in bytes: used for the tables themselves and for the precompute's scratch tables.
+struct TableBytes {
+  uint64_t transmittance = 0, irradiance = 0, scattering = 0;
+  uint64_t total() const { return transmittance + irradiance + scattering; }
+};
+
+// The memory AtmosphereTables allocates for these options, known before allocating it: the
+// scattering part is the Rayleigh and Mie tables (and in 3D the multiple scattering one).
+TableBytes TableMemory(const PrecomputeOptions& options);
+
 class AtmosphereTables {
  public:
   // Allocates the tables (contents undefined until Precompute or Load).
@@ -39,7 +50,7 @@ class AtmosphereTables {
   const vk::Image& mie() const { return mie_; }
   const vk::Image& multiple() const { return multiple_; }
 
-  // GPU memory of the four tables, in bytes.
+  // GPU memory of the tables, in bytes (TableMemory(options()).total()).
   size_t table_bytes() const;
   TableCacheKey cache_key() const;
 

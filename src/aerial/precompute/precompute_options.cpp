@@ -67,6 +67,28 @@ void CheckMuAxis(const std::string& field, int value) {
     throw Error(field, std::to_string(value), "an even number (split at the horizon)");
 }
 
+// The tables' texel counts are capped so that the slowest allowed precompute (every table at its
+// cap, 16 orders) ends within a few minutes on lavapipe with 2 cores: it took 188 s there, with
+// another job on one of the cores (README, "Memory, disks and the device"). The per-axis ranges
+// alone allowed 4096x4096 transmittance and irradiance tables, which ran for over 5 minutes.
+constexpr int64_t kMaxTransmittanceTexels = int64_t(1) << 20;  // 1024x1024: 6 s
+constexpr int64_t kMaxIrradianceTexels = int64_t(1) << 14;     // 256x64: 1.4 s per order
+// 32x128x128x8, 3.2 times the default: single scattering 26 s, then 8.7 s per order.
+constexpr int64_t kMaxScatteringTexels = int64_t(1) << 22;
+
+void CheckTexels(const std::string& field, std::initializer_list<int> axes, int64_t cap) {
+  int64_t texels = 1;
+  std::string size;
+  for (int axis : axes) {
+    texels *= axis;
+    if (!size.empty()) size += 'x';
+    size += std::to_string(axis);
+  }
+  if (texels > cap)
+    throw Error(field, size + " = " + std::to_string(texels) + " texels",
+                "at most " + std::to_string(cap) + " texels, so that the precompute ends within minutes");
+}
+
 // A nu axis has exactly one slice in the 3D variant, 2 to 64 in the 4D one.
 void CheckNuAxis(const std::string& field, int value, LutVariant variant) {
   if (variant == LutVariant::k3D)
@@ -90,6 +112,11 @@ void PrecomputeOptions::Validate() const {
   CheckNuAxis("scattering nu", r.scattering_nu, variant);
   // The 3D image packs nu and mu_s along x: its width is bounded by maxImageDimension3D (>= 2048).
   CheckRange("scattering nu * mu_s", r.scattering_nu * r.scattering_mu_s, 2, 2048);
+  CheckTexels("transmittance size (--transmittance-size)", {r.transmittance_mu, r.transmittance_r},
+              kMaxTransmittanceTexels);
+  CheckTexels("irradiance size (--irradiance-size)", {r.irradiance_mu_s, r.irradiance_r}, kMaxIrradianceTexels);
+  CheckTexels("scattering size (--scattering-size)",
+              {r.scattering_r, r.scattering_mu, r.scattering_mu_s, r.scattering_nu}, kMaxScatteringTexels);
   const SampleCounts& s = samples;
   CheckRange("transmittance steps", s.transmittance_steps, 8, 10000);
   CheckRange("ray steps", s.ray_steps, 4, 1000);

@@ -82,7 +82,8 @@ struct PrecomputeOptions {
   // (same r, mu_s and nu, half the mu: see SampleCounts). Validate() checks the result.
   void SetScatteringSize(int r, int mu, int mu_s, int nu);
 
-  // Throws aerial::Error naming the field, value and allowed range.
+  // Throws aerial::Error naming the field, value and allowed range; each table's texel count is
+  // capped so that a precompute ends within minutes on a CPU driver.
   void Validate() const;
   uint64_t Hash() const;
   std::string Describe() const;  // one line, for logs and the cache header

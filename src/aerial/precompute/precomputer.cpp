@@ -44,6 +44,22 @@ struct Pipelines {
       scattering_density, indirect_irradiance, multiple_scattering, accumulate;
 };
 
+// The sizes of the intermediate tables, from the options alone (so that their memory can be
+// estimated before anything is allocated).
+::vk::Extent3D DensityExtent(const PrecomputeOptions& o) {
+  const SampleCounts& s = o.samples;
+  return {uint32_t(s.density_nu * s.density_mu_s), uint32_t(s.density_mu), uint32_t(s.density_r)};
+}
+size_t DirectionCount(const PrecomputeOptions& o) {
+  const SampleCounts& s = o.samples;
+  return size_t(s.density_theta_up + s.density_theta_down) * s.density_phi;
+}
+size_t IncidentBytes(const PrecomputeOptions& o) {
+  const SampleCounts& s = o.samples;
+  return DirectionCount(o) * s.density_r * s.density_mu_s * 16;
+}
+size_t DirectionBytes(const PrecomputeOptions& o) { return DirectionCount(o) * o.samples.density_r * 16; }
+
 // Intermediate tables that only live during the precomputation. The per-order ground irradiance
 // and multiple scattering are kept for two consecutive orders (index: order % 2), so that the last
 // order can be compared with the one before it.
@@ -52,32 +68,19 @@ struct Scratch {
       : delta_irradiance{vk::Image(c, {.extent = tables.irradiance().extent()}),
                          vk::Image(c, {.extent = tables.irradiance().extent()})},
         delta_rayleigh(c, {.extent = tables.rayleigh().extent()}),
-        delta_multiple{vk::Image(c, {.extent = DensityExtent(tables)}),
-                       vk::Image(c, {.extent = DensityExtent(tables)})},
-        density(c, {.extent = DensityExtent(tables)}),
-        incident_radiance(c, {.size = IncidentBytes(tables), .usage = ::vk::BufferUsageFlagBits::eStorageBuffer}),
-        directions(c, {.size = DirectionBytes(tables), .usage = ::vk::BufferUsageFlagBits::eStorageBuffer}) {
+        delta_multiple{vk::Image(c, {.extent = DensityExtent(tables.options())}),
+                       vk::Image(c, {.extent = DensityExtent(tables.options())})},
+        density(c, {.extent = DensityExtent(tables.options())}),
+        incident_radiance(c, {.size = IncidentBytes(tables.options()),
+                              .usage = ::vk::BufferUsageFlagBits::eStorageBuffer}),
+        directions(c, {.size = DirectionBytes(tables.options()),
+                       .usage = ::vk::BufferUsageFlagBits::eStorageBuffer}) {
     // Half-precision tables are accumulated in float32 and converted once at the end.
     if (tables.rayleigh().format() != ::vk::Format::eR32G32B32A32Sfloat) {
       rayleigh_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.rayleigh().extent()});
       mie_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.mie().extent()});
       multiple_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.multiple().extent(), .volume = true});
     }
-  }
-  static ::vk::Extent3D DensityExtent(const AtmosphereTables& t) {
-    const SampleCounts& s = t.options().samples;
-    return {uint32_t(s.density_nu * s.density_mu_s), uint32_t(s.density_mu), uint32_t(s.density_r)};
-  }
-  static size_t DirectionCount(const AtmosphereTables& t) {
-    const SampleCounts& s = t.options().samples;
-    return size_t(s.density_theta_up + s.density_theta_down) * s.density_phi;
-  }
-  static size_t IncidentBytes(const AtmosphereTables& t) {
-    const SampleCounts& s = t.options().samples;
-    return DirectionCount(t) * s.density_r * s.density_mu_s * 16;
-  }
-  static size_t DirectionBytes(const AtmosphereTables& t) {
-    return DirectionCount(t) * t.options().samples.density_r * 16;
   }
 
   std::array<vk::Image, 2> delta_irradiance;
@@ -106,6 +109,20 @@ void BlitConvert(const ::vk::raii::CommandBuffer& cmd, const vk::Image& from, co
 
 }  // namespace
 
+TableBytes PrecomputeScratchMemory(const PrecomputeOptions& options) {
+  const TableResolution& r = options.resolution;
+  const ::vk::Extent3D density = DensityExtent(options);
+  uint64_t scattering_texels = uint64_t(r.scattering_nu) * r.scattering_mu_s * r.scattering_mu * r.scattering_r;
+  uint64_t scattering = scattering_texels * 16 +                                          // delta_rayleigh
+                        3 * uint64_t(density.width) * density.height * density.depth * 16 +  // delta_multiple, density
+                        IncidentBytes(options) + DirectionBytes(options);
+  // Float32 copies of the half-precision tables (the multiple one has 1 texel in 4D).
+  if (options.precision == TablePrecision::kFloat16)
+    scattering += scattering_texels * 16 * (options.variant == LutVariant::k3D ? 3 : 2);
+  return {.transmittance = 0, .irradiance = 2 * uint64_t(r.irradiance_mu_s) * r.irradiance_r * 16,
+          .scattering = scattering};
+}
+
 int PrecomputePassCount(const PrecomputeOptions& options) {
   // transmittance, direct irradiance, single scattering, 5 passes per order >= 2, and the ground
   // irradiance of the last order.
@@ -129,7 +146,7 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
   const SampleCounts& samples = tables.options().samples;
   ::vk::Extent3D scattering_threads = tables.rayleigh().extent();
-  ::vk::Extent3D density_threads = Scratch::DensityExtent(tables);
+  ::vk::Extent3D density_threads = DensityExtent(tables.options());
 
   // Each pass is its own submission so that the progress bar advances as the GPU finishes it.
   auto run = [&](const std::string& label, auto&& record) {
@@ -208,7 +225,7 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
                 sampled(scratch.delta_rayleigh), sampled(mie), sampled(scratch.delta_multiple[(order - 1) % 2]),
                 sampled(scratch.delta_irradiance[order % 2]), vk::StorageBufferSlot{&scratch.incident_radiance},
                 vk::StorageBufferSlot{&scratch.directions}},
-          {uint32_t(Scratch::DirectionCount(tables)), uint32_t(samples.density_mu_s),
+          {uint32_t(DirectionCount(tables.options())), uint32_t(samples.density_mu_s),
            uint32_t(samples.density_r)},
           {64, 1, 1}, &order);
     });

@@ -38,6 +38,10 @@ LoadedTables LoadOrPrecompute(const vk::Context& context, const AtmosphereParame
   std::filesystem::path dir = store.cache_dir.empty() ? DefaultCacheDirectory() : store.cache_dir;
   loaded.cache_file = CacheFilePath(dir, atmosphere, options);
 
+  for (const std::filesystem::path& stale : RemoveStaleTemporaries(dir, "tables-")) {
+    if (!store.quiet)
+      std::fprintf(stderr, "aerial: removed %s, left by a table cache write that was killed\n", stale.c_str());
+  }
   if (store.read_cache && std::filesystem::exists(loaded.cache_file)) {
     try {
       loaded.tables->Upload(ReadTableCache(loaded.cache_file, loaded.tables->cache_key()));
@@ -48,13 +52,18 @@ LoadedTables LoadOrPrecompute(const vk::Context& context, const AtmosphereParame
       std::fprintf(stderr, "aerial: ignoring table cache (%s); recomputing\n", e.what());
     }
   }
+  // A cache that cannot be written (read-only, full disk, file size limit) only costs the next
+  // run its precompute: the command goes on without it, unless writing it is the command's job.
+  auto without_cache = [&](const Error& e) {
+    if (store.require_cache_write) throw e;
+    std::fprintf(stderr, "aerial: warning: not caching the tables (%s)\n", e.what());
+  };
   bool write_cache = store.write_cache;
   if (write_cache) {
     try {
       CheckWritable(loaded.cache_file);
     } catch (const Error& e) {
-      if (store.require_cache_write) throw;
-      std::fprintf(stderr, "aerial: not caching the tables (%s)\n", e.what());
+      without_cache(e);
       write_cache = false;
     }
   }
@@ -62,7 +71,13 @@ LoadedTables LoadOrPrecompute(const vk::Context& context, const AtmosphereParame
                     store.quiet);
   progress.set_observer(store.progress);
   loaded.pass_times = Precompute(*loaded.tables, &progress);
-  if (write_cache) WriteTableCache(loaded.cache_file, loaded.tables->Download());
+  if (write_cache) {
+    try {
+      WriteTableCache(loaded.cache_file, loaded.tables->Download());
+    } catch (const Error& e) {
+      without_cache(e);
+    }
+  }
   return loaded;
 }
 

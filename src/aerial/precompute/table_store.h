@@ -1,7 +1,8 @@
 #pragma once
 // Tables for an atmosphere and options: read from the cache when a valid file for exactly these
 // parameters exists, precomputed (and cached, atomically) otherwise. A corrupt, truncated or stale
-// cache file is reported and rebuilt, never used.
+// cache file is reported and rebuilt, never used. Temporaries that a killed cache write left in the
+// cache directory are removed first (core/atomic_file.h, RemoveStaleTemporaries).
 #include <filesystem>
 #include <memory>
 #include <vector>
@@ -17,7 +18,8 @@ struct TableStoreOptions {
   bool read_cache = true;           // false: always precompute (still writes the cache)
   bool write_cache = true;
   // true: an unwritable cache is an error, reported before any work (aerial precompute --out);
-  // false: it is reported and the tables are used without being cached.
+  // false: a cache that cannot be written (found before the work, or failing while written: a
+  // full disk) is a warning, and the tables are used without being cached.
   bool require_cache_write = false;
   bool quiet = false;               // no progress bar, no cache notes
   Progress::Observer progress;      // told of each precompute pass, if set (quiet or not)

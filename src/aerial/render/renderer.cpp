@@ -7,6 +7,7 @@
 #include "aerial/core/error.h"
 #include "aerial/image/resample.h"
 #include "aerial/scene/terrain.h"
+#include "aerial/terrain/terrain_chunk.h"
 
 namespace aerial {
 namespace {
@@ -87,6 +88,23 @@ std::unique_ptr<TerrainChunkCache> TerrainCache(const vk::Context& context, cons
 }
 
 }  // namespace
+
+FrameMemory EstimateFrameMemory(const RenderOptions& o) {
+  const uint64_t rendered = uint64_t(o.render_width()) * o.render_height();
+  const uint64_t output = uint64_t(o.width) * o.height;
+  const uint64_t sky_view = 3 * uint64_t(kSkyViewSize[0]) * kSkyViewSize[1] * 16;
+  const uint64_t froxels = uint64_t(o.froxels.width) * o.froxels.height * o.froxels.depth;
+  return {
+      .targets = rendered * (16 + 4) + sky_view,  // rgba32f radiance, d32 depth
+      // ReadImageFloats holds two copies of the rendered pixels at once (16 bytes each); the
+      // upscaled image and the encoded file at most 16 bytes per output pixel each.
+      .readback = rendered * 32 + output * 32,
+      .froxels = 3 * froxels * 16,  // Rayleigh, Mie, transmittance; rgba32f
+      .terrain = o.terrain == TerrainMode::kLod
+                     ? uint64_t(kTerrainChunkSlots) * terrain::kChunkVertices * sizeof(Vertex)
+                     : 0,
+  };
+}
 
 void RenderOptions::Validate() const {
   CheckImageSize(width, height, "--width/--height");

@@ -63,6 +63,15 @@ struct RenderOptions {
   int render_height() const;
 };
 
+// The memory a Renderer and one ReadOutput() take, by what sizes it, known before allocating.
+struct FrameMemory {
+  uint64_t targets = 0;   // radiance and depth at the render size, the sky-view tables
+  uint64_t readback = 0;  // ReadOutput's copies (read back, upscaled) and the encoded image
+  uint64_t froxels = 0;   // the froxel volume
+  uint64_t terrain = 0;   // the terrain chunk slots (--terrain lod)
+};
+FrameMemory EstimateFrameMemory(const RenderOptions& options);
+
 // What the last recorded frame did besides drawing.
 struct FrameInfo {
   size_t chunks = 0, triangles = 0;  // terrain drawn

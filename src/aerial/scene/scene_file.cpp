@@ -60,14 +60,29 @@ void ReadSun(TomlReader& r, const toml::table& t, Sun& sun) {
 
 // Scale, then turn about z by yaw clockwise seen from above (a model's +y goes to compass
 // azimuth yaw), then move the origin to anchor.
-void Place(Mesh& mesh, const glm::dvec3& anchor, double scale, double yaw_deg) {
-  double yaw = yaw_deg * std::numbers::pi / 180.0, c = std::cos(yaw), s = std::sin(yaw);
-  glm::dmat3 turn(c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0);  // columns: images of x, y, z
-  for (Vertex& v : mesh.vertices) {
-    v.position = glm::vec3(anchor + turn * (scale * glm::dvec3(v.position)));
-    v.normal = glm::vec3(turn * glm::dvec3(v.normal));
+struct Placement {
+  Placement(const glm::dvec3& anchor, double scale, double yaw_deg) : anchor(anchor), scale(scale) {
+    double yaw = yaw_deg * std::numbers::pi / 180.0, c = std::cos(yaw), s = std::sin(yaw);
+    turn = glm::dmat3(c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0);  // columns: images of x, y, z
   }
-}
+  glm::dvec3 Position(const glm::vec3& model) const { return anchor + turn * (scale * glm::dvec3(model)); }
+  // The largest distance from the scene origin of a placed vertex, in double.
+  double Farthest(const Mesh& mesh) const {
+    double farthest = glm::length(anchor);
+    for (const Vertex& v : mesh.vertices) farthest = std::max(farthest, glm::length(Position(v.position)));
+    return farthest;
+  }
+  void Apply(Mesh& mesh) const {
+    for (Vertex& v : mesh.vertices) {
+      v.position = glm::vec3(Position(v.position));
+      v.normal = glm::vec3(turn * glm::dvec3(v.normal));
+    }
+  }
+
+  glm::dvec3 anchor;
+  double scale;
+  glm::dmat3 turn;
+};
 
 Mesh ReadMesh(TomlReader& r, const toml::node& node, const std::string& field,
               const std::filesystem::path& base_dir, double planet_radius_m) {
@@ -124,7 +139,15 @@ Mesh ReadMesh(TomlReader& r, const toml::node& node, const std::string& field,
   mesh.transparent = transparent.value_or(mesh.transparent || opacity < 1.0);
   for (Vertex& v : mesh.vertices)
     v.opacity = mesh.transparent ? static_cast<float>(v.opacity * opacity) : 1.0f;
-  Place(mesh, anchor, scale, yaw_deg);
+  // Checked before the positions become floats, which would overflow to inf (scale = 1e300).
+  // The message blames the anchor when it alone is too far, else the scale, else the model.
+  Placement placement(anchor, scale, yaw_deg);
+  const char* culprit = glm::length(anchor) > kMaxSceneDistanceM ? "position_m"
+                        : t.get("scale")                         ? "scale"
+                                                                 : "gltf";
+  const toml::node& culprit_node = *t.get(culprit);
+  CheckPlacedDistance(placement.Farthest(mesh), key(culprit), r.NodeText(culprit_node), r.At(culprit_node));
+  placement.Apply(mesh);
   return mesh;
 }
 

@@ -8,7 +8,7 @@
 //   yaw_deg = 0.0                    # compass azimuth of the view: 0 north, 90 east
 //   pitch_deg = 4.0                  # above the horizontal, [-90, 90]
 //   fov_deg = 50.0                   # vertical field of view, (1, 170)
-//   near_m = 0.5                     # near plane, > 0
+//   near_m = 0.5                     # near plane, [0.001, 1000]
 //   [sun]
 //   zenith_deg = 20.0                # [0, 180]; above 90 the sun has set
 //   azimuth_deg = 160.0              # compass, like yaw_deg
@@ -22,8 +22,9 @@
 //   opacity = 1.0                    # (0, 1], multiplies the materials' alpha; < 1 needs
 //                                    # transparent (not false)
 //
-// Camera altitude (above the planet's sphere) must lie in [-500, 100000] m and positions must be
-// finite (scene_limits.h). Unknown keys, wrong types and out-of-range values throw aerial::Error
+// Camera altitude (above the planet's sphere) must lie in [-500, 100000] m, positions must be
+// finite, and a placed mesh (position, scale and the model's own size) within 1000 km of the
+// origin (scene_limits.h). Unknown keys, wrong types and out-of-range values throw aerial::Error
 // naming the dotted key ("mesh[0].scale", "camera.fov_deg"), the value and the allowed range at
 // "file:line:column"; a glTF that fails to load is reported at its mesh's gltf key.
 #include <filesystem>

@@ -95,6 +95,8 @@ TEST(SceneFile, EachInvalidFieldIsNamedWithItsLine) {
   ExpectError("[camera]\nfov_deg = 1", "camera.fov_deg", 2);
   ExpectError("[camera]\nnear_m = 0", "camera.near_m", 2);
   ExpectError("[camera]\nnear_m = inf", "camera.near_m", 2);
+  ExpectError("[camera]\nnear_m = 1e30", "camera.near_m", 2);  // finite in float, and clips everything
+  ExpectError("[camera]\nnear_m = 1e-300", "camera.near_m", 2);  // 0 in float
   ExpectError("[camera]\npitch_deg = 90.5", "camera.pitch_deg", 2);
   ExpectError("[camera]\nyaw_deg = nan", "camera.yaw_deg", 2);
   ExpectError("[camera]\nyaw_deg = \"north\"", "camera.yaw_deg", 2);
@@ -110,6 +112,9 @@ TEST(SceneFile, EachInvalidFieldIsNamedWithItsLine) {
   const std::string cube = "[[mesh]]\ngltf = \"cube.gltf\"\n";
   ExpectError(cube + "scale = 0", "mesh[0].scale", 3);
   ExpectError(cube + "scale = -2", "mesh[0].scale", 3);
+  ExpectError(cube + "scale = 1e300", "mesh[0].scale", 3);  // inf as float positions
+  ExpectError(cube + "scale = 2e5", "mesh[0].scale", 3);    // a 10 m cube reaching 1000 km out
+  ExpectError(cube + "position_m = [0, 0, 1e30]", "mesh[0].position_m", 3);
   ExpectError(cube + "opacity = 0", "mesh[0].opacity", 3);
   ExpectError(cube + "opacity = 1.5", "mesh[0].opacity", 3);
   ExpectError(cube + "transparent = false\nopacity = 0.5", "mesh[0].opacity", 4);
@@ -119,6 +124,21 @@ TEST(SceneFile, EachInvalidFieldIsNamedWithItsLine) {
   ExpectError(cube + "yaw_deg = nan", "mesh[0].yaw_deg", 3);
   ExpectError(cube + "[[mesh]]\nscale = 2", "mesh[1].gltf", 3);
   ExpectError("[[mesh]]\ngltf = \"missing.glb\"", "mesh[0].gltf", 2);
+}
+
+// Values that are finite as doubles but not as the floats the GPU receives are named with their
+// value.
+TEST(SceneFile, ValuesBeyondFloatAreNamedWithTheirValue) {
+  for (auto [text, message] : {std::pair{"[camera]\nnear_m = 1e30", "camera.near_m = 1e+30 is invalid"},
+                               std::pair{"[[mesh]]\ngltf = \"cube.gltf\"\nscale = 1e300",
+                                         "mesh[0].scale = 1e+300 (places a vertex"}}) {
+    try {
+      Parse(text);
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(SceneFile, MissingGltfNamesThePath) {

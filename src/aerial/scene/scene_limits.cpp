@@ -47,11 +47,23 @@ void CheckFovDeg(double degrees, const std::string& field, const std::string& wh
 }
 
 void CheckNearM(double meters, const std::string& field, const std::string& where) {
-  Check(meters > 0.0 && std::isfinite(meters), meters, field, "> 0 m and finite", where);
+  // Compared in double: the bounds are far inside float's range, so the float the projection
+  // receives is in range exactly when the double is (up to rounding at the bounds themselves).
+  Check(meters >= 1e-3 && meters <= 1e3, meters, field, "[0.001, 1000] m", where);
 }
 
 void CheckZenithDeg(double degrees, const std::string& field, const std::string& where) {
   Check(degrees >= 0.0 && degrees <= 180.0, degrees, field, "[0, 180] degrees", where);
+}
+
+void CheckPlacedDistance(double farthest_m, const std::string& field, const std::string& value,
+                         const std::string& where) {
+  if (!(farthest_m <= kMaxSceneDistanceM)) {
+    throw Error(field, value + " (places a vertex " + FormatNumber(farthest_m) + " m from the origin)",
+                "a placement that keeps every vertex within " + FormatNumber(kMaxSceneDistanceM) +
+                    " m of the scene origin",
+                where);
+  }
 }
 
 }  // namespace aerial

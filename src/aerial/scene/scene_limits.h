@@ -19,10 +19,23 @@ void CheckAzimuthDeg(double degrees, const std::string& field, const std::string
 void CheckPitchDeg(double degrees, const std::string& field, const std::string& where);
 // (1, 170), open: narrower makes the projection ill-conditioned in float, and 180 is infinite.
 void CheckFovDeg(double degrees, const std::string& field, const std::string& where);
-// > 0 and finite (reversed Z divides by it; see ProjectionMatrix).
+// [0.001, 1000] m as float (the projection receives it as one; see ProjectionMatrix): scene
+// positions are floats that resolve about 8 mm 100 km out (scene.h), so a nearer plane gains
+// nothing; a farther one clips away the nearest landmark of the built-in scene (1 km) and
+// everything the camera stands in.
 void CheckNearM(double meters, const std::string& field, const std::string& where);
 // [0, 180].
 void CheckZenithDeg(double degrees, const std::string& field, const std::string& where);
+
+// How far from the scene origin a mesh's vertices may be placed: float positions resolve 6 cm
+// there, and a camera 100 km up sees the horizon at 1130 km.
+inline constexpr double kMaxSceneDistanceM = 1e6;
+
+// The farthest vertex of a placed mesh, before its positions are rounded to float: within
+// kMaxSceneDistanceM of the origin (which also keeps them finite as floats). value describes the
+// placement ("scale 1e+300"), for the message.
+void CheckPlacedDistance(double farthest_m, const std::string& field, const std::string& value,
+                         const std::string& where);
 
 // Shortest text that reads back as the same double ("0.1", "6360000"), for messages.
 std::string FormatNumber(double value);

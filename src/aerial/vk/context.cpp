@@ -40,6 +40,15 @@ int DeviceRank(::vk::PhysicalDeviceType type) {
   }
 }
 
+// The Vulkan loader found no driver (ICD): it answers vkCreateInstance with
+// ErrorIncompatibleDriver, or lists no device.
+[[noreturn]] void ThrowNoDriver(const std::string& symptom) {
+  throw Error("Vulkan driver", "none found (" + symptom + ")",
+              "an installed Vulkan driver: on Debian, `apt install mesa-vulkan-drivers` gives "
+              "lavapipe (any CPU), or install your GPU's driver; if VK_ICD_FILENAMES or "
+              "VK_DRIVER_FILES is set, it must name the driver's JSON manifest");
+}
+
 bool HasLayer(const ::vk::raii::Context& loader, const char* name) {
   for (const auto& layer : loader.enumerateInstanceLayerProperties())
     if (std::string(layer.layerName.data()) == name) return true;
@@ -65,12 +74,16 @@ Context::Context(const ContextCreateInfo& info) {
   }
   // Vulkan 1.3 for dynamic rendering; lavapipe (Mesa 22.3) and current GPU drivers have it.
   ::vk::ApplicationInfo app{.pApplicationName = "aerial", .apiVersion = VK_API_VERSION_1_3};
-  instance_ = ::vk::raii::Instance(
-      loader_, ::vk::InstanceCreateInfo{.pApplicationInfo = &app,
-                                        .enabledLayerCount = uint32_t(layers.size()),
-                                        .ppEnabledLayerNames = layers.data(),
-                                        .enabledExtensionCount = uint32_t(extensions.size()),
-                                        .ppEnabledExtensionNames = extensions.data()});
+  try {
+    instance_ = ::vk::raii::Instance(
+        loader_, ::vk::InstanceCreateInfo{.pApplicationInfo = &app,
+                                          .enabledLayerCount = uint32_t(layers.size()),
+                                          .ppEnabledLayerNames = layers.data(),
+                                          .enabledExtensionCount = uint32_t(extensions.size()),
+                                          .ppEnabledExtensionNames = extensions.data()});
+  } catch (const ::vk::IncompatibleDriverError& e) {
+    ThrowNoDriver(e.what());
+  }
   // Performance hints (e.g. GENERAL layouts on copies, which aerial uses on purpose) are not
   // validation errors; warnings and errors of the general and validation kinds all count.
   if (validation_) {
@@ -86,6 +99,7 @@ Context::Context(const ContextCreateInfo& info) {
   std::string wanted = info.device_name;
   if (wanted.empty() && std::getenv("AERIAL_DEVICE")) wanted = std::getenv("AERIAL_DEVICE");
   ::vk::raii::PhysicalDevices devices(instance_);
+  if (devices.empty()) ThrowNoDriver("the Vulkan loader lists no device");
   std::string available;
   int best_rank = 1 << 30;
   for (auto& candidate : devices) {
@@ -161,6 +175,16 @@ void Context::Submit(const std::function<void(const ::vk::raii::CommandBuffer&)>
   queue_.submit(::vk::SubmitInfo{.commandBufferCount = 1, .pCommandBuffers = &raw}, *submit_done_);
   if (device_.waitForFences(*submit_done_, VK_TRUE, UINT64_MAX) != ::vk::Result::eSuccess)
     throw Error("vkWaitForFences", "timeout", "completion");
+}
+
+uint64_t Context::largest_heap_bytes() const {
+  auto memory = physical_device_.getMemoryProperties();
+  uint64_t largest = 0;
+  for (uint32_t i = 0; i < memory.memoryHeapCount; ++i) {
+    if (memory.memoryHeaps[i].flags & ::vk::MemoryHeapFlagBits::eDeviceLocal)
+      largest = std::max<uint64_t>(largest, memory.memoryHeaps[i].size);
+  }
+  return largest;
 }
 
 uint32_t Context::FindMemoryType(uint32_t type_bits, ::vk::MemoryPropertyFlags properties) const {

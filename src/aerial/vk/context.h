@@ -45,6 +45,9 @@ class Context {
   // threads at once. Frames that should not wait use a CommandRing (command_ring.h).
   void Submit(const std::function<void(const ::vk::raii::CommandBuffer&)>& record) const;
 
+  // The size of the device's largest device-local memory heap, in bytes.
+  uint64_t largest_heap_bytes() const;
+
   uint32_t FindMemoryType(uint32_t type_bits, ::vk::MemoryPropertyFlags properties) const;
 
   // Number of validation messages (warnings and errors) seen by any context of this process.

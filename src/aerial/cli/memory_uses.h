@@ -1,0 +1,33 @@
+#pragma once
+// The commands' memory estimates (core/memory_budget.h), each part under the option that sizes
+// it, so that an over-budget error names what to change.
+#include <vector>
+
+#include "aerial/core/memory_budget.h"
+#include "aerial/precompute/precompute_options.h"
+#include "aerial/render/renderer.h"
+
+namespace aerial::cli {
+
+// Per table option (--transmittance-size, --irradiance-size, --scattering-size): the tables, the
+// precompute's scratch tables (counted even when the cache spares the precompute) and the two
+// host copies a cache write or read makes.
+std::vector<MemoryUse> TableMemoryUses(const PrecomputeOptions& options);
+
+// One frame of `renderers` renderers of these options: targets and read-back under
+// --width/--height, the froxel volume under --froxels, the terrain's chunk slots under --terrain.
+std::vector<MemoryUse> FrameMemoryUses(const RenderOptions& render, int renderers = 1);
+
+// export-vdb's host copies of the froxels: read back (48 bytes a froxel, twice while copying),
+// the volume and OpenVDB's grids (64 bytes each) and the encoded file with a string stream's
+// growth (about 128): 320 bytes a froxel. (A --world-grid volume has its own cap,
+// kMaxWorldGridVoxels.)
+std::vector<MemoryUse> FroxelExportMemoryUses(const FroxelGrid& grid);
+
+// The viewer's window: up to 4 swapchain images of 4 bytes a pixel.
+std::vector<MemoryUse> SwapchainMemoryUses(const RenderOptions& window);
+
+// a, then b.
+std::vector<MemoryUse> Combined(std::vector<MemoryUse> a, const std::vector<MemoryUse>& b);
+
+}  // namespace aerial::cli

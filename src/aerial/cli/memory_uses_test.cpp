@@ -1,0 +1,40 @@
+#include "aerial/cli/memory_uses.h"
+
+#include <gtest/gtest.h>
+
+#include "aerial/core/error.h"
+
+namespace aerial::cli {
+namespace {
+
+// The estimate of an 8192x8192 render (84 bytes a pixel: 5.3 GiB) is over the default budget and
+// within an 8 GiB one: --max-memory-mib 8192 lets it through.
+TEST(MemoryUses, MaxMemoryLetsALargeRenderThrough) {
+  RenderOptions render{.width = 8192, .height = 8192};
+  std::vector<MemoryUse> uses = Combined(TableMemoryUses(PrecomputeOptions::Default()), FrameMemoryUses(render));
+  const uint64_t heap = uint64_t{24} << 30;
+  EXPECT_THROW(MakeMemoryBudget(std::nullopt, heap).Check(uses), Error);
+  EXPECT_NO_THROW(MakeMemoryBudget(8192, heap).Check(uses));
+}
+
+// The parts follow the allocations: 20 bytes a rendered pixel on the device (rgba32f and depth)
+// and 32 bytes each per rendered and output pixel for the copies read back and encoded.
+TEST(MemoryUses, RenderScaleShrinksTheTargetsNotTheOutput) {
+  RenderOptions full{.width = 1000, .height = 1000}, half = full;
+  half.render_scale = 0.5;
+  FrameMemory a = EstimateFrameMemory(full), b = EstimateFrameMemory(half);
+  EXPECT_EQ(a.targets - b.targets, (1'000'000 - 250'000) * 20u);
+  EXPECT_EQ(a.readback - b.readback, (1'000'000 - 250'000) * 32u);
+}
+
+// What the tables take is what AtmosphereTables allocates: 2 scattering tables in 4D, 3 in 3D.
+TEST(MemoryUses, TableMemoryCountsEveryTable) {
+  TableBytes t4 = TableMemory(PrecomputeOptions::Default(LutVariant::k4D));
+  EXPECT_EQ(t4.transmittance, 256u * 64 * 16);
+  EXPECT_EQ(t4.irradiance, 64u * 32 * 16);
+  EXPECT_EQ(t4.scattering, 2u * 8 * 40 * 128 * 32 * 16);
+  EXPECT_EQ(TableMemory(PrecomputeOptions::Default(LutVariant::k3D)).scattering, 3u * 40 * 128 * 32 * 16);
+}
+
+}  // namespace
+}  // namespace aerial::cli

@@ -1,0 +1,43 @@
+#include "aerial/core/memory_budget.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "aerial/core/error.h"
+
+namespace aerial {
+namespace {
+constexpr uint64_t kMiB = uint64_t{1} << 20;
+}  // namespace
+
+std::string FormatMiB(uint64_t bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / double(kMiB));
+  return text;
+}
+
+void MemoryBudget::Check(const std::vector<MemoryUse>& uses) const {
+  uint64_t total = 0;
+  const MemoryUse* largest = nullptr;
+  std::string parts;
+  for (const MemoryUse& use : uses) {
+    total += use.bytes;
+    if (!largest || use.bytes > largest->bytes) largest = &use;
+    parts += (parts.empty() ? "" : "; ") + use.option + " " + use.value + ": " + use.what + " " +
+             FormatMiB(use.bytes);
+  }
+  if (total <= bytes || !largest) return;
+  throw Error(largest->option, largest->value,
+              "sizes whose memory fits the budget: estimated " + FormatMiB(total) + " (" + parts +
+                  ") > budget " + FormatMiB(bytes) + " (" + origin + ")");
+}
+
+MemoryBudget MakeMemoryBudget(std::optional<uint64_t> max_memory_mib, uint64_t device_heap_bytes) {
+  if (max_memory_mib) return {*max_memory_mib * kMiB, "--max-memory-mib " + std::to_string(*max_memory_mib)};
+  uint64_t default_bytes = kDefaultMemoryBudgetMiB * kMiB;
+  if (device_heap_bytes < default_bytes)
+    return {device_heap_bytes, "the device's largest memory heap; --max-memory-mib N sets another"};
+  return {default_bytes, "the default; --max-memory-mib N sets another"};
+}
+
+}  // namespace aerial

@@ -1,0 +1,41 @@
+#pragma once
+// The memory a command may allocate for its tables, froxels and images, compared with estimates
+// made before anything is allocated: a size too large for the machine then fails at once, with a
+// message naming the option, the estimate and the budget, instead of ending in
+// ErrorOutOfDeviceMemory (or the kernel's OOM killer) after minutes of work. On a CPU driver such
+// as lavapipe device memory is host memory, so the host copies made to read images back count too.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace aerial {
+
+// 2 GiB: a default render is estimated at 290 MiB, a 3840x2160 one at 0.9 GiB.
+inline constexpr uint64_t kDefaultMemoryBudgetMiB = 2048;
+
+// One part of an estimate, under the option that sizes it.
+struct MemoryUse {
+  std::string option;  // "--scattering-size", "--width/--height"
+  std::string value;   // that option's value as given or defaulted: "32,128,40,8", "16384x16384"
+  std::string what;    // "tables, precompute scratch and cache copies"
+  uint64_t bytes = 0;
+};
+
+struct MemoryBudget {
+  uint64_t bytes = 0;
+  std::string origin;  // where it comes from, for the message: "--max-memory-mib 512", "the default; ..."
+
+  // Throws aerial::Error when the uses add up to more than the budget. The error names the
+  // option of the largest use and its value, the estimate with its parts, and the budget.
+  void Check(const std::vector<MemoryUse>& uses) const;
+};
+
+// --max-memory-mib when given (any value >= 1, even above the device's memory: the user knows
+// their machine); else the default, or the device's largest heap when that is smaller.
+MemoryBudget MakeMemoryBudget(std::optional<uint64_t> max_memory_mib, uint64_t device_heap_bytes);
+
+// "40.3 MiB", for messages.
+std::string FormatMiB(uint64_t bytes);
+
+}  // namespace aerial
