@@ -14,7 +14,8 @@ if(AERIAL_SANITIZE)
   set(aerial_sanitize_flags -fsanitize=${AERIAL_SANITIZE} -fno-sanitize-recover=all
       -fno-omit-frame-pointer)
   if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
-    list(APPEND aerial_sanitize_flags -fsanitize=float-cast-overflow)
+    list(APPEND aerial_sanitize_flags -fsanitize=float-cast-overflow
+         -fsanitize-ignorelist=${PROJECT_SOURCE_DIR}/tools/sanitizers/ubsan_ignorelist.txt)
   endif()
   add_compile_options(${aerial_sanitize_flags})
   add_link_options(${aerial_sanitize_flags})

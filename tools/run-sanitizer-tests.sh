@@ -18,10 +18,14 @@ cmake --build build-sanitize --parallel "$(nproc)" --target aerial aerial_tests 
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-/tmp}
 export ASAN_OPTIONS=detect_leaks=1:check_initialization_order=1:strict_init_order=1
 export LSAN_OPTIONS=suppressions=$PWD/tools/sanitizers/lsan.supp:print_suppressions=0
+# lavapipe stays loaded until exit, so that its leaks are named and suppressed (lsan.supp).
+lavapipe=$(ls /usr/lib/*/libvulkan_lvp.so 2>/dev/null | head -1)
+export LD_PRELOAD=${lavapipe}
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
-# GPU test suites (fixtures on GpuTest, and the command-line tests, which run `aerial` on the
-# GPU). All other tests are CPU-only and run in full.
+# GPU test suites (fixtures on GpuTest, and the command-line tests that render or precompute).
+# Everything else runs: the CPU-only tests, and the bad-input tests of the command (hostile files,
+# full disks, resource limits), most of which end before the GPU is used.
 gpu_suites="Render.*:VdbExport.*:VdbPaths.*:TableCacheIntegration.*:TableSanity.*:PhysicalSky.*"
 gpu_suites+=":ViewerToneMap.*:TablesVsReference.*:GraphicsPipelineTest.*:SceneSurfaceRender.*"
 gpu_suites+=":ViewerDebugViews.*:LeanFrame.*:Lut3d.*:MappingRoundTrip.*:GoldenImage.*"
