@@ -2,6 +2,7 @@
 // Limits on input files, in one place (README, "### Files"): far above what real inputs need,
 // far below what would exhaust memory, time or the stack.
 #include <cstddef>
+#include <cstdint>
 
 namespace aerial {
 
@@ -20,5 +21,11 @@ inline constexpr size_t kMaxGltfBytes = 256 * kMiB;
 // (extras and extensions may add a few); tinygltf's JSON parser recurses once per level, and
 // 100,000 levels overflow the stack.
 inline constexpr size_t kMaxJsonDepth = 64;
+
+// A table cache file. The largest tables the size caps allow (precompute_options.cpp: 2^22
+// scattering texels in each of two 4D tables, 2^20 transmittance and 2^14 irradiance texels, 16
+// bytes each) take about 145 MiB; a bigger file is not one aerial wrote, and reading it would
+// allocate its size.
+inline constexpr uint64_t kMaxTableCacheBytes = 1024 * kMiB;
 
 }  // namespace aerial

@@ -11,6 +11,7 @@
 #include "aerial/core/atomic_file.h"
 #include "aerial/core/checksum.h"
 #include "aerial/core/error.h"
+#include "aerial/core/input_limits.h"
 
 namespace aerial {
 namespace {
@@ -274,6 +275,11 @@ TableCache ReadTableCache(const std::filesystem::path& path, const TableCacheKey
   std::error_code ec;
   uint64_t actual_bytes = std::filesystem::file_size(path, ec);
   if (ec) throw Error("cache file", where, "a regular file (" + ec.message() + ")", where);
+  if (actual_bytes > kMaxTableCacheBytes) {
+    throw Error("cache size", std::to_string(actual_bytes) + " bytes",
+                "at most " + std::to_string(kMaxTableCacheBytes) + " bytes (no table set is larger)",
+                where);
+  }
 
   std::vector<std::byte> header(std::min(actual_bytes, kPrefixBytes));
   ReadExactly(file.get(), header.data(), header.size(), where);

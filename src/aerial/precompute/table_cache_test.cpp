@@ -7,6 +7,7 @@
 
 #include "aerial/core/atomic_file.h"
 #include "aerial/core/error.h"
+#include "aerial/core/input_limits.h"
 
 namespace aerial {
 namespace {
@@ -153,6 +154,24 @@ TEST_F(TableCacheFile, OtherKeyIsStale) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("another parameter set"), std::string::npos) << e.what();
   }
+}
+
+// A file above the cap is refused from its size, before anything is read or allocated; one at
+// the cap is read, and refused for what its header says (sparse files: nothing is written).
+TEST_F(TableCacheFile, OversizeFileIsRefusedBeforeReading) {
+  auto message = [&] {
+    try {
+      ReadTableCache(path_, kKey);
+    } catch (const Error& e) {
+      EXPECT_EQ(e.field(), "cache size");
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  fs::resize_file(path_, kMaxTableCacheBytes + 1);
+  EXPECT_NE(message().find("at most 1073741824 bytes (no table set is larger)"), std::string::npos);
+  fs::resize_file(path_, kMaxTableCacheBytes);
+  EXPECT_NE(message().find("(trailing bytes)"), std::string::npos);
 }
 
 TEST_F(TableCacheFile, UnknownVersionIsDetected) {
