@@ -5,6 +5,7 @@
 #include <regex>
 
 #include "aerial/core/error.h"
+#include "aerial/core/toml_reader.h"
 
 namespace aerial {
 
@@ -33,7 +34,7 @@ void FroxelGrid::Validate() const {
                   "each of W, H, D in [2, 256]");
   }
   if (!(far_m > 100.0 && far_m <= 1e6))
-    throw Error("froxel far distance", std::to_string(far_m), "meters in (100, 1e6]");
+    throw Error("froxel far distance", TomlFloat(far_m), "meters in (100, 1e6]");
 }
 
 double FroxelGrid::SliceDistance(double slice_center) const {

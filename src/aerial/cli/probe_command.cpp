@@ -12,6 +12,7 @@
 #include "aerial/cli/common_options.h"
 #include "aerial/cli/memory_uses.h"
 #include "aerial/core/error.h"
+#include "aerial/core/toml_reader.h"
 #include "aerial/probe/table_probe.h"
 #include "aerial/reference/reference.h"
 
@@ -49,8 +50,10 @@ ProbeResult ProbeWithReference(const AtmosphereParameters& atmosphere, const Ray
 void RunProbe(const ProbeOptions& options) {
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
   ValidateViewAngles(options.view, atmosphere);
-  if (options.distance_m && (!std::isfinite(*options.distance_m) || *options.distance_m < 0.0))
-    throw aerial::Error("--distance-m", std::to_string(*options.distance_m), "a distance >= 0 in meters");
+  // The shaders take the distance as a float; a ray ends at the atmosphere's boundary long before
+  // 1e9 m (the longest, grazing Earth's, is under 2e6 m), so larger values are refused.
+  if (options.distance_m && !(*options.distance_m >= 0.0 && *options.distance_m <= 1e9))
+    throw aerial::Error("--distance-m", aerial::TomlFloat(*options.distance_m), "a distance in [0, 1e9] meters");
   PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
   RayParameters ray = ToRayParameters(options.view, atmosphere);
 

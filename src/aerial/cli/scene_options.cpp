@@ -1,6 +1,7 @@
 #include "aerial/cli/scene_options.h"
 
 #include "aerial/core/error.h"
+#include "aerial/core/toml_reader.h"
 #include "aerial/scene/presets.h"
 #include "aerial/scene/scene_file.h"
 
@@ -70,6 +71,10 @@ void FrameOptions::AddTo(CLI::App& command, const std::string& size_help) {
 }
 
 RenderOptions FrameOptions::MakeRenderOptions() const {
+  // A radiance multiplier, as a float in the viewer's shader and the tone map: above 1e6 even the
+  // sun's disc (~2e4 W/m^2/sr/nm) is white a million times over, and 1e300 is infinite as a float.
+  if (!(exposure > 0.0 && exposure <= 1e6))
+    throw Error("--exposure", TomlFloat(exposure), "a multiplier in (0, 1e6]");
   RenderOptions render;
   render.width = width;
   render.height = height;
