@@ -18,8 +18,8 @@ FroxelVolume::FroxelVolume(const vk::Context& context, const FroxelGrid& grid)
       mie_(context, FroxelImage(grid)),
       transmittance_(context, FroxelImage(grid)),
       pipeline_(context, "frame/froxel.comp",
-                {vk::kUniform, vk::kUniform, vk::kSampled, vk::kSampled, vk::kSampled, vk::kSampled,
-                 vk::kStorageImage, vk::kStorageImage, vk::kStorageImage}) {
+                {vk::kUniform, vk::kUniform, vk::kSampled, vk::kSampled, vk::kStorageImage,
+                 vk::kStorageImage, vk::kStorageImage}) {
   grid.Validate();
   context.Submit([&](const auto& cmd) {
     for (const vk::Image* image : {&rayleigh_, &mie_, &transmittance_}) image->InitializeLayout(cmd);
@@ -33,9 +33,7 @@ void FroxelVolume::Build(const ::vk::raii::CommandBuffer& cmd, const AtmosphereT
                      {vk::UniformBufferSlot{&tables.uniform_buffer()},
                       vk::UniformBufferSlot{&frame_uniforms},
                       vk::SampledImageSlot{&tables.transmittance(), sampler},
-                      vk::SampledImageSlot{&tables.rayleigh(), sampler},
-                      vk::SampledImageSlot{&tables.mie(), sampler},
-                      vk::SampledImageSlot{&tables.multiple(), sampler},
+                      vk::SampledImageSlot{&tables.multiple_density(), sampler},
                       vk::StorageImageSlot{&rayleigh_}, vk::StorageImageSlot{&mie_},
                       vk::StorageImageSlot{&transmittance_}},
                      {uint32_t(grid_.width), uint32_t(grid_.height), 1}, {32, 1, 1});

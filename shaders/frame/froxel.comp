@@ -1,20 +1,23 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Froxel pass: for each froxel, the inscatter (Rayleigh and Mie, without phase) and transmittance
-// from the camera to its slice's distance along the ray through its screen-space center
-// (Bruneton 2008 eq. 16, S(x, v) - T(x, p) S(p, v), from the 4D or 3D tables). One invocation
-// walks one froxel column: S(x, v) is the same for all its slices and is read once.
+// from the camera to its slice's distance along the ray through its screen-space center. One
+// invocation walks one froxel column with one march (inscatter_march.glsl), FROXEL_SUBSTEPS steps
+// per slice, storing the running integral at each slice center.
 #include "froxel.glsl"
 #include "frame.glsl"
 // Wide in x: a CPU implementation vectorizes across the invocations of a workgroup's rows.
 layout(local_size_x = 32, local_size_y = 1) in;
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
-layout(set = 0, binding = 3) uniform sampler3D rayleigh_texture;
-layout(set = 0, binding = 4) uniform sampler3D mie_texture;
-layout(set = 0, binding = 5) uniform sampler3D multiple_texture;
-layout(set = 0, binding = 6) writeonly uniform image3D rayleigh_froxels;
-layout(set = 0, binding = 7) writeonly uniform image3D mie_froxels;
-layout(set = 0, binding = 8) writeonly uniform image3D transmittance_froxels;
+layout(set = 0, binding = 3) uniform sampler3D multiple_density_texture;
+layout(set = 0, binding = 4) writeonly uniform image3D rayleigh_froxels;
+layout(set = 0, binding = 5) writeonly uniform image3D mie_froxels;
+layout(set = 0, binding = 6) writeonly uniform image3D transmittance_froxels;
+
+// Steps per slice. The slices' quadratic spacing keeps each step a similar fraction of its
+// distance from the camera: 1 and 2 steps gave the same image (froxel vs per-pixel 0.2263% and
+// 0.2264% relative RMSE on the noon preset beyond 1 km), so the march steps from slice to slice.
+const int FROXEL_SUBSTEPS = 1;
 
 void main() {
   ivec2 column = ivec2(gl_GlobalInvocationID.xy);
@@ -23,13 +26,17 @@ void main() {
   vec3 ray = ViewRayFromScreen((vec2(column) + 0.5) / vec2(size.xy));
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
-  Inscatter ray_scattering = GetRayScattering(rayleigh_texture, mie_texture, multiple_texture, r,
-                                              mu, mu_s, nu, RayIntersectsGround(r, mu));
+  InscatterMarch march = StartInscatterMarch(transmittance_texture, multiple_density_texture, r,
+                                             mu, mu_s, nu, 1.0);
+  float previous = 0.0;
   for (int slice = 0; slice < size.z; ++slice) {
     float distance = FroxelSliceDistance(float(slice) + 0.5, float(size.z), frame.froxel_depth.x);
-    Inscatter inscatter = GetSkyInscatterToPointFrom(ray_scattering, transmittance_texture,
-                                                     rayleigh_texture, mie_texture,
-                                                     multiple_texture, r, mu, mu_s, nu, distance);
+    for (int step = 1; step <= FROXEL_SUBSTEPS; ++step) {
+      AdvanceInscatterMarch(transmittance_texture, multiple_density_texture, march,
+                            mix(previous, distance, float(step) / float(FROXEL_SUBSTEPS)), 1.0);
+    }
+    previous = distance;
+    Inscatter inscatter = GetInscatterMarchResult(march);
     ivec3 froxel = ivec3(column, slice);
     imageStore(rayleigh_froxels, froxel, vec4(inscatter.rayleigh, 0.0));
     imageStore(mie_froxels, froxel, vec4(inscatter.mie, 0.0));

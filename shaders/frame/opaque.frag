@@ -8,12 +8,10 @@
 #include "froxel.glsl"
 #include "frame.glsl"
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
-layout(set = 0, binding = 4) uniform sampler3D rayleigh_texture;
-layout(set = 0, binding = 5) uniform sampler3D mie_texture;
-layout(set = 0, binding = 6) uniform sampler3D multiple_texture;
-layout(set = 0, binding = 7) uniform sampler3D rayleigh_froxels;
-layout(set = 0, binding = 8) uniform sampler3D mie_froxels;
-layout(set = 0, binding = 9) uniform sampler3D transmittance_froxels;
+layout(set = 0, binding = 4) uniform sampler3D multiple_density_texture;
+layout(set = 0, binding = 5) uniform sampler3D rayleigh_froxels;
+layout(set = 0, binding = 6) uniform sampler3D mie_froxels;
+layout(set = 0, binding = 7) uniform sampler3D transmittance_froxels;
 layout(location = 0) in vec3 relative_position;
 layout(location = 1) in vec3 surface_radiance;
 layout(location = 0) out vec4 color;
@@ -25,8 +23,8 @@ void main() {
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
   Inscatter segment;
   if (kAerialPerPixel == 1) {
-    segment = GetSkyInscatterToPoint(transmittance_texture, rayleigh_texture, mie_texture,
-                                     multiple_texture, r, mu, mu_s, nu, distance);
+    segment = GetSkyInscatterToPoint(transmittance_texture, multiple_density_texture, r, mu,
+                                     mu_s, nu, distance);
   } else {
     segment = SampleFroxels(rayleigh_froxels, mie_froxels, transmittance_froxels,
                             gl_FragCoord.xy / frame.viewport.xy, distance,

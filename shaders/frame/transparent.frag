@@ -8,9 +8,7 @@
 #include "sky_lookup.glsl"
 #include "frame.glsl"
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
-layout(set = 0, binding = 4) uniform sampler3D rayleigh_texture;
-layout(set = 0, binding = 5) uniform sampler3D mie_texture;
-layout(set = 0, binding = 6) uniform sampler3D multiple_texture;
+layout(set = 0, binding = 4) uniform sampler3D multiple_density_texture;
 layout(location = 0) in vec3 relative_position;
 layout(location = 1) in vec4 surface_radiance_opacity;
 layout(location = 2) in vec3 vertex_rayleigh;
@@ -25,8 +23,8 @@ void main() {
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
   Inscatter segment;
   if (kAerialPerPixel == 1) {
-    segment = GetSkyInscatterToPoint(transmittance_texture, rayleigh_texture, mie_texture,
-                                     multiple_texture, r, mu, mu_s, nu, distance);
+    segment = GetSkyInscatterToPoint(transmittance_texture, multiple_density_texture, r, mu,
+                                     mu_s, nu, distance);
   } else {
     segment.rayleigh = vertex_rayleigh;
     segment.mie = vertex_mie;

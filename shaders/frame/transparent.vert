@@ -8,9 +8,9 @@
 #include "surface.glsl"
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
 layout(set = 0, binding = 3) uniform sampler2D irradiance_texture;
-layout(set = 0, binding = 7) uniform sampler3D rayleigh_froxels;
-layout(set = 0, binding = 8) uniform sampler3D mie_froxels;
-layout(set = 0, binding = 9) uniform sampler3D transmittance_froxels;
+layout(set = 0, binding = 5) uniform sampler3D rayleigh_froxels;
+layout(set = 0, binding = 6) uniform sampler3D mie_froxels;
+layout(set = 0, binding = 7) uniform sampler3D transmittance_froxels;
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 albedo;

@@ -51,6 +51,7 @@ layout(std140, set = 0, binding = 0) uniform AtmosphereBlock {
   ivec4 sample_counts;          // x: transmittance steps, y: single scattering steps,
                                 // z: irradiance zenith samples, w: irradiance azimuth samples.
   ivec4 multiple_scattering_steps;  // x: steps per ray of the multiple scattering pass.
+  ivec4 multiple_density_size;  // the scattering axes, for the density of orders >= 2 (J_ms).
 } atmosphere;
 
 float ClampCosine(float mu) { return clamp(mu, -1.0, 1.0); }

@@ -17,6 +17,16 @@ int DensityDirectionCount() {
          atmosphere.density_directions.z;
 }
 
+// The zenith angle of the cell boundary t in [0, 1] above the horizon: quadratic, so that cells
+// are finest next to the horizon, where the incident radiance changes fastest (the sunlit layer
+// above the Earth's shadow at twilight is a few degrees high). Against 16 equal cells, this took
+// the twilight sky from 36% to 14% off and the low sun's from 32% to 15%, for the same cost; 32
+// equal cells did less (26%, 23%) for twice the cost (aerial_bench_sky --grid quick).
+float SkyZenithFromUnitRange(float t, float theta_h) {
+  float s = 1.0 - t;
+  return theta_h * (1.0 - s * s);
+}
+
 // Direction `index` of the grid at radius r: xyz is the unit vector, w the cell's solid angle.
 vec4 GetDensityDirection(float r, int index) {
   int theta_up = atmosphere.density_directions.x;
@@ -28,8 +38,8 @@ vec4 GetDensityDirection(float r, int index) {
   float theta_a;
   float theta_b;
   if (theta_index < theta_up) {
-    theta_a = theta_h * float(theta_index) / float(theta_up);
-    theta_b = theta_h * float(theta_index + 1) / float(theta_up);
+    theta_a = SkyZenithFromUnitRange(float(theta_index) / float(theta_up), theta_h);
+    theta_b = SkyZenithFromUnitRange(float(theta_index + 1) / float(theta_up), theta_h);
   } else {
     int k = theta_index - theta_up;
     theta_a = theta_h + (PI - theta_h) * float(k) / float(theta_down);

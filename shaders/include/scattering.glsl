@@ -31,20 +31,28 @@ float SunCosineAlongRay(float r, float mu_s, float nu, float d, float r_d) {
   return TablesDropNu() ? mu_s : MuSAtDistance(r, mu_s, nu, d, r_d);
 }
 
-// Integrand of single scattering at distance d along the ray: transmittance from the camera to the
-// point, times sunlight reaching the point, times the density of each species there.
+// Integrand of single scattering at radius r_d, where the sun's zenith cosine is mu_s_d, given the
+// transmittance from the camera to there: that transmittance, times sunlight reaching the point,
+// times the density of each species there.
+void ComputeSingleScatteringIntegrandAt(sampler2D transmittance_texture, float r_d, float mu_s_d,
+                                        vec3 view_transmittance, out vec3 rayleigh, out vec3 mie) {
+  vec3 transmittance =
+      view_transmittance * GetTransmittanceToSun(transmittance_texture, r_d, mu_s_d);
+  float altitude = r_d - atmosphere.bottom_radius;
+  rayleigh = transmittance * GetProfileDensity(atmosphere.rayleigh_density, altitude);
+  mie = transmittance * GetProfileDensity(atmosphere.mie_density, altitude);
+}
+
+// The same at distance d along the ray (r, mu).
 void ComputeSingleScatteringIntegrand(sampler2D transmittance_texture, vec3 origin, float r,
                                       float mu, float mu_s, float nu, float d,
                                       bool ray_r_mu_intersects_ground, out vec3 rayleigh,
                                       out vec3 mie) {
   float r_d = RadiusAtDistance(r, mu, d);
-  float mu_s_d = SunCosineAlongRay(r, mu_s, nu, d, r_d);
-  vec3 transmittance = GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
-                                                  ray_r_mu_intersects_ground) *
-                       GetTransmittanceToSun(transmittance_texture, r_d, mu_s_d);
-  float altitude = r_d - atmosphere.bottom_radius;
-  rayleigh = transmittance * GetProfileDensity(atmosphere.rayleigh_density, altitude);
-  mie = transmittance * GetProfileDensity(atmosphere.mie_density, altitude);
+  ComputeSingleScatteringIntegrandAt(
+      transmittance_texture, r_d, SunCosineAlongRay(r, mu_s, nu, d, r_d),
+      GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d, ray_r_mu_intersects_ground),
+      rayleigh, mie);
 }
 
 // Single scattering (Bruneton 2008 eq. 11 without the phase function), integrated over the
@@ -76,21 +84,47 @@ void ComputeSingleScattering(sampler2D transmittance_texture, float r, float mu,
   mie = mie_sum * sun * atmosphere.mie_scattering.rgb;
 }
 
-// Reads a 4D table packed in 3D (x = nu_index * MU_S + mu_s_index), interpolating linearly in nu
+// Reads of a 4D table packed in 3D (x = nu_index * MU_S + mu_s_index) interpolate linearly in nu
 // between two slices; the other three axes use the sampler's trilinear filter. A table with one
-// nu slice is the 3D variant. The precomputation reads its own intermediate tables this way.
-vec3 GetScatteringAt(sampler3D scattering_texture, ivec4 size, vec4 uvwz) {
+// nu slice is the 3D variant. The blend between the two slices is a vec2: x the lower slice's
+// index, y the upper one's weight.
+vec2 GetNominalNuBlend(ivec4 size, vec4 uvwz) {
   float nu_size = float(size.w);
-  if (size.w == 1) {
-    return textureLod(scattering_texture, uvwz.yzw, 0.0).rgb;
-  }
   float tex_coord_x = uvwz.x * (nu_size - 1.0);
   float tex_x = min(floor(tex_coord_x), nu_size - 2.0);
-  float lerp = tex_coord_x - tex_x;
-  vec3 uvw0 = vec3((tex_x + uvwz.y) / nu_size, uvwz.z, uvwz.w);
-  vec3 uvw1 = vec3((tex_x + 1.0 + uvwz.y) / nu_size, uvwz.z, uvwz.w);
+  return vec2(tex_x, tex_coord_x - tex_x);
+}
+
+// The blend for the precomputation's per-order tables (scattering density, multiple scattering)
+// and the multiple density table, which hold values at each texel's clamped nu
+// (GetRMuMuSNuFromScatteringTexel). Near the end of the allowed nu range the outer of the two nu
+// slices holds the value at the range's end, not at its place on the axis; the weight between the
+// slices is taken between where their values really are. Without this, the forward Mie peak of the
+// density is smeared toward the middle of the range and the multiple scattering seen toward the
+// sun is too low by several percent.
+vec2 GetClampedNuBlend(ivec4 size, vec4 uvwz, float mu, float mu_s, float nu) {
+  if (size.w == 1) return vec2(0.0);
+  float nu_size = float(size.w);
+  float tex_x = min(floor(uvwz.x * (nu_size - 1.0)), nu_size - 2.0);
+  float spread = sqrt(max((1.0 - mu * mu) * (1.0 - mu_s * mu_s), 0.0));
+  float nu0 = clamp(2.0 * tex_x / (nu_size - 1.0) - 1.0, mu * mu_s - spread, mu * mu_s + spread);
+  float nu1 =
+      clamp(2.0 * (tex_x + 1.0) / (nu_size - 1.0) - 1.0, mu * mu_s - spread, mu * mu_s + spread);
+  return vec2(tex_x, nu1 > nu0 ? clamp((nu - nu0) / (nu1 - nu0), 0.0, 1.0) : 0.5);
+}
+
+// uvw: the table coordinates of (mu_s, mu, r), i.e. uvwz.yzw.
+vec3 GetScatteringBlended(sampler3D scattering_texture, ivec4 size, vec2 nu_blend, vec3 uvw) {
+  if (size.w == 1) return textureLod(scattering_texture, uvw, 0.0).rgb;
+  float nu_size = float(size.w);
+  vec3 uvw0 = vec3((nu_blend.x + uvw.x) / nu_size, uvw.y, uvw.z);
+  vec3 uvw1 = vec3((nu_blend.x + 1.0 + uvw.x) / nu_size, uvw.y, uvw.z);
   return mix(textureLod(scattering_texture, uvw0, 0.0).rgb,
-             textureLod(scattering_texture, uvw1, 0.0).rgb, lerp);
+             textureLod(scattering_texture, uvw1, 0.0).rgb, nu_blend.y);
+}
+
+vec3 GetScatteringAt(sampler3D scattering_texture, ivec4 size, vec4 uvwz) {
+  return GetScatteringBlended(scattering_texture, size, GetNominalNuBlend(size, uvwz), uvwz.yzw);
 }
 
 vec3 GetScattering(sampler3D scattering_texture, ivec4 size, float r, float mu, float mu_s,
@@ -100,50 +134,53 @@ vec3 GetScattering(sampler3D scattering_texture, ivec4 size, float r, float mu, 
       GetScatteringTextureUvwzFromRMuMuSNu(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground));
 }
 
-// The precomputation's read of its per-order tables (scattering density, multiple scattering),
-// which hold values at each texel's clamped nu (GetRMuMuSNuFromScatteringTexel). Near the end of
-// the allowed nu range the outer of the two nu slices holds the value at the range's end, not at
-// its place on the axis; the weight between the slices is taken between where their values really
-// are. Without this, the forward Mie peak of the density is smeared toward the middle of the range
-// and the multiple scattering seen toward the sun is too low by several percent.
 vec3 GetScatteringClampedNu(sampler3D scattering_texture, ivec4 size, float r, float mu,
                             float mu_s, float nu, bool ray_r_mu_intersects_ground) {
   vec4 uvwz =
       GetScatteringTextureUvwzFromRMuMuSNu(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
-  if (size.w == 1) return GetScatteringAt(scattering_texture, size, uvwz);
-  float nu_size = float(size.w);
-  float tex_x = min(floor(uvwz.x * (nu_size - 1.0)), nu_size - 2.0);
-  float spread = sqrt(max((1.0 - mu * mu) * (1.0 - mu_s * mu_s), 0.0));
-  float nu0 = clamp(2.0 * tex_x / (nu_size - 1.0) - 1.0, mu * mu_s - spread, mu * mu_s + spread);
-  float nu1 =
-      clamp(2.0 * (tex_x + 1.0) / (nu_size - 1.0) - 1.0, mu * mu_s - spread, mu * mu_s + spread);
-  float lerp = nu1 > nu0 ? clamp((nu - nu0) / (nu1 - nu0), 0.0, 1.0) : 0.5;
-  vec3 uvw0 = vec3((tex_x + uvwz.y) / nu_size, uvwz.z, uvwz.w);
-  vec3 uvw1 = vec3((tex_x + 1.0 + uvwz.y) / nu_size, uvwz.z, uvwz.w);
-  return mix(textureLod(scattering_texture, uvw0, 0.0).rgb,
-             textureLod(scattering_texture, uvw1, 0.0).rgb, lerp);
+  return GetScatteringBlended(scattering_texture, size, GetClampedNuBlend(size, uvwz, mu, mu_s, nu),
+                              uvwz.yzw);
 }
 
-// The render-time read of the final tables: as GetScattering, but interpolated exponentially
-// between the two nearest r slices instead of linearly. Scattering falls off roughly exponentially
-// with altitude, and at the default 32 r slices a slice spans 1.6 km of altitude at 10 km (Mie's
-// scale height is 1.2 km) and 3.5 km at 50 km: linear interpolation there overestimates the
-// inscatter seen by a high camera by up to 20% (Mie) and 2.4% (Rayleigh). Where either slice is
-// zero (night side) the interpolation falls back to linear.
-vec3 GetScatteringExponentialInR(sampler3D scattering_texture, ivec4 size, float r, float mu,
-                                 float mu_s, float nu, bool ray_r_mu_intersects_ground) {
-  vec4 uvwz =
-      GetScatteringTextureUvwzFromRMuMuSNu(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+// Interpolates exponentially between the two nearest r slices instead of linearly. Scattering
+// falls off roughly exponentially with altitude, and at the default 32 r slices a slice spans
+// 1.6 km of altitude at 10 km (Mie's scale height is 1.2 km) and 3.5 km at 50 km: linear
+// interpolation there overestimates the inscatter seen by a high camera by up to 20% (Mie) and
+// 2.4% (Rayleigh). Where either slice is zero (night side) the interpolation falls back to linear.
+vec3 GetScatteringBlendedExponentialInR(sampler3D scattering_texture, ivec4 size, vec2 nu_blend,
+                                        vec4 uvwz) {
   float r_size = float(size.x);
   float slice = clamp(uvwz.w * r_size - 0.5, 0.0, r_size - 1.0);
   float slice0 = min(floor(slice), r_size - 2.0);
   float t = slice - slice0;
-  vec3 s0 = GetScatteringAt(scattering_texture, size, vec4(uvwz.xyz, (slice0 + 0.5) / r_size));
+  vec3 s0 = GetScatteringBlended(scattering_texture, size, nu_blend,
+                                 vec3(uvwz.yz, (slice0 + 0.5) / r_size));
   if (t == 0.0) return s0;  // on a slice (a camera on the ground): uniform over a frame's pixels
-  vec3 s1 = GetScatteringAt(scattering_texture, size, vec4(uvwz.xyz, (slice0 + 1.5) / r_size));
+  vec3 s1 = GetScatteringBlended(scattering_texture, size, nu_blend,
+                                 vec3(uvwz.yz, (slice0 + 1.5) / r_size));
   bvec3 use_log = greaterThan(min(s0, s1), vec3(1e-30));
   vec3 exponential = exp(mix(log(max(s0, vec3(1e-30))), log(max(s1, vec3(1e-30))), t));
   return mix(mix(s0, s1, t), exponential, use_log);  // a selection: use_log is a bvec3
+}
+
+// The render-time read of the final radiance tables.
+vec3 GetScatteringExponentialInR(sampler3D scattering_texture, ivec4 size, float r, float mu,
+                                 float mu_s, float nu, bool ray_r_mu_intersects_ground) {
+  vec4 uvwz =
+      GetScatteringTextureUvwzFromRMuMuSNu(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+  return GetScatteringBlendedExponentialInR(scattering_texture, size, GetNominalNuBlend(size, uvwz),
+                                            uvwz);
+}
+
+// The render-time read of the multiple density table J_ms (clamped nu, exponential in r: the
+// density follows the air's density).
+vec3 GetMultipleScatteringDensity(sampler3D multiple_density_texture, float r, float mu,
+                                  float mu_s, float nu, bool ray_r_mu_intersects_ground) {
+  ivec4 size = atmosphere.multiple_density_size;
+  vec4 uvwz =
+      GetScatteringTextureUvwzFromRMuMuSNu(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+  return GetScatteringBlendedExponentialInR(multiple_density_texture, size,
+                                            GetClampedNuBlend(size, uvwz, mu, mu_s, nu), uvwz);
 }
 
 // Radiance of scattering order `order` arriving along (r, mu) with the sun at (mu_s, nu): order 1

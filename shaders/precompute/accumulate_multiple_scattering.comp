@@ -1,13 +1,16 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Pass 7 (orders >= 2): adds the order-n multiple scattering to the final tables; after the last
-// order, with the series closed, the orders beyond it too (SumSeriesFromLastOrder). 4D: to the
-// Rayleigh table, divided by the Rayleigh phase so that render-time lookups multiply one phase
-// back in (Bruneton 2017
-// "ComputeMultipleScatteringTexture": multiple scattering is nearly isotropic, and this keeps the
-// Rayleigh/Mie split without a third table). 3D: a table has no nu to divide by, so the orders are
-// summed in a table of their own (see sky_lookup.glsl). The order-n table is read at each texel's own
-// parameters, which also resamples it from the density resolution to the table resolution.
+// Pass 7 (orders >= 2): adds a quantity of order n, computed at the density resolution, to a final
+// table, read at each target texel's own parameters (which resamples it to the target's grid);
+// after the last order, with the series closed, the orders beyond it too (SumSeriesFromLastOrder).
+// Two uses:
+//  - The multiple scattering S_n. 4D: to the Rayleigh table, divided by the Rayleigh phase so that
+//    render-time lookups multiply one phase back in (Bruneton 2017
+//    "ComputeMultipleScatteringTexture": multiple scattering is nearly isotropic, and this keeps
+//    the Rayleigh/Mie split without a third table). 3D: a table has no nu to divide by, so the
+//    orders are summed in a table of their own (see sky_lookup.glsl).
+//  - The scattering density J_n, summed as it is into the multiple density table J_ms, which
+//    render-time marches integrate along a segment (sky_lookup.glsl).
 //
 // The division uses the texel's nominal nu (its place on the nu axis), not the nu it was clamped
 // to. Near mu_s = 1 or mu = +-1 the allowed nu range collapses and every texel of a slice is
@@ -18,33 +21,30 @@
 // P_R(nu) restores the radiance.
 #include "scattering.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 1) uniform sampler3D delta_multiple_scattering_texture;
+layout(set = 0, binding = 1) uniform sampler3D order_texture;           // order n
 layout(set = 0, binding = 2) uniform sampler3D previous_order_texture;  // order n-1
-// 4D: the Rayleigh table; 3D: the multiple scattering table.
 layout(set = 0, binding = 3, rgba32f) uniform image3D accumulator;
-layout(push_constant) uniform Series { int close_series; } pass;
+layout(push_constant) uniform Step {
+  ivec4 target_size;  // the accumulator's axes: r, mu, mu_s, nu
+  int close_series;
+  int divide_by_rayleigh_phase;
+} pass;
 
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
-  if (!IsScatteringTexel(atmosphere.scattering_size, texel)) return;
+  if (!IsScatteringTexel(pass.target_size, texel)) return;
   float r, mu, mu_s, nu;
   bool ray_r_mu_intersects_ground;
-  GetRMuMuSNuFromScatteringTexel(atmosphere.scattering_size, texel, r, mu, mu_s, nu,
+  GetRMuMuSNuFromScatteringTexel(pass.target_size, texel, r, mu, mu_s, nu,
                                  ray_r_mu_intersects_ground);
-  vec3 radiance = GetScatteringClampedNu(delta_multiple_scattering_texture, atmosphere.density_size, r, mu,
-                                mu_s, nu, ray_r_mu_intersects_ground);
+  vec3 value = GetScatteringClampedNu(order_texture, atmosphere.density_size, r, mu, mu_s, nu,
+                                      ray_r_mu_intersects_ground);
   if (pass.close_series != 0) {
-    radiance = SumSeriesFromLastOrder(
-        radiance, GetScatteringClampedNu(previous_order_texture, atmosphere.density_size, r, mu, mu_s,
-                                         nu, ray_r_mu_intersects_ground));
+    value = SumSeriesFromLastOrder(
+        value, GetScatteringClampedNu(previous_order_texture, atmosphere.density_size, r, mu, mu_s,
+                                      nu, ray_r_mu_intersects_ground));
   }
-  if (TablesDropNu()) {
-    // 3D: the table of multiple scattering takes the radiance as it is.
-    imageStore(accumulator, texel, imageLoad(accumulator, texel) + vec4(radiance, 0.0));
-    return;
-  }
-  float nominal_nu = GetScatteringTexelNominalNu(atmosphere.scattering_size, texel);
-  imageStore(accumulator, texel,
-             imageLoad(accumulator, texel) +
-                 vec4(radiance / RayleighPhaseFunction(nominal_nu), 0.0));
+  if (pass.divide_by_rayleigh_phase != 0)
+    value /= RayleighPhaseFunction(GetScatteringTexelNominalNu(pass.target_size, texel));
+  imageStore(accumulator, texel, imageLoad(accumulator, texel) + vec4(value, 0.0));
 }

@@ -9,6 +9,7 @@ layout(set = 0, binding = 2) uniform sampler2D irradiance_texture;
 layout(set = 0, binding = 3) uniform sampler3D rayleigh_texture;
 layout(set = 0, binding = 4) uniform sampler3D mie_texture;
 layout(set = 0, binding = 5) uniform sampler3D multiple_texture;
+layout(set = 0, binding = 6) uniform sampler3D multiple_density_texture;
 
 struct ProbeQuery {
   vec4 geometry;  // r, mu, mu_s, nu
@@ -25,8 +26,8 @@ struct ProbeResult {
   vec4 rayleigh;  // table values without phase, to the boundary
   vec4 mie;
 };
-layout(std430, set = 0, binding = 6) readonly buffer Queries { ProbeQuery queries[]; };
-layout(std430, set = 0, binding = 7) writeonly buffer Results { ProbeResult results[]; };
+layout(std430, set = 0, binding = 7) readonly buffer Queries { ProbeQuery queries[]; };
+layout(std430, set = 0, binding = 8) writeonly buffer Results { ProbeResult results[]; };
 layout(push_constant) uniform Batch { int count; } batch;
 
 void main() {
@@ -39,8 +40,8 @@ void main() {
   Inscatter sky = GetSkyInscatter(transmittance_texture, rayleigh_texture, mie_texture,
                                   multiple_texture, r, mu, mu_s, nu);
   Inscatter segment =
-      GetSkyInscatterToPoint(transmittance_texture, rayleigh_texture, mie_texture, multiple_texture,
-                             r, mu, mu_s, nu, queries[index].segment.x);
+      GetSkyInscatterToPoint(transmittance_texture, multiple_density_texture, r, mu, mu_s, nu,
+                             queries[index].segment.x);
   ProbeResult result;
   result.sky_radiance = vec4(ApplyPhaseFunctions(sky, nu), 0.0);
   result.transmittance = vec4(sky.transmittance, 0.0);

@@ -15,10 +15,11 @@ layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
 layout(set = 0, binding = 3) uniform sampler3D rayleigh_texture;
 layout(set = 0, binding = 4) uniform sampler3D mie_texture;
 layout(set = 0, binding = 5) uniform sampler3D multiple_texture;
-layout(set = 0, binding = 6) uniform sampler3D rayleigh_froxels;
-layout(set = 0, binding = 7) uniform sampler3D mie_froxels;
-layout(set = 0, binding = 8) uniform sampler3D transmittance_froxels;
-layout(set = 0, binding = 9) uniform sampler2D depth_texture;  // reversed Z, 0 where sky
+layout(set = 0, binding = 6) uniform sampler3D multiple_density_texture;
+layout(set = 0, binding = 7) uniform sampler3D rayleigh_froxels;
+layout(set = 0, binding = 8) uniform sampler3D mie_froxels;
+layout(set = 0, binding = 9) uniform sampler3D transmittance_froxels;
+layout(set = 0, binding = 10) uniform sampler2D depth_texture;  // reversed Z, 0 where sky
 layout(push_constant) uniform Push {
   vec2 target_size;  // the window's pixels
   int term;          // 0: Rayleigh, 1: Mie, 2: transmittance
@@ -43,8 +44,8 @@ void main() {
     segment = SampleFroxels(rayleigh_froxels, mie_froxels, transmittance_froxels, uv, distance,
                             float(frame.froxel_size.z), frame.froxel_depth.x);
   } else {
-    segment = GetSkyInscatterToPoint(transmittance_texture, rayleigh_texture, mie_texture,
-                                     multiple_texture, r, mu, mu_s, nu, distance);
+    segment = GetSkyInscatterToPoint(transmittance_texture, multiple_density_texture, r, mu,
+                                     mu_s, nu, distance);
   }
   vec3 value;
   if (push.term == 0) {

@@ -21,7 +21,11 @@ void TableOptions::AddTo(CLI::App& command) {
   command.add_option("--irradiance-size", irradiance_size, "Irradiance table MU_S,R (default 64,32)")
       ->delimiter(',')->expected(2);
   command.add_option("--scattering-size", scattering_size,
-                     "Scattering table R,MU,MU_S,NU (default 32,128,40,8; NU must be 1 with --lut 3d)")
+                     "Scattering table R,MU,MU_S,NU (default 32,128,38,8; NU must be 1 with --lut 3d)")
+      ->delimiter(',')->expected(4);
+  command.add_option("--multiple-density-size", multiple_density_size,
+                     "Multiple scattering density table R,MU,MU_S,NU (default 16,64,32,4; NU must be 1 "
+                     "with --lut 3d)")
       ->delimiter(',')->expected(4);
   command.add_option("--cache-dir", cache_dir, "Table cache directory (default ~/.cache/aerial)");
   command.add_flag("--no-cache", no_cache, "Recompute the tables even when a cached copy exists");
@@ -53,6 +57,12 @@ PrecomputeOptions TableOptions::MakePrecomputeOptions() const {
   if (!scattering_size.empty()) {
     options.SetScatteringSize(scattering_size[0], scattering_size[1], scattering_size[2],
                               scattering_size[3]);
+  }
+  if (!multiple_density_size.empty()) {
+    options.resolution.multiple_density_r = multiple_density_size[0];
+    options.resolution.multiple_density_mu = multiple_density_size[1];
+    options.resolution.multiple_density_mu_s = multiple_density_size[2];
+    options.resolution.multiple_density_nu = multiple_density_size[3];
   }
   options.orders = orders;
   options.close_series = series_tail == "on";

@@ -27,6 +27,7 @@ struct TableOptions {
   std::vector<int> transmittance_size;  // mu, r
   std::vector<int> irradiance_size;     // mu_s, r
   std::vector<int> scattering_size;     // r, mu, mu_s, nu
+  std::vector<int> multiple_density_size;  // r, mu, mu_s, nu
   std::filesystem::path cache_dir;
   bool no_cache = false;
   std::string device;

@@ -26,7 +26,10 @@ std::vector<MemoryUse> TableMemoryUses(const PrecomputeOptions& options) {
           {"--irradiance-size", Join({r.irradiance_mu_s, r.irradiance_r}, ","), what,
            3 * tables.irradiance + scratch.irradiance},
           {"--scattering-size", Join({r.scattering_r, r.scattering_mu, r.scattering_mu_s, r.scattering_nu}, ","),
-           what, 3 * tables.scattering + scratch.scattering}};
+           what, 3 * tables.scattering + scratch.scattering},
+          {"--multiple-density-size",
+           Join({r.multiple_density_r, r.multiple_density_mu, r.multiple_density_mu_s, r.multiple_density_nu}, ","),
+           what, 3 * tables.multiple_density + scratch.multiple_density}};
 }
 
 std::vector<MemoryUse> FrameMemoryUses(const RenderOptions& render, int renderers) {

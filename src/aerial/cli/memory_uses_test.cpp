@@ -27,13 +27,27 @@ TEST(MemoryUses, RenderScaleShrinksTheTargetsNotTheOutput) {
   EXPECT_EQ(a.readback - b.readback, (1'000'000 - 250'000) * 32u);
 }
 
-// What the tables take is what AtmosphereTables allocates: 2 scattering tables in 4D, 3 in 3D.
+// What the tables take is what AtmosphereTables allocates: 2 scattering tables in 4D, 3 in 3D,
+// and the multiple density table.
 TEST(MemoryUses, TableMemoryCountsEveryTable) {
   TableBytes t4 = TableMemory(PrecomputeOptions::Default(LutVariant::k4D));
   EXPECT_EQ(t4.transmittance, 256u * 64 * 16);
   EXPECT_EQ(t4.irradiance, 64u * 32 * 16);
-  EXPECT_EQ(t4.scattering, 2u * 8 * 40 * 128 * 32 * 16);
-  EXPECT_EQ(TableMemory(PrecomputeOptions::Default(LutVariant::k3D)).scattering, 3u * 40 * 128 * 32 * 16);
+  EXPECT_EQ(t4.scattering, 2u * 8 * 38 * 128 * 32 * 16);
+  EXPECT_EQ(t4.multiple_density, 4u * 32 * 64 * 16 * 16);
+  TableBytes t3 = TableMemory(PrecomputeOptions::Default(LutVariant::k3D));
+  EXPECT_EQ(t3.scattering, 3u * 38 * 128 * 32 * 16);
+  EXPECT_EQ(t3.multiple_density, 32u * 64 * 16 * 16);
+}
+
+// Issue 12's memory budget: the default 4D tables take at most 1.25 times the defaults before it
+// (transmittance 256x64, irradiance 64x32, scattering R32 MU128 MU_S32 NU8, Bruneton 2017's
+// scattering resolution).
+TEST(MemoryUses, DefaultTablesWithinTheLowSunMemoryBudget) {
+  const uint64_t before = 256u * 64 * 16 + 64u * 32 * 16 + 2u * 8 * 32 * 128 * 32 * 16;
+  uint64_t now = TableMemory(PrecomputeOptions::Default(LutVariant::k4D)).total();
+  EXPECT_LE(double(now), 1.25 * double(before));
+  EXPECT_GT(double(now), 1.2 * double(before));  // the budget is spent, not left over
 }
 
 }  // namespace

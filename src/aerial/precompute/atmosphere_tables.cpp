@@ -1,5 +1,6 @@
 #include "aerial/precompute/atmosphere_tables.h"
 
+#include <array>
 #include <cstring>
 
 #include "aerial/core/error.h"
@@ -22,6 +23,11 @@ TexelFormat ToTexelFormat(::vk::Format format) {
   return format == ::vk::Format::eR16G16B16A16Sfloat ? TexelFormat::kRgba16f : TexelFormat::kRgba32f;
 }
 
+::vk::Extent3D MultipleDensityExtent(const TableResolution& r) {
+  return {uint32_t(r.multiple_density_nu * r.multiple_density_mu_s), uint32_t(r.multiple_density_mu),
+          uint32_t(r.multiple_density_r)};
+}
+
 uint64_t Texels(const ::vk::Extent3D& e) { return uint64_t(e.width) * e.height * e.depth; }
 
 }  // namespace
@@ -33,7 +39,9 @@ TableBytes TableMemory(const PrecomputeOptions& options) {
   return {.transmittance = uint64_t(r.transmittance_mu) * r.transmittance_r * 16,
           .irradiance = uint64_t(r.irradiance_mu_s) * r.irradiance_r * 16,
           .scattering = scattering_tables * Texels(ScatteringExtent(r)) *
-                        TexelBytes(ToTexelFormat(ScatteringFormat(options.precision)))};
+                        TexelBytes(ToTexelFormat(ScatteringFormat(options.precision))),
+          .multiple_density = Texels(MultipleDensityExtent(r)) *
+                              TexelBytes(ToTexelFormat(ScatteringFormat(options.precision)))};
 }
 
 AtmosphereTables::AtmosphereTables(const vk::Context& context,
@@ -61,10 +69,14 @@ AtmosphereTables::AtmosphereTables(const vk::Context& context,
                                         ? ScatteringExtent(options.resolution)
                                         : ::vk::Extent3D{1, 1, 1},
                           .volume = true,
-                          .format = ScatteringFormat(options.precision)}) {
+                          .format = ScatteringFormat(options.precision)}),
+      multiple_density_(context, {.extent = MultipleDensityExtent(options.resolution),
+                                  .volume = true,
+                                  .format = ScatteringFormat(options.precision)}) {
   uniform_buffer_.Write(std::as_bytes(std::span(&uniforms_, 1)));
   context_.Submit([&](const auto& cmd) {
-    for (const vk::Image* image : {&transmittance_, &irradiance_, &rayleigh_, &mie_, &multiple_}) {
+    for (const vk::Image* image :
+         {&transmittance_, &irradiance_, &rayleigh_, &mie_, &multiple_, &multiple_density_}) {
       image->InitializeLayout(cmd);
     }
     multiple_.Clear(cmd);  // stays zero in 4D
@@ -88,16 +100,20 @@ struct NamedImage {
   const vk::Image* image;
 };
 
+// The tables under their names in the cache file.
+std::array<NamedImage, 6> NamedTables(const AtmosphereTables& t) {
+  return {NamedImage{"transmittance", &t.transmittance()}, NamedImage{"irradiance", &t.irradiance()},
+          NamedImage{"rayleigh", &t.rayleigh()},           NamedImage{"mie", &t.mie()},
+          NamedImage{"multiple", &t.multiple()},           NamedImage{"multiple_density", &t.multiple_density()}};
+}
+
 }  // namespace
 
 TableCache AtmosphereTables::Download() const {
   TableCache cache;
   cache.key = cache_key();
   cache.description = atmosphere_.name + ": " + options_.Describe();
-  for (NamedImage table : {NamedImage{"transmittance", &transmittance_},
-                           NamedImage{"irradiance", &irradiance_}, NamedImage{"rayleigh", &rayleigh_},
-                           NamedImage{"mie", &mie_},
-                           NamedImage{"multiple", &multiple_}}) {
+  for (NamedImage table : NamedTables(*this)) {
     ::vk::Extent3D e = table.image->extent();
     CachedTable cached{.name = table.name, .width = e.width, .height = e.height, .depth = e.depth,
                        .format = ToTexelFormat(table.image->format()),
@@ -108,10 +124,7 @@ TableCache AtmosphereTables::Download() const {
 }
 
 void AtmosphereTables::Upload(const TableCache& cache) {
-  for (NamedImage table : {NamedImage{"transmittance", &transmittance_},
-                           NamedImage{"irradiance", &irradiance_}, NamedImage{"rayleigh", &rayleigh_},
-                           NamedImage{"mie", &mie_},
-                           NamedImage{"multiple", &multiple_}}) {
+  for (NamedImage table : NamedTables(*this)) {
     const CachedTable* cached = nullptr;
     for (const auto& t : cache.tables)
       if (t.name == table.name) cached = &t;

@@ -4,6 +4,9 @@
 // in 3D (x = nu * MU_S + mu_s) or 3D (nu dropped). Multiple scattering is folded into the Rayleigh
 // table as S_n / P_R(nu) in 4D; a 3D table has no nu to divide by, so there it has a table of its
 // own ("multiple", 1x1x1 and unused in 4D) that lookups add as S_n / P_R(nu) of the query.
+// Besides the radiance tables, the scattering density of orders >= 2 ("multiple_density", J_ms,
+// on a coarse grid of the same axes) lets render-time marches integrate a segment's multiple
+// scattering directly (Bruneton 2008 eq. 12 restricted to the segment).
 // Shaders read them through shaders/include/sky_lookup.glsl whatever the variant.
 #include <memory>
 
@@ -20,11 +23,11 @@ namespace aerial {
 TableCacheKey MakeTableCacheKey(const AtmosphereParameters& atmosphere,
                                 const PrecomputeOptions& options);
 
-// Memory by what sizes it (the --transmittance-size, --irradiance-size and --scattering-size
-// options), in bytes: used for the tables themselves and for the precompute's scratch tables.
+// Memory by what sizes it (the --transmittance-size, --irradiance-size, --scattering-size and
+// --multiple-density-size options), in bytes: used for the tables themselves and for the precompute's scratch tables.
 struct TableBytes {
-  uint64_t transmittance = 0, irradiance = 0, scattering = 0;
-  uint64_t total() const { return transmittance + irradiance + scattering; }
+  uint64_t transmittance = 0, irradiance = 0, scattering = 0, multiple_density = 0;
+  uint64_t total() const { return transmittance + irradiance + scattering + multiple_density; }
 };
 
 // The memory AtmosphereTables allocates for these options, known before allocating it: the
@@ -49,6 +52,7 @@ class AtmosphereTables {
   const vk::Image& rayleigh() const { return rayleigh_; }
   const vk::Image& mie() const { return mie_; }
   const vk::Image& multiple() const { return multiple_; }
+  const vk::Image& multiple_density() const { return multiple_density_; }
 
   // GPU memory of the tables, in bytes (TableMemory(options()).total()).
   size_t table_bytes() const;
@@ -70,6 +74,7 @@ class AtmosphereTables {
   vk::Image rayleigh_;
   vk::Image mie_;
   vk::Image multiple_;
+  vk::Image multiple_density_;
 };
 
 }  // namespace aerial

@@ -45,6 +45,8 @@ AtmosphereUniforms MakeAtmosphereUniforms(const AtmosphereParameters& a,
   u.density_directions = {s.density_theta_up, s.density_theta_down, s.density_phi, 0};
   u.sample_counts = {s.transmittance_steps, s.ray_steps, s.irradiance_zenith, s.irradiance_azimuth};
   u.multiple_scattering_steps = {s.multiple_scattering_steps, 0, 0, 0};
+  u.multiple_density_size = {r.multiple_density_r, r.multiple_density_mu, r.multiple_density_mu_s,
+                             r.multiple_density_nu};
   return u;
 }
 

@@ -32,11 +32,12 @@ struct alignas(16) AtmosphereUniforms {
   std::array<int, 4> density_directions;  // theta up, theta down, phi, unused
   std::array<int, 4> sample_counts;       // transmittance, ray, irradiance zenith, azimuth
   std::array<int, 4> multiple_scattering_steps;
+  std::array<int, 4> multiple_density_size;  // r, mu, mu_s, nu
 };
 static_assert(offsetof(AtmosphereUniforms, rayleigh_density) == 96);
 static_assert(offsetof(AtmosphereUniforms, bottom_radius) == 96 + 3 * 64);
 static_assert(offsetof(AtmosphereUniforms, transmittance_size) == 96 + 3 * 64 + 32);
-static_assert(sizeof(AtmosphereUniforms) == 96 + 3 * 64 + 32 + 7 * 16);
+static_assert(sizeof(AtmosphereUniforms) == 96 + 3 * 64 + 32 + 8 * 16);
 
 AtmosphereUniforms MakeAtmosphereUniforms(const AtmosphereParameters& atmosphere,
                                           const PrecomputeOptions& options);

@@ -22,6 +22,7 @@ PrecomputeOptions PrecomputeOptions::Default(LutVariant variant) {
   options.variant = variant;
   if (variant == LutVariant::k3D) {
     options.resolution.scattering_nu = 1;
+    options.resolution.multiple_density_nu = 1;
     options.samples.density_nu = 1;
   }
   return options;
@@ -32,7 +33,10 @@ PrecomputeOptions PrecomputeOptions::Small(LutVariant variant) {
   options.variant = variant;
   options.resolution = {.transmittance_mu = 128, .transmittance_r = 32, .irradiance_mu_s = 32,
                         .irradiance_r = 8, .scattering_r = 16, .scattering_mu = 64,
-                        .scattering_mu_s = 16, .scattering_nu = variant == LutVariant::k4D ? 8 : 1};
+                        .scattering_mu_s = 16, .scattering_nu = variant == LutVariant::k4D ? 8 : 1,
+                        .multiple_density_r = 8, .multiple_density_mu = 16,
+                        .multiple_density_mu_s = 8,
+                        .multiple_density_nu = variant == LutVariant::k4D ? 4 : 1};
   options.samples.density_r = 16;
   options.samples.density_mu = 32;
   options.samples.density_mu_s = 16;
@@ -112,11 +116,18 @@ void PrecomputeOptions::Validate() const {
   CheckNuAxis("scattering nu", r.scattering_nu, variant);
   // The 3D image packs nu and mu_s along x: its width is bounded by maxImageDimension3D (>= 2048).
   CheckRange("scattering nu * mu_s", r.scattering_nu * r.scattering_mu_s, 2, 2048);
+  CheckRange("multiple density r", r.multiple_density_r, 2, 512);
+  CheckMuAxis("multiple density mu", r.multiple_density_mu);
+  CheckRange("multiple density mu_s", r.multiple_density_mu_s, 2, 512);
+  CheckNuAxis("multiple density nu", r.multiple_density_nu, variant);
   CheckTexels("transmittance size (--transmittance-size)", {r.transmittance_mu, r.transmittance_r},
               kMaxTransmittanceTexels);
   CheckTexels("irradiance size (--irradiance-size)", {r.irradiance_mu_s, r.irradiance_r}, kMaxIrradianceTexels);
   CheckTexels("scattering size (--scattering-size)",
               {r.scattering_r, r.scattering_mu, r.scattering_mu_s, r.scattering_nu}, kMaxScatteringTexels);
+  CheckTexels("multiple density size",
+              {r.multiple_density_r, r.multiple_density_mu, r.multiple_density_mu_s, r.multiple_density_nu},
+              kMaxScatteringTexels);
   const SampleCounts& s = samples;
   CheckRange("transmittance steps", s.transmittance_steps, 8, 10000);
   CheckRange("ray steps", s.ray_steps, 4, 1000);
@@ -143,6 +154,8 @@ uint64_t PrecomputeOptions::Hash() const {
                         resolution.transmittance_mu, resolution.transmittance_r,
                         resolution.irradiance_mu_s, resolution.irradiance_r, resolution.scattering_r,
                         resolution.scattering_mu, resolution.scattering_mu_s, resolution.scattering_nu,
+                        resolution.multiple_density_r, resolution.multiple_density_mu,
+                        resolution.multiple_density_mu_s, resolution.multiple_density_nu,
                         samples.transmittance_steps, samples.ray_steps, samples.multiple_scattering_steps, samples.irradiance_zenith,
                         samples.irradiance_azimuth, samples.density_theta_up,
                         samples.density_theta_down, samples.density_phi, samples.density_r,
@@ -164,7 +177,10 @@ std::string PrecomputeOptions::Describe() const {
          std::to_string(r.transmittance_mu) + "x" + std::to_string(r.transmittance_r) +
          ", irradiance " + std::to_string(r.irradiance_mu_s) + "x" + std::to_string(r.irradiance_r) +
          ", scattering R" + std::to_string(r.scattering_r) + " MU" + std::to_string(r.scattering_mu) +
-         " MU_S" + std::to_string(r.scattering_mu_s) + " NU" + std::to_string(r.scattering_nu);
+         " MU_S" + std::to_string(r.scattering_mu_s) + " NU" + std::to_string(r.scattering_nu) +
+         ", multiple density R" + std::to_string(r.multiple_density_r) + " MU" +
+         std::to_string(r.multiple_density_mu) + " MU_S" + std::to_string(r.multiple_density_mu_s) +
+         " NU" + std::to_string(r.multiple_density_nu);
 }
 
 }  // namespace aerial

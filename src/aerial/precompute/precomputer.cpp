@@ -21,6 +21,13 @@ struct SeriesStep {
   int close_series;
 };
 
+// Push constants of accumulate_multiple_scattering.comp.
+struct AccumulateStep {
+  std::array<int, 4> target_size;  // r, mu, mu_s, nu
+  int close_series;
+  int divide_by_rayleigh_phase;
+};
+
 // The passes' pipelines; slot order = binding order in each shader.
 struct Pipelines {
   explicit Pipelines(const vk::Context& c)
@@ -39,7 +46,7 @@ struct Pipelines {
         multiple_scattering(c, "precompute/multiple_scattering.comp",
                             {kUniform, kSampled, kSampled, kStorageImage}),
         accumulate(c, "precompute/accumulate_multiple_scattering.comp",
-                   {kUniform, kSampled, kSampled, kStorageImage}, sizeof(int)) {}
+                   {kUniform, kSampled, kSampled, kStorageImage}, sizeof(AccumulateStep)) {}
   vk::ComputePipeline transmittance, direct_irradiance, single_scattering, incident_radiance,
       scattering_density, indirect_irradiance, multiple_scattering, accumulate;
 };
@@ -70,7 +77,8 @@ struct Scratch {
         delta_rayleigh(c, {.extent = tables.rayleigh().extent()}),
         delta_multiple{vk::Image(c, {.extent = DensityExtent(tables.options())}),
                        vk::Image(c, {.extent = DensityExtent(tables.options())})},
-        density(c, {.extent = DensityExtent(tables.options())}),
+        density{vk::Image(c, {.extent = DensityExtent(tables.options())}),
+                vk::Image(c, {.extent = DensityExtent(tables.options())})},
         incident_radiance(c, {.size = IncidentBytes(tables.options()),
                               .usage = ::vk::BufferUsageFlagBits::eStorageBuffer}),
         directions(c, {.size = DirectionBytes(tables.options()),
@@ -80,15 +88,17 @@ struct Scratch {
       rayleigh_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.rayleigh().extent()});
       mie_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.mie().extent()});
       multiple_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.multiple().extent(), .volume = true});
+      multiple_density_f32.emplace(
+          c, vk::ImageCreateInfo{.extent = tables.multiple_density().extent(), .volume = true});
     }
   }
 
   std::array<vk::Image, 2> delta_irradiance;
   vk::Image delta_rayleigh;
   std::array<vk::Image, 2> delta_multiple;
-  vk::Image density;
+  std::array<vk::Image, 2> density;  // J_n, for two consecutive orders (index: order % 2)
   vk::Buffer incident_radiance, directions;
-  std::optional<vk::Image> rayleigh_f32, mie_f32, multiple_f32;
+  std::optional<vk::Image> rayleigh_f32, mie_f32, multiple_f32, multiple_density_f32;
 };
 
 ::vk::Extent3D Extent2D(const vk::Image& image) { return image.extent(); }
@@ -114,19 +124,23 @@ TableBytes PrecomputeScratchMemory(const PrecomputeOptions& options) {
   const ::vk::Extent3D density = DensityExtent(options);
   uint64_t scattering_texels = uint64_t(r.scattering_nu) * r.scattering_mu_s * r.scattering_mu * r.scattering_r;
   uint64_t scattering = scattering_texels * 16 +                                          // delta_rayleigh
-                        3 * uint64_t(density.width) * density.height * density.depth * 16 +  // delta_multiple, density
+                        4 * uint64_t(density.width) * density.height * density.depth * 16 +  // delta_multiple, density
                         IncidentBytes(options) + DirectionBytes(options);
   // Float32 copies of the half-precision tables (the multiple one has 1 texel in 4D).
-  if (options.precision == TablePrecision::kFloat16)
+  uint64_t multiple_density = 0;
+  if (options.precision == TablePrecision::kFloat16) {
     scattering += scattering_texels * 16 * (options.variant == LutVariant::k3D ? 3 : 2);
+    multiple_density = uint64_t(r.multiple_density_r) * r.multiple_density_mu * r.multiple_density_mu_s *
+                       r.multiple_density_nu * 16;
+  }
   return {.transmittance = 0, .irradiance = 2 * uint64_t(r.irradiance_mu_s) * r.irradiance_r * 16,
-          .scattering = scattering};
+          .scattering = scattering, .multiple_density = multiple_density};
 }
 
 int PrecomputePassCount(const PrecomputeOptions& options) {
-  // transmittance, direct irradiance, single scattering, 5 passes per order >= 2, and the ground
+  // transmittance, direct irradiance, single scattering, 6 passes per order >= 2, and the ground
   // irradiance of the last order.
-  return 3 + 5 * (options.orders - 1) + 1;
+  return 3 + 6 * (options.orders - 1) + 1;
 }
 
 std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progress) {
@@ -138,6 +152,8 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   const vk::Image& rayleigh = scratch.rayleigh_f32 ? *scratch.rayleigh_f32 : tables.rayleigh();
   const vk::Image& mie = scratch.mie_f32 ? *scratch.mie_f32 : tables.mie();
   const vk::Image& multiple = scratch.multiple_f32 ? *scratch.multiple_f32 : tables.multiple();
+  const vk::Image& multiple_density =
+      scratch.multiple_density_f32 ? *scratch.multiple_density_f32 : tables.multiple_density();
   // 4D folds each order into the Rayleigh table; 3D keeps them in their own table.
   const vk::Image& multiple_accumulator =
       tables.options().variant == LutVariant::k4D ? rayleigh : multiple;
@@ -164,14 +180,16 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   context.Submit([&](const auto& cmd) {
     for (const vk::Image* image : {&scratch.delta_irradiance[0], &scratch.delta_irradiance[1],
                                    &scratch.delta_rayleigh, &scratch.delta_multiple[0],
-                                   &scratch.delta_multiple[1], &scratch.density})
+                                   &scratch.delta_multiple[1], &scratch.density[0], &scratch.density[1]})
       image->InitializeLayout(cmd);
     if (scratch.rayleigh_f32) {
       scratch.rayleigh_f32->InitializeLayout(cmd);
       scratch.mie_f32->InitializeLayout(cmd);
       scratch.multiple_f32->InitializeLayout(cmd);
       scratch.multiple_f32->Clear(cmd);
+      scratch.multiple_density_f32->InitializeLayout(cmd);
     }
+    multiple_density.Clear(cmd);  // accumulates orders >= 2
     // The irradiance table accumulates indirect orders only; it starts at zero.
     tables.irradiance().Clear(cmd);
     vk::FullBarrier(cmd);
@@ -216,7 +234,8 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   };
   // Step 4: for each order n >= 2, the scattering density J_n (from the order n-1 radiance and
   // the ground irradiance of order n-2), the ground irradiance of order n-1, and the order n
-  // scattering S_n (at the density resolution), then added to the final table.
+  // scattering S_n (at the density resolution), then added to the final table; J_n is added to
+  // the multiple density table J_ms.
   for (int order = 2; order <= orders; ++order) {
     std::string suffix = " (order " + std::to_string(order) + ")";
     run("incident radiance" + suffix, [&](const auto& cmd) {
@@ -232,22 +251,38 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
     run("scattering density" + suffix, [&](const auto& cmd) {
       pipelines.scattering_density.Dispatch(
           cmd, {vk::UniformBufferSlot{&uniforms}, vk::StorageBufferSlot{&scratch.incident_radiance},
-                vk::StorageBufferSlot{&scratch.directions}, vk::StorageImageSlot{&scratch.density}},
+                vk::StorageBufferSlot{&scratch.directions}, vk::StorageImageSlot{&scratch.density[order % 2]}},
           {density_threads.height, density_threads.width, density_threads.depth}, {64, 1, 1});
     });
     add_ground_irradiance(order - 1);
     run("multiple scattering" + suffix, [&](const auto& cmd) {
       pipelines.multiple_scattering.Dispatch(
           cmd, {vk::UniformBufferSlot{&uniforms}, sampled(tables.transmittance()),
-                sampled(scratch.density), vk::StorageImageSlot{&scratch.delta_multiple[order % 2]}},
+                sampled(scratch.density[order % 2]), vk::StorageImageSlot{&scratch.delta_multiple[order % 2]}},
           density_threads, {8, 8, 1});
     });
     int last = close_series && order == orders;
+    const TableResolution& res = tables.options().resolution;
+    AccumulateStep radiance_step{
+        .target_size = {res.scattering_r, res.scattering_mu, res.scattering_mu_s, res.scattering_nu},
+        .close_series = last,
+        .divide_by_rayleigh_phase = tables.options().variant == LutVariant::k4D};
     run("accumulate" + suffix, [&](const auto& cmd) {
       pipelines.accumulate.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, sampled(scratch.delta_multiple[order % 2]),
                                           sampled(scratch.delta_multiple[(order - 1) % 2]),
                                           vk::StorageImageSlot{&multiple_accumulator}},
-                                    scattering_threads, {8, 8, 1}, &last);
+                                    scattering_threads, {8, 8, 1}, &radiance_step);
+    });
+    AccumulateStep density_step{
+        .target_size = {res.multiple_density_r, res.multiple_density_mu, res.multiple_density_mu_s,
+                        res.multiple_density_nu},
+        .close_series = last,
+        .divide_by_rayleigh_phase = 0};
+    run("accumulate density" + suffix, [&](const auto& cmd) {
+      pipelines.accumulate.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, sampled(scratch.density[order % 2]),
+                                          sampled(scratch.density[(order - 1) % 2]),
+                                          vk::StorageImageSlot{&multiple_density}},
+                                    multiple_density.extent(), {8, 8, 1}, &density_step);
     });
   }
   // Step 5: the ground irradiance of the last order, so that the irradiance table holds the same
@@ -258,6 +293,7 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
       BlitConvert(cmd, *scratch.rayleigh_f32, tables.rayleigh());
       BlitConvert(cmd, *scratch.mie_f32, tables.mie());
       BlitConvert(cmd, *scratch.multiple_f32, tables.multiple());
+      BlitConvert(cmd, *scratch.multiple_density_f32, tables.multiple_density());
       vk::FullBarrier(cmd);
     });
   }

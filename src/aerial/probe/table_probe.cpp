@@ -40,7 +40,8 @@ std::vector<ProbeResult> ProbeTables(const AtmosphereTables& tables,
                                      .host_visible = true});
   vk::ComputePipeline pipeline(context, "probe/probe.comp",
                                {vk::kUniform, vk::kSampled, vk::kSampled, vk::kSampled,
-                                vk::kSampled, vk::kSampled, vk::kStorageBuffer, vk::kStorageBuffer},
+                                vk::kSampled, vk::kSampled, vk::kSampled, vk::kStorageBuffer,
+                                vk::kStorageBuffer},
                                sizeof(int));
   int count = int(queries.size());
   ::vk::Sampler sampler = tables.sampler();
@@ -52,6 +53,7 @@ std::vector<ProbeResult> ProbeTables(const AtmosphereTables& tables,
                        vk::SampledImageSlot{&tables.rayleigh(), sampler},
                        vk::SampledImageSlot{&tables.mie(), sampler},
                        vk::SampledImageSlot{&tables.multiple(), sampler},
+                       vk::SampledImageSlot{&tables.multiple_density(), sampler},
                        vk::StorageBufferSlot{&query_buffer}, vk::StorageBufferSlot{&result_buffer}},
                       {uint32_t(count), 1, 1}, {32, 1, 1}, &count);
     vk::FullBarrier(cmd);

@@ -27,8 +27,8 @@ constexpr uint32_t kTerrainChunkSlots = 8192;
 // Opaque and transparent meshes read the same resources: the atmosphere and frame blocks, the
 // transmittance and irradiance tables (lighting), the scattering tables (per-pixel mode) and the
 // froxels.
-const std::vector<::vk::DescriptorType> kMeshSlots = {kUniform, kUniform, kSampled, kSampled, kSampled,
-                                                      kSampled, kSampled, kSampled, kSampled, kSampled};
+const std::vector<::vk::DescriptorType> kMeshSlots = {kUniform, kUniform, kSampled, kSampled,
+                                                      kSampled, kSampled, kSampled, kSampled};
 
 vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std::string& fragment,
                                             bool blended, AerialMode mode) {
@@ -220,9 +220,9 @@ std::vector<vk::Slot> Renderer::MeshSlots(uint32_t slot) const {
   ::vk::Sampler sampler = tables_.sampler();
   auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
   return {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame_buffers_[slot]},
-          sampled(tables_.transmittance()), sampled(tables_.irradiance()), sampled(tables_.rayleigh()),
-          sampled(tables_.mie()), sampled(tables_.multiple()), sampled(froxels_.rayleigh()),
-          sampled(froxels_.mie()), sampled(froxels_.transmittance())};
+          sampled(tables_.transmittance()), sampled(tables_.irradiance()),
+          sampled(tables_.multiple_density()), sampled(froxels_.rayleigh()), sampled(froxels_.mie()),
+          sampled(froxels_.transmittance())};
 }
 
 // Nearest first, so that early depth tests skip the shading of what is hidden: the scene's meshes

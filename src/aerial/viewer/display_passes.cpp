@@ -53,7 +53,7 @@ DisplayPasses::DisplayPasses(const vk::Context& context, ::vk::RenderPass render
       tone_map_(context, FullScreen(render_pass, format, "view/present.frag", {kSampled}, sizeof(ToneMapPush))),
       term_(context, FullScreen(render_pass, format, "view/inscatter.frag",
                                 {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled,
-                                 kSampled, kSampled, kSampled},
+                                 kSampled, kSampled, kSampled, kSampled},
                                 sizeof(TermPush))),
       froxel_slice_(context, FullScreen(render_pass, format, "view/froxel_slice.frag",
                                         {kSampled, kSampled, kSampled}, sizeof(SlicePush))),
@@ -78,7 +78,8 @@ void DisplayPasses::RecordTerm(const ::vk::raii::CommandBuffer& cmd, ::vk::Exten
   term_.Bind(cmd,
              {vk::UniformBufferSlot{&tables.uniform_buffer()}, vk::UniformBufferSlot{&renderer.frame_buffer(slot)},
               sampled(tables.transmittance()), sampled(tables.rayleigh()), sampled(tables.mie()),
-              sampled(tables.multiple()), sampled(froxels.rayleigh()), sampled(froxels.mie()),
+              sampled(tables.multiple()), sampled(tables.multiple_density()), sampled(froxels.rayleigh()),
+              sampled(froxels.mie()),
               sampled(froxels.transmittance()), vk::SampledImageSlot{&renderer.depth_image(), *nearest_}},
              &push);
   vk::DrawFullScreenTriangle(cmd);
