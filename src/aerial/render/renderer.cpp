@@ -324,7 +324,7 @@ void Renderer::Record(const ::vk::raii::CommandBuffer& cmd, const Scene& scene, 
   RecordShadowMap(cmd, scene);
   timer.End(cmd);
   ShadowUniforms shadow =
-      MakeShadowUniforms(shadow_cascades_, scene.camera.position, scene.sun.Direction(), options_.shadows);
+      MakeShadowUniforms(shadow_cascades_, scene.sun.Direction(), scene.camera, options_.shadows);
   shadow_buffers_[slot].Write(std::as_bytes(std::span(&shadow, 1)));
   if (options_.mode == AerialMode::kFroxel) {
     timer.Begin(cmd, "froxel build");

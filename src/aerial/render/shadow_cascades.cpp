@@ -55,8 +55,11 @@ ShadowCascades FitShadowCascades(const CascadeFitInput& in) {
     c.near_m = ShadowSplitM(in.camera, i);
     c.far_m = ShadowSplitM(in.camera, i + 1);
     SliceSphere sphere = BoundSlice(c.near_m, c.far_m, tan_y * in.aspect, tan_y);
-    c.radius_m = sphere.radius;
-    c.texel_m = 2.0 * sphere.radius / in.tile_texels;
+    // The tile is widened by kShadowMarginTexels on every side, and half a texel more for the
+    // snapping below, so that a lookup anywhere in the slice stays inside the tile with its filter
+    // and offset.
+    c.radius_m = sphere.radius * in.tile_texels / (in.tile_texels - 2.0 * (kShadowMarginTexels + 0.5));
+    c.texel_m = 2.0 * c.radius_m / in.tile_texels;
     glm::dvec3 center = in.camera.position + forward * sphere.center_depth;
     glm::dvec3 light(glm::dot(center, b.right), glm::dot(center, b.up), glm::dot(center, b.toward_sun));
     c.center_light = glm::round(light / c.texel_m) * c.texel_m;

@@ -24,6 +24,11 @@ namespace aerial {
 
 inline constexpr int kShadowCascades = 4;
 
+// Texels around each slice's bounding square that still belong to its tile: the lookup's reach
+// from any point of the slice (its filter and its offset along the normal,
+// shaders/include/shadow.glsl), plus one. So a lookup picks its cascade by view depth alone.
+inline constexpr int kShadowMarginTexels = 4;
+
 // The view depths (m) that split the frustum: the first cascade ends at kFirstShadowSplitM and
 // the last at kShadowFarM (the terrain's edge, kTerrainRadiusM); the splits between grow
 // geometrically (the "logarithmic" split of Zhang et al., which keeps the ratio of a texel's size
