@@ -121,12 +121,14 @@ TEST_F(Render, SunHaloIsCenteredOnTheSun) {
 // saying why, and run again without the variable. The goldens hold the fixed terrain mesh: the
 // level of detail's terrain is measured against that mesh on its own
 // (terrain_lod_render_test.cpp), so that a change of the passes and a change of the terrain each
-// show where they belong.
+// show where they belong. They are frames without the sun's shadow map (--shadows off gives the
+// frame of before shadows; shadow_render_test.cpp checks the shadows themselves).
 TEST_F(Render, MatchesGoldenImages) {
   for (const char* preset : {"noon", "sunset"}) {
     const AtmosphereTables& tables = FullTables();
     Scene scene = BuildPreset(preset, tables.atmosphere().bottom_radius_m);
-    Renderer renderer(tables, scene, {.width = 96, .height = 54, .terrain = TerrainMode::kStaticMesh});
+    Renderer renderer(tables, scene,
+                      {.width = 96, .height = 54, .terrain = TerrainMode::kStaticMesh, .shadows = false});
     renderer.Render(scene);
     std::filesystem::path golden =
         std::filesystem::path(AERIAL_SOURCE_DIR) / "tests/data/golden" / (std::string(preset) + ".exr");

@@ -83,7 +83,7 @@ TEST(ResourceLimits, MaxMemoryMibSetsTheBudget) {
   fs::path out = fs::temp_directory_path() / ("aerial-budget-" + std::to_string(::getpid()) + ".png");
   const std::string render = "render --small-tables --quiet --width 1024 --height 1024 --out " + out.string();
   ExpectRejected(render + " --max-memory-mib 128",
-                 {"--width/--height = 1024x1024 is invalid", "estimated 141.0 MiB", "> budget 128.0 MiB (--max-memory-mib 128)"});
+                 {"--width/--height = 1024x1024 is invalid", "estimated 157.0 MiB", "> budget 128.0 MiB (--max-memory-mib 128)"});
   EXPECT_FALSE(fs::exists(out));
   CommandRun run = RunAerial(render + " --max-memory-mib 512");
   EXPECT_EQ(run.exit_code, 0) << run.err;

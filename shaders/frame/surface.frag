@@ -1,9 +1,21 @@
 #version 450
-// Opaque geometry's lit surface radiance (opaque.vert) without aerial perspective, and its
-// distance from the camera: what Renderer::ReadSurface draws on request, for checks against a
-// reference that applies its own aerial perspective. Frames use opaque.frag.
+#extension GL_GOOGLE_include_directive : require
+// Opaque geometry's lit surface radiance (opaque.vert, shadowed as in opaque.frag) without aerial
+// perspective, and its distance from the camera: what Renderer::ReadSurface draws on request, for
+// checks against a reference that applies its own aerial perspective. Frames use opaque.frag.
+#include "surface.glsl"
+#define SHADOW_BINDING 8
+#include "shadow.glsl"
+// 1: the sun's part included (times its visibility); 0: the sky's part alone (SurfaceLight).
+layout(constant_id = 2) const int kSunPart = 1;
 layout(location = 0) in vec3 relative_position;
-layout(location = 1) in vec3 surface_radiance;
+layout(location = 1) in vec3 sun_radiance;
+layout(location = 2) in vec3 sky_radiance;
+layout(location = 3) in vec3 surface_normal;
 layout(location = 0) out vec4 radiance_and_distance;
 
-void main() { radiance_and_distance = vec4(surface_radiance, length(relative_position)); }
+void main() {
+  float visibility = kSunPart == 0 ? 0.0 : SunVisibility(relative_position, normalize(surface_normal));
+  radiance_and_distance = vec4(ShadeLambertian(LambertianRadiance(sun_radiance, sky_radiance), visibility),
+                               length(relative_position));
+}

@@ -1,19 +1,23 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Transparent geometry: the surface lit per vertex (transparent.vert), seen through the
+// Transparent geometry: the surface lit per vertex (transparent.vert), its sun part times the
+// sun's visibility here (shadow.glsl: opaque casters shade glass too), seen through the
 // interpolated per-vertex aerial perspective with per-pixel phase functions (or, in per-pixel
 // mode, the tables), output premultiplied: alpha (L T + I_R P_R + I_M P_M) over what is already
 // drawn. What is drawn already holds the inscatter of the segment in front of the surface, so
 // this blend is exact: I + T (alpha L + (1 - alpha) L_behind).
-#include "sky_lookup.glsl"
-#include "frame.glsl"
+#include "surface.glsl"
+#define SHADOW_BINDING 8
+#include "shadow.glsl"
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
 layout(set = 0, binding = 4) uniform sampler3D multiple_density_texture;
 layout(location = 0) in vec3 relative_position;
-layout(location = 1) in vec4 surface_radiance_opacity;
+layout(location = 1) in vec4 sun_radiance_opacity;
 layout(location = 2) in vec3 vertex_rayleigh;
 layout(location = 3) in vec3 vertex_mie;
 layout(location = 4) in vec3 vertex_transmittance;
+layout(location = 5) in vec3 sky_radiance;
+layout(location = 6) in vec3 facing_normal;
 layout(location = 0) out vec4 color;
 
 void main() {
@@ -30,7 +34,9 @@ void main() {
     segment.mie = vertex_mie;
     segment.transmittance = vertex_transmittance;
   }
-  float alpha = surface_radiance_opacity.a;
-  vec3 radiance = surface_radiance_opacity.rgb * segment.transmittance + ApplyPhaseFunctions(segment, nu);
+  float alpha = sun_radiance_opacity.a;
+  vec3 surface_radiance = ShadeLambertian(LambertianRadiance(sun_radiance_opacity.rgb, sky_radiance),
+                                          SunVisibility(relative_position, normalize(facing_normal)));
+  vec3 radiance = surface_radiance * segment.transmittance + ApplyPhaseFunctions(segment, nu);
   color = vec4(radiance * alpha, alpha);
 }

@@ -2,8 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 // Transparent geometry, per VERTEX as engines do for particles and glass: the aerial perspective
 // read from the froxel volume and the surface lit (Lambertian, two-sided: from whichever side
-// faces the camera), both interpolated across the triangle. The phase functions are still
-// evaluated per pixel, in the fragment shader.
+// faces the camera), both interpolated across the triangle. The phase functions and the sun's
+// shadow (shadow.glsl, on the sun's part of the lighting) are still evaluated per pixel, in the
+// fragment shader.
 #include "froxel.glsl"
 #include "surface.glsl"
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
@@ -16,17 +17,20 @@ layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 albedo;
 layout(location = 3) in float opacity;
 layout(location = 0) out vec3 relative_position;
-layout(location = 1) out vec4 surface_radiance_opacity;
+layout(location = 1) out vec4 sun_radiance_opacity;
 layout(location = 2) out vec3 vertex_rayleigh;
 layout(location = 3) out vec3 vertex_mie;
 layout(location = 4) out vec3 vertex_transmittance;
+layout(location = 5) out vec3 sky_radiance;
+layout(location = 6) out vec3 facing_normal;
 
 void main() {
   relative_position = position - frame.camera_scene_position.xyz;
-  vec3 facing = dot(normal, relative_position) > 0.0 ? -normal : normal;
-  surface_radiance_opacity =
-      vec4(ShadeLambertian(transmittance_texture, irradiance_texture, relative_position, facing, albedo),
-           opacity);
+  facing_normal = dot(normal, relative_position) > 0.0 ? -normal : normal;
+  LambertianRadiance radiance =
+      GetLambertianRadiance(transmittance_texture, irradiance_texture, relative_position, facing_normal, albedo);
+  sun_radiance_opacity = vec4(radiance.sun, opacity);
+  sky_radiance = radiance.sky;
   gl_Position = frame.view_projection * vec4(relative_position, 1.0);
   vec2 uv = gl_Position.xy / gl_Position.w * 0.5 + 0.5;
   Inscatter inscatter =

@@ -6,8 +6,16 @@
 #include "frame.glsl"
 #include "sky_lookup.glsl"
 
-vec3 ShadeLambertian(sampler2D transmittance_texture, sampler2D irradiance_texture,
-                     vec3 relative_position, vec3 normal, vec3 albedo) {
+// The radiance leaving a Lambertian surface in its two parts: what the sun lights directly (the
+// part a shadow takes away) and what the sky lights (never shadowed here: the sky is seen from
+// most of the hemisphere even beside a mountain).
+struct LambertianRadiance {
+  vec3 sun;
+  vec3 sky;
+};
+
+LambertianRadiance GetLambertianRadiance(sampler2D transmittance_texture, sampler2D irradiance_texture,
+                                         vec3 relative_position, vec3 normal, vec3 albedo) {
   vec3 point = frame.camera_planet_position.xyz + relative_position;
   float r = length(point);
   vec3 up = point / r;
@@ -17,7 +25,12 @@ vec3 ShadeLambertian(sampler2D transmittance_texture, sampler2D irradiance_textu
                         GetTransmittanceToSun(transmittance_texture, r, mu_s) *
                         max(dot(normal, sun), 0.0);
   vec3 sky_irradiance = GetIrradiance(irradiance_texture, r, mu_s) * (1.0 + dot(normal, up)) * 0.5;
-  return albedo * (1.0 / PI) * (sun_irradiance + sky_irradiance);
+  return LambertianRadiance(albedo * (1.0 / PI) * sun_irradiance, albedo * (1.0 / PI) * sky_irradiance);
+}
+
+// The surface's radiance where the fraction sun_visibility of the sun is seen (shadow.glsl).
+vec3 ShadeLambertian(LambertianRadiance radiance, float sun_visibility) {
+  return radiance.sun * sun_visibility + radiance.sky;
 }
 
 // What a view ray from the camera sees behind the atmosphere, through it: where the ray meets the
@@ -28,8 +41,9 @@ vec3 GetBackgroundThroughAtmosphere(sampler2D transmittance_texture, sampler2D i
   if (!RayIntersectsGround(r, mu)) return transmittance;
   vec3 ground = ray * DistanceToBottomAtmosphereBoundary(r, mu);
   vec3 normal = normalize(frame.camera_planet_position.xyz + ground);
-  return transmittance * ShadeLambertian(transmittance_texture, irradiance_texture, ground, normal,
-                                         atmosphere.ground_albedo.rgb);
+  return transmittance * ShadeLambertian(GetLambertianRadiance(transmittance_texture, irradiance_texture,
+                                                               ground, normal, atmosphere.ground_albedo.rgb),
+                                         1.0);
 }
 
 // The sky pixel's radiance behind the inscatter: the background where the ray meets the ground

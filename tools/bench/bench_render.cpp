@@ -3,7 +3,9 @@
 // Renderers of the same scene (preset noon) draw frames in turn after warm-up frames
 // (aerial/bench/frame_measurement.h), the camera moving a little every frame so that each frame
 // rebuilds its froxel volume and sky-view table: the frame as `aerial render` and the viewer draw
-// it, and the same with a still camera; the frame with aerial perspective read per pixel from the
+// it, and the same with a still camera; both again without the sun's shadow map (with the moving
+// camera every frame redraws the shadow map, with the still one it stays cached: the difference
+// is the shadows' cost in each case); the frame with aerial perspective read per pixel from the
 // tables; with the fixed 294K-triangle terrain mesh instead of the level of detail; without the
 // terrain's occlusion culling; and with one part left out at a time. lavapipe defers rasterization, so timestamps around the draws of the one
 // raster pass do not bound their work: a raster part's cost is the frame's time minus the time of
@@ -12,6 +14,7 @@
 // unit of cost.
 #include <cstdio>
 #include <functional>
+#include <tuple>
 #include <memory>
 #include <string>
 #include <vector>
@@ -83,6 +86,8 @@ void Bench(const BenchOptions& cli) {
   std::vector<Configuration> configurations = {
       {"frame", same},
       {"frame, still camera", same, CameraMotion::kStill},
+      {"frame, no shadows", [](RenderOptions& o) { o.shadows = false; }},
+      {"frame, still camera, no shadows", [](RenderOptions& o) { o.shadows = false; }, CameraMotion::kStill},
       {"per-pixel aerial perspective", [](RenderOptions& o) { o.mode = aerial::AerialMode::kPerPixel; }},
       {"fixed fine terrain mesh", [](RenderOptions& o) { o.terrain = aerial::TerrainMode::kStaticMesh; }},
       {"no terrain occlusion culling", [](RenderOptions& o) { o.terrain_occlusion_culling = false; }},
@@ -90,7 +95,8 @@ void Bench(const BenchOptions& cli) {
       {"without transparent objects", [](RenderOptions& o) { o.passes.transparent = false; }},
       {"without the terrain", [](RenderOptions& o) { o.passes.terrain = false; }},
   };
-  constexpr size_t kFirstAblation = 5;
+  constexpr size_t kFirstAblation = 7;
+  constexpr size_t kStill = 1, kNoShadows = 2, kStillNoShadows = 3, kPerPixel = 4, kFineMesh = 5;
   std::vector<std::unique_ptr<aerial::Renderer>> renderers;
   std::vector<aerial::bench::FrameSource> order;
   for (Configuration& c : configurations) {
@@ -140,7 +146,7 @@ void Bench(const BenchOptions& cli) {
   std::printf("\n=== the frame's passes: timestamps of the compute passes; raster parts by their absence, "
               "in GPU time and in process CPU time ===\n");
   nlohmann::json parts;
-  for (const char* pass : {aerial::bench::kFroxelBuildPass, "sky view"}) {
+  for (const char* pass : {aerial::bench::kShadowMapPass, aerial::bench::kFroxelBuildPass, "sky view"}) {
     Stats s = Summarize(aerial::bench::SumOfPasses(frame.frames, {pass}, pass).ms);
     PrintRow(pass, s);
     parts[pass] = {{"gpu_ms", s.median}};
@@ -154,21 +160,39 @@ void Bench(const BenchOptions& cli) {
   }
   doc["parts_median"] = parts;
 
+  std::printf("\n=== the sun's shadow map (medians): its pass when redrawn (moving camera) and when cached "
+              "(still camera), and the whole frame's cost of shadows (on minus off: pass, lookups, chunk "
+              "selection) ===\n");
+  nlohmann::json shadows;
+  for (auto [name, on, off] : {std::tuple{"redrawn", size_t(0), kNoShadows}, std::tuple{"cached", kStill, kStillNoShadows}}) {
+    const Configuration& with = configurations[on];
+    const Configuration& without = configurations[off];
+    Stats pass = Summarize(aerial::bench::SumOfPasses(with.frames, {aerial::bench::kShadowMapPass}, name).ms);
+    double gpu = with.Gpu().median - without.Gpu().median, cpu = with.Cpu().median - without.Cpu().median;
+    std::printf("  %-8s shadow map pass %7.2f ms; frame %7.2f ms GPU with, %7.2f without (%+.2f ms, %+.1f%%), "
+                "%+.2f ms CPU\n", name, pass.median, with.Gpu().median, without.Gpu().median, gpu,
+                100.0 * gpu / without.Gpu().median, cpu);
+    shadows[name] = {{"shadow_map_pass_gpu_ms", pass.median}, {"frame_gpu_ms", with.Gpu().median},
+                     {"frame_without_shadows_gpu_ms", without.Gpu().median}, {"shadows_gpu_ms", gpu},
+                     {"shadows_cpu_ms", cpu}};
+  }
+  doc["shadows_median"] = shadows;
+
   Stats tap_stats = Summarize(aerial::bench::GpuTotals(tap_runs));
   double frame_ms = frame.Gpu().median;
   std::printf("\n=== comparisons, medians ===\n");
   PrintRow("full-screen pass, one 3D tap", tap_stats);
   std::printf("  frame / full-screen tap pass:      %6.2fx\n", frame_ms / tap_stats.median);
-  std::printf("  per-pixel / froxel frame:          %6.2fx\n", configurations[2].Gpu().median / frame_ms);
-  std::printf("  fine mesh / level-of-detail frame: %6.2fx\n", configurations[3].Gpu().median / frame_ms);
+  std::printf("  per-pixel / froxel frame:          %6.2fx\n", configurations[kPerPixel].Gpu().median / frame_ms);
+  std::printf("  fine mesh / level-of-detail frame: %6.2fx\n", configurations[kFineMesh].Gpu().median / frame_ms);
   std::printf("  goal: frame <= %.0f ms GPU: %s (%.2f ms)\n", kFrameGoalMs,
               frame_ms <= kFrameGoalMs ? "met" : "NOT met", frame_ms);
   if (cli.width != 1280 || cli.height != 720)
     std::printf("  (the goal is for 1280x720; this run is %dx%d)\n", cli.width, cli.height);
   doc["comparison"] = {{"full_screen_tap", StatsJson(tap_stats)},
                        {"frame_over_full_screen_tap", frame_ms / tap_stats.median},
-                       {"per_pixel_over_frame", configurations[2].Gpu().median / frame_ms},
-                       {"fine_mesh_over_frame", configurations[3].Gpu().median / frame_ms},
+                       {"per_pixel_over_frame", configurations[kPerPixel].Gpu().median / frame_ms},
+                       {"fine_mesh_over_frame", configurations[kFineMesh].Gpu().median / frame_ms},
                        {"goal_ms", kFrameGoalMs},
                        {"goal_met", frame_ms <= kFrameGoalMs}};
   if (!cli.json_file.empty()) aerial::WriteFileAtomically(cli.json_file, doc.dump(2) + "\n");

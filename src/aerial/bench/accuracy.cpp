@@ -10,7 +10,8 @@ namespace {
 
 std::unique_ptr<Renderer> ImageRenderer(const AtmosphereTables& tables, const Scene& scene,
                                         const BenchPlan& plan, AerialMode mode) {
-  RenderOptions options{.width = plan.image_width, .height = plan.image_height, .mode = mode};
+  // No shadows: the CPU reference has none (lambertian_radiance.h).
+  RenderOptions options{.width = plan.image_width, .height = plan.image_height, .mode = mode, .shadows = false};
   options.Validate();
   return std::make_unique<Renderer>(tables, scene, options);
 }

@@ -29,6 +29,9 @@ struct BenchPlan {
   size_t figure_tier = 0;  // the tier whose images the figures show
   int precompute_warmup = 1, precompute_runs = 3;
   int frame_width = 1280, frame_height = 720, frame_warmup = 2, frames = 7;
+  // The sun's shadow map in the timed frames (--shadows). The accuracy renders never have it:
+  // their CPU reference lights every surface point as if nothing stood between it and the sun.
+  bool shadows = true;
   int image_width = 1280, image_height = 720;  // the accuracy renders
   int reference_columns = 16, reference_rows = 9;
   int reference_paths = 32768;  // Monte Carlo paths per reference query (orders >= 2)

@@ -15,6 +15,8 @@ namespace aerial::bench {
 
 // The passes timed by the renderer that the frame statistics name (renderer.cpp).
 inline constexpr const char* kFroxelBuildPass = "froxel build";
+// The sun's shadow map: redrawn when the camera or the sun moves, near 0 when it is cached.
+inline constexpr const char* kShadowMapPass = "shadow map";
 
 // A moving camera makes each frame rebuild what the renderer keeps for a still one (the froxel
 // volume, and the sky-view table past 10 m of altitude): frame i turns the camera by i x 0.1

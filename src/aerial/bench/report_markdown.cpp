@@ -45,6 +45,8 @@ void MachineSection(std::ostringstream& md, const BenchResults& b) {
   md << "| mode | "
      << (b.plan.quick ? "quick (small tables, few frames, small images, few reference pixels)" : "full")
      << " |\n";
+  md << "| sun shadows in the timed frames | " << (b.plan.shadows ? "on" : "off")
+     << " (never in the accuracy renders: the reference has none) |\n";
   md << "| validation layers | " << (m.validation ? "on (every time below is inflated by them)" : "off")
      << " |\n";
   md << "| load average (1, 5, 15 min) | " << m.load_before << " before, " << m.load_after << " after |\n";

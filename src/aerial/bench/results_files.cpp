@@ -90,6 +90,7 @@ nlohmann::json ResultsJson(const BenchResults& b) {
   doc["settings"] = {{"frame_size", {plan.frame_width, plan.frame_height}},
                      {"frame_warmup", plan.frame_warmup},
                      {"frames", plan.frames},
+                     {"frame_shadows", plan.shadows},
                      {"frame_scene", "built-in default scene, preset noon"},
                      {"precompute_warmup", plan.precompute_warmup},
                      {"precompute_runs", plan.precompute_runs},

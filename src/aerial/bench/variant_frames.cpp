@@ -13,7 +13,8 @@ void MeasureVariantFrames(VariantResult& lut4d, const AtmosphereTables& tables4d
   std::vector<FrameSource> order;
   for (const AtmosphereTables* tables : {&tables4d, &tables3d})
     for (AerialMode mode : {AerialMode::kFroxel, AerialMode::kPerPixel}) {
-      RenderOptions options{.width = plan.frame_width, .height = plan.frame_height, .mode = mode};
+      RenderOptions options{.width = plan.frame_width, .height = plan.frame_height, .mode = mode,
+                            .shadows = plan.shadows};
       options.Validate();
       renderers.push_back(std::make_unique<Renderer>(*tables, scene, options));
       order.push_back({renderers.back().get()});

@@ -13,6 +13,7 @@
 #include "aerial/bench/bench_output.h"
 #include "aerial/bench/bench_run.h"
 #include "aerial/cli/commands.h"
+#include "aerial/cli/scene_options.h"
 
 namespace aerial::cli {
 namespace {
@@ -23,6 +24,7 @@ struct BenchCommandOptions {
   std::string device;
   bool validation = false;
   bool quiet = false;
+  std::string shadows = "on";
 
   // The command line that reproduces this run.
   std::string Command() const {
@@ -31,6 +33,7 @@ struct BenchCommandOptions {
     command += " --out " + out.string();
     if (!device.empty()) command += " --device \"" + device + "\"";
     if (validation) command += " --validation";
+    if (shadows != "on") command += " --shadows " + shadows;
     return command;
   }
 };
@@ -55,6 +58,7 @@ std::string LoadAverage() {
 void RunBenchCommand(const BenchCommandOptions& options) {
   bench::CheckOutputDirectory(options.out);
   bench::BenchPlan plan = options.quick ? bench::BenchPlan::Quick() : bench::BenchPlan::Full();
+  plan.shadows = ParseShadows(options.shadows);
   vk::Context context(vk::ContextCreateInfo{.device_name = options.device, .validation = options.validation});
   bench::MachineInfo machine{.device = context.device_name(),
                              .date = UtcNow(),
@@ -84,6 +88,9 @@ void AddBenchCommand(CLI::App& app) {
   command->add_flag("--validation", options->validation,
                     "Enable the Vulkan validation layers (or AERIAL_VALIDATION=1); inflates every time");
   command->add_flag("--quiet", options->quiet, "No progress bar");
+  command->add_option("--shadows", options->shadows,
+                      "The sun's shadow map in the timed frames: on (default) or off (the accuracy renders "
+                      "never have it: the CPU reference has no shadows)");
   command->callback([options] { RunBenchCommand(*options); });
 }
 

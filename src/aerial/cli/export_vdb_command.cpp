@@ -22,6 +22,7 @@ struct ExportVdbCommandOptions {
   FroxelOptions froxels;
   CaptureSize size;
   std::optional<double> world_grid_m;
+  std::string shadows = "on";
   std::filesystem::path out;
 };
 
@@ -31,7 +32,8 @@ void RunExportVdb(const ExportVdbCommandOptions& options) {
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
   PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
   FroxelGrid grid = options.froxels.Make();
-  RenderOptions render{.width = options.size.width, .height = options.size.height, .froxels = grid};
+  RenderOptions render{.width = options.size.width, .height = options.size.height, .froxels = grid,
+                       .shadows = ParseShadows(options.shadows)};
   render.Validate();
   Scene scene = options.scene.Load(atmosphere.bottom_radius_m);
   if (options.world_grid_m) {
@@ -42,7 +44,7 @@ void RunExportVdb(const ExportVdbCommandOptions& options) {
   options.tables.MakeMemoryBudget(*context).Check(
       Combined(TableMemoryUses(precompute), Combined(FrameMemoryUses(render), FroxelExportMemoryUses(grid))));
   LoadedTables loaded = LoadOrPrecompute(*context, atmosphere, precompute, options.tables.MakeStoreOptions());
-  FroxelFrame frame = CaptureFroxels(*loaded.tables, scene, grid, options.size);
+  FroxelFrame frame = CaptureFroxels(*loaded.tables, scene, grid, options.size, render.shadows);
   VdbVolume volume = options.world_grid_m ? MakeWorldSpaceVolume(frame, *options.world_grid_m)
                                           : MakeFroxelSpaceVolume(frame);
   WriteVdb(options.out, volume);
@@ -66,6 +68,8 @@ void AddExportVdbCommand(CLI::App& app) {
   command->add_option("--world-grid", options->world_grid_m,
                       "Resample into a regular world-space grid of this voxel size (m) instead of "
                       "writing the froxels in their own index space");
+  command->add_option("--shadows", options->shadows,
+                      "The sun's shadow map in the frame the froxels are captured from: on (default) or off");
   command->add_option("--out", options->out, "Output file (.vdb)")->required();
   command->callback([options] { RunExportVdb(*options); });
 }

@@ -15,7 +15,8 @@ namespace aerial::cli {
 std::vector<MemoryUse> TableMemoryUses(const PrecomputeOptions& options);
 
 // One frame of `renderers` renderers of these options: targets and read-back under
-// --width/--height, the froxel volume under --froxels, the terrain's chunk slots under --terrain.
+// --width/--height, the froxel volume under --froxels, the terrain's chunk slots under --terrain,
+// the shadow map under --shadows.
 std::vector<MemoryUse> FrameMemoryUses(const RenderOptions& render, int renderers = 1);
 
 // export-vdb's host copies of the froxels: read back (48 bytes a froxel, twice while copying),

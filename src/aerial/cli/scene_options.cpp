@@ -51,6 +51,11 @@ FroxelGrid FroxelOptions::Make() const {
   return grid;
 }
 
+bool ParseShadows(const std::string& value) {
+  if (value != "on" && value != "off") throw Error("--shadows", value, "on or off");
+  return value == "on";
+}
+
 void FrameOptions::AddTo(CLI::App& command, const std::string& size_help) {
   froxels.AddTo(command);
   command.add_option("--width", width, size_help + " width in pixels");
@@ -68,6 +73,9 @@ void FrameOptions::AddTo(CLI::App& command, const std::string& size_help) {
   command.add_option("--terrain-error-px", terrain_error_px,
                      "Terrain level of detail: largest height error on screen, in pixels at 720 rows "
                      "or more (0.25 to 64)");
+  command.add_option("--shadows", shadows,
+                     "The sun's shadow map of the terrain and the opaque meshes on surfaces: on (default) "
+                     "or off");
 }
 
 RenderOptions FrameOptions::MakeRenderOptions() const {
@@ -83,6 +91,7 @@ RenderOptions FrameOptions::MakeRenderOptions() const {
   render.render_scale = render_scale;
   render.terrain = terrain == "mesh" ? TerrainMode::kStaticMesh : TerrainMode::kLod;
   render.terrain_error_px = terrain_error_px;
+  render.shadows = ParseShadows(shadows);
   render.Validate();
   return render;
 }

@@ -36,6 +36,10 @@ struct FroxelOptions {
   FroxelGrid Make() const;  // validated
 };
 
+// --shadows on|off, as aerial bench also takes it: true for "on"; anything but on or off throws
+// Error("--shadows", value, "on or off").
+bool ParseShadows(const std::string& value);
+
 struct FrameOptions {
   FroxelOptions froxels;
   int width = 1280;
@@ -45,9 +49,10 @@ struct FrameOptions {
   double render_scale = 1.0;
   std::string terrain = "lod";
   double terrain_error_px = kDefaultTerrainErrorPx;
+  std::string shadows = "on";
 
   // The froxel options, --width/--height (size_help: what they size, "Image"), --exposure,
-  // --aerial, --render-scale, --terrain and --terrain-error-px.
+  // --aerial, --render-scale, --terrain, --terrain-error-px and --shadows.
   void AddTo(CLI::App& command, const std::string& size_help);
   RenderOptions MakeRenderOptions() const;  // validated
 };

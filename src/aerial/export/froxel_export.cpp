@@ -134,10 +134,10 @@ FroxelFrame ReadFroxelFrame(const Renderer& renderer, const Scene& scene) {
 }
 
 FroxelFrame CaptureFroxels(const AtmosphereTables& tables, const Scene& scene, const FroxelGrid& grid,
-                           CaptureSize size) {
+                           CaptureSize size, bool shadows) {
   Renderer renderer(tables, scene,
                     {.width = size.width, .height = size.height, .froxels = grid,
-                     .mode = AerialMode::kFroxel});
+                     .mode = AerialMode::kFroxel, .shadows = shadows});
   renderer.Render(scene);
   return ReadFroxelFrame(renderer, scene);
 }

@@ -58,9 +58,11 @@ FrameUniforms CaptureFrameUniforms(const Scene& scene, double planet_radius_m, c
 // The froxels of the renderer's last frame (in froxel mode), which drew `scene`.
 FroxelFrame ReadFroxelFrame(const Renderer& renderer, const Scene& scene);
 
-// Renders the scene once and reads its froxels back.
+// Renders the scene once, with the sun's shadow map or without (RenderOptions::shadows: once
+// the froxels take the sun's visibility into account, the volume carries the shadows), and reads
+// its froxels back.
 FroxelFrame CaptureFroxels(const AtmosphereTables& tables, const Scene& scene, const FroxelGrid& grid,
-                           CaptureSize size);
+                           CaptureSize size, bool shadows = true);
 
 // The .vdb extension (any case), an existing parent directory, and a file can be created there.
 // Throws Error naming --out.

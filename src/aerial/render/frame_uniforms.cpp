@@ -7,16 +7,16 @@
 namespace aerial {
 namespace {
 
-std::array<float, 16> ToFloat16(const glm::dmat4& m) {
+std::array<float, 4> ToFloat4(const glm::dvec3& v) { return {float(v.x), float(v.y), float(v.z), 0.0f}; }
+
+}  // namespace
+
+std::array<float, 16> ToColumnMajorFloats(const glm::dmat4& m) {
   std::array<float, 16> out;
   const double* p = glm::value_ptr(m);
   for (int i = 0; i < 16; ++i) out[i] = float(p[i]);
   return out;
 }
-
-std::array<float, 4> ToFloat4(const glm::dvec3& v) { return {float(v.x), float(v.y), float(v.z), 0.0f}; }
-
-}  // namespace
 
 FrameUniforms MakeFrameUniforms(const Scene& scene, double planet_radius_m, int width, int height,
                                 const FroxelGrid& froxels) {
@@ -26,8 +26,8 @@ FrameUniforms MakeFrameUniforms(const Scene& scene, double planet_radius_m, int 
   glm::dmat4 view_projection =
       ProjectionMatrix(scene.camera, double(width) / double(height)) * ViewMatrix(at_origin);
   FrameUniforms u{};
-  u.view_projection = ToFloat16(view_projection);
-  u.inverse_view_projection = ToFloat16(glm::inverse(view_projection));
+  u.view_projection = ToColumnMajorFloats(view_projection);
+  u.inverse_view_projection = ToColumnMajorFloats(glm::inverse(view_projection));
   u.camera_scene_position = ToFloat4(scene.camera.position);
   // The planet's center is at (0, 0, -R) in the scene frame.
   u.camera_planet_position = ToFloat4(scene.camera.position + glm::dvec3(0.0, 0.0, planet_radius_m));

@@ -25,6 +25,9 @@ static_assert(sizeof(FrameUniforms) == 2 * 64 + 6 * 16);
 // ViewRayFromScreen in shaders/include/frame.glsl, in double precision.
 glm::dvec3 ViewRayFromScreen(const FrameUniforms& frame, glm::dvec2 uv);
 
+// A matrix as std140 stores a mat4: column-major floats.
+std::array<float, 16> ToColumnMajorFloats(const glm::dmat4& m);
+
 FrameUniforms MakeFrameUniforms(const Scene& scene, double planet_radius_m, int width, int height,
                                 const FroxelGrid& froxels);
 

@@ -6,6 +6,7 @@
 
 #include "aerial/core/error.h"
 #include "aerial/image/resample.h"
+#include "aerial/render/shadow_uniforms.h"
 #include "aerial/scene/terrain.h"
 #include "aerial/terrain/terrain_chunk.h"
 
@@ -25,13 +26,19 @@ constexpr ::vk::Format kDepthFormat = ::vk::Format::eD32Sfloat;
 constexpr uint32_t kTerrainChunkSlots = 8192;
 
 // Opaque and transparent meshes read the same resources: the atmosphere and frame blocks, the
-// transmittance and irradiance tables (lighting), the scattering tables (per-pixel mode) and the
-// froxels.
-const std::vector<::vk::DescriptorType> kMeshSlots = {kUniform, kUniform, kSampled, kSampled,
-                                                      kSampled, kSampled, kSampled, kSampled};
+// transmittance and irradiance tables (lighting), the multiple density table (per-pixel mode),
+// the froxels, and the shadow block and map (shadow.glsl, SHADOW_BINDING 8).
+const std::vector<::vk::DescriptorType> kMeshSlots = {kUniform, kUniform, kSampled, kSampled, kSampled,
+                                                      kSampled, kSampled, kSampled, kUniform, kSampled};
+
+// The mesh shaders' specialization constants: 0 aerial perspective per pixel (frame.glsl), 1 sun
+// shadows (shadow.glsl), 2 the sun's part of the lighting in surface.frag (SurfaceLight).
+std::vector<int32_t> MeshConstants(const RenderOptions& options, SurfaceLight light = SurfaceLight::kSunAndSky) {
+  return {PerPixel(options.mode), options.shadows ? 1 : 0, light == SurfaceLight::kSunAndSky ? 1 : 0};
+}
 
 vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std::string& fragment,
-                                            bool blended, AerialMode mode) {
+                                            bool blended, std::vector<int32_t> constants) {
   return {.vertex_shader = vertex,
           .fragment_shader = fragment,
           .slot_types = kMeshSlots,
@@ -45,7 +52,7 @@ vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std
           .depth_write = !blended,
           .alpha_blend = blended,
           .dynamic_cull_mode = !blended,
-          .specialization = {PerPixel(mode)}};
+          .specialization = std::move(constants)};
 }
 
 // The sky: a full-screen triangle at depth 0 whose test (EQUAL against the depth cleared to 0,
@@ -81,6 +88,17 @@ std::vector<Mesh> ReferenceTerrain(const Scene& scene, const RenderOptions& opti
   return {BuildTerrainMesh(R)};
 }
 
+// Everything that casts a shadow, around the scene's origin: the terrain (to kTerrainRadiusM,
+// with mountains up to 3.5 km and the sphere's 0.8 km drop at its edge well inside 10 km more)
+// and the opaque meshes.
+CasterBounds SceneCasterBounds(const Scene& scene) {
+  double radius = scene.terrain ? kTerrainRadiusM + 10e3 : 0.0;
+  for (const Mesh& mesh : scene.meshes)
+    if (!mesh.transparent)
+      for (const Vertex& v : mesh.vertices) radius = std::max(radius, double(glm::length(v.position)));
+  return {glm::dvec3(0.0), radius};
+}
+
 std::unique_ptr<TerrainChunkCache> TerrainCache(const vk::Context& context, const Scene& scene,
                                                 const RenderOptions& options, double R) {
   if (!scene.terrain || options.terrain != TerrainMode::kLod) return nullptr;
@@ -103,6 +121,7 @@ FrameMemory EstimateFrameMemory(const RenderOptions& o) {
       .terrain = o.terrain == TerrainMode::kLod
                      ? uint64_t(kTerrainChunkSlots) * terrain::kChunkVertices * sizeof(Vertex)
                      : 0,
+      .shadows = ShadowMap::MemoryBytes(o.shadows),
   };
 }
 
@@ -130,21 +149,27 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       sky_rayleigh_(tables.context(), SkyViewImage()),
       sky_mie_(tables.context(), SkyViewImage()),
       sky_background_(tables.context(), SkyViewImage()),
+      shadow_map_(tables.context(), options.shadows),
+      casters_(SceneCasterBounds(scene)),
       sky_view_(tables.context(), "frame/sky_view.comp",
                 {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled,
                  vk::kStorageImage, vk::kStorageImage, vk::kStorageImage},
                 sizeof(kSkyViewSize)),
-      opaque_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/opaque.frag", false, options.mode)),
+      opaque_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/opaque.frag", false, MeshConstants(options))),
       sky_(tables.context(), SkyPipeline(options.mode)),
       transparent_(tables.context(),
-                   MeshPipeline("frame/transparent.vert", "frame/transparent.frag", true, options.mode)),
-      surface_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/surface.frag", false, options.mode)) {
+                   MeshPipeline("frame/transparent.vert", "frame/transparent.frag", true, MeshConstants(options))),
+      surface_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/surface.frag", false, MeshConstants(options))) {
   if (options.frames_in_flight < 1) throw Error("frames in flight", "0", "at least 1");
   for (uint32_t slot = 0; slot < options.frames_in_flight; ++slot) {
     frame_buffers_.emplace_back(tables.context(), vk::BufferCreateInfo{
                                                       .size = sizeof(FrameUniforms),
                                                       .usage = ::vk::BufferUsageFlagBits::eUniformBuffer,
                                                       .host_visible = true});
+    shadow_buffers_.emplace_back(tables.context(), vk::BufferCreateInfo{
+                                                       .size = sizeof(ShadowUniforms),
+                                                       .usage = ::vk::BufferUsageFlagBits::eUniformBuffer,
+                                                       .host_visible = true});
     timers_.push_back(std::make_unique<vk::GpuTimer>(tables.context()));
   }
   tables.context().Submit([&](const auto& cmd) {
@@ -162,16 +187,19 @@ void Renderer::SetTerrainErrorPx(double error_px) {
   options_ = changed;
 }
 
+terrain::LodView Renderer::FrameLodView(const Scene& scene) const {
+  double aspect = double(options_.render_width()) / double(options_.render_height());
+  return terrain::MakeLodView(scene.camera, aspect, options_.render_height(), options_.terrain_error_px,
+                              tables_.atmosphere().bottom_radius_m);
+}
+
 // The chunks to draw, nearest first (terrain/lod_selection.h), built as needed.
 void Renderer::SelectTerrain(const Scene& scene, bool complete) {
   terrain_chunks_.clear();
   if (!terrain_ || !options_.passes.terrain) return;
   // The first frame builds all it needs, so that a window opens on the whole terrain.
   terrain_->BeginFrame(complete || frames_recorded_ == 0 ? 0.0 : options_.terrain_build_budget_ms);
-  double aspect = double(options_.render_width()) / double(options_.render_height());
-  terrain::LodView view =
-      terrain::MakeLodView(scene.camera, aspect, options_.render_height(), options_.terrain_error_px,
-                           tables_.atmosphere().bottom_radius_m);
+  terrain::LodView view = FrameLodView(scene);
   view.occlusion_culling = options_.terrain_occlusion_culling;
   terrain::Selection selection = terrain::SelectChunks(view, *terrain_);
   terrain_chunks_ = std::move(selection.chunks);
@@ -216,13 +244,38 @@ void Renderer::RecordSkyView(const ::vk::raii::CommandBuffer& cmd, const vk::Buf
                      kSkyViewSize.data());
 }
 
+// The cascades are fitted to every frame's camera (cheap), but the shadow map is redrawn only when
+// what it shows changed: a cascade's projection (the sun moved, or the camera moved by more than
+// the snapping lets pass: shadow_cascades.h) or the terrain chunks it draws (the camera's level
+// of detail changed, or chunks deferred for the build budget arrived). The scene's meshes are
+// fixed for the renderer's life.
+void Renderer::RecordShadowMap(const ::vk::raii::CommandBuffer& cmd, const Scene& scene) {
+  glm::dvec3 sun = scene.sun.Direction();
+  shadow_cascades_ = FitShadowCascades({.camera = scene.camera,
+                                        .aspect = double(options_.render_width()) / options_.render_height(),
+                                        .sun = sun,
+                                        .tile_texels = kShadowTileTexels,
+                                        .casters = casters_});
+  if (!options_.shadows) return;
+  ShadowKey key;
+  for (int i = 0; i < kShadowCascades; ++i) key.clip_from_world[i] = shadow_cascades_[i].clip_from_world;
+  if (terrain_ && options_.passes.terrain)
+    key.chunks = SelectShadowTerrain(FrameLodView(scene), shadow_cascades_, MakeLightBasis(sun), *terrain_);
+  if (shadow_key_ && shadow_key_->clip_from_world == key.clip_from_world && SameChunks(shadow_key_->chunks, key.chunks))
+    return;
+  shadow_map_.Record(cmd, shadow_cascades_, scene.camera.position, geometry_, terrain_.get(), key.chunks);
+  shadow_key_ = std::move(key);
+  frame_info_.shadow_map_updated = true;
+}
+
 std::vector<vk::Slot> Renderer::MeshSlots(uint32_t slot) const {
   ::vk::Sampler sampler = tables_.sampler();
   auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
   return {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame_buffers_[slot]},
           sampled(tables_.transmittance()), sampled(tables_.irradiance()),
           sampled(tables_.multiple_density()), sampled(froxels_.rayleigh()), sampled(froxels_.mie()),
-          sampled(froxels_.transmittance())};
+          sampled(froxels_.transmittance()), vk::UniformBufferSlot{&shadow_buffers_[slot]},
+          vk::SampledImageSlot{&shadow_map_.atlas(), shadow_map_.sampler()}};
 }
 
 // Nearest first, so that early depth tests skip the shading of what is hidden: the scene's meshes
@@ -267,6 +320,12 @@ void Renderer::Record(const ::vk::raii::CommandBuffer& cmd, const Scene& scene, 
   // The previous frame's reads and writes of the shared images come before this frame's.
   vk::FullBarrier(cmd);
   timer.Reset(cmd);
+  timer.Begin(cmd, "shadow map");
+  RecordShadowMap(cmd, scene);
+  timer.End(cmd);
+  ShadowUniforms shadow =
+      MakeShadowUniforms(shadow_cascades_, scene.sun.Direction(), scene.camera, options_.shadows);
+  shadow_buffers_[slot].Write(std::as_bytes(std::span(&shadow, 1)));
   if (options_.mode == AerialMode::kFroxel) {
     timer.Begin(cmd, "froxel build");
     // The volume depends on the camera, the sun and the tables only: a still view keeps it.
@@ -324,8 +383,12 @@ ImageRgbF Renderer::ReadOutput() const {
   return ResizeBilinear(rendered, options_.width, options_.height);
 }
 
-ImageRgbF Renderer::ReadSurface() const {
+ImageRgbF Renderer::ReadSurface(SurfaceLight light) const {
   const vk::Context& context = tables_.context();
+  std::optional<vk::GraphicsPipeline> sky_only;
+  if (light == SurfaceLight::kSkyOnly)
+    sky_only.emplace(context, MeshPipeline("frame/opaque.vert", "frame/surface.frag", false,
+                                           MeshConstants(options_, SurfaceLight::kSkyOnly)));
   vk::Image surface(context, Target(options_, kRadianceFormat, ::vk::ImageUsageFlagBits::eColorAttachment));
   vk::Image depth(context, Target(options_, kDepthFormat, ::vk::ImageUsageFlagBits::eDepthStencilAttachment));
   context.Submit([&](const ::vk::raii::CommandBuffer& cmd) {
@@ -334,7 +397,7 @@ ImageRgbF Renderer::ReadSurface() const {
     {
       vk::Rendering rendering(cmd, {.colors = {&surface}, .clear_colors = {std::array<float, 4>{0, 0, 0, -1}},
                                     .depth = &depth, .clear_depth = 0.0f});
-      DrawOpaque(cmd, surface_, MeshSlots(last_slot_));
+      DrawOpaque(cmd, sky_only ? *sky_only : surface_, MeshSlots(last_slot_));
     }
     vk::FullBarrier(cmd);
   });

@@ -1,5 +1,7 @@
 #pragma once
 // One frame, recorded into one command buffer (shared/design.md, "The pipeline at a glance"):
+//   0. the sun's shadow map of the opaque scene (shadow_map.h), when the sun, the cascades' fit
+//      or the terrain it draws changed since it was last drawn;
 //   1. compute: the froxel volume of phase-free inscatter and transmittance, and, when the
 //      camera's altitude or the sun moved, the sky-view table (the same for whole view rays);
 //   2. one raster pass, with no image round trip inside: the opaque meshes and the terrain,
@@ -17,6 +19,7 @@
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/render/frame_uniforms.h"
 #include "aerial/render/scene_geometry.h"
+#include "aerial/render/shadow_map.h"
 #include "aerial/render/terrain_chunk_cache.h"
 #include "aerial/vk/gpu_timer.h"
 #include "aerial/vk/graphics_pipeline.h"
@@ -56,6 +59,8 @@ struct RenderOptions {
   double terrain_build_budget_ms = 0.0;
   // Copies of the per-frame resources: frames recorded before the previous ones finished.
   uint32_t frames_in_flight = 1;
+  // The sun's shadow map (shadow_map.h) on surfaces; off: no shadow map, and the frame of before.
+  bool shadows = true;
   FramePasses passes;
 
   void Validate() const;  // throws aerial::Error naming the option
@@ -69,6 +74,7 @@ struct FrameMemory {
   uint64_t readback = 0;  // ReadOutput's copies (read back, upscaled) and the encoded image
   uint64_t froxels = 0;   // the froxel volume
   uint64_t terrain = 0;   // the terrain chunk slots (--terrain lod)
+  uint64_t shadows = 0;   // the shadow map's depth atlas (--shadows on)
 };
 FrameMemory EstimateFrameMemory(const RenderOptions& options);
 
@@ -80,7 +86,12 @@ struct FrameInfo {
   int built = 0;     // terrain chunks built for this frame
   bool sky_view_updated = false;  // the sky-view table was remade (the camera's r or mu_s moved)
   bool froxels_updated = false;   // the froxel volume was rebuilt (the camera or the sun moved)
+  bool shadow_map_updated = false;  // the shadow map was redrawn (shadow_map.h)
 };
+
+// What ReadSurface draws of the lighting: all of it (the sun's part shadowed as in the frame), or
+// the sky's part alone.
+enum class SurfaceLight { kSunAndSky, kSkyOnly };
 
 class Renderer {
  public:
@@ -110,13 +121,17 @@ class Renderer {
   // The last frame's opaque geometry drawn again at the render size, without aerial perspective:
   // lit surface radiance in rgb, distance from the camera (m) in a, a = -1 where no geometry is.
   // For checks and benchmarks; frames never draw it.
-  ImageRgbF ReadSurface() const;
+  ImageRgbF ReadSurface(SurfaceLight light = SurfaceLight::kSunAndSky) const;
 
   // The frame's images at the render size (GENERAL layout, sampled) for passes that read it on
   // the GPU (the viewer's tone map and debug views): radiance, and reversed-Z depth.
   const vk::Image& output_image() const { return output_; }
   const vk::Image& depth_image() const { return depth_; }
   const vk::Buffer& frame_buffer(uint32_t slot) const { return frame_buffers_[slot]; }
+  // The ShadowBlock of the slot's frame and the shadow map (shaders/include/shadow.glsl), for
+  // passes that look the sun's visibility up.
+  const vk::Buffer& shadow_buffer(uint32_t slot) const { return shadow_buffers_[slot]; }
+  const ShadowMap& shadow_map() const { return shadow_map_; }
   const AtmosphereTables& tables() const { return tables_; }
   const FroxelVolume& froxels() const { return froxels_; }
   const FrameUniforms& frame_uniforms() const { return frame_uniforms_; }  // of the last frame
@@ -124,7 +139,9 @@ class Renderer {
   const FrameInfo& frame_info() const { return frame_info_; }
 
  private:
+  terrain::LodView FrameLodView(const Scene& scene) const;
   void SelectTerrain(const Scene& scene, bool complete);
+  void RecordShadowMap(const ::vk::raii::CommandBuffer& cmd, const Scene& scene);
   void RecordSkyView(const ::vk::raii::CommandBuffer& cmd, const vk::Buffer& frame, bool exact);
   std::vector<vk::Slot> MeshSlots(uint32_t slot) const;
   void DrawOpaque(const ::vk::raii::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
@@ -147,6 +164,16 @@ class Renderer {
   // (r, mu_s) the sky-view table was made for: it depends on nothing else of the frame.
   std::optional<std::array<float, 2>> sky_view_key_;
   std::optional<FrameUniforms> froxels_key_;  // the frame the froxel volume was built for
+  ShadowMap shadow_map_;
+  std::vector<vk::Buffer> shadow_buffers_;
+  CasterBounds casters_;
+  ShadowCascades shadow_cascades_{};  // of the last frame
+  // What the shadow map shows: the cascades' projections and the terrain chunks drawn in them.
+  struct ShadowKey {
+    std::array<glm::dmat4, kShadowCascades> clip_from_world;
+    ShadowTerrain chunks;
+  };
+  std::optional<ShadowKey> shadow_key_;
   vk::ComputePipeline sky_view_;
   vk::GraphicsPipeline opaque_, sky_, transparent_, surface_;
 };

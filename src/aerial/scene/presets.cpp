@@ -26,7 +26,7 @@ void CheckName(const std::string& name) {
 }  // namespace
 
 std::vector<std::string> PresetNames() {
-  return {"noon", "afternoon", "sunset", "twilight", "high-altitude"};
+  return {"noon", "afternoon", "sunset", "twilight", "high-altitude", "evening"};
 }
 
 void ApplyPresetView(Scene& scene, const std::string& name, double planet_radius_m) {
@@ -46,6 +46,8 @@ void ApplyPresetView(Scene& scene, const std::string& name, double planet_radius
   } else if (name == "twilight") {
     sun = {96.0, 270.0};
     camera.yaw_deg = 265.0;
+  } else if (name == "evening") {
+    sun = {79.0, 300.0};
   } else if (name == "high-altitude") {
     sun = {50.0, 160.0};
     camera.position = {0.0, 0.0, kHighAltitudeM};

@@ -9,6 +9,10 @@
 //                  above the mountains' silhouettes.
 //   high-altitude  camera 30 km up, above 98% of the air, looking north at the horizon (pitched
 //                  down by the horizon's dip, acos(R / (R + h)) = 5.6 deg), sun at 50 deg.
+//   evening        the noon view, sun low (11 deg above the horizon) in the west-northwest,
+//                  behind the western ridges: their shadows cross the valley floor 0.5-1 km
+//                  ahead and the corridor's foot, the landmarks' shadows point east (the sun's
+//                  shadow map, src/aerial/render/shadow_map.h).
 #include <string>
 #include <vector>
 

@@ -148,6 +148,7 @@ PanelEvents DrawPanel(ViewSettings& s, const PanelInfo& info) {
     ImGui::SameLine();
     ImGui::RadioButton("per pixel", &per_pixel, 1);
     s.mode = per_pixel ? AerialMode::kPerPixel : AerialMode::kFroxel;
+    ImGui::Checkbox("Sun shadows", &s.shadows);
     FroxelSection(s.froxels);
     RenderScaleCombo(s.render_scale);
     ImGui::SliderFloat("Terrain error", &s.terrain_error_px, 0.25f, 64.0f, "%.2f px",

@@ -5,7 +5,7 @@ namespace aerial::viewer {
 bool SameRenderOptions(const RenderOptions& a, const RenderOptions& b) {
   return a.width == b.width && a.height == b.height && a.mode == b.mode &&
          a.render_scale == b.render_scale && a.terrain == b.terrain &&
-         a.frames_in_flight == b.frames_in_flight &&
+         a.frames_in_flight == b.frames_in_flight && a.shadows == b.shadows &&
          a.froxels.width == b.froxels.width && a.froxels.height == b.froxels.height &&
          a.froxels.depth == b.froxels.depth && a.froxels.far_m == b.froxels.far_m;
 }

@@ -21,10 +21,12 @@ struct ViewSettings {
   // Tables: changing these asks the table worker for a new set.
   LutVariant variant = LutVariant::k4D;
   AtmosphereKnobs knobs;
-  // Frame: changing these recreates the renderer (the aerial mode is a specialization constant).
+  // Frame: changing these recreates the renderer (the aerial mode and the shadows are
+  // specialization constants).
   FroxelGrid froxels;
   AerialMode mode = AerialMode::kFroxel;
   float render_scale = 1.0f;
+  bool shadows = true;
   // Changes from frame to frame without a new renderer (only the terrain's selection uses it).
   float terrain_error_px = 4.0f;
   // Display.

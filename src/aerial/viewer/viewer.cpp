@@ -160,6 +160,7 @@ Viewer::Impl::Impl(ViewerOptions options)
   settings_.froxels = options_.render.froxels;
   settings_.mode = options_.render.mode;
   settings_.render_scale = float(options_.render.render_scale);
+  settings_.shadows = options_.render.shadows;
   settings_.terrain_error_px = float(options_.render.terrain_error_px);
   settings_.exposure = float(options_.exposure);
   requested_[options_.variant] = options_.atmosphere.Hash();
@@ -173,6 +174,7 @@ RenderOptions Viewer::Impl::CurrentRenderOptions() const {
   render.froxels = settings_.froxels;
   render.mode = settings_.mode;
   render.render_scale = settings_.render_scale;
+  render.shadows = settings_.shadows;
   render.terrain_error_px = settings_.terrain_error_px;
   return render;
 }

@@ -9,7 +9,9 @@ GraphicsPipeline::GraphicsPipeline(const Context& context, const GraphicsPipelin
       layout_(context, info.slot_types, info.push_constant_bytes,
               ::vk::ShaderStageFlagBits::eVertex | ::vk::ShaderStageFlagBits::eFragment) {
   ::vk::raii::ShaderModule vertex = CreateShaderModule(context, info.vertex_shader);
-  ::vk::raii::ShaderModule fragment = CreateShaderModule(context, info.fragment_shader);
+  bool has_fragment = !info.fragment_shader.empty();
+  ::vk::raii::ShaderModule fragment =
+      has_fragment ? CreateShaderModule(context, info.fragment_shader) : ::vk::raii::ShaderModule(nullptr);
   std::vector<::vk::SpecializationMapEntry> entries;
   for (uint32_t i = 0; i < info.specialization.size(); ++i)
     entries.push_back({.constantID = i, .offset = uint32_t(i * sizeof(int32_t)), .size = sizeof(int32_t)});
@@ -23,8 +25,8 @@ GraphicsPipeline::GraphicsPipeline(const Context& context, const GraphicsPipelin
                                           .module = *vertex, .pName = "main",
                                           .pSpecializationInfo = constants},
       ::vk::PipelineShaderStageCreateInfo{.stage = ::vk::ShaderStageFlagBits::eFragment,
-                                          .module = *fragment, .pName = "main",
-                                          .pSpecializationInfo = constants}};
+                                          .module = has_fragment ? *fragment : ::vk::ShaderModule{},
+                                          .pName = "main", .pSpecializationInfo = constants}};
   ::vk::VertexInputBindingDescription binding{.binding = 0, .stride = info.vertex_stride,
                                               .inputRate = ::vk::VertexInputRate::eVertex};
   std::vector<::vk::VertexInputAttributeDescription> attributes;
@@ -74,7 +76,7 @@ GraphicsPipeline::GraphicsPipeline(const Context& context, const GraphicsPipelin
   pipeline_ = ::vk::raii::Pipeline(
       context.device(), nullptr,
       ::vk::GraphicsPipelineCreateInfo{.pNext = info.render_pass ? nullptr : &rendering,
-                                       .stageCount = 2,
+                                       .stageCount = has_fragment ? 2u : 1u,
                                        .pStages = stages.data(),
                                        .pVertexInputState = &vertex_input,
                                        .pInputAssemblyState = &assembly,
@@ -129,10 +131,10 @@ Rendering::Rendering(const ::vk::raii::CommandBuffer& cmd, const RenderTargets& 
 
 Rendering::~Rendering() { cmd_.endRendering(); }
 
-void SetViewport(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent) {
-  cmd.setViewport(0, ::vk::Viewport{.width = float(extent.width), .height = float(extent.height),
-                                    .minDepth = 0.0f, .maxDepth = 1.0f});
-  cmd.setScissor(0, ::vk::Rect2D{.extent = extent});
+void SetViewport(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent, ::vk::Offset2D offset) {
+  cmd.setViewport(0, ::vk::Viewport{.x = float(offset.x), .y = float(offset.y), .width = float(extent.width),
+                                    .height = float(extent.height), .minDepth = 0.0f, .maxDepth = 1.0f});
+  cmd.setScissor(0, ::vk::Rect2D{.offset = offset, .extent = extent});
 }
 
 void SetCullBackFaces(const ::vk::raii::CommandBuffer& cmd, bool cull_back) {

@@ -22,7 +22,7 @@ struct VertexAttribute {
 
 struct GraphicsPipelineCreateInfo {
   std::string vertex_shader;    // "frame/opaque.vert"
-  std::string fragment_shader;  // "frame/opaque.frag"
+  std::string fragment_shader;  // "frame/opaque.frag"; empty: none (a depth-only pass)
   std::vector<::vk::DescriptorType> slot_types;
   uint32_t push_constant_bytes = 0;
   uint32_t vertex_stride = 0;               // 0 with no attributes: no vertex buffer
@@ -76,8 +76,8 @@ class Rendering {
   const ::vk::raii::CommandBuffer& cmd_;
 };
 
-// The viewport and scissor of a whole extent.
-void SetViewport(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent);
+// The viewport and scissor of a rectangle (by default the whole extent from the origin).
+void SetViewport(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent, ::vk::Offset2D offset = {});
 void SetCullBackFaces(const ::vk::raii::CommandBuffer& cmd, bool cull_back);
 void BindMesh(const ::vk::raii::CommandBuffer& cmd, const Buffer& vertices, const Buffer& indices);
 void DrawIndexed(const ::vk::raii::CommandBuffer& cmd, uint32_t index_count, uint32_t first_index = 0,

@@ -1,6 +1,7 @@
 #include "aerial/vk/resources.h"
 
 #include <cstring>
+#include <optional>
 
 #include "aerial/core/error.h"
 
@@ -146,7 +147,8 @@ std::vector<float> ReadImageFloats(const Context& context, const Image& image) {
 }
 
 namespace {
-::vk::raii::Sampler CreateClampSampler(const Context& context, ::vk::Filter filter) {
+::vk::raii::Sampler CreateClampSampler(const Context& context, ::vk::Filter filter,
+                                       std::optional<::vk::CompareOp> compare = std::nullopt) {
   return ::vk::raii::Sampler(
       context.device(), ::vk::SamplerCreateInfo{
                             .magFilter = filter,
@@ -155,6 +157,8 @@ namespace {
                             .addressModeU = ::vk::SamplerAddressMode::eClampToEdge,
                             .addressModeV = ::vk::SamplerAddressMode::eClampToEdge,
                             .addressModeW = ::vk::SamplerAddressMode::eClampToEdge,
+                            .compareEnable = compare.has_value(),
+                            .compareOp = compare.value_or(::vk::CompareOp::eNever),
                             .maxLod = 0.0f});
 }
 }  // namespace
@@ -165,6 +169,10 @@ namespace {
 
 ::vk::raii::Sampler CreateNearestClampSampler(const Context& context) {
   return CreateClampSampler(context, ::vk::Filter::eNearest);
+}
+
+::vk::raii::Sampler CreateDepthCompareSampler(const Context& context, ::vk::CompareOp compare) {
+  return CreateClampSampler(context, ::vk::Filter::eLinear, compare);
 }
 
 void FullBarrier(const ::vk::raii::CommandBuffer& cmd) {

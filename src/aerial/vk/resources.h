@@ -72,6 +72,9 @@ class Image {
 ::vk::raii::Sampler CreateLinearClampSampler(const Context& context);
 // Nearest texel, clamp-to-edge: for images read texel by texel (a depth buffer).
 ::vk::raii::Sampler CreateNearestClampSampler(const Context& context);
+// Linear, clamp-to-edge, comparing: a lookup returns the bilinear blend of `reference compare
+// texel` over the four nearest texels (hardware PCF), for sampler2DShadow.
+::vk::raii::Sampler CreateDepthCompareSampler(const Context& context, ::vk::CompareOp compare);
 
 // Makes every earlier shader or transfer write visible to every later shader or transfer access.
 void FullBarrier(const ::vk::raii::CommandBuffer& cmd);

@@ -1,0 +1,105 @@
+// The sun's visibility at a point, from the cascaded shadow map of the opaque scene
+// (src/aerial/render/shadow_map.h, shadow_cascades.h): 1 where the sun's centre is seen, 0 where
+// terrain or a mesh hides it, in between across a soft edge about one texel wide.
+//
+// Usable from any stage: a fragment shader (surfaces) or a compute shader (the froxels' ray
+// march). The including shader defines SHADOW_BINDING first: the ShadowBlock is bound there and
+// the shadow map (a depth atlas sampled with comparison) at SHADOW_BINDING + 1, in set 0.
+//   #define SHADOW_BINDING 8
+//   #include "shadow.glsl"
+//   float v = SunVisibility(relative_position, normal);  // on a surface
+//   float a = SunVisibilityInAir(relative_position);     // a point in the air
+// Positions are camera-relative world vectors, as everywhere in the frame's shaders (frame.glsl).
+#ifndef AERIAL_SHADOW_GLSL
+#define AERIAL_SHADOW_GLSL
+#extension GL_EXT_control_flow_attributes : require
+
+#ifndef SHADOW_BINDING
+#error "define SHADOW_BINDING (the ShadowBlock's binding; the shadow map takes the next) before shadow.glsl"
+#endif
+
+// 0: no shadows, every visibility is 1 and the shadow map is never read. A specialization
+// constant (constant_id 1) so that raster pipelines without shadows compile the lookup out (a CPU
+// rasterizer would run it under a uniform branch too); a pipeline that does not specialize it
+// (compute) keeps 1 and reads ShadowBlock.cascades.x, which is 0 when shadows are off.
+layout(constant_id = 1) const int kSunShadows = 1;
+
+const int kShadowCascades = 4;
+const int kShadowAtlasTilesPerRow = 2;  // the cascades' tiles in the atlas: 2x2
+
+// Mirrored by aerial::ShadowUniforms (src/aerial/render/shadow_uniforms.h). Light coordinates
+// are relative to the camera, in meters along the light's axes.
+layout(std140, set = 0, binding = SHADOW_BINDING) uniform ShadowBlock {
+  vec4 light_axes[3];                      // xyz: right, up, toward the sun
+  vec4 view_forward;                       // xyz: the camera's forward axis
+  vec4 cascade_far_m;                      // each cascade's last view depth (m)
+  vec4 cascade_origin[kShadowCascades];    // xy: the tile's centre; w: the light coordinate of depth 0
+  vec4 cascade_scale[kShadowCascades];     // x: tile units per m; y: depth per m; z: texel (m)
+  ivec4 cascades;  // x: cascades in use (0: shadows off)
+} shadow;
+layout(set = 0, binding = SHADOW_BINDING + 1) uniform sampler2DShadow shadow_map;
+
+// PCF (Reeves et al. 1987) in its cheapest form: one lookup through the sampler's bilinear
+// comparison, which compares the point's depth with the four nearest texels and blends the four
+// results bilinearly (a 2x2-texel tent), so a shadow's edge is smooth across one texel and moves
+// without popping. Four such taps half a texel apart (a 3x3-texel tent) looked softer but made
+// the lookup cost 1.3 times as much on lavapipe (README, "Shadows"). The four texels lie within
+// one texel of the point along each axis: the filter's reach r = 1.
+
+// The bias, in texels of the cascade (t, the texel's world size). The depth map holds the
+// nearest caster's depth at texel centres; a lit receiver plane tilted by theta from facing the
+// sun (cos theta = n . sun) drifts in depth by up to sqrt(2) r t tan(theta) across the filter's
+// reach of r texels along each axis, so comparing the point itself would shadow the plane by
+// itself ("acne"). Moving the point off the surface along its normal by k t (normal offset,
+// Holbein 2011, "Normal offset shadows") raises it k t / cos(theta) above the plane along the
+// sun's direction, which exceeds sqrt(2) r t tan(theta) for every tilt as long as
+// k >= sqrt(2) r sin(theta): k = 1.5 texels covers all slopes with r = 1. The same offset moves a
+// shadow's start on the ground by at most k t (peter-panning): 1.5 texels, 17 cm in the first
+// cascade. Points in the air (no normal) move k t toward the sun.
+// The float depth's rounding (range 200 km at 2^-24 relative: 1.2 cm) stays far below k t.
+const float kNormalOffsetTexels = 1.5;
+
+// A camera-relative vector in light coordinates (a direction as well as a position).
+vec3 GetLightCoordinates(vec3 relative_position) {
+  return vec3(dot(shadow.light_axes[0].xyz, relative_position), dot(shadow.light_axes[1].xyz, relative_position),
+              dot(shadow.light_axes[2].xyz, relative_position));
+}
+
+// The visibility of a point moved by kNormalOffsetTexels texels of its cascade along a unit
+// direction given in light coordinates, or 1 beyond the cascades. The cascade is the one whose
+// slice of view depth holds the point (each tile holds its slice with a margin for the filter
+// and the offset: shadow_cascades.h, kShadowMarginTexels). Picked by comparisons and selects of
+// uniform values, with no loop over a dynamic count and no dynamic indexing of the block: a
+// CPU rasterizer gathers a dynamically indexed uniform lane by lane.
+float SunVisibilityOffset(vec3 relative_position, vec3 light_direction) {
+  float depth = dot(shadow.view_forward.xyz, relative_position);
+  if (shadow.cascades.x == 0 || depth > shadow.cascade_far_m[kShadowCascades - 1]) return 1.0;
+  vec4 origin = shadow.cascade_origin[0], scale = shadow.cascade_scale[0];
+  vec2 tile = vec2(0.0);
+  [[unroll]] for (int i = 1; i < kShadowCascades; ++i) {
+    if (depth > shadow.cascade_far_m[i - 1]) {
+      origin = shadow.cascade_origin[i];
+      scale = shadow.cascade_scale[i];
+      tile = vec2(i % kShadowAtlasTilesPerRow, i / kShadowAtlasTilesPerRow);
+    }
+  }
+  vec3 light = GetLightCoordinates(relative_position) + light_direction * (kNormalOffsetTexels * scale.z);
+  vec3 p = vec3((light.xy - origin.xy) * scale.x + 0.5, (light.z - origin.w) * scale.y);
+  vec2 atlas = (p.xy + tile) / float(kShadowAtlasTilesPerRow);
+  return texture(shadow_map, vec3(atlas, p.z));
+}
+
+// The sun's visibility in [0, 1] at a point in the air (the froxels' ray march): beyond the last
+// cascade (100 km of view depth) or with shadows off, 1.
+float SunVisibilityInAir(vec3 relative_position) {
+  if (kSunShadows == 0) return 1.0;
+  return SunVisibilityOffset(relative_position, vec3(0.0, 0.0, 1.0));
+}
+
+// The sun's visibility in [0, 1] at a point of a surface with the unit normal n (either side).
+float SunVisibility(vec3 relative_position, vec3 normal) {
+  if (kSunShadows == 0) return 1.0;
+  return SunVisibilityOffset(relative_position, GetLightCoordinates(normal));
+}
+
+#endif

@@ -1,0 +1,90 @@
+#pragma once
+// The sun's shadow map fitted to the camera: cascaded shadow maps (Engel, "Cascaded Shadow Maps",
+// ShaderX5, 2006; Zhang et al., "Parallel-Split Shadow Maps", 2006). The view frustum is cut
+// into kShadowCascades slices of view depth, each covered by its own orthographic projection from
+// the sun, so that a texel near the camera covers centimeters and one of the last cascade still
+// reaches the mountains 85 km away.
+//
+// The fits are stable (Valient, "Stable Rendering of Cascaded Shadow Maps", ShaderX6, 2008): each
+// slice is bounded by a sphere, whose radius depends only on the slice, the field of view and
+// the aspect (not on where the camera looks, so the texel size never changes as the camera
+// turns), and the sphere's centre is snapped to whole texels along the light's axes, which are
+// fixed by the sun alone. A world point then falls on the same texel grid whatever the camera
+// does: the shadow's edges do not crawl or shimmer as it moves and turns, and a small move leaves
+// the fit, and so the cached shadow map (shadow_map.h), unchanged.
+//
+// Pure CPU math in double precision, in the scene frame (scene.h); shadow_cascades_test checks it.
+#include <array>
+
+#include <glm/glm.hpp>
+
+#include "aerial/scene/scene.h"
+
+namespace aerial {
+
+inline constexpr int kShadowCascades = 4;
+
+// Texels around each slice's bounding square that still belong to its tile: the lookup's reach
+// from any point of the slice (its filter and its offset along the normal,
+// shaders/include/shadow.glsl), plus one. So a lookup picks its cascade by view depth alone.
+inline constexpr int kShadowMarginTexels = 4;
+
+// The view depths (m) that split the frustum: the first cascade ends at kFirstShadowSplitM and
+// the last at kShadowFarM (the terrain's edge, kTerrainRadiusM); the splits between grow
+// geometrically (the "logarithmic" split of Zhang et al., which keeps the ratio of a texel's size
+// to its distance the same in every cascade): 60 m, 700 m, 8.1 km, 100 km.
+inline constexpr double kFirstShadowSplitM = 60.0;
+inline constexpr double kShadowFarM = 100e3;
+
+// Everything that casts a shadow lies within this sphere (scene frame): the light's depth range
+// reaches from each cascade to the sphere's sun-facing side.
+struct CasterBounds {
+  glm::dvec3 center{0.0};
+  double radius_m = 0.0;
+};
+
+struct CascadeFitInput {
+  Camera camera;
+  double aspect = 16.0 / 9.0;
+  glm::dvec3 sun{0.0, 0.0, 1.0};  // unit vector toward the sun
+  int tile_texels = 1024;          // the width and height of one cascade's depth map
+  CasterBounds casters;
+};
+
+// The light's axes, fixed by the sun alone: right and up span the depth map, toward_sun is depth.
+struct LightBasis {
+  glm::dvec3 right, up, toward_sun;
+};
+LightBasis MakeLightBasis(const glm::dvec3& sun);
+
+struct ShadowCascade {
+  double near_m = 0.0, far_m = 0.0;  // the slice of view depth it was fitted to
+  // The bounding sphere's snapped centre in light coordinates (dot with right, up, toward_sun)
+  // and its radius; the depth map spans centre.xy +- radius.
+  glm::dvec3 center_light{0.0};
+  double radius_m = 0.0;
+  // Light depths (m along toward_sun) of depth 0 (the sphere's far side) and depth 1 (the
+  // casters' sun-facing side).
+  double depth_min_m = 0.0, depth_max_m = 0.0;
+  double texel_m = 0.0;  // the world size of one texel of the depth map
+  // Scene frame -> clip: x and y in [-1, 1] over the depth map, depth in [0, 1], 1 toward the sun
+  // (reversed, as the camera's depth: the nearest caster has the largest value).
+  glm::dmat4 clip_from_world{1.0};
+  // The box the depth map sees, as LodView planes (terrain/lod_selection.h): a point p is inside
+  // when dot(plane.xyz, p) + plane.w >= 0 for the four sides and the far side (away from the sun).
+  std::array<glm::dvec4, 5> planes{};
+};
+
+using ShadowCascades = std::array<ShadowCascade, kShadowCascades>;
+
+// The view depth at which slice i begins (i = 0: the camera's near plane; i = kShadowCascades:
+// kShadowFarM).
+double ShadowSplitM(const Camera& camera, int i);
+
+ShadowCascades FitShadowCascades(const CascadeFitInput& input);
+
+// The planes of the box around all the cascades (extruded toward the sun like each of them):
+// what the shadow pass must draw.
+std::array<glm::dvec4, 5> CascadesUnionPlanes(const ShadowCascades& cascades, const LightBasis& basis);
+
+}  // namespace aerial

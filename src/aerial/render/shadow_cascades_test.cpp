@@ -1,0 +1,133 @@
+#include "aerial/render/shadow_cascades.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "aerial/scene/camera.h"
+
+namespace aerial {
+namespace {
+
+CascadeFitInput NoonView() {
+  CascadeFitInput in;
+  in.camera.position = {130.0, -2400.0, 95.0};
+  in.camera.yaw_deg = 20.0;
+  in.camera.pitch_deg = 4.0;
+  in.camera.vertical_fov_deg = 50.0;
+  in.sun = DirectionFromZenithAzimuth(70.0, 160.0);
+  in.casters = {{0.0, 0.0, 0.0}, 101e3};
+  return in;
+}
+
+glm::dvec3 Clip(const ShadowCascade& c, const glm::dvec3& p) { return glm::dvec3(c.clip_from_world * glm::dvec4(p, 1.0)); }
+
+// The slice's corners: the frustum's edges at its near and far view depths.
+std::vector<glm::dvec3> SliceCorners(const CascadeFitInput& in, const ShadowCascade& c) {
+  double tan_y = std::tan(glm::radians(in.camera.vertical_fov_deg / 2.0)), tan_x = tan_y * in.aspect;
+  std::vector<glm::dvec3> corners;
+  for (double depth : {c.near_m, c.far_m})
+    for (double sx : {-1.0, 1.0})
+      for (double sy : {-1.0, 1.0})
+        corners.push_back(in.camera.position + depth * (Forward(in.camera) + sx * tan_x * Right(in.camera) +
+                                                        sy * tan_y * Up(in.camera)));
+  return corners;
+}
+
+TEST(ShadowCascades, SplitsRunFromTheNearPlaneToTheTerrainsEdge) {
+  Camera camera;
+  EXPECT_EQ(ShadowSplitM(camera, 0), camera.near_m);
+  EXPECT_DOUBLE_EQ(ShadowSplitM(camera, 1), kFirstShadowSplitM);
+  EXPECT_NEAR(ShadowSplitM(camera, kShadowCascades), kShadowFarM, 1e-6);
+  for (int i = 0; i < kShadowCascades; ++i) EXPECT_LT(ShadowSplitM(camera, i), ShadowSplitM(camera, i + 1));
+}
+
+// Every corner of each slice lands inside its cascade's depth map, kShadowMarginTexels from its
+// edges, and inside its depth range, for views in several directions and suns from noon to the
+// horizon.
+TEST(ShadowCascades, EachCascadeCoversItsSliceOfTheFrustum) {
+  for (double yaw : {0.0, 95.0, 230.0}) {
+    for (double sun_zenith : {5.0, 45.0, 89.0}) {
+      CascadeFitInput in = NoonView();
+      in.camera.yaw_deg = yaw;
+      in.sun = DirectionFromZenithAzimuth(sun_zenith, 250.0);
+      ShadowCascades cascades = FitShadowCascades(in);
+      const double inner = 1.0 - 2.0 * kShadowMarginTexels / in.tile_texels;
+      for (const ShadowCascade& c : cascades) {
+        for (const glm::dvec3& corner : SliceCorners(in, c)) {
+          glm::dvec3 clip = Clip(c, corner);
+          EXPECT_LE(std::fabs(clip.x), inner + 1e-9) << "yaw " << yaw << " sun " << sun_zenith << " far " << c.far_m;
+          EXPECT_LE(std::fabs(clip.y), inner + 1e-9);
+          EXPECT_GE(clip.z, 0.0);
+          EXPECT_LE(clip.z, 1.0);
+        }
+      }
+    }
+  }
+}
+
+// A caster anywhere in the caster bounds between a receiver and the sun is inside the depth
+// range (not clipped away), nearer the sun than the receiver.
+TEST(ShadowCascades, CastersTowardTheSunAreInsideTheDepthRange) {
+  CascadeFitInput in = NoonView();
+  in.sun = DirectionFromZenithAzimuth(85.0, 180.0);
+  ShadowCascades cascades = FitShadowCascades(in);
+  glm::dvec3 receiver = in.camera.position + 30.0 * Forward(in.camera);
+  glm::dvec3 mountain = receiver + 90e3 * in.sun;  // 90 km toward the low sun, inside the bounds
+  ASSERT_LT(glm::length(mountain - in.casters.center), in.casters.radius_m);
+  const ShadowCascade& first = cascades[0];
+  EXPECT_LE(Clip(first, mountain).z, 1.0);
+  EXPECT_GT(Clip(first, mountain).z, Clip(first, receiver).z);
+  EXPECT_NEAR(Clip(first, mountain).x, Clip(first, receiver).x, 1e-9);
+}
+
+// The texel size depends on the slice, the field of view and the aspect only: turning the camera
+// keeps it, so edges keep their size on screen as the view turns.
+TEST(ShadowCascades, TexelSizeDoesNotChangeAsTheCameraTurns) {
+  CascadeFitInput in = NoonView();
+  ShadowCascades before = FitShadowCascades(in);
+  in.camera.yaw_deg += 33.0;
+  in.camera.pitch_deg -= 20.0;
+  ShadowCascades after = FitShadowCascades(in);
+  for (int i = 0; i < kShadowCascades; ++i) EXPECT_DOUBLE_EQ(before[i].texel_m, after[i].texel_m);
+  EXPECT_LT(before[0].texel_m, 0.15) << "sharp near the camera (1024 texels)";
+}
+
+// Texel snapping: after a move of a fraction of a texel, or of many texels, a fixed world point
+// lands on the same place within its texel: its texel coordinates move by whole texels, so the
+// rasterized shadow edges do not shimmer. A move smaller than half a texel changes no fit at all,
+// so a cached shadow map stays valid.
+TEST(ShadowCascades, TexelSnappingIsStableUnderCameraMoves) {
+  CascadeFitInput in = NoonView();
+  ShadowCascades before = FitShadowCascades(in);
+  const glm::dvec3 point = in.camera.position + glm::dvec3(17.3, 41.9, -3.1);
+  for (glm::dvec3 move : {glm::dvec3(0.013, -0.007, 0.002), glm::dvec3(3.71, 2.2, -0.4), glm::dvec3(251.0, -97.3, 12.0)}) {
+    CascadeFitInput moved = in;
+    moved.camera.position += move;
+    ShadowCascades after = FitShadowCascades(moved);
+    for (int i = 0; i < kShadowCascades; ++i) {
+      double texels_per_clip = in.tile_texels / 2.0;
+      glm::dvec2 shift = (glm::dvec2(Clip(after[i], point)) - glm::dvec2(Clip(before[i], point))) * texels_per_clip;
+      EXPECT_NEAR(shift.x, std::round(shift.x), 1e-6) << "cascade " << i << " move " << move.x;
+      EXPECT_NEAR(shift.y, std::round(shift.y), 1e-6) << "cascade " << i << " move " << move.x;
+    }
+  }
+  CascadeFitInput nudged = in;
+  nudged.camera.position += glm::dvec3(0.001, 0.0, 0.0);
+  ShadowCascades after = FitShadowCascades(nudged);
+  int unchanged = 0;
+  for (int i = 0; i < kShadowCascades; ++i) unchanged += after[i].clip_from_world == before[i].clip_from_world;
+  EXPECT_GE(unchanged, kShadowCascades - 1) << "a 1 mm move changes at most the cascade whose centre crossed a texel";
+}
+
+TEST(ShadowCascades, UnionPlanesHoldEveryCascadesBox) {
+  CascadeFitInput in = NoonView();
+  ShadowCascades cascades = FitShadowCascades(in);
+  auto planes = CascadesUnionPlanes(cascades, MakeLightBasis(in.sun));
+  for (const ShadowCascade& c : cascades)
+    for (const glm::dvec3& corner : SliceCorners(in, c))
+      for (const glm::dvec4& plane : planes) EXPECT_GE(glm::dot(glm::dvec3(plane), corner) + plane.w, -1e-6);
+}
+
+}  // namespace
+}  // namespace aerial

@@ -1,0 +1,72 @@
+#include "aerial/render/shadow_map.h"
+
+#include "aerial/render/shadow_uniforms.h"
+#include "aerial/terrain/terrain_chunk.h"
+
+namespace aerial {
+namespace {
+
+constexpr ::vk::Format kShadowFormat = ::vk::Format::eD32Sfloat;
+
+uint32_t AtlasTexels(bool enabled) { return enabled ? uint32_t(kShadowTileTexels * kShadowAtlasTilesPerRow) : 1u; }
+
+vk::ImageCreateInfo AtlasImage(bool enabled) {
+  return {.extent = {AtlasTexels(enabled), AtlasTexels(enabled), 1},
+          .format = kShadowFormat,
+          .usage = ::vk::ImageUsageFlagBits::eDepthStencilAttachment | ::vk::ImageUsageFlagBits::eSampled |
+                   ::vk::ImageUsageFlagBits::eTransferSrc};
+}
+
+struct CascadeConstants {
+  std::array<float, 16> clip_from_relative;
+  std::array<float, 4> camera_scene_position;
+};
+
+vk::GraphicsPipelineCreateInfo DepthPipeline() {
+  return {.vertex_shader = "frame/shadow_depth.vert",
+          .push_constant_bytes = sizeof(CascadeConstants),
+          .vertex_stride = sizeof(Vertex),
+          .attributes = {{::vk::Format::eR32G32B32Sfloat, offsetof(Vertex, position)}},
+          .depth_format = kShadowFormat,
+          .cull = ::vk::CullModeFlagBits::eNone};
+}
+
+}  // namespace
+
+ShadowMap::ShadowMap(const vk::Context& context, bool enabled)
+    : atlas_(context, AtlasImage(enabled)),
+      // The lookup's reference is the receiver's depth: lit where it is at least the caster's.
+      sampler_(vk::CreateDepthCompareSampler(context, ::vk::CompareOp::eGreaterOrEqual)),
+      depth_(context, DepthPipeline()) {
+  context.Submit([&](const auto& cmd) { atlas_.InitializeLayout(cmd); });
+}
+
+uint64_t ShadowMap::MemoryBytes(bool enabled) { return uint64_t(AtlasTexels(enabled)) * AtlasTexels(enabled) * 4; }
+
+void ShadowMap::Record(const ::vk::raii::CommandBuffer& cmd, const ShadowCascades& cascades,
+                       const glm::dvec3& camera_position, const SceneGeometry& geometry,
+                       const TerrainChunkCache* terrain, const ShadowTerrain& chunks) const {
+  vk::Rendering rendering(cmd, {.depth = &atlas_, .clear_depth = 0.0f});
+  const ::vk::Extent2D tile{uint32_t(kShadowTileTexels), uint32_t(kShadowTileTexels)};
+  for (int i = 0; i < kShadowCascades; ++i) {
+    vk::SetViewport(cmd, tile,
+                    {int32_t(i % kShadowAtlasTilesPerRow) * kShadowTileTexels,
+                     int32_t(i / kShadowAtlasTilesPerRow) * kShadowTileTexels});
+    CascadeConstants constants{
+        ToColumnMajorFloats(ClipFromRelative(cascades[i], camera_position)),
+        {float(camera_position.x), float(camera_position.y), float(camera_position.z), 0.0f}};
+    depth_.Bind(cmd, {}, &constants);
+    if (geometry.opaque_index_count() > 0) {
+      vk::BindMesh(cmd, geometry.opaque_vertices(), geometry.opaque_indices());
+      vk::DrawIndexed(cmd, geometry.opaque_index_count());
+    }
+    if (!terrain || chunks[i].empty()) continue;
+    vk::BindMesh(cmd, terrain->vertices(), terrain->indices());
+    for (const terrain::SelectedChunk& chunk : chunks[i]) {
+      terrain::IndexRange range = terrain::ChunkIndexRange(chunk.skirts);
+      vk::DrawIndexed(cmd, range.count, range.first, terrain->VertexOffset(chunk.id));
+    }
+  }
+}
+
+}  // namespace aerial

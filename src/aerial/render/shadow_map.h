@@ -1,0 +1,50 @@
+#pragma once
+// The sun's shadow map of the opaque scene (the terrain and the opaque meshes; transparent ones
+// cast no shadow): one depth atlas of kShadowCascades square tiles (2x2), each the depth of the
+// casters nearest the sun through its cascade's orthographic projection (shadow_cascades.h),
+// reversed like the camera's depth (1 nearest the sun, cleared to 0, GREATER test). Read by
+// shaders/include/shadow.glsl with a comparing sampler (PCF) and the per-frame ShadowBlock
+// (shadow_uniforms.h).
+//
+// The renderer records it into the frame's command buffer before the froxels and the raster
+// pass, and only when what it shows changed (Renderer's shadow key): the sun, a cascade's fit or
+// the chunks of terrain it draws. A still camera redraws nothing.
+#include <cstdint>
+
+#include "aerial/render/scene_geometry.h"
+#include "aerial/render/shadow_cascades.h"
+#include "aerial/render/shadow_terrain.h"
+#include "aerial/render/terrain_chunk_cache.h"
+#include "aerial/vk/graphics_pipeline.h"
+
+namespace aerial {
+
+// Texels per side of one cascade's tile: 1024 puts the first cascade's texel at 11 cm (the 60 m
+// slice of a 50-degree view at 16:9) and the last one's at 170 m, enough for a ridge's shadow
+// 80 km away, at 16 MiB for the atlas.
+inline constexpr int kShadowTileTexels = 1024;
+
+class ShadowMap {
+ public:
+  // enabled = false: a 1x1 placeholder that the frame's shaders bind but never read.
+  ShadowMap(const vk::Context& context, bool enabled);
+
+  // The atlas' bytes (the placeholder's when not enabled).
+  static uint64_t MemoryBytes(bool enabled);
+
+  // Draws every cascade's casters: the scene's opaque meshes (both faces: a mesh open to the sun
+  // still shades what is behind it) and the terrain chunks of each cascade.
+  void Record(const ::vk::raii::CommandBuffer& cmd, const ShadowCascades& cascades,
+              const glm::dvec3& camera_position, const SceneGeometry& geometry,
+              const TerrainChunkCache* terrain, const ShadowTerrain& chunks) const;
+
+  const vk::Image& atlas() const { return atlas_; }
+  ::vk::Sampler sampler() const { return *sampler_; }
+
+ private:
+  vk::Image atlas_;
+  ::vk::raii::Sampler sampler_;
+  vk::GraphicsPipeline depth_;
+};
+
+}  // namespace aerial
