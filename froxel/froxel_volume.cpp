@@ -19,7 +19,7 @@ FroxelVolume::FroxelVolume(const vk::Context& context, const FroxelGrid& grid)
       transmittance_(context, FroxelImage(grid)),
       pipeline_(context, "frame/froxel.comp",
                 {vk::kUniform, vk::kUniform, vk::kSampled, vk::kSampled, vk::kStorageImage,
-                 vk::kStorageImage, vk::kStorageImage}) {
+                 vk::kStorageImage, vk::kStorageImage, vk::kUniform, vk::kSampled}) {
   grid.Validate();
   context.Submit([&](const auto& cmd) {
     for (const vk::Image* image : {&rayleigh_, &mie_, &transmittance_}) image->InitializeLayout(cmd);
@@ -27,7 +27,8 @@ FroxelVolume::FroxelVolume(const vk::Context& context, const FroxelGrid& grid)
 }
 
 void FroxelVolume::Build(const ::vk::raii::CommandBuffer& cmd, const AtmosphereTables& tables,
-                         const vk::Buffer& frame_uniforms) const {
+                         const vk::Buffer& frame_uniforms, const vk::Buffer& shadow_uniforms,
+                         const vk::SampledImageSlot& shadow_map) const {
   ::vk::Sampler sampler = tables.sampler();
   pipeline_.Dispatch(cmd,
                      {vk::UniformBufferSlot{&tables.uniform_buffer()},
@@ -35,7 +36,8 @@ void FroxelVolume::Build(const ::vk::raii::CommandBuffer& cmd, const AtmosphereT
                       vk::SampledImageSlot{&tables.transmittance(), sampler},
                       vk::SampledImageSlot{&tables.multiple_density(), sampler},
                       vk::StorageImageSlot{&rayleigh_}, vk::StorageImageSlot{&mie_},
-                      vk::StorageImageSlot{&transmittance_}},
+                      vk::StorageImageSlot{&transmittance_}, vk::UniformBufferSlot{&shadow_uniforms},
+                      shadow_map},
                      {uint32_t(grid_.width), uint32_t(grid_.height), 1}, {32, 1, 1});
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The per-frame froxel volume on the GPU: three 3D images (Rayleigh inscatter, Mie inscatter,
-// transmittance; phase-free) filled by shaders/frame/froxel.comp from the precomputed tables.
+// transmittance; phase-free) filled by shaders/frame/froxel.comp from the precomputed tables,
+// single scattering shadowed through the sun's shadow map.
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/vk/compute_pipeline.h"
 #include "froxel/froxel_grid.h"
@@ -12,9 +13,11 @@ class FroxelVolume {
  public:
   FroxelVolume(const vk::Context& context, const FroxelGrid& grid);
 
-  // Records the froxel pass. frame_uniforms: the FrameBlock buffer of this frame.
+  // Records the froxel pass. frame_uniforms: the FrameBlock buffer of this frame; shadow_uniforms
+  // and shadow_map: the ShadowBlock and the depth atlas of shaders/include/shadow.glsl.
   void Build(const ::vk::raii::CommandBuffer& cmd, const AtmosphereTables& tables,
-             const vk::Buffer& frame_uniforms) const;
+             const vk::Buffer& frame_uniforms, const vk::Buffer& shadow_uniforms,
+             const vk::SampledImageSlot& shadow_map) const;
 
   const FroxelGrid& grid() const { return grid_; }
   const vk::Image& rayleigh() const { return rayleigh_; }

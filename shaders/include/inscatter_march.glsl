@@ -9,7 +9,10 @@
 //  - Multiple scattering: the scattering density of orders >= 2, J_ms (the multiple density table),
 //    attenuated back to the camera: Bruneton 2008 eq. 12 over the segment, all orders at once.
 // The march is incremental, so that the froxel pass integrates a whole column in one walk, and
-// each step takes the sun's visibility at its end, for shadowed single scattering.
+// each step takes the fraction of it from which the sun is visible (shadow.glsl), which scales
+// its single scattering: shadowed in-scattering (light shafts, mountain shadows in the air).
+// Multiple scattering is left unshadowed: it arrives from the whole sky, and an occluder of a few
+// km hides the sun, not the sky, from the air behind it.
 #ifndef AERIAL_INSCATTER_MARCH_GLSL
 #define AERIAL_INSCATTER_MARCH_GLSL
 #include "scattering.glsl"
@@ -35,7 +38,7 @@ struct InscatterMarch {
 };
 
 void SampleInscatterIntegrands(sampler2D transmittance_texture, sampler3D multiple_density_texture,
-                               inout InscatterMarch march, float d, float sun_visibility) {
+                               inout InscatterMarch march, float d) {
   float r_d = RadiusAtDistance(march.r, march.mu, d);
   float mu_d = MuAtDistance(march.r, march.mu, d, r_d);
   float mu_s_d = SunCosineAlongRay(march.r, march.mu_s, march.nu, d, r_d);
@@ -44,8 +47,6 @@ void SampleInscatterIntegrands(sampler2D transmittance_texture, sampler3D multip
                                                    march.mu, d, march.ray_r_mu_intersects_ground);
   ComputeSingleScatteringIntegrandAt(transmittance_texture, r_d, mu_s_d, march.transmittance,
                                      march.rayleigh_integrand, march.mie_integrand);
-  march.rayleigh_integrand *= sun_visibility;
-  march.mie_integrand *= sun_visibility;
   march.multiple_integrand =
       march.transmittance * GetMultipleScatteringDensity(multiple_density_texture, r_d, mu_d,
                                                          mu_s_d, march.nu,
@@ -55,7 +56,7 @@ void SampleInscatterIntegrands(sampler2D transmittance_texture, sampler3D multip
 // A march of the view ray (r, mu) with the sun at (mu_s, nu), at the camera.
 InscatterMarch StartInscatterMarch(sampler2D transmittance_texture,
                                    sampler3D multiple_density_texture, float r, float mu,
-                                   float mu_s, float nu, float sun_visibility) {
+                                   float mu_s, float nu) {
   InscatterMarch march;
   march.r = r;
   march.mu = mu;
@@ -67,13 +68,12 @@ InscatterMarch StartInscatterMarch(sampler2D transmittance_texture,
   march.rayleigh_sum = vec3(0.0);
   march.mie_sum = vec3(0.0);
   march.multiple_sum = vec3(0.0);
-  SampleInscatterIntegrands(transmittance_texture, multiple_density_texture, march, 0.0,
-                            sun_visibility);
+  SampleInscatterIntegrands(transmittance_texture, multiple_density_texture, march, 0.0);
   return march;
 }
 
 // Moves the march to distance d (clamped to the atmosphere), integrating the step with
-// ExponentialStepIntegral; sun_visibility is the sun's visibility at d.
+// ExponentialStepIntegral; sun_visibility: the fraction of the step that sees the sun.
 void AdvanceInscatterMarch(sampler2D transmittance_texture, sampler3D multiple_density_texture,
                            inout InscatterMarch march, float d, float sun_visibility) {
   d = min(d, DistanceToNearestAtmosphereBoundary(march.r, march.mu,
@@ -83,10 +83,10 @@ void AdvanceInscatterMarch(sampler2D transmittance_texture, sampler3D multiple_d
   vec3 rayleigh_previous = march.rayleigh_integrand;
   vec3 mie_previous = march.mie_integrand;
   vec3 multiple_previous = march.multiple_integrand;
-  SampleInscatterIntegrands(transmittance_texture, multiple_density_texture, march, d,
-                            sun_visibility);
-  march.rayleigh_sum += ExponentialStepIntegral(rayleigh_previous, march.rayleigh_integrand) * dx;
-  march.mie_sum += ExponentialStepIntegral(mie_previous, march.mie_integrand) * dx;
+  SampleInscatterIntegrands(transmittance_texture, multiple_density_texture, march, d);
+  float lit = sun_visibility * dx;
+  march.rayleigh_sum += ExponentialStepIntegral(rayleigh_previous, march.rayleigh_integrand) * lit;
+  march.mie_sum += ExponentialStepIntegral(mie_previous, march.mie_integrand) * lit;
   march.multiple_sum +=
       ExponentialStepIntegral(multiple_previous, march.multiple_integrand) * dx;
 }

@@ -50,7 +50,7 @@ Inscatter GetSkyInscatterToPoint(sampler2D transmittance_texture,
                                  sampler3D multiple_density_texture, float r, float mu, float mu_s,
                                  float nu, float d) {
   InscatterMarch march = StartInscatterMarch(transmittance_texture, multiple_density_texture, r,
-                                             mu, mu_s, nu, 1.0);
+                                             mu, mu_s, nu);
   d = min(d, DistanceToNearestAtmosphereBoundary(r, mu, march.ray_r_mu_intersects_ground));
   for (int i = 1; i <= SEGMENT_STEPS; ++i) {
     AdvanceInscatterMarch(transmittance_texture, multiple_density_texture, march,

@@ -264,6 +264,7 @@ void Renderer::RecordShadowMap(const ::vk::raii::CommandBuffer& cmd, const Scene
   if (shadow_key_ && shadow_key_->clip_from_world == key.clip_from_world && SameChunks(shadow_key_->chunks, key.chunks))
     return;
   shadow_map_.Record(cmd, shadow_cascades_, scene.camera.position, geometry_, terrain_.get(), key.chunks);
+  vk::FullBarrier(cmd);  // the froxel pass and the surfaces read it
   shadow_key_ = std::move(key);
   frame_info_.shadow_map_updated = true;
 }
@@ -328,9 +329,12 @@ void Renderer::Record(const ::vk::raii::CommandBuffer& cmd, const Scene& scene, 
   shadow_buffers_[slot].Write(std::as_bytes(std::span(&shadow, 1)));
   if (options_.mode == AerialMode::kFroxel) {
     timer.Begin(cmd, "froxel build");
-    // The volume depends on the camera, the sun and the tables only: a still view keeps it.
-    if (!froxels_key_ || std::memcmp(&*froxels_key_, &frame_uniforms_, sizeof(FrameUniforms)) != 0) {
-      froxels_.Build(cmd, tables_, frame);
+    // The volume depends on the camera, the sun, the shadow map and the tables only: a still view
+    // keeps it.
+    if (!froxels_key_ || frame_info_.shadow_map_updated ||
+        std::memcmp(&*froxels_key_, &frame_uniforms_, sizeof(FrameUniforms)) != 0) {
+      froxels_.Build(cmd, tables_, frame, shadow_buffers_[slot],
+                     vk::SampledImageSlot{&shadow_map_.atlas(), shadow_map_.sampler()});
       froxels_key_ = frame_uniforms_;
       frame_info_.froxels_updated = true;
     }
