@@ -342,6 +342,7 @@ TEST_F(FroxelShadows, UnoccludedColumnsUnchangedAndShadowedStretchesWithoutSingl
   const int slices = v.on.grid.depth;
   int unoccluded = 0, shadowed = 0;
   double worst_unoccluded = 0.0, worst_shadowed = 0.0;
+  double multiple_low = 1.0, multiple_high = 0.0;  // Rayleigh growth in shadow over the unshadowed
   for (int y = 0; y < v.on.grid.height; y += 4) {
     for (int x = 0; x < v.on.grid.width; x += 4) {
       auto seen = ColumnVisibility(v, x, y, slices);
@@ -362,6 +363,8 @@ TEST_F(FroxelShadows, UnoccludedColumnsUnchangedAndShadowedStretchesWithoutSingl
           double rayleigh_off = RayleighGreen(v.off, x, y, k) - RayleighGreen(v.off, x, y, k - 1);
           if (!(grown_off > 0.0)) continue;
           worst_shadowed = std::max(worst_shadowed, std::abs(grown_on) / grown_off);
+          multiple_low = std::min(multiple_low, rayleigh_on / rayleigh_off);
+          multiple_high = std::max(multiple_high, rayleigh_on / rayleigh_off);
           EXPECT_GT(rayleigh_on, 0.0) << x << " " << y << " " << k;
           EXPECT_LT(rayleigh_on, rayleigh_off) << x << " " << y << " " << k;
           ++shadowed;
@@ -369,8 +372,10 @@ TEST_F(FroxelShadows, UnoccludedColumnsUnchangedAndShadowedStretchesWithoutSingl
       }
     }
   }
-  std::printf("froxels: %d unoccluded, worst %.4f%%; %d shadowed slice steps, Mie growth at most %.4f%% of the unshadowed\n",
-              unoccluded, 100 * worst_unoccluded, shadowed, 100 * worst_shadowed);
+  std::printf("froxels: %d unoccluded, worst %.4f%%; %d shadowed slice steps, Mie growth at most %.4f%% of the "
+              "unshadowed, Rayleigh growth %.0f-%.0f%% of it\n",
+              unoccluded, 100 * worst_unoccluded, shadowed, 100 * worst_shadowed, 100 * multiple_low,
+              100 * multiple_high);
   EXPECT_GT(unoccluded, 100);
   EXPECT_GT(shadowed, 20);
   EXPECT_LE(worst_unoccluded, 0.005);
