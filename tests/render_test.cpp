@@ -40,13 +40,16 @@ TEST_F(Render, OutputIsFiniteAndNonNegative) {
 }
 
 // Opaque pixels beyond 1 km (the measure): froxel aerial perspective against the
-// per-pixel path, relative RMSE over those pixels only.
+// per-pixel path, relative RMSE over those pixels only. Shadows off: per-pixel mode does not
+// shadow the air, and this measures the froxels' interpolation.
 TEST_F(Render, FroxelMatchesPerPixelBeyondOneKilometer) {
   const AtmosphereTables& tables = FullTables();
   Scene scene = BuildPreset("noon", tables.atmosphere().bottom_radius_m);
   std::erase_if(scene.meshes, [](const Mesh& m) { return m.transparent; });
-  Renderer froxel(tables, scene, {.width = kWidth, .height = kHeight, .mode = AerialMode::kFroxel});
-  Renderer per_pixel(tables, scene, {.width = kWidth, .height = kHeight, .mode = AerialMode::kPerPixel});
+  Renderer froxel(tables, scene,
+                  {.width = kWidth, .height = kHeight, .mode = AerialMode::kFroxel, .shadows = false});
+  Renderer per_pixel(tables, scene,
+                     {.width = kWidth, .height = kHeight, .mode = AerialMode::kPerPixel, .shadows = false});
   froxel.Render(scene);
   per_pixel.Render(scene);
   ImageRgbF surface = froxel.ReadSurface();
@@ -65,14 +68,18 @@ TEST_F(Render, FroxelMatchesPerPixelBeyondOneKilometer) {
 }
 
 // Sky pixels read the per-frame sky-view table (froxel mode) or the tables (per-pixel mode):
-// over a sky-only frame, for each preset's view and sun, the two agree within a bound.
+// over a frame without the meshes, for each preset's view and sun, the two agree within a bound.
+// Shadows off: per-pixel mode does not shadow the air (README, "Shadows"), and the terrain's
+// pixels would measure that instead of the sky.
 TEST_F(Render, SkyViewTableMatchesPerPixelSky) {
   const AtmosphereTables& tables = FullTables();
   for (const std::string& preset : PresetNames()) {
     Scene scene = BuildPreset(preset, tables.atmosphere().bottom_radius_m);
     scene.meshes.clear();
-    Renderer table(tables, scene, {.width = kWidth, .height = kHeight, .mode = AerialMode::kFroxel});
-    Renderer direct(tables, scene, {.width = kWidth, .height = kHeight, .mode = AerialMode::kPerPixel});
+    Renderer table(tables, scene,
+                   {.width = kWidth, .height = kHeight, .mode = AerialMode::kFroxel, .shadows = false});
+    Renderer direct(tables, scene,
+                    {.width = kWidth, .height = kHeight, .mode = AerialMode::kPerPixel, .shadows = false});
     table.Render(scene);
     direct.Render(scene);
     double rmse = RelativeRmse(table.ReadOutput(), direct.ReadOutput());
@@ -137,14 +144,15 @@ TEST_F(Render, MatchesGoldenImages) {
 }
 
 // Transparent objects read the froxels per vertex: over the pixels they cover, the image matches
-// the per-pixel path within a bound. Measured on the noon preset (balloon, panes, particle cloud).
+// the per-pixel path within a bound. Measured on the noon preset (balloon, panes, particle cloud),
+// shadows off (per-pixel mode does not shadow the air).
 TEST_F(Render, TransparentPerVertexMatchesPerPixel) {
   const AtmosphereTables& tables = FullTables();
   Scene scene = BuildPreset("noon", tables.atmosphere().bottom_radius_m);
   Scene opaque_only = scene;
   std::erase_if(opaque_only.meshes, [](const Mesh& m) { return m.transparent; });
   auto render = [&](const Scene& s, AerialMode mode) {
-    Renderer renderer(tables, s, {.width = kWidth, .height = kHeight, .mode = mode});
+    Renderer renderer(tables, s, {.width = kWidth, .height = kHeight, .mode = mode, .shadows = false});
     renderer.Render(s);
     return renderer.ReadOutput();
   };
