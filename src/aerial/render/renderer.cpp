@@ -276,7 +276,7 @@ std::vector<vk::Slot> Renderer::MeshSlots(uint32_t slot) const {
           sampled(tables_.transmittance()), sampled(tables_.irradiance()),
           sampled(tables_.multiple_density()), sampled(froxels_.rayleigh()), sampled(froxels_.mie()),
           sampled(froxels_.transmittance()), vk::UniformBufferSlot{&shadow_buffers_[slot]},
-          vk::SampledImageSlot{&shadow_map_.atlas(), shadow_map_.sampler()}};
+          shadow_map_.slot()};
 }
 
 // Nearest first, so that early depth tests skip the shading of what is hidden: the scene's meshes
@@ -334,7 +334,7 @@ void Renderer::Record(const ::vk::raii::CommandBuffer& cmd, const Scene& scene, 
     if (!froxels_key_ || frame_info_.shadow_map_updated ||
         std::memcmp(&*froxels_key_, &frame_uniforms_, sizeof(FrameUniforms)) != 0) {
       froxels_.Build(cmd, tables_, frame, shadow_buffers_[slot],
-                     vk::SampledImageSlot{&shadow_map_.atlas(), shadow_map_.sampler()});
+                     shadow_map_.slot());
       froxels_key_ = frame_uniforms_;
       frame_info_.froxels_updated = true;
     }

@@ -40,6 +40,8 @@ class ShadowMap {
 
   const vk::Image& atlas() const { return atlas_; }
   ::vk::Sampler sampler() const { return *sampler_; }
+  // The atlas with its comparing sampler, as the shaders bind it (shadow_map in shadow.glsl).
+  vk::SampledImageSlot slot() const { return {&atlas_, *sampler_}; }
 
  private:
   vk::Image atlas_;
