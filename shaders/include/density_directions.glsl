@@ -27,6 +27,10 @@ float SkyZenithFromUnitRange(float t, float theta_h) {
   return theta_h * (1.0 - s * s);
 }
 
+float GroundZenithFromUnitRange(float t, float theta_h) {
+  return theta_h + (PI - theta_h) * t * t;
+}
+
 // Direction `index` of the grid at radius r: xyz is the unit vector, w the cell's solid angle.
 vec4 GetDensityDirection(float r, int index) {
   int theta_up = atmosphere.density_directions.x;
@@ -42,8 +46,8 @@ vec4 GetDensityDirection(float r, int index) {
     theta_b = SkyZenithFromUnitRange(float(theta_index + 1) / float(theta_up), theta_h);
   } else {
     int k = theta_index - theta_up;
-    theta_a = theta_h + (PI - theta_h) * float(k) / float(theta_down);
-    theta_b = theta_h + (PI - theta_h) * float(k + 1) / float(theta_down);
+    theta_a = GroundZenithFromUnitRange(float(k) / float(theta_down), theta_h);
+    theta_b = GroundZenithFromUnitRange(float(k + 1) / float(theta_down), theta_h);
   }
   float d_phi = PI / float(phi_count);
   float theta = 0.5 * (theta_a + theta_b);
