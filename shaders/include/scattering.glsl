@@ -57,10 +57,9 @@ void ComputeSingleScatteringIntegrand(sampler2D transmittance_texture, vec3 orig
 
 // Single scattering (Bruneton 2008 eq. 11 without the phase function), integrated over the
 // distance to the nearest boundary in equal steps with ExponentialStepIntegral.
-void ComputeSingleScattering(sampler2D transmittance_texture, float r, float mu, float mu_s,
-                             float nu, bool ray_r_mu_intersects_ground, out vec3 rayleigh,
-                             out vec3 mie) {
-  int steps = atmosphere.sample_counts.y;
+void ComputeSingleScatteringInSteps(sampler2D transmittance_texture, float r, float mu,
+                                     float mu_s, float nu, bool ray_r_mu_intersects_ground,
+                                     int steps, out vec3 rayleigh, out vec3 mie) {
   float dx = DistanceToNearestAtmosphereBoundary(r, mu, ray_r_mu_intersects_ground) / float(steps);
   vec3 origin = GetRayOpticalDepthOrigin(transmittance_texture, r, mu, ray_r_mu_intersects_ground);
   vec3 rayleigh_sum = vec3(0.0);
@@ -82,6 +81,13 @@ void ComputeSingleScattering(sampler2D transmittance_texture, float r, float mu,
   vec3 sun = atmosphere.solar_irradiance.rgb * dx;
   rayleigh = rayleigh_sum * sun * atmosphere.rayleigh_scattering.rgb;
   mie = mie_sum * sun * atmosphere.mie_scattering.rgb;
+}
+
+void ComputeSingleScattering(sampler2D transmittance_texture, float r, float mu, float mu_s,
+                             float nu, bool ray_r_mu_intersects_ground, out vec3 rayleigh,
+                             out vec3 mie) {
+  ComputeSingleScatteringInSteps(transmittance_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground,
+                                 atmosphere.sample_counts.y, rayleigh, mie);
 }
 
 // Reads of a 4D table packed in 3D (x = nu_index * MU_S + mu_s_index) interpolate linearly in nu

@@ -41,7 +41,8 @@ struct Pipelines {
         scattering_density(c, "precompute/scattering_density.comp",
                            {kUniform, kStorageBuffer, kStorageBuffer, kStorageImage}),
         indirect_irradiance(c, "precompute/indirect_irradiance.comp",
-                            {kUniform, kSampled, kSampled, kSampled, kSampled, kStorageImage, kStorageImage},
+                            {kUniform, kSampled, kSampled, kSampled, kSampled, kStorageImage, kStorageImage,
+                             kSampled},
                             sizeof(SeriesStep)),
         multiple_scattering(c, "precompute/multiple_scattering.comp",
                             {kUniform, kSampled, kSampled, kStorageImage}),
@@ -228,7 +229,7 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
                 sampled(scratch.delta_multiple[radiance_order % 2]),
                 sampled(scratch.delta_irradiance[(radiance_order + 1) % 2]),
                 vk::StorageImageSlot{&scratch.delta_irradiance[radiance_order % 2]},
-                vk::StorageImageSlot{&tables.irradiance()}},
+                vk::StorageImageSlot{&tables.irradiance()}, sampled(tables.transmittance())},
           Extent2D(tables.irradiance()), {8, 8, 1}, &step);
     });
   };
