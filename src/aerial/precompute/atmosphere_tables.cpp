@@ -3,6 +3,7 @@
 #include <array>
 #include <cstring>
 
+#include "aerial/core/checksum.h"
 #include "aerial/core/error.h"
 #include "aerial/vk/shader_registry.h"
 
@@ -86,9 +87,9 @@ AtmosphereTables::AtmosphereTables(const vk::Context& context,
 size_t AtmosphereTables::table_bytes() const { return TableMemory(options_).total(); }
 
 TableCacheKey MakeTableCacheKey(const AtmosphereParameters& atmosphere,
-                                const PrecomputeOptions& options) {
+                                const PrecomputeOptions& options, std::string_view version) {
   return {.atmosphere_hash = atmosphere.Hash(),
-          .options_hash = options.Hash() ^ shaders::Fingerprint()};
+          .options_hash = options.Hash() ^ shaders::Fingerprint() ^ Checksum(version)};
 }
 
 TableCacheKey AtmosphereTables::cache_key() const { return MakeTableCacheKey(atmosphere_, options_); }

@@ -9,6 +9,7 @@
 // scattering directly (Bruneton 2008 eq. 12 restricted to the segment).
 // Shaders read them through shaders/include/sky_lookup.glsl whatever the variant.
 #include <memory>
+#include <string_view>
 
 #include "aerial/atmosphere/parameters.h"
 #include "aerial/precompute/atmosphere_uniforms.h"
@@ -19,9 +20,11 @@
 namespace aerial {
 
 // The cache key of tables computed for these parameters by this build: the atmosphere, the
-// options and the shaders (tables computed by another build are recomputed).
+// options, the shaders and aerial's version (tables computed by another build or release are
+// recomputed).
 TableCacheKey MakeTableCacheKey(const AtmosphereParameters& atmosphere,
-                                const PrecomputeOptions& options);
+                                const PrecomputeOptions& options,
+                                std::string_view version = AERIAL_VERSION);
 
 // Memory by what sizes it (the --transmittance-size, --irradiance-size, --scattering-size and
 // --multiple-density-size options), in bytes: used for the tables themselves and for the precompute's scratch tables.
