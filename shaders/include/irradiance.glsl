@@ -91,34 +91,6 @@ vec3 ComputeIndirectIrradiance(sampler2D transmittance_texture, sampler3D single
 // on the default table (3.7% off the reference there, 1.3% on the rows themselves;
 // aerial_bench_sky and aerial probe at the rows' altitudes). Where either row is zero (night
 // side) the read falls back to linear.
-// Indirect irradiance of order 1, from single scattering integrated along each direction
-// (ComputeSingleScattering) instead of read from the single scattering tables: near and below the
-// horizon those tables are interpolated in mu_s across the edge of the Earth's shadow, where
-// single scattering changes faster than the texels follow (13-27% off at sun zenith 95 degrees).
-// The midpoint rule of ComputeIndirectIrradiance, on its own grid.
-vec3 ComputeSingleScatteringIrradiance(sampler2D transmittance_texture, float r, float mu_s,
-                                       int zenith_samples, int azimuth_samples) {
-  float d_theta = 0.5 * PI / float(zenith_samples);
-  float d_phi = PI / float(azimuth_samples);
-  vec3 omega_s = vec3(sqrt(max(1.0 - mu_s * mu_s, 0.0)), 0.0, mu_s);
-  vec3 irradiance = vec3(0.0);
-  for (int j = 0; j < zenith_samples; ++j) {
-    float theta = (float(j) + 0.5) * d_theta;
-    for (int i = 0; i < azimuth_samples; ++i) {
-      float phi = (float(i) + 0.5) * d_phi;
-      vec3 omega = vec3(cos(phi) * sin(theta), sin(phi) * sin(theta), cos(theta));
-      float domega = 2.0 * d_theta * d_phi * sin(theta);  // twice: the mirrored azimuth
-      float nu = dot(omega, omega_s);
-      vec3 rayleigh;
-      vec3 mie;
-      ComputeSingleScattering(transmittance_texture, r, omega.z, mu_s, nu, false, rayleigh, mie);
-      irradiance += (rayleigh * RayleighPhaseFunction(nu) +
-                     mie * MiePhaseFunction(atmosphere.mie_phase_g, nu)) * omega.z * domega;
-    }
-  }
-  return irradiance;
-}
-
 vec3 GetIrradiance(sampler2D irradiance_texture, float r, float mu_s) {
   vec2 uv = GetIrradianceTextureUvFromRMuS(r, mu_s);
   float rows = float(atmosphere.irradiance_size.y);
