@@ -15,8 +15,8 @@
 #include <string>
 
 #include "aerial/precompute/atmosphere_uniforms.h"
-#include "aerial/render/frame_uniforms.h"
 #include "aerial/render/shadow_uniforms.h"
+#include "aerial/shader_abi/frame_block.h"
 
 namespace aerial {
 namespace {

@@ -1,7 +1,5 @@
 #include "aerial/render/frame_uniforms.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
 #include "aerial/scene/camera.h"
 
 namespace aerial {
@@ -10,13 +8,6 @@ namespace {
 std::array<float, 4> ToFloat4(const glm::dvec3& v) { return {float(v.x), float(v.y), float(v.z), 0.0f}; }
 
 }  // namespace
-
-std::array<float, 16> ToColumnMajorFloats(const glm::dmat4& m) {
-  std::array<float, 16> out;
-  const double* p = glm::value_ptr(m);
-  for (int i = 0; i < 16; ++i) out[i] = float(p[i]);
-  return out;
-}
 
 FrameUniforms MakeFrameUniforms(const Scene& scene, double planet_radius_m, int width, int height,
                                 const FroxelGrid& froxels) {
@@ -36,14 +27,6 @@ FrameUniforms MakeFrameUniforms(const Scene& scene, double planet_radius_m, int 
   u.froxel_depth = {float(froxels.far_m), 0, 0, 0};
   u.viewport = {float(width), float(height), 0, 0};
   return u;
-}
-
-glm::dvec3 ViewRayFromScreen(const FrameUniforms& frame, glm::dvec2 uv) {
-  glm::dmat4 inverse;  // column-major, as std140 stores it
-  for (int column = 0; column < 4; ++column)
-    for (int row = 0; row < 4; ++row) inverse[column][row] = frame.inverse_view_projection[column * 4 + row];
-  glm::dvec4 world = inverse * glm::dvec4(uv * 2.0 - 1.0, 0.5, 1.0);
-  return glm::normalize(glm::dvec3(world) / world.w);
 }
 
 }  // namespace aerial
