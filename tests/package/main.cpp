@@ -1,6 +1,7 @@
 // The installed library end to end: an atmosphere file loaded and validated, small 4D tables
 // precomputed on the Vulkan device (lavapipe here), and the tables' zenith transmittance from the
-// ground checked against aerial's CPU reference in double precision. It uses aerial's own Vulkan
+// ground checked against aerial's CPU reference in double precision; and a shared library of the
+// client's that links aerial as well (position-independent code). It uses aerial's own Vulkan
 // context: the device hand-off to a caller's device is not part of the package yet.
 //   package_client ATMOSPHERE.toml CACHE_DIR
 #include <cmath>
@@ -13,6 +14,8 @@
 #include "aerial/probe/table_probe.h"
 #include "aerial/reference/reference.h"
 #include "aerial/vk/context.h"
+
+extern "C" double PluginPlanetRadiusM();  // plugin.cpp, a shared library that links aerial too
 
 int main(int argc, char** argv) {
   if (argc != 3) {
@@ -39,6 +42,9 @@ int main(int argc, char** argv) {
                   tables.transmittance[c], expected[c], 100.0 * error);
       ok = ok && error < 5e-3;
     }
+    double plugin_radius = PluginPlanetRadiusM();
+    std::printf("planet radius through the shared library: %.0f m\n", plugin_radius);
+    ok = ok && plugin_radius == aerial::AtmosphereParameters::Earth().bottom_radius_m;
     // As in every test here, a validation message (with AERIAL_VALIDATION=1) is a failure.
     int messages = aerial::vk::Context::ValidationMessageCount();
     std::printf("validation messages: %d\n", messages);
