@@ -76,4 +76,13 @@ vec3 ExponentialStepIntegral(vec3 f0, vec3 f1) {
   return mix(trapezoid, (f1 - f0) / log_ratio, use_log);
 }
 
+// Interpolation at t in [0, 1] between two samples of a function that varies exponentially in
+// between (a table's rows in r: the air's density falls exponentially with altitude): a geometric
+// mix. Where either sample is zero (the night side) the mix is linear.
+vec3 MixExponentially(vec3 a, vec3 b, float t) {
+  bvec3 use_log = greaterThan(min(a, b), vec3(1e-30));
+  vec3 exponential = exp(mix(log(max(a, vec3(1e-30))), log(max(b, vec3(1e-30))), t));
+  return mix(mix(a, b, t), exponential, use_log);  // a selection: use_log is a bvec3
+}
+
 #endif

@@ -89,8 +89,7 @@ vec3 ComputeIndirectIrradiance(sampler2D transmittance_texture, sampler3D single
 // it falls off roughly exponentially with altitude (to half over 3.5 km at 50 km up, where the
 // rows are 3.5 km apart), so linear interpolation overestimates it between rows: by 2.4% at 50 km
 // on the default table (3.7% off the reference there, 1.3% on the rows themselves;
-// aerial_bench_sky and aerial probe at the rows' altitudes). Where either row is zero (night
-// side) the read falls back to linear.
+// aerial_bench_sky and aerial probe at the rows' altitudes).
 vec3 GetIrradiance(sampler2D irradiance_texture, float r, float mu_s) {
   vec2 uv = GetIrradianceTextureUvFromRMuS(r, mu_s);
   float rows = float(atmosphere.irradiance_size.y);
@@ -100,9 +99,7 @@ vec3 GetIrradiance(sampler2D irradiance_texture, float r, float mu_s) {
   vec3 e0 = textureLod(irradiance_texture, vec2(uv.x, (row0 + 0.5) / rows), 0.0).rgb;
   if (t == 0.0) return e0;
   vec3 e1 = textureLod(irradiance_texture, vec2(uv.x, (row0 + 1.5) / rows), 0.0).rgb;
-  bvec3 use_log = greaterThan(min(e0, e1), vec3(1e-30));
-  vec3 exponential = exp(mix(log(max(e0, vec3(1e-30))), log(max(e1, vec3(1e-30))), t));
-  return mix(mix(e0, e1, t), exponential, use_log);  // a selection: use_log is a bvec3
+  return MixExponentially(e0, e1, t);
 }
 
 #endif

@@ -164,9 +164,7 @@ vec3 GetScatteringBlendedExponentialInR(sampler3D scattering_texture, ivec4 size
   if (t == 0.0) return s0;  // on a slice (a camera on the ground): uniform over a frame's pixels
   vec3 s1 = GetScatteringBlended(scattering_texture, size, nu_blend,
                                  vec3(uvwz.yz, (slice0 + 1.5) / r_size));
-  bvec3 use_log = greaterThan(min(s0, s1), vec3(1e-30));
-  vec3 exponential = exp(mix(log(max(s0, vec3(1e-30))), log(max(s1, vec3(1e-30))), t));
-  return mix(mix(s0, s1, t), exponential, use_log);  // a selection: use_log is a bvec3
+  return MixExponentially(s0, s1, t);
 }
 
 // The render-time read of the final radiance tables.
