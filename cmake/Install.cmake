@@ -14,7 +14,9 @@ install(DIRECTORY froxel DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING 
 # shaders to #include.
 install(DIRECTORY shaders/include/ DESTINATION ${CMAKE_INSTALL_DATADIR}/aerial/glsl)
 
-if(CMAKE_BUILD_TYPE MATCHES "^(Release|RelWithDebInfo|MinSizeRel)$")
+# The build types that define NDEBUG, here and in a client (aerialConfig.cmake.in).
+set(AERIAL_NDEBUG_BUILD_TYPES "Release|RelWithDebInfo|MinSizeRel")
+if(CMAKE_BUILD_TYPE MATCHES "^(${AERIAL_NDEBUG_BUILD_TYPES})$")
   set(AERIAL_NDEBUG TRUE)
 else()
   set(AERIAL_NDEBUG FALSE)
