@@ -270,6 +270,41 @@ TEST_F(ShadowRender, ShadowMapIsRedrawnOnlyWhenTheSunOrTheFitChanges) {
   EXPECT_FALSE(off.frame_info().shadow_map_updated);
 }
 
+// A frame of a still view reads the sun visibility that the frame before it looked up
+// (shaders/include/opaque_fragment.glsl): the same image to the bit, since the visibility is kept
+// in float. Any move (here the sun's) makes the next frame look it up again. The evening preset
+// has shadows on most of its terrain, so a cache read wrongly would change many pixels.
+TEST_F(ShadowRender, StillFrameReadsTheCachedSunVisibilityAndMatchesTheLookup) {
+  const AtmosphereTables& tables = SmallTables();
+  Scene scene = BuildPreset("evening", tables.atmosphere().bottom_radius_m);
+  Renderer renderer(tables, scene, {.width = kWidth, .height = kHeight});
+  renderer.Render(scene);
+  EXPECT_FALSE(renderer.frame_info().sun_visibility_cached) << "the first frame looks it up";
+  ImageRgbF looked_up = renderer.ReadOutput();
+  renderer.Render(scene, /*complete=*/false);
+  EXPECT_TRUE(renderer.frame_info().sun_visibility_cached) << "a still view";
+  ImageRgbF cached = renderer.ReadOutput();
+  auto differing_pixels = [](const ImageRgbF& a, const ImageRgbF& b) {
+    EXPECT_EQ(a.rgba.size(), size_t(kWidth) * kHeight * 4);
+    EXPECT_EQ(b.rgba.size(), a.rgba.size());
+    size_t different = 0;
+    for (size_t i = 0; i + 4 <= std::min(a.rgba.size(), b.rgba.size()); i += 4)
+      different += !std::equal(&a.rgba[i], &a.rgba[i] + 4, &b.rgba[i]);
+    return different;
+  };
+  EXPECT_EQ(differing_pixels(cached, looked_up), 0u) << "pixels of the cached frame unlike the looked-up one";
+
+  Renderer unshadowed(tables, scene, {.width = kWidth, .height = kHeight, .shadows = false});
+  unshadowed.Render(scene);
+  ImageRgbF off = unshadowed.ReadOutput();
+  EXPECT_GT(differing_pixels(cached, off), size_t(kWidth) * kHeight / 10)
+      << "pixels the shadows change: the cache must carry them";
+
+  scene.sun.zenith_deg += 0.5;
+  renderer.Render(scene, /*complete=*/false);
+  EXPECT_FALSE(renderer.frame_info().sun_visibility_cached) << "the sun moved";
+}
+
 // ---- Shadowed in-scattering in the froxel volume (shaders/frame/froxel.comp) ----
 // The evening preset's terrain, its froxel volume built with shadows on and off. The sun's
 // visibility along a column is decided on the CPU at the points where the shader samples it

@@ -27,18 +27,26 @@ constexpr uint32_t kTerrainChunkSlots = 8192;
 
 // Opaque and transparent meshes read the same resources: the atmosphere and frame blocks, the
 // transmittance and irradiance tables (lighting), the multiple density table (per-pixel mode),
-// the froxels, and the shadow block and map (shadow.glsl, SHADOW_BINDING 8).
-const std::vector<::vk::DescriptorType> kMeshSlots = {kUniform, kUniform, kSampled, kSampled, kSampled,
-                                                      kSampled, kSampled, kSampled, kUniform, kSampled};
+// the froxels, the shadow block and map (shadow.glsl, SHADOW_BINDING 8), and the screen's cached
+// sun visibility (opaque_fragment.glsl).
+const std::vector<::vk::DescriptorType> kMeshSlots = {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled,
+                                                      kSampled, kSampled, kUniform, kSampled, kSampled};
+
+// Where an opaque fragment's sun visibility comes from (opaque_fragment.glsl).
+enum class SunVisibilitySource { kShadowMap, kCache };
 
 // The mesh shaders' specialization constants: 0 aerial perspective per pixel (frame.glsl), 1 sun
-// shadows (shadow.glsl), 2 the sun's part of the lighting in surface.frag (SurfaceLight).
-std::vector<int32_t> MeshConstants(const RenderOptions& options, SurfaceLight light = SurfaceLight::kSunAndSky) {
-  return {PerPixel(options.mode), options.shadows ? 1 : 0, light == SurfaceLight::kSunAndSky ? 1 : 0};
+// shadows (shadow.glsl), 2 the sun's part of the lighting in surface.frag (SurfaceLight), 3 the
+// sun visibility read from the cache (opaque_fragment.glsl).
+std::vector<int32_t> MeshConstants(const RenderOptions& options, SurfaceLight light = SurfaceLight::kSunAndSky,
+                                   SunVisibilitySource source = SunVisibilitySource::kShadowMap) {
+  return {PerPixel(options.mode), options.shadows ? 1 : 0, light == SurfaceLight::kSunAndSky ? 1 : 0,
+          source == SunVisibilitySource::kCache ? 1 : 0};
 }
 
 vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std::string& fragment,
-                                            bool blended, std::vector<int32_t> constants) {
+                                            bool blended, std::vector<int32_t> constants,
+                                            std::vector<::vk::Format> color_formats = {kRadianceFormat}) {
   return {.vertex_shader = vertex,
           .fragment_shader = fragment,
           .slot_types = kMeshSlots,
@@ -47,7 +55,7 @@ vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std
                          {::vk::Format::eR32G32B32Sfloat, offsetof(Vertex, normal)},
                          {::vk::Format::eR32G32B32Sfloat, offsetof(Vertex, albedo)},
                          {::vk::Format::eR32Sfloat, offsetof(Vertex, opacity)}},
-          .color_formats = {kRadianceFormat},
+          .color_formats = std::move(color_formats),
           .depth_format = kDepthFormat,
           .depth_write = !blended,
           .alpha_blend = blended,
@@ -81,6 +89,23 @@ vk::ImageCreateInfo Target(const RenderOptions& o, ::vk::Format format, ::vk::Im
   return {.extent = {uint32_t(o.render_width()), uint32_t(o.render_height()), 1},
           .format = format,
           .usage = usage | ::vk::ImageUsageFlagBits::eSampled | ::vk::ImageUsageFlagBits::eTransferSrc};
+}
+
+// The screen's sun visibility (opaque_fragment.glsl), in float: a cached frame is then the frame
+// that wrote it, to the bit. Without shadows nothing reads it, and one texel stands in.
+constexpr ::vk::Format kSunVisibilityFormat = ::vk::Format::eR32Sfloat;
+
+vk::ImageCreateInfo SunVisibilityTarget(const RenderOptions& o) {
+  vk::ImageCreateInfo info = Target(o, kSunVisibilityFormat, ::vk::ImageUsageFlagBits::eColorAttachment);
+  if (!o.shadows) info.extent = ::vk::Extent3D{1, 1, 1};
+  return info;
+}
+
+// With shadows, the opaque pipeline that looks the sun visibility up and also writes it out.
+std::optional<vk::GraphicsPipeline> CachingOpaquePipeline(const vk::Context& context, const RenderOptions& o) {
+  if (!o.shadows) return std::nullopt;
+  return vk::GraphicsPipeline(context, MeshPipeline("frame/opaque.vert", "frame/opaque_caching.frag", false,
+                                                    MeshConstants(o), {kRadianceFormat, kSunVisibilityFormat}));
 }
 
 std::vector<Mesh> ReferenceTerrain(const Scene& scene, const RenderOptions& options, double R) {
@@ -121,7 +146,7 @@ FrameMemory EstimateFrameMemory(const RenderOptions& o) {
       .terrain = o.terrain == TerrainMode::kLod
                      ? uint64_t(kTerrainChunkSlots) * terrain::kChunkVertices * sizeof(Vertex)
                      : 0,
-      .shadows = ShadowMap::MemoryBytes(o.shadows),
+      .shadows = ShadowMap::MemoryBytes(o.shadows) + (o.shadows ? rendered * 4 : 0),  // + r32f visibility
   };
 }
 
@@ -146,6 +171,7 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       froxels_(tables.context(), options.froxels),
       depth_(tables.context(), Target(options, kDepthFormat, ::vk::ImageUsageFlagBits::eDepthStencilAttachment)),
       output_(tables.context(), Target(options, kRadianceFormat, ::vk::ImageUsageFlagBits::eColorAttachment)),
+      sun_visibility_(tables.context(), SunVisibilityTarget(options)),
       sky_rayleigh_(tables.context(), SkyViewImage()),
       sky_mie_(tables.context(), SkyViewImage()),
       sky_background_(tables.context(), SkyViewImage()),
@@ -155,11 +181,15 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
                 {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled,
                  vk::kStorageImage, vk::kStorageImage, vk::kStorageImage},
                 sizeof(kSkyViewSize)),
-      opaque_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/opaque.frag", false, MeshConstants(options))),
+      opaque_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/opaque.frag", false,
+                                             MeshConstants(options, SurfaceLight::kSunAndSky,
+                                                           options.shadows ? SunVisibilitySource::kCache
+                                                                           : SunVisibilitySource::kShadowMap))),
       sky_(tables.context(), SkyPipeline(options.mode)),
       transparent_(tables.context(),
                    MeshPipeline("frame/transparent.vert", "frame/transparent.frag", true, MeshConstants(options))),
-      surface_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/surface.frag", false, MeshConstants(options))) {
+      surface_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/surface.frag", false, MeshConstants(options))),
+      opaque_caching_(CachingOpaquePipeline(tables.context(), options)) {
   if (options.frames_in_flight < 1) throw Error("frames in flight", "0", "at least 1");
   for (uint32_t slot = 0; slot < options.frames_in_flight; ++slot) {
     frame_buffers_.emplace_back(tables.context(), vk::BufferCreateInfo{
@@ -173,7 +203,7 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
     timers_.push_back(std::make_unique<vk::GpuTimer>(tables.context()));
   }
   tables.context().Submit([&](const auto& cmd) {
-    for (const vk::Image* image : {&depth_, &output_, &sky_rayleigh_, &sky_mie_, &sky_background_})
+    for (const vk::Image* image : {&depth_, &output_, &sun_visibility_, &sky_rayleigh_, &sky_mie_, &sky_background_})
       image->InitializeLayout(cmd);
   });
 }
@@ -185,6 +215,7 @@ void Renderer::SetTerrainErrorPx(double error_px) {
   changed.terrain_error_px = error_px;
   changed.Validate();
   options_ = changed;
+  shadow_selection_whole_ = false;  // the shadow pass selects with the same bound
 }
 
 terrain::LodView Renderer::FrameLodView(const Scene& scene) const {
@@ -259,9 +290,16 @@ void Renderer::RecordShadowMap(const ::vk::raii::CommandBuffer& cmd, const Scene
   if (!options_.shadows) return;
   ShadowKey key;
   for (int i = 0; i < kShadowCascades; ++i) key.clip_from_world[i] = shadow_cascades_[i].clip_from_world;
-  if (terrain_ && options_.passes.terrain)
-    key.chunks = SelectShadowTerrain(FrameLodView(scene), shadow_cascades_, MakeLightBasis(sun), *terrain_);
-  if (shadow_key_ && shadow_key_->clip_from_world == key.clip_from_world && SameChunks(shadow_key_->chunks, key.chunks))
+  if (terrain_ && options_.passes.terrain) {
+    if (still_view_ && shadow_selection_whole_ && shadow_key_) {
+      key.chunks = shadow_key_->chunks;
+    } else {
+      int deferred = 0;
+      key.chunks = SelectShadowTerrain(FrameLodView(scene), shadow_cascades_, MakeLightBasis(sun), *terrain_, deferred);
+      shadow_selection_whole_ = deferred == 0;
+    }
+  }
+  if (shadow_key_ && shadow_key_->clip_from_world == key.clip_from_world && shadow_key_->chunks == key.chunks)
     return;
   shadow_map_.Record(cmd, shadow_cascades_, scene.camera.position, geometry_, terrain_.get(), key.chunks);
   vk::FullBarrier(cmd);  // the froxel pass and the surfaces read it
@@ -276,7 +314,7 @@ std::vector<vk::Slot> Renderer::MeshSlots(uint32_t slot) const {
           sampled(tables_.transmittance()), sampled(tables_.irradiance()),
           sampled(tables_.multiple_density()), sampled(froxels_.rayleigh()), sampled(froxels_.mie()),
           sampled(froxels_.transmittance()), vk::UniformBufferSlot{&shadow_buffers_[slot]},
-          shadow_map_.slot()};
+          shadow_map_.slot(), sampled(sun_visibility_)};
 }
 
 // Nearest first, so that early depth tests skip the shading of what is hidden: the scene's meshes
@@ -301,23 +339,57 @@ void Renderer::DrawOpaque(const ::vk::raii::CommandBuffer& cmd, const vk::Graphi
   }
 }
 
+// The sky where no geometry was drawn, then the transparent objects over everything, inside the
+// frame's Rendering scope.
+void Renderer::DrawSkyAndTransparent(const ::vk::raii::CommandBuffer& cmd, uint32_t slot,
+                                     const std::vector<vk::Slot>& mesh_slots) const {
+  vk::GpuTimer& timer = *timers_[slot];
+  ::vk::Sampler sampler = tables_.sampler();
+  auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
+  timer.Begin(cmd, "sky");
+  if (options_.passes.sky) {
+    sky_.Bind(cmd, {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame_buffers_[slot]},
+                    sampled(tables_.transmittance()), sampled(tables_.rayleigh()), sampled(tables_.mie()),
+                    sampled(tables_.multiple()), sampled(tables_.irradiance()), sampled(sky_rayleigh_),
+                    sampled(sky_mie_), sampled(sky_background_)});
+    vk::DrawFullScreenTriangle(cmd);
+  }
+  timer.End(cmd);
+  timer.Begin(cmd, "transparent raster");
+  if (options_.passes.transparent && geometry_.transparent_index_count() > 0) {
+    transparent_.Bind(cmd, mesh_slots);
+    vk::BindMesh(cmd, geometry_.transparent_vertices(), geometry_.transparent_indices(slot));
+    vk::DrawIndexed(cmd, geometry_.transparent_index_count());
+  }
+  timer.End(cmd);
+}
+
+// Whether this frame may read the sun visibility the last caching frame wrote: it draws the same
+// surfaces (its uniforms, so the camera and the sun, and its terrain chunks are that frame's)
+// under the same shadow map. Otherwise this frame writes it, and its key is this frame's.
+bool Renderer::SunVisibilityCached() {
+  if (sun_visibility_key_ && !frame_info_.shadow_map_updated && sun_visibility_key_->chunks == terrain_chunks_ &&
+      std::memcmp(&sun_visibility_key_->frame, &frame_uniforms_, sizeof(FrameUniforms)) == 0)
+    return true;
+  sun_visibility_key_ = SunVisibilityKey{frame_uniforms_, terrain_chunks_};
+  return false;
+}
+
 void Renderer::Record(const ::vk::raii::CommandBuffer& cmd, const Scene& scene, uint32_t slot,
                       bool complete) {
   if (slot >= options_.frames_in_flight)
     throw Error("frame slot", std::to_string(slot), "below " + std::to_string(options_.frames_in_flight));
   const vk::Buffer& frame = frame_buffers_[slot];
   vk::GpuTimer& timer = *timers_[slot];
-  frame_uniforms_ = MakeFrameUniforms(scene, tables_.atmosphere().bottom_radius_m, options_.render_width(),
-                                      options_.render_height(), options_.froxels);
+  FrameUniforms uniforms = MakeFrameUniforms(scene, tables_.atmosphere().bottom_radius_m, options_.render_width(),
+                                             options_.render_height(), options_.froxels);
+  still_view_ = frames_recorded_ > 0 && std::memcmp(&uniforms, &frame_uniforms_, sizeof(FrameUniforms)) == 0;
+  frame_uniforms_ = uniforms;
   frame_buffers_[slot].Write(std::as_bytes(std::span(&frame_uniforms_, 1)));
   geometry_.SortTransparent(scene.camera.position, slot);
   frame_info_ = {};
   SelectTerrain(scene, complete);
 
-  ::vk::Sampler sampler = tables_.sampler();
-  auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
-  vk::Slot atmosphere = vk::UniformBufferSlot{&tables_.uniform_buffer()};
-  vk::Slot frame_slot = vk::UniformBufferSlot{&frame};
   // The previous frame's reads and writes of the shared images come before this frame's.
   vk::FullBarrier(cmd);
   timer.Reset(cmd);
@@ -345,28 +417,31 @@ void Renderer::Record(const ::vk::raii::CommandBuffer& cmd, const Scene& scene, 
     vk::FullBarrier(cmd);
   }
   std::vector<vk::Slot> mesh_slots = MeshSlots(slot);
-  {
-    // Every pixel is written once by the opaque pass or the sky, so the output is not cleared.
-    vk::Rendering rendering(cmd, {.colors = {&output_}, .clear_colors = {std::nullopt},
-                                  .depth = &depth_, .clear_depth = 0.0f});
+  // Every pixel is written once by the opaque pass or the sky, so the output is not cleared.
+  vk::RenderTargets targets{.colors = {&output_}, .clear_colors = {std::nullopt}, .depth = &depth_, .clear_depth = 0.0f};
+  frame_info_.sun_visibility_cached = opaque_caching_ && SunVisibilityCached();
+  if (opaque_caching_ && !frame_info_.sun_visibility_cached) {
+    // The opaque pass writes the sun visibility as well, in a scope of its own: the sky and the
+    // transparent objects draw into the radiance alone.
+    {
+      vk::RenderTargets caching = targets;
+      caching.colors.push_back(&sun_visibility_);
+      caching.clear_colors.push_back(std::nullopt);  // only covered pixels are ever read
+      vk::Rendering rendering(cmd, caching);
+      timer.Begin(cmd, "opaque raster");
+      DrawOpaque(cmd, *opaque_caching_, mesh_slots);
+      timer.End(cmd);
+    }
+    vk::FullBarrier(cmd);
+    targets.clear_depth = std::nullopt;
+    vk::Rendering rendering(cmd, targets);
+    DrawSkyAndTransparent(cmd, slot, mesh_slots);
+  } else {
+    vk::Rendering rendering(cmd, targets);
     timer.Begin(cmd, "opaque raster");
     DrawOpaque(cmd, opaque_, mesh_slots);
     timer.End(cmd);
-    timer.Begin(cmd, "sky");
-    if (options_.passes.sky) {
-      sky_.Bind(cmd, {atmosphere, frame_slot, sampled(tables_.transmittance()), sampled(tables_.rayleigh()),
-                      sampled(tables_.mie()), sampled(tables_.multiple()), sampled(tables_.irradiance()),
-                      sampled(sky_rayleigh_), sampled(sky_mie_), sampled(sky_background_)});
-      vk::DrawFullScreenTriangle(cmd);
-    }
-    timer.End(cmd);
-    timer.Begin(cmd, "transparent raster");
-    if (options_.passes.transparent && geometry_.transparent_index_count() > 0) {
-      transparent_.Bind(cmd, mesh_slots);
-      vk::BindMesh(cmd, geometry_.transparent_vertices(), geometry_.transparent_indices(slot));
-      vk::DrawIndexed(cmd, geometry_.transparent_index_count());
-    }
-    timer.End(cmd);
+    DrawSkyAndTransparent(cmd, slot, mesh_slots);
   }
   vk::FullBarrier(cmd);
   ++frames_recorded_;

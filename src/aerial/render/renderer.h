@@ -87,6 +87,9 @@ struct FrameInfo {
   bool sky_view_updated = false;  // the sky-view table was remade (the camera's r or mu_s moved)
   bool froxels_updated = false;   // the froxel volume was rebuilt (the camera or the sun moved)
   bool shadow_map_updated = false;  // the shadow map was redrawn (shadow_map.h)
+  // The opaque pass read the sun visibility that an earlier frame of the same view looked up
+  // (opaque_fragment.glsl) instead of looking it up.
+  bool sun_visibility_cached = false;
 };
 
 // What ReadSurface draws of the lighting: all of it (the sun's part shadowed as in the frame), or
@@ -146,6 +149,9 @@ class Renderer {
   std::vector<vk::Slot> MeshSlots(uint32_t slot) const;
   void DrawOpaque(const ::vk::raii::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
                   const std::vector<vk::Slot>& slots) const;
+  void DrawSkyAndTransparent(const ::vk::raii::CommandBuffer& cmd, uint32_t slot,
+                             const std::vector<vk::Slot>& mesh_slots) const;
+  bool SunVisibilityCached();
 
   const AtmosphereTables& tables_;
   RenderOptions options_;
@@ -160,6 +166,14 @@ class Renderer {
   std::vector<std::unique_ptr<vk::GpuTimer>> timers_;
   FrameUniforms frame_uniforms_{};
   vk::Image depth_, output_;
+  // The sun's visibility of the front-most opaque surface at each pixel, as the last frame that
+  // looked it up in the shadow map drew it (opaque_fragment.glsl), and what that frame showed.
+  vk::Image sun_visibility_;
+  struct SunVisibilityKey {
+    FrameUniforms frame;
+    std::vector<terrain::SelectedChunk> chunks;
+  };
+  std::optional<SunVisibilityKey> sun_visibility_key_;
   vk::Image sky_rayleigh_, sky_mie_, sky_background_;
   // (r, mu_s) the sky-view table was made for: it depends on nothing else of the frame.
   std::optional<std::array<float, 2>> sky_view_key_;
@@ -174,8 +188,15 @@ class Renderer {
     ShadowTerrain chunks;
   };
   std::optional<ShadowKey> shadow_key_;
+  // The view did not move since the last frame, whose shadow terrain selection lacked no chunk:
+  // this frame's would be the same.
+  bool still_view_ = false;
+  bool shadow_selection_whole_ = false;
   vk::ComputePipeline sky_view_;
+  // opaque_ reads the sun visibility back when shadows are on (opaque_fragment.glsl);
+  // opaque_caching_, only then, looks it up and writes it.
   vk::GraphicsPipeline opaque_, sky_, transparent_, surface_;
+  std::optional<vk::GraphicsPipeline> opaque_caching_;
 };
 
 }  // namespace aerial

@@ -17,9 +17,9 @@ namespace aerial {
 // The chunks each cascade draws: those of the selection whose bounds meet the cascade's box.
 using ShadowTerrain = std::array<std::vector<terrain::SelectedChunk>, kShadowCascades>;
 
+// deferred: set to the number of chunks drawn in place of finer ones not built yet (a later call
+// with the same view may then pick other chunks).
 ShadowTerrain SelectShadowTerrain(const terrain::LodView& frame_view, const ShadowCascades& cascades,
-                                  const LightBasis& basis, terrain::ChunkSource& source);
-
-bool SameChunks(const ShadowTerrain& a, const ShadowTerrain& b);
+                                  const LightBasis& basis, terrain::ChunkSource& source, int& deferred);
 
 }  // namespace aerial

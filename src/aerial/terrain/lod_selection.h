@@ -65,6 +65,7 @@ struct SelectedChunk {
   // The sides whose neighbour is not drawn at the same level (ChunkSide bits): the only sides
   // where a crack can open, so the only ones that need the skirt.
   uint32_t skirts = kAllSides;
+  bool operator==(const SelectedChunk&) const = default;
 };
 
 struct Selection {

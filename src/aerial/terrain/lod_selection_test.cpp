@@ -89,8 +89,9 @@ TEST(LodSelection, EveryDrawnChunkMeetsTheErrorBound) {
   for (const SelectedChunk& s : selection.chunks) {
     const ChunkInfo& info = *chunks.Find(s.id);
     EXPECT_TRUE(IntersectsFrustum(view, info.bounds));
-    if (s.id.level < kMaxChunkLevel)
+    if (s.id.level < kMaxChunkLevel) {
       EXPECT_LE(ScreenSpaceErrorPx(view, info.geometric_error_m, info.bounds), kErrorPx);
+    }
   }
 }
 
