@@ -3,12 +3,13 @@
 // Renderers of the same scene (preset noon) draw frames in turn after warm-up frames
 // (aerial/bench/frame_measurement.h), the camera moving a little every frame so that each frame
 // rebuilds its froxel volume and sky-view table: the frame as `aerial render` and the viewer draw
-// it, and the same with a still camera; both again without the sun's shadow map (with the moving
-// camera every frame redraws the shadow map, with the still one it stays cached: the difference
-// is the shadows' cost in each case); the frame with aerial perspective read per pixel from the
+// it, the same with a still camera, and with a still camera under a moving sun; all three again
+// without the sun's shadow map (with the moving camera or sun every frame redraws the shadow map,
+// with the still view it stays cached, and so does the screen's sun visibility: the difference is
+// the shadows' cost in each case); the frame with aerial perspective read per pixel from the
 // tables; with the fixed 294K-triangle terrain mesh instead of the level of detail; without the
-// terrain's occlusion culling; and with one part left out at a time. lavapipe defers rasterization, so timestamps around the draws of the one
-// raster pass do not bound their work: a raster part's cost is the frame's time minus the time of
+// terrain's occlusion culling; and with one part left out at a time. lavapipe defers
+// rasterization, so timestamps around the draws of the one raster pass do not bound their work: a raster part's cost is the frame's time minus the time of
 // the frame without it. The compute passes' timestamps are reliable. Each frame also has its wall
 // clock time, CPU work included. A full-screen pass with one 3D tap, timed in the same run, is the
 // unit of cost.
@@ -50,7 +51,7 @@ struct BenchOptions {
 struct Configuration {
   std::string name;
   std::function<void(aerial::RenderOptions&)> change;
-  aerial::bench::CameraMotion motion = aerial::bench::CameraMotion::kMoving;
+  aerial::bench::Motion motion = aerial::bench::Motion::kCamera;
   std::vector<RunResult> frames;
   Stats Gpu() const { return Summarize(aerial::bench::GpuTotals(frames)); }
   Stats Wall() const { return Summarize(aerial::bench::WallTotals(frames)); }
@@ -80,14 +81,16 @@ void Bench(const BenchOptions& cli) {
                                                          aerial::TableStoreOptions{.quiet = true});
   aerial::Scene scene = aerial::BuildPreset("noon", atmosphere.bottom_radius_m);
   using aerial::RenderOptions;
-  using aerial::bench::CameraMotion;
+  using aerial::bench::Motion;
   auto same = [](RenderOptions&) {};
   // The parts measured by their absence come last (kFirstAblation on).
   std::vector<Configuration> configurations = {
       {"frame", same},
-      {"frame, still camera", same, CameraMotion::kStill},
+      {"frame, still camera", same, Motion::kStill},
       {"frame, no shadows", [](RenderOptions& o) { o.shadows = false; }},
-      {"frame, still camera, no shadows", [](RenderOptions& o) { o.shadows = false; }, CameraMotion::kStill},
+      {"frame, still camera, no shadows", [](RenderOptions& o) { o.shadows = false; }, Motion::kStill},
+      {"frame, moving sun", same, Motion::kSun},
+      {"frame, moving sun, no shadows", [](RenderOptions& o) { o.shadows = false; }, Motion::kSun},
       {"per-pixel aerial perspective", [](RenderOptions& o) { o.mode = aerial::AerialMode::kPerPixel; }},
       {"fixed fine terrain mesh", [](RenderOptions& o) { o.terrain = aerial::TerrainMode::kStaticMesh; }},
       {"no terrain occlusion culling", [](RenderOptions& o) { o.terrain_occlusion_culling = false; }},
@@ -95,8 +98,9 @@ void Bench(const BenchOptions& cli) {
       {"without transparent objects", [](RenderOptions& o) { o.passes.transparent = false; }},
       {"without the terrain", [](RenderOptions& o) { o.passes.terrain = false; }},
   };
-  constexpr size_t kFirstAblation = 7;
-  constexpr size_t kStill = 1, kNoShadows = 2, kStillNoShadows = 3, kPerPixel = 4, kFineMesh = 5;
+  constexpr size_t kFirstAblation = 9;
+  constexpr size_t kStill = 1, kNoShadows = 2, kStillNoShadows = 3, kSun = 4, kSunNoShadows = 5, kPerPixel = 6,
+                   kFineMesh = 7;
   std::vector<std::unique_ptr<aerial::Renderer>> renderers;
   std::vector<aerial::bench::FrameSource> order;
   for (Configuration& c : configurations) {
@@ -160,16 +164,17 @@ void Bench(const BenchOptions& cli) {
   }
   doc["parts_median"] = parts;
 
-  std::printf("\n=== the sun's shadow map (medians): its pass when redrawn (moving camera) and when cached "
-              "(still camera), and the whole frame's cost of shadows (on minus off: pass, lookups, chunk "
-              "selection) ===\n");
+  std::printf("\n=== the sun's shadow map (medians): its pass when redrawn (moving camera), when cached "
+              "(still camera) and under a moving sun (still camera), and the whole frame's cost of shadows (on "
+              "minus off: pass, lookups, chunk selection) ===\n");
   nlohmann::json shadows;
-  for (auto [name, on, off] : {std::tuple{"redrawn", size_t(0), kNoShadows}, std::tuple{"cached", kStill, kStillNoShadows}}) {
+  for (auto [name, on, off] : {std::tuple{"redrawn", size_t(0), kNoShadows}, std::tuple{"cached", kStill, kStillNoShadows},
+                               std::tuple{"sun moving", kSun, kSunNoShadows}}) {
     const Configuration& with = configurations[on];
     const Configuration& without = configurations[off];
     Stats pass = Summarize(aerial::bench::SumOfPasses(with.frames, {aerial::bench::kShadowMapPass}, name).ms);
     double gpu = with.Gpu().median - without.Gpu().median, cpu = with.Cpu().median - without.Cpu().median;
-    std::printf("  %-8s shadow map pass %7.2f ms; frame %7.2f ms GPU with, %7.2f without (%+.2f ms, %+.1f%%), "
+    std::printf("  %-10s shadow map pass %7.2f ms; frame %7.2f ms GPU with, %7.2f without (%+.2f ms, %+.1f%%), "
                 "%+.2f ms CPU\n", name, pass.median, with.Gpu().median, without.Gpu().median, gpu,
                 100.0 * gpu / without.Gpu().median, cpu);
     shadows[name] = {{"shadow_map_pass_gpu_ms", pass.median}, {"frame_gpu_ms", with.Gpu().median},

@@ -12,10 +12,14 @@ double ProcessCpuMs() {
   return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
 }
 
-Scene Moved(const Scene& scene, int frame) {
+Scene Moved(const Scene& scene, Motion motion, int frame) {
   Scene moved = scene;
-  moved.camera.yaw_deg += 0.1 * frame;
-  if (frame % 2 == 1) moved.camera.position.z += 12.0;
+  if (motion == Motion::kCamera) {
+    moved.camera.yaw_deg += 0.1 * frame;
+    if (frame % 2 == 1) moved.camera.position.z += 12.0;
+  } else if (motion == Motion::kSun) {
+    moved.sun.zenith_deg += 0.02 * frame;
+  }
   return moved;
 }
 
@@ -27,7 +31,7 @@ std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<FrameSource>
   std::vector<std::vector<RunResult>> measured(sources.size());
   for (int i = 0; i < warmup + frames; ++i)
     for (size_t r = 0; r < sources.size(); ++r) {
-      Scene frame_scene = sources[r].motion == CameraMotion::kMoving ? Moved(scene, i) : scene;
+      Scene frame_scene = Moved(scene, sources[r].motion, i);
       auto start = std::chrono::steady_clock::now();
       double cpu_start = ProcessCpuMs();
       RunResult frame{.passes = sources[r].renderer->Render(frame_scene, /*complete=*/false)};

@@ -20,14 +20,17 @@ inline constexpr const char* kShadowMapPass = "shadow map";
 
 // A moving camera makes each frame rebuild what the renderer keeps for a still one (the froxel
 // volume, and the sky-view table past 10 m of altitude): frame i turns the camera by i x 0.1
-// degrees of yaw and lifts it by 12 m on odd frames, so every frame pays for both. A still camera
-// measures what a frame costs when nothing moves. Frames are drawn as the viewer draws them, not
-// complete (Renderer::Record): a sky-view table made within 10 m of altitude is kept.
-enum class CameraMotion { kMoving, kStill };
+// degrees of yaw and lifts it by 12 m on odd frames, so every frame pays for both. A still view
+// measures what a frame costs when nothing moves. A moving sun (frame i: the sun's zenith angle
+// i x 0.02 degrees larger, a sunset 15 times faster than the Earth's at 60 frames per second)
+// under a still camera redraws the shadow map and rebuilds the froxel volume and the sky-view
+// table every frame. Frames are drawn as the viewer draws them, not complete (Renderer::Record):
+// a sky-view table made within 10 m of altitude is kept.
+enum class Motion { kCamera, kStill, kSun };
 
 struct FrameSource {
   Renderer* renderer;
-  CameraMotion motion = CameraMotion::kMoving;
+  Motion motion = Motion::kCamera;
 };
 
 // frames[r] holds source r's measured frames, in order. on_frame (may be empty) is called after

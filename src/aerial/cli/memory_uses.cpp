@@ -43,7 +43,7 @@ std::vector<MemoryUse> FrameMemoryUses(const RenderOptions& render, int renderer
       {"--froxels", Join({render.froxels.width, render.froxels.height, render.froxels.depth}, "x"),
        "froxel volume", renderers * frame.froxels}};
   if (frame.terrain > 0) uses.push_back({"--terrain", "lod", "terrain chunk slots", renderers * frame.terrain});
-  if (render.shadows) uses.push_back({"--shadows", "on", "shadow map", renderers * frame.shadows});
+  if (render.shadows) uses.push_back({"--shadows", "on", "shadow map and sun visibility", renderers * frame.shadows});
   return uses;
 }
 
