@@ -1,8 +1,8 @@
 // The installed library end to end: an atmosphere file loaded and validated, small 4D tables
 // precomputed on the Vulkan device (lavapipe here), and the tables' zenith transmittance from the
 // ground checked against aerial's CPU reference in double precision; and a shared library of the
-// client's that links aerial as well (position-independent code). It uses aerial's own Vulkan
-// context: the device hand-off to a caller's device is not part of the package yet.
+// client's that links aerial as well (position-independent code); then the same on the client's
+// own Vulkan device, with a frame the client submits (own_device.h).
 //   package_client ATMOSPHERE.toml CACHE_DIR
 #include <cmath>
 #include <cstdio>
@@ -14,6 +14,8 @@
 #include "aerial/probe/table_probe.h"
 #include "aerial/reference/reference.h"
 #include "aerial/vk/context.h"
+
+#include "own_device.h"
 
 extern "C" double PluginPlanetRadiusM();  // plugin.cpp, a shared library that links aerial too
 
@@ -48,7 +50,8 @@ int main(int argc, char** argv) {
     // As in every test here, a validation message (with AERIAL_VALIDATION=1) is a failure.
     int messages = aerial::vk::Context::ValidationMessageCount();
     std::printf("validation messages: %d\n", messages);
-    return ok && messages == 0 ? 0 : 1;
+    ok = ok && messages == 0;
+    return ok && RunOnOwnDevice(atmosphere, argv[2]) ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "package_client: %s\n", e.what());
     return 1;

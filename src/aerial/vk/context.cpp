@@ -49,6 +49,11 @@ int DeviceRank(::vk::PhysicalDeviceType type) {
               "VK_DRIVER_FILES is set, it must name the driver's JSON manifest");
 }
 
+bool QueueFamilySuitable(const ::vk::QueueFamilyProperties& family) {
+  auto wanted = ::vk::QueueFlagBits::eCompute | ::vk::QueueFlagBits::eGraphics;
+  return (family.queueFlags & wanted) == wanted && family.timestampValidBits > 0;
+}
+
 bool HasLayer(const ::vk::raii::Context& loader, const char* name) {
   for (const auto& layer : loader.enumerateInstanceLayerProperties())
     if (std::string(layer.layerName.data()) == name) return true;
@@ -117,37 +122,93 @@ Context::Context(const ContextCreateInfo& info) {
     throw Error("device", wanted.empty() ? "(any)" : wanted, "one of: " + available);
   timestamp_period_ns_ = physical_device_.getProperties().limits.timestampPeriod;
 
-  auto families = physical_device_.getQueueFamilyProperties();
-  auto wanted_flags = ::vk::QueueFlagBits::eCompute | ::vk::QueueFlagBits::eGraphics;
-  auto suitable = [&](uint32_t index) {
-    const auto& f = families[index];
-    return (f.queueFlags & wanted_flags) == wanted_flags && f.timestampValidBits > 0 &&
-           (!info.present_support || info.present_support(*instance_, *physical_device_, index));
-  };
   queue_family_ = 0;
-  while (queue_family_ < families.size() && !suitable(queue_family_)) ++queue_family_;
-  if (queue_family_ == families.size()) {
-    throw Error("device queue", device_name(),
-                std::string("a graphics+compute queue with timestamps") +
-                    (info.present_support ? " that can present to the window" : ""));
-  }
+  auto families = physical_device_.getQueueFamilyProperties();
+  auto can_present = [&](uint32_t index) {
+    return !info.present_support || info.present_support(*instance_, *physical_device_, index);
+  };
+  while (queue_family_ < families.size() &&
+         !(QueueFamilySuitable(families[queue_family_]) && can_present(queue_family_)))
+    ++queue_family_;
+  CheckQueueFamily(info.present_support ? std::function<bool(uint32_t)>(can_present) : nullptr);
 
   float priority = 1.0f;
   ::vk::DeviceQueueCreateInfo queue_info{
       .queueFamilyIndex = queue_family_, .queueCount = 1, .pQueuePriorities = &priority};
-  std::vector<const char*> device_extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+  std::vector<const char*> device_extensions(kRequiredDeviceExtensions.begin(), kRequiredDeviceExtensions.end());
   if (!info.window_extensions.empty()) device_extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
-  ::vk::PhysicalDeviceFeatures features{.shaderStorageImageWriteWithoutFormat = VK_TRUE};
-  ::vk::PhysicalDeviceVulkan13Features features13{.dynamicRendering = VK_TRUE};
-  ::vk::PhysicalDeviceVulkan12Features features12{.pNext = &features13, .hostQueryReset = VK_TRUE};
+  RequiredDeviceFeatures features;
   device_ = ::vk::raii::Device(
-      physical_device_, ::vk::DeviceCreateInfo{.pNext = &features12,
+      physical_device_, ::vk::DeviceCreateInfo{.pNext = features.Chain(),
                                                .queueCreateInfoCount = 1,
                                                .pQueueCreateInfos = &queue_info,
                                                .enabledExtensionCount = uint32_t(device_extensions.size()),
                                                .ppEnabledExtensionNames = device_extensions.data(),
-                                               .pEnabledFeatures = &features});
+                                               .pEnabledFeatures = &features.core});
   queue_ = device_.getQueue(queue_family_, 0);
+  CreateSubmitObjects();
+}
+
+Context::Context(const ExternalDevice& external) : external_(true) {
+  if (!external.instance || !external.physical_device || !external.device)
+    throw Error("external device", "a null handle", "the caller's instance, physical device and device");
+  instance_ = ::vk::raii::Instance(loader_, external.instance);
+  // From here on a failure must hand the caller's handles back: the destructor does not run
+  // for a constructor that throws, and the members' own would destroy them.
+  try {
+    physical_device_ = ::vk::raii::PhysicalDevice(instance_, external.physical_device);
+    ::vk::PhysicalDeviceProperties properties = physical_device_.getProperties();
+    timestamp_period_ns_ = properties.limits.timestampPeriod;
+    if (properties.apiVersion < VK_API_VERSION_1_3) {
+      throw Error("external device's Vulkan version",
+                  std::to_string(VK_API_VERSION_MAJOR(properties.apiVersion)) + "." +
+                      std::to_string(VK_API_VERSION_MINOR(properties.apiVersion)),
+                  "1.3 or later");
+    }
+    auto supported = physical_device_.enumerateDeviceExtensionProperties();
+    for (const char* wanted : kRequiredDeviceExtensions) {
+      bool found = std::any_of(supported.begin(), supported.end(), [&](const ::vk::ExtensionProperties& e) {
+        return std::string(e.extensionName.data()) == wanted;
+      });
+      if (!found) throw Error("external device's extensions", device_name(), std::string("support for ") + wanted);
+    }
+    queue_family_ = external.queue_family;
+    CheckQueueFamily(nullptr);
+    device_ = ::vk::raii::Device(physical_device_, external.device);
+    queue_ = device_.getQueue(queue_family_, external.queue_index);
+    CreateSubmitObjects();
+  } catch (...) {
+    ReleaseCallersHandles();
+    throw;
+  }
+}
+
+Context::~Context() {
+  if (external_) ReleaseCallersHandles();
+}
+
+// What aerial made on the caller's device goes; the device and the instance stay the caller's.
+void Context::ReleaseCallersHandles() {
+  submit_done_.clear();
+  submit_buffer_.clear();
+  command_pool_.clear();
+  queue_.clear();
+  device_.release();
+  instance_.release();
+}
+
+// Throws unless queue_family_ exists and can draw, compute, time and (when asked) present.
+void Context::CheckQueueFamily(const std::function<bool(uint32_t)>& can_present) const {
+  auto families = physical_device_.getQueueFamilyProperties();
+  if (queue_family_ < families.size() && QueueFamilySuitable(families[queue_family_]) &&
+      (!can_present || can_present(queue_family_)))
+    return;
+  throw Error("device queue", device_name() + ", family " + std::to_string(queue_family_),
+              std::string("a graphics+compute queue with timestamps") +
+                  (can_present ? " that can present to the window" : ""));
+}
+
+void Context::CreateSubmitObjects() {
   command_pool_ = ::vk::raii::CommandPool(
       device_, ::vk::CommandPoolCreateInfo{
                    .flags = ::vk::CommandPoolCreateFlagBits::eResetCommandBuffer,

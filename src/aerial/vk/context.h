@@ -1,6 +1,7 @@
 #pragma once
 // The Vulkan instance, the chosen device and its one compute+graphics queue. Raw Vulkan stays in
 // src/aerial/vk/; the rest of the program works with Context, Buffer, Image and ComputePipeline.
+#include <array>
 #include <atomic>
 #include <functional>
 #include <optional>
@@ -24,9 +25,47 @@ struct ContextCreateInfo {
   std::function<bool(::vk::Instance, ::vk::PhysicalDevice, uint32_t queue_family)> present_support;
 };
 
+// A Vulkan device that the caller created and keeps, for aerial to work on: a client's own
+// renderer (docs in README, "Using aerial as a library"). The instance and the device must be
+// made for Vulkan 1.3 with what aerial needs: the extensions of kRequiredDeviceExtensions and the
+// features of RequiredDeviceFeatures. aerial checks the version, the queue family and that the
+// extensions are supported; which features were enabled it cannot see. On that device aerial
+// makes its own command pool, fence and resources, submits one-off work (uploads, the
+// precompute, read-backs) to the queue, which the caller must not use from another thread
+// meanwhile, and destroys neither the device nor the instance. Frames are recorded into the
+// caller's command buffers (Renderer::Record, FroxelVolume::Build), which the caller submits.
+struct ExternalDevice {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_device = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  uint32_t queue_family = 0;  // graphics and compute, with timestamps
+  uint32_t queue_index = 0;
+};
+
+// The device extensions aerial uses (descriptors are pushed, not allocated from pools).
+inline constexpr std::array<const char*, 1> kRequiredDeviceExtensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+
+// The device features aerial uses: storage images written without a format in the shader
+// (precompute), dynamic rendering (the frame's raster passes) and host query reset (timers).
+struct RequiredDeviceFeatures {
+  ::vk::PhysicalDeviceFeatures core{.shaderStorageImageWriteWithoutFormat = VK_TRUE};
+  ::vk::PhysicalDeviceVulkan12Features vulkan12{.hostQueryReset = VK_TRUE};
+  ::vk::PhysicalDeviceVulkan13Features vulkan13{.dynamicRendering = VK_TRUE};
+  // The chain for VkDeviceCreateInfo::pNext, with pEnabledFeatures = &core; next: the caller's
+  // own chain, placed after it. Valid while this object lives and stays where it is.
+  void* Chain(void* next = nullptr) {
+    vulkan13.pNext = next;
+    vulkan12.pNext = &vulkan13;
+    return &vulkan12;
+  }
+};
+
 class Context {
  public:
   explicit Context(const ContextCreateInfo& info = {});
+  // Works on the caller's device (ExternalDevice); validation is then the caller's instance's.
+  explicit Context(const ExternalDevice& external);
+  ~Context();
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
 
@@ -54,6 +93,10 @@ class Context {
   static int ValidationMessageCount();
 
  private:
+  void CheckQueueFamily(const std::function<bool(uint32_t)>& can_present) const;
+  void CreateSubmitObjects();
+  void ReleaseCallersHandles();
+
   ::vk::raii::Context loader_;
   ::vk::raii::Instance instance_{nullptr};
   std::optional<::vk::raii::DebugUtilsMessengerEXT> messenger_;
@@ -65,6 +108,7 @@ class Context {
   ::vk::raii::Fence submit_done_{nullptr};
   uint32_t queue_family_ = 0;
   bool validation_ = false;
+  bool external_ = false;  // the instance and the device are the caller's (ExternalDevice)
   double timestamp_period_ns_ = 1.0;
 };
 
