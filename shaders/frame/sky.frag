@@ -5,9 +5,7 @@
 // pixel's own ray, plus what lies behind it: the sun disc, or the bare planet where the ray meets
 // the ground beyond the scene's geometry. In froxel mode all of it comes from the sky-view table
 // (3 bilinear taps); in per-pixel mode, from the tables.
-#include "froxel.glsl"
-#include "frame.glsl"
-#include "surface.glsl"
+#include "aerial_perspective.glsl"
 #include "sky_view.glsl"
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
 layout(set = 0, binding = 3) uniform sampler3D rayleigh_texture;
@@ -24,15 +22,8 @@ layout(location = 3) flat in vec2 horizon;  // x: its zenith angle, y: its cos
 layout(location = 0) out vec4 color;
 
 // The whole view ray's inscatter, and in `transmittance` the background through the atmosphere
-// (GetBackgroundThroughAtmosphere): from the sky-view table, or (per-pixel mode) from the tables.
-Inscatter GetPixelSky(vec3 ray, float r, float mu, float mu_s, float nu) {
-  if (kAerialPerPixel == 1) {
-    Inscatter sky = GetSkyInscatter(transmittance_texture, rayleigh_texture, mie_texture,
-                                    multiple_texture, r, mu, mu_s, nu);
-    sky.transmittance = GetBackgroundThroughAtmosphere(transmittance_texture, irradiance_texture,
-                                                       ray, r, mu, sky.transmittance);
-    return sky;
-  }
+// (GetBackgroundThroughAtmosphere), from the sky-view table.
+Inscatter GetPixelSky(vec3 ray, float mu) {
   vec3 horizontal = ray - mu * up;
   float cos_phi = dot(horizontal, horizontal) > 1e-12 ? dot(normalize(horizontal), toward_sun) : 1.0;
   vec2 uv = GetSkyViewUv(horizon.x, cos_phi, acos(clamp(mu, -1.0, 1.0)), textureSize(rayleigh_sky, 0));
@@ -45,10 +36,15 @@ Inscatter GetPixelSky(vec3 ray, float r, float mu, float mu_s, float nu) {
 
 void main() {
   vec3 ray = normalize(view_ray);
+  if (kAerialPerPixel == 1) {
+    color = vec4(GetSkyRadianceAlongRay(transmittance_texture, rayleigh_texture, mie_texture, multiple_texture,
+                                        irradiance_texture, ray),
+                 1.0);
+    return;
+  }
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
-  Inscatter sky = GetPixelSky(ray, r, mu, mu_s, nu);
+  Inscatter sky = GetPixelSky(ray, mu);
   // The ray meets the ground below the horizon: RayIntersectsGround, with the frame's horizon.
-  bool meets_ground = kAerialPerPixel == 1 ? RayIntersectsGround(r, mu) : mu < horizon.y;
-  color = vec4(ApplyPhaseFunctions(sky, nu) + ShadeBackground(sky.transmittance, meets_ground, nu), 1.0);
+  color = vec4(ApplyPhaseFunctions(sky, nu) + ShadeBackground(sky.transmittance, mu < horizon.y, nu), 1.0);
 }

@@ -6,6 +6,7 @@
 // mode, the tables), output premultiplied: alpha (L T + I_R P_R + I_M P_M) over what is already
 // drawn. What is drawn already holds the inscatter of the segment in front of the surface, so
 // this blend is exact: I + T (alpha L + (1 - alpha) L_behind).
+#include "aerial_perspective.glsl"
 #include "surface.glsl"
 #define SHADOW_BINDING 8
 #include "shadow.glsl"
@@ -37,6 +38,6 @@ void main() {
   float alpha = sun_radiance_opacity.a;
   vec3 surface_radiance = ShadeLambertian(LambertianRadiance(sun_radiance_opacity.rgb, sky_radiance),
                                           SunVisibility(relative_position, normalize(facing_normal)));
-  vec3 radiance = surface_radiance * segment.transmittance + ApplyPhaseFunctions(segment, nu);
+  vec3 radiance = ApplyAerialPerspective(surface_radiance, segment, nu);
   color = vec4(radiance * alpha, alpha);
 }

@@ -5,7 +5,7 @@
 // faces the camera), both interpolated across the triangle. The phase functions and the sun's
 // shadow (shadow.glsl, on the sun's part of the lighting) are still evaluated per pixel, in the
 // fragment shader.
-#include "froxel.glsl"
+#include "aerial_perspective.glsl"
 #include "surface.glsl"
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
 layout(set = 0, binding = 3) uniform sampler2D irradiance_texture;
@@ -32,10 +32,8 @@ void main() {
   sun_radiance_opacity = vec4(radiance.sun, opacity);
   sky_radiance = radiance.sky;
   gl_Position = frame.view_projection * vec4(relative_position, 1.0);
-  vec2 uv = gl_Position.xy / gl_Position.w * 0.5 + 0.5;
-  Inscatter inscatter =
-      SampleFroxels(rayleigh_froxels, mie_froxels, transmittance_froxels, uv,
-                    length(relative_position), float(frame.froxel_size.z), frame.froxel_depth.x);
+  Inscatter inscatter = GetAerialPerspectiveAtVertex(rayleigh_froxels, mie_froxels, transmittance_froxels,
+                                                     gl_Position, length(relative_position));
   vertex_rayleigh = inscatter.rayleigh;
   vertex_mie = inscatter.mie;
   vertex_transmittance = inscatter.transmittance;

@@ -16,7 +16,7 @@
 //    comparison cost about a third of a still frame; one texel fetch replaces them.
 #ifndef AERIAL_OPAQUE_FRAGMENT_GLSL
 #define AERIAL_OPAQUE_FRAGMENT_GLSL
-#include "froxel.glsl"
+#include "aerial_perspective.glsl"
 #include "surface.glsl"
 #define SHADOW_BINDING 8
 #include "shadow.glsl"
@@ -49,12 +49,11 @@ vec4 GetFragmentRadiance(float sun_visibility) {
     segment = GetSkyInscatterToPoint(transmittance_texture, multiple_density_texture, r, mu,
                                      mu_s, nu, distance);
   } else {
-    segment = SampleFroxels(rayleigh_froxels, mie_froxels, transmittance_froxels,
-                            gl_FragCoord.xy / frame.viewport.xy, distance,
-                            float(frame.froxel_size.z), frame.froxel_depth.x);
+    segment = GetAerialPerspective(rayleigh_froxels, mie_froxels, transmittance_froxels,
+                                   gl_FragCoord.xy / frame.viewport.xy, distance);
   }
   vec3 surface_radiance = ShadeLambertian(LambertianRadiance(sun_radiance, sky_radiance), sun_visibility);
-  return vec4(surface_radiance * segment.transmittance + ApplyPhaseFunctions(segment, nu), 1.0);
+  return vec4(ApplyAerialPerspective(surface_radiance, segment, nu), 1.0);
 }
 
 #endif

@@ -8,7 +8,7 @@
 // tables: the renderer's per-frame sky-view table is internal to it (it resamples these same
 // lookups). Left out: the surface's own radiance and the sun disc. Inscatter is tone mapped with
 // the exposure; transmittance, already in [0, 1], is only sRGB-encoded.
-#include "froxel.glsl"
+#include "aerial_perspective.glsl"
 #include "frame.glsl"
 #include "display.glsl"
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
@@ -41,8 +41,7 @@ void main() {
     segment = GetSkyInscatter(transmittance_texture, rayleigh_texture, mie_texture,
                               multiple_texture, r, mu, mu_s, nu);
   } else if (push.from_froxels == 1) {
-    segment = SampleFroxels(rayleigh_froxels, mie_froxels, transmittance_froxels, uv, distance,
-                            float(frame.froxel_size.z), frame.froxel_depth.x);
+    segment = GetAerialPerspective(rayleigh_froxels, mie_froxels, transmittance_froxels, uv, distance);
   } else {
     segment = GetSkyInscatterToPoint(transmittance_texture, multiple_density_texture, r, mu,
                                      mu_s, nu, distance);
