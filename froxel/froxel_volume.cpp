@@ -26,15 +26,14 @@ FroxelVolume::FroxelVolume(const vk::Context& context, const FroxelGrid& grid)
   });
 }
 
-void FroxelVolume::Build(const ::vk::raii::CommandBuffer& cmd, const AtmosphereTables& tables,
+void FroxelVolume::Build(const vk::CommandBuffer& cmd, const AtmosphereTables& tables,
                          const vk::Buffer& frame_uniforms, const vk::Buffer& shadow_uniforms,
                          const vk::SampledImageSlot& shadow_map) const {
-  ::vk::Sampler sampler = tables.sampler();
   pipeline_.Dispatch(cmd,
                      {vk::UniformBufferSlot{&tables.uniform_buffer()},
                       vk::UniformBufferSlot{&frame_uniforms},
-                      vk::SampledImageSlot{&tables.transmittance(), sampler},
-                      vk::SampledImageSlot{&tables.multiple_density(), sampler},
+                      tables.Sampled(tables.transmittance()),
+                      tables.Sampled(tables.multiple_density()),
                       vk::StorageImageSlot{&rayleigh_}, vk::StorageImageSlot{&mie_},
                       vk::StorageImageSlot{&transmittance_}, vk::UniformBufferSlot{&shadow_uniforms},
                       shadow_map},

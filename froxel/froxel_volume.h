@@ -15,7 +15,7 @@ class FroxelVolume {
 
   // Records the froxel pass. frame_uniforms: the FrameBlock buffer of this frame; shadow_uniforms
   // and shadow_map: the ShadowBlock and the depth atlas of shaders/include/shadow.glsl.
-  void Build(const ::vk::raii::CommandBuffer& cmd, const AtmosphereTables& tables,
+  void Build(const vk::CommandBuffer& cmd, const AtmosphereTables& tables,
              const vk::Buffer& frame_uniforms, const vk::Buffer& shadow_uniforms,
              const vk::SampledImageSlot& shadow_map) const;
 

@@ -16,8 +16,8 @@ DisplayTarget::DisplayTarget(const vk::Context& context, uint32_t width, uint32_
       framebuffer_(vk::CreateFramebuffer(context, *render_pass_, image_.view(), extent_)) {}
 
 std::vector<uint8_t> DisplayTarget::Draw(
-    const std::function<void(const ::vk::raii::CommandBuffer&)>& draw) const {
-  context_.Submit([&](const ::vk::raii::CommandBuffer& cmd) {
+    const std::function<void(const vk::CommandBuffer&)>& draw) const {
+  context_.Submit([&](const vk::CommandBuffer& cmd) {
     vk::BeginRenderPass(cmd, *render_pass_, *framebuffer_, extent_);
     draw(cmd);
     cmd.endRenderPass();

@@ -18,7 +18,7 @@ class DisplayTarget {
   ::vk::RenderPass render_pass() const { return *render_pass_; }
   ::vk::Extent2D extent() const { return extent_; }
   // Records draw inside the render pass over the image, submits, waits, and returns the bytes.
-  std::vector<uint8_t> Draw(const std::function<void(const ::vk::raii::CommandBuffer&)>& draw) const;
+  std::vector<uint8_t> Draw(const std::function<void(const vk::CommandBuffer&)>& draw) const;
 
  private:
   const vk::Context& context_;

@@ -20,7 +20,7 @@ FullScreenTap::FullScreenTap(const vk::Context& context, uint32_t width, uint32_
 
 std::vector<vk::PassTime> FullScreenTap::Run() {
   float size[2] = {float(target_.extent().width), float(target_.extent().height)};
-  context_.Submit([&](const ::vk::raii::CommandBuffer& cmd) {
+  context_.Submit([&](const vk::CommandBuffer& cmd) {
     timer_.Reset(cmd);
     timer_.Begin(cmd, "full-screen tap");
     {

@@ -52,9 +52,7 @@ AtmosphereTables::AtmosphereTables(const vk::Context& context,
       atmosphere_(atmosphere),
       options_(options),
       uniforms_(MakeAtmosphereUniforms(atmosphere, options)),
-      uniform_buffer_(context, {.size = sizeof(AtmosphereUniforms),
-                                .usage = ::vk::BufferUsageFlagBits::eUniformBuffer,
-                                .host_visible = true}),
+      uniform_buffer_(context, vk::UniformBufferInfo(sizeof(AtmosphereUniforms))),
       sampler_(vk::CreateLinearClampSampler(context)),
       // Transmittance and irradiance stay float32 in every precision: they are tiny, and half
       // floats band visibly in the transmittance (Bruneton 2017 notes the same).

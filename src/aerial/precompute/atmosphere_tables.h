@@ -15,6 +15,7 @@
 #include "aerial/precompute/atmosphere_uniforms.h"
 #include "aerial/precompute/precompute_options.h"
 #include "aerial/precompute/table_cache.h"
+#include "aerial/vk/descriptors.h"
 #include "aerial/vk/resources.h"
 
 namespace aerial {
@@ -49,6 +50,8 @@ class AtmosphereTables {
   const AtmosphereUniforms& uniforms() const { return uniforms_; }
   const vk::Buffer& uniform_buffer() const { return uniform_buffer_; }
   ::vk::Sampler sampler() const { return *sampler_; }
+  // An image (a table, or any other) as shaders sample the tables: linear, clamped to the edge.
+  vk::SampledImageSlot Sampled(const vk::Image& image) const { return {&image, *sampler_}; }
 
   const vk::Image& transmittance() const { return transmittance_; }
   const vk::Image& irradiance() const { return irradiance_; }

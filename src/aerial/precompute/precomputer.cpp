@@ -104,7 +104,7 @@ struct Scratch {
 
 ::vk::Extent3D Extent2D(const vk::Image& image) { return image.extent(); }
 
-void BlitConvert(const ::vk::raii::CommandBuffer& cmd, const vk::Image& from, const vk::Image& to) {
+void BlitConvert(const vk::CommandBuffer& cmd, const vk::Image& from, const vk::Image& to) {
   ::vk::Extent3D e = from.extent();
   ::vk::ImageSubresourceLayers layers{.aspectMask = ::vk::ImageAspectFlagBits::eColor, .layerCount = 1};
   ::vk::ImageBlit region{
@@ -159,15 +159,13 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   const vk::Image& multiple_accumulator =
       tables.options().variant == LutVariant::k4D ? rayleigh : multiple;
   const vk::Buffer& uniforms = tables.uniform_buffer();
-  ::vk::Sampler sampler = tables.sampler();
-  auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
   const SampleCounts& samples = tables.options().samples;
   ::vk::Extent3D scattering_threads = tables.rayleigh().extent();
   ::vk::Extent3D density_threads = DensityExtent(tables.options());
 
   // Each pass is its own submission so that the progress bar advances as the GPU finishes it.
   auto run = [&](const std::string& label, auto&& record) {
-    context.Submit([&](const ::vk::raii::CommandBuffer& cmd) {
+    context.Submit([&](const vk::CommandBuffer& cmd) {
       timer.Reset(cmd);
       timer.Begin(cmd, label);
       record(cmd);
@@ -205,14 +203,14 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   // Step 2: direct irradiance, the ground's order-0 light (delta E_0).
   run("direct irradiance", [&](const auto& cmd) {
     pipelines.direct_irradiance.Dispatch(
-        cmd, {vk::UniformBufferSlot{&uniforms}, sampled(tables.transmittance()),
+        cmd, {vk::UniformBufferSlot{&uniforms}, tables.Sampled(tables.transmittance()),
               vk::StorageImageSlot{&scratch.delta_irradiance[0]}},
         Extent2D(scratch.delta_irradiance[0]), {8, 8, 1});
   });
   // Step 3: single scattering, Rayleigh (delta S_R, and the accumulated table) and Mie.
   run("single scattering", [&](const auto& cmd) {
     pipelines.single_scattering.Dispatch(
-        cmd, {vk::UniformBufferSlot{&uniforms}, sampled(tables.transmittance()),
+        cmd, {vk::UniformBufferSlot{&uniforms}, tables.Sampled(tables.transmittance()),
               vk::StorageImageSlot{&scratch.delta_rayleigh}, vk::StorageImageSlot{&mie},
               vk::StorageImageSlot{&rayleigh}},
         scattering_threads, {8, 8, 1});
@@ -225,11 +223,11 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
     SeriesStep step{radiance_order, close_series && radiance_order == orders};
     run("indirect irradiance (order " + std::to_string(radiance_order) + ")", [&](const auto& cmd) {
       pipelines.indirect_irradiance.Dispatch(
-          cmd, {vk::UniformBufferSlot{&uniforms}, sampled(scratch.delta_rayleigh), sampled(mie),
-                sampled(scratch.delta_multiple[radiance_order % 2]),
-                sampled(scratch.delta_irradiance[(radiance_order + 1) % 2]),
+          cmd, {vk::UniformBufferSlot{&uniforms}, tables.Sampled(scratch.delta_rayleigh), tables.Sampled(mie),
+                tables.Sampled(scratch.delta_multiple[radiance_order % 2]),
+                tables.Sampled(scratch.delta_irradiance[(radiance_order + 1) % 2]),
                 vk::StorageImageSlot{&scratch.delta_irradiance[radiance_order % 2]},
-                vk::StorageImageSlot{&tables.irradiance()}, sampled(tables.transmittance())},
+                vk::StorageImageSlot{&tables.irradiance()}, tables.Sampled(tables.transmittance())},
           Extent2D(tables.irradiance()), {8, 8, 1}, &step);
     });
   };
@@ -241,9 +239,9 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
     std::string suffix = " (order " + std::to_string(order) + ")";
     run("incident radiance" + suffix, [&](const auto& cmd) {
       pipelines.incident_radiance.Dispatch(
-          cmd, {vk::UniformBufferSlot{&uniforms}, sampled(tables.transmittance()),
-                sampled(scratch.delta_rayleigh), sampled(mie), sampled(scratch.delta_multiple[(order - 1) % 2]),
-                sampled(scratch.delta_irradiance[order % 2]), vk::StorageBufferSlot{&scratch.incident_radiance},
+          cmd, {vk::UniformBufferSlot{&uniforms}, tables.Sampled(tables.transmittance()),
+                tables.Sampled(scratch.delta_rayleigh), tables.Sampled(mie), tables.Sampled(scratch.delta_multiple[(order - 1) % 2]),
+                tables.Sampled(scratch.delta_irradiance[order % 2]), vk::StorageBufferSlot{&scratch.incident_radiance},
                 vk::StorageBufferSlot{&scratch.directions}},
           {uint32_t(DirectionCount(tables.options())), uint32_t(samples.density_mu_s),
            uint32_t(samples.density_r)},
@@ -258,8 +256,8 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
     add_ground_irradiance(order - 1);
     run("multiple scattering" + suffix, [&](const auto& cmd) {
       pipelines.multiple_scattering.Dispatch(
-          cmd, {vk::UniformBufferSlot{&uniforms}, sampled(tables.transmittance()),
-                sampled(scratch.density[order % 2]), vk::StorageImageSlot{&scratch.delta_multiple[order % 2]}},
+          cmd, {vk::UniformBufferSlot{&uniforms}, tables.Sampled(tables.transmittance()),
+                tables.Sampled(scratch.density[order % 2]), vk::StorageImageSlot{&scratch.delta_multiple[order % 2]}},
           density_threads, {8, 8, 1});
     });
     int last = close_series && order == orders;
@@ -269,8 +267,8 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
         .close_series = last,
         .divide_by_rayleigh_phase = tables.options().variant == LutVariant::k4D};
     run("accumulate" + suffix, [&](const auto& cmd) {
-      pipelines.accumulate.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, sampled(scratch.delta_multiple[order % 2]),
-                                          sampled(scratch.delta_multiple[(order - 1) % 2]),
+      pipelines.accumulate.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, tables.Sampled(scratch.delta_multiple[order % 2]),
+                                          tables.Sampled(scratch.delta_multiple[(order - 1) % 2]),
                                           vk::StorageImageSlot{&multiple_accumulator}},
                                     scattering_threads, {8, 8, 1}, &radiance_step);
     });
@@ -280,8 +278,8 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
         .close_series = last,
         .divide_by_rayleigh_phase = 0};
     run("accumulate density" + suffix, [&](const auto& cmd) {
-      pipelines.accumulate.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, sampled(scratch.density[order % 2]),
-                                          sampled(scratch.density[(order - 1) % 2]),
+      pipelines.accumulate.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, tables.Sampled(scratch.density[order % 2]),
+                                          tables.Sampled(scratch.density[(order - 1) % 2]),
                                           vk::StorageImageSlot{&multiple_density}},
                                     multiple_density.extent(), {8, 8, 1}, &density_step);
     });

@@ -44,16 +44,15 @@ std::vector<ProbeResult> ProbeTables(const AtmosphereTables& tables,
                                 vk::kStorageBuffer},
                                sizeof(int));
   int count = int(queries.size());
-  ::vk::Sampler sampler = tables.sampler();
   context.Submit([&](const auto& cmd) {
     pipeline.Dispatch(cmd,
                       {vk::UniformBufferSlot{&tables.uniform_buffer()},
-                       vk::SampledImageSlot{&tables.transmittance(), sampler},
-                       vk::SampledImageSlot{&tables.irradiance(), sampler},
-                       vk::SampledImageSlot{&tables.rayleigh(), sampler},
-                       vk::SampledImageSlot{&tables.mie(), sampler},
-                       vk::SampledImageSlot{&tables.multiple(), sampler},
-                       vk::SampledImageSlot{&tables.multiple_density(), sampler},
+                       tables.Sampled(tables.transmittance()),
+                       tables.Sampled(tables.irradiance()),
+                       tables.Sampled(tables.rayleigh()),
+                       tables.Sampled(tables.mie()),
+                       tables.Sampled(tables.multiple()),
+                       tables.Sampled(tables.multiple_density()),
                        vk::StorageBufferSlot{&query_buffer}, vk::StorageBufferSlot{&result_buffer}},
                       {uint32_t(count), 1, 1}, {32, 1, 1}, &count);
     vk::FullBarrier(cmd);

@@ -18,8 +18,6 @@ using vk::kUniform;
 
 int32_t PerPixel(AerialMode mode) { return mode == AerialMode::kPerPixel ? 1 : 0; }
 
-constexpr ::vk::Format kRadianceFormat = ::vk::Format::eR32G32B32A32Sfloat;
-constexpr ::vk::Format kDepthFormat = ::vk::Format::eD32Sfloat;
 
 // Terrain chunk slots on the GPU: the default view at 720p draws a few hundred chunks and walks
 // through about as many coarser ones; the rest keeps chunks around for a camera that moves.
@@ -29,7 +27,7 @@ constexpr uint32_t kTerrainChunkSlots = 8192;
 // transmittance and irradiance tables (lighting), the multiple density table (per-pixel mode),
 // the froxels, the shadow block and map (shadow.glsl, SHADOW_BINDING 8), and the screen's cached
 // sun visibility (opaque_fragment.glsl).
-const std::vector<::vk::DescriptorType> kMeshSlots = {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled,
+const vk::SlotTypes kMeshSlots = {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled,
                                                       kSampled, kSampled, kUniform, kSampled, kSampled};
 
 // Where an opaque fragment's sun visibility comes from (opaque_fragment.glsl).
@@ -46,17 +44,17 @@ std::vector<int32_t> MeshConstants(const RenderOptions& options, SurfaceLight li
 
 vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std::string& fragment,
                                             bool blended, std::vector<int32_t> constants,
-                                            std::vector<::vk::Format> color_formats = {kRadianceFormat}) {
+                                            std::vector<vk::Format> color_formats = {vk::kRgba32f}) {
   return {.vertex_shader = vertex,
           .fragment_shader = fragment,
           .slot_types = kMeshSlots,
           .vertex_stride = sizeof(Vertex),
-          .attributes = {{::vk::Format::eR32G32B32Sfloat, offsetof(Vertex, position)},
-                         {::vk::Format::eR32G32B32Sfloat, offsetof(Vertex, normal)},
-                         {::vk::Format::eR32G32B32Sfloat, offsetof(Vertex, albedo)},
-                         {::vk::Format::eR32Sfloat, offsetof(Vertex, opacity)}},
+          .attributes = {{vk::kRgb32f, offsetof(Vertex, position)},
+                         {vk::kRgb32f, offsetof(Vertex, normal)},
+                         {vk::kRgb32f, offsetof(Vertex, albedo)},
+                         {vk::kR32f, offsetof(Vertex, opacity)}},
           .color_formats = std::move(color_formats),
-          .depth_format = kDepthFormat,
+          .depth_format = vk::kDepth32f,
           .depth_write = !blended,
           .alpha_blend = blended,
           .dynamic_cull_mode = !blended,
@@ -70,10 +68,10 @@ vk::GraphicsPipelineCreateInfo SkyPipeline(AerialMode mode) {
           .fragment_shader = "frame/sky.frag",
           .slot_types = {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled,
                          kSampled, kSampled, kSampled},
-          .color_formats = {kRadianceFormat},
-          .depth_format = kDepthFormat,
+          .color_formats = {vk::kRgba32f},
+          .depth_format = vk::kDepth32f,
           .depth_write = false,
-          .depth_compare = ::vk::CompareOp::eEqual,
+          .depth_compare = vk::kDepthEqual,
           .specialization = {PerPixel(mode)}};
 }
 
@@ -85,27 +83,23 @@ vk::ImageCreateInfo SkyViewImage() {
   return {.extent = {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}};
 }
 
-vk::ImageCreateInfo Target(const RenderOptions& o, ::vk::Format format, ::vk::ImageUsageFlags usage) {
-  return {.extent = {uint32_t(o.render_width()), uint32_t(o.render_height()), 1},
-          .format = format,
-          .usage = usage | ::vk::ImageUsageFlagBits::eSampled | ::vk::ImageUsageFlagBits::eTransferSrc};
+vk::ImageCreateInfo Target(const RenderOptions& o, vk::Format format) {
+  return vk::RenderTargetInfo(uint32_t(o.render_width()), uint32_t(o.render_height()), format);
 }
 
 // The screen's sun visibility (opaque_fragment.glsl), in float: a cached frame is then the frame
 // that wrote it, to the bit. Without shadows nothing reads it, and one texel stands in.
-constexpr ::vk::Format kSunVisibilityFormat = ::vk::Format::eR32Sfloat;
+constexpr vk::Format kSunVisibilityFormat = vk::kR32f;
 
 vk::ImageCreateInfo SunVisibilityTarget(const RenderOptions& o) {
-  vk::ImageCreateInfo info = Target(o, kSunVisibilityFormat, ::vk::ImageUsageFlagBits::eColorAttachment);
-  if (!o.shadows) info.extent = ::vk::Extent3D{1, 1, 1};
-  return info;
+  return o.shadows ? Target(o, kSunVisibilityFormat) : vk::RenderTargetInfo(1, 1, kSunVisibilityFormat);
 }
 
 // With shadows, the opaque pipeline that looks the sun visibility up and also writes it out.
 std::optional<vk::GraphicsPipeline> CachingOpaquePipeline(const vk::Context& context, const RenderOptions& o) {
   if (!o.shadows) return std::nullopt;
   return vk::GraphicsPipeline(context, MeshPipeline("frame/opaque.vert", "frame/opaque_caching.frag", false,
-                                                    MeshConstants(o), {kRadianceFormat, kSunVisibilityFormat}));
+                                                    MeshConstants(o), {vk::kRgba32f, kSunVisibilityFormat}));
 }
 
 std::vector<Mesh> ReferenceTerrain(const Scene& scene, const RenderOptions& options, double R) {
@@ -169,8 +163,8 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
                 ReferenceTerrain(scene, options, tables.atmosphere().bottom_radius_m)),
       terrain_(TerrainCache(tables.context(), scene, options, tables.atmosphere().bottom_radius_m)),
       froxels_(tables.context(), options.froxels),
-      depth_(tables.context(), Target(options, kDepthFormat, ::vk::ImageUsageFlagBits::eDepthStencilAttachment)),
-      output_(tables.context(), Target(options, kRadianceFormat, ::vk::ImageUsageFlagBits::eColorAttachment)),
+      depth_(tables.context(), Target(options, vk::kDepth32f)),
+      output_(tables.context(), Target(options, vk::kRgba32f)),
       sun_visibility_(tables.context(), SunVisibilityTarget(options)),
       sky_rayleigh_(tables.context(), SkyViewImage()),
       sky_mie_(tables.context(), SkyViewImage()),
@@ -192,14 +186,8 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       opaque_caching_(CachingOpaquePipeline(tables.context(), options)) {
   if (options.frames_in_flight < 1) throw Error("frames in flight", "0", "at least 1");
   for (uint32_t slot = 0; slot < options.frames_in_flight; ++slot) {
-    frame_buffers_.emplace_back(tables.context(), vk::BufferCreateInfo{
-                                                      .size = sizeof(FrameUniforms),
-                                                      .usage = ::vk::BufferUsageFlagBits::eUniformBuffer,
-                                                      .host_visible = true});
-    shadow_buffers_.emplace_back(tables.context(), vk::BufferCreateInfo{
-                                                       .size = sizeof(ShadowUniforms),
-                                                       .usage = ::vk::BufferUsageFlagBits::eUniformBuffer,
-                                                       .host_visible = true});
+    frame_buffers_.emplace_back(tables.context(), vk::UniformBufferInfo(sizeof(FrameUniforms)));
+    shadow_buffers_.emplace_back(tables.context(), vk::UniformBufferInfo(sizeof(ShadowUniforms)));
     timers_.push_back(std::make_unique<vk::GpuTimer>(tables.context()));
   }
   tables.context().Submit([&](const auto& cmd) {
@@ -252,7 +240,7 @@ void Renderer::SelectTerrain(const Scene& scene, bool complete) {
 // the table itself differs from the per-pixel sky; a camera climbing at 180 m/s remakes it every
 // other frame instead of every frame. An exact frame (Record's `complete`) remakes any table not
 // made for its own r and mu_s.
-void Renderer::RecordSkyView(const ::vk::raii::CommandBuffer& cmd, const vk::Buffer& frame, bool exact) {
+void Renderer::RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& frame, bool exact) {
   constexpr float kAltitudeToleranceM = 10.0f, kMuSTolerance = 1e-5f;
   const auto& p = frame_uniforms_.camera_planet_position;
   const auto& s = frame_uniforms_.sun_direction;
@@ -263,12 +251,10 @@ void Renderer::RecordSkyView(const ::vk::raii::CommandBuffer& cmd, const vk::Buf
   if (sky_view_key_ == key || (close && !exact)) return;
   sky_view_key_ = key;
   frame_info_.sky_view_updated = true;
-  ::vk::Sampler sampler = tables_.sampler();
-  auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
   sky_view_.Dispatch(cmd,
                      {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame},
-                      sampled(tables_.transmittance()), sampled(tables_.rayleigh()), sampled(tables_.mie()),
-                      sampled(tables_.multiple()), sampled(tables_.irradiance()),
+                      tables_.Sampled(tables_.transmittance()), tables_.Sampled(tables_.rayleigh()), tables_.Sampled(tables_.mie()),
+                      tables_.Sampled(tables_.multiple()), tables_.Sampled(tables_.irradiance()),
                       vk::StorageImageSlot{&sky_rayleigh_}, vk::StorageImageSlot{&sky_mie_},
                       vk::StorageImageSlot{&sky_background_}},
                      {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}, {8, 8, 1},
@@ -280,7 +266,7 @@ void Renderer::RecordSkyView(const ::vk::raii::CommandBuffer& cmd, const vk::Buf
 // the snapping lets pass: shadow_cascades.h) or the terrain chunks it draws (the camera's level
 // of detail changed, or chunks deferred for the build budget arrived). The scene's meshes are
 // fixed for the renderer's life.
-void Renderer::RecordShadowMap(const ::vk::raii::CommandBuffer& cmd, const Scene& scene) {
+void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene) {
   glm::dvec3 sun = scene.sun.Direction();
   shadow_cascades_ = FitShadowCascades({.camera = scene.camera,
                                         .aspect = double(options_.render_width()) / options_.render_height(),
@@ -308,18 +294,16 @@ void Renderer::RecordShadowMap(const ::vk::raii::CommandBuffer& cmd, const Scene
 }
 
 std::vector<vk::Slot> Renderer::MeshSlots(uint32_t slot) const {
-  ::vk::Sampler sampler = tables_.sampler();
-  auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
   return {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame_buffers_[slot]},
-          sampled(tables_.transmittance()), sampled(tables_.irradiance()),
-          sampled(tables_.multiple_density()), sampled(froxels_.rayleigh()), sampled(froxels_.mie()),
-          sampled(froxels_.transmittance()), vk::UniformBufferSlot{&shadow_buffers_[slot]},
-          shadow_map_.slot(), sampled(sun_visibility_)};
+          tables_.Sampled(tables_.transmittance()), tables_.Sampled(tables_.irradiance()),
+          tables_.Sampled(tables_.multiple_density()), tables_.Sampled(froxels_.rayleigh()), tables_.Sampled(froxels_.mie()),
+          tables_.Sampled(froxels_.transmittance()), vk::UniformBufferSlot{&shadow_buffers_[slot]},
+          shadow_map_.slot(), tables_.Sampled(sun_visibility_)};
 }
 
 // Nearest first, so that early depth tests skip the shading of what is hidden: the scene's meshes
 // (landmarks and models standing on the ground), then the terrain's chunks by distance.
-void Renderer::DrawOpaque(const ::vk::raii::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
+void Renderer::DrawOpaque(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
                           const std::vector<vk::Slot>& slots) const {
   pipeline.Bind(cmd, slots);
   vk::BindMesh(cmd, geometry_.opaque_vertices(), geometry_.opaque_indices());
@@ -341,17 +325,15 @@ void Renderer::DrawOpaque(const ::vk::raii::CommandBuffer& cmd, const vk::Graphi
 
 // The sky where no geometry was drawn, then the transparent objects over everything, inside the
 // frame's Rendering scope.
-void Renderer::DrawSkyAndTransparent(const ::vk::raii::CommandBuffer& cmd, uint32_t slot,
+void Renderer::DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot,
                                      const std::vector<vk::Slot>& mesh_slots) const {
   vk::GpuTimer& timer = *timers_[slot];
-  ::vk::Sampler sampler = tables_.sampler();
-  auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, sampler}; };
   timer.Begin(cmd, "sky");
   if (options_.passes.sky) {
     sky_.Bind(cmd, {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame_buffers_[slot]},
-                    sampled(tables_.transmittance()), sampled(tables_.rayleigh()), sampled(tables_.mie()),
-                    sampled(tables_.multiple()), sampled(tables_.irradiance()), sampled(sky_rayleigh_),
-                    sampled(sky_mie_), sampled(sky_background_)});
+                    tables_.Sampled(tables_.transmittance()), tables_.Sampled(tables_.rayleigh()), tables_.Sampled(tables_.mie()),
+                    tables_.Sampled(tables_.multiple()), tables_.Sampled(tables_.irradiance()), tables_.Sampled(sky_rayleigh_),
+                    tables_.Sampled(sky_mie_), tables_.Sampled(sky_background_)});
     vk::DrawFullScreenTriangle(cmd);
   }
   timer.End(cmd);
@@ -375,7 +357,7 @@ bool Renderer::SunVisibilityCached() {
   return false;
 }
 
-void Renderer::Record(const ::vk::raii::CommandBuffer& cmd, const Scene& scene, uint32_t slot,
+void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t slot,
                       bool complete) {
   if (slot >= options_.frames_in_flight)
     throw Error("frame slot", std::to_string(slot), "below " + std::to_string(options_.frames_in_flight));
@@ -451,7 +433,7 @@ void Renderer::Record(const ::vk::raii::CommandBuffer& cmd, const Scene& scene, 
 std::vector<vk::PassTime> Renderer::PassTimes(uint32_t slot) const { return timers_[slot]->Collect(); }
 
 std::vector<vk::PassTime> Renderer::Render(const Scene& scene, bool complete) {
-  tables_.context().Submit([&](const ::vk::raii::CommandBuffer& cmd) { Record(cmd, scene, 0, complete); });
+  tables_.context().Submit([&](const vk::CommandBuffer& cmd) { Record(cmd, scene, 0, complete); });
   return PassTimes(0);
 }
 
@@ -468,9 +450,9 @@ ImageRgbF Renderer::ReadSurface(SurfaceLight light) const {
   if (light == SurfaceLight::kSkyOnly)
     sky_only.emplace(context, MeshPipeline("frame/opaque.vert", "frame/surface.frag", false,
                                            MeshConstants(options_, SurfaceLight::kSkyOnly)));
-  vk::Image surface(context, Target(options_, kRadianceFormat, ::vk::ImageUsageFlagBits::eColorAttachment));
-  vk::Image depth(context, Target(options_, kDepthFormat, ::vk::ImageUsageFlagBits::eDepthStencilAttachment));
-  context.Submit([&](const ::vk::raii::CommandBuffer& cmd) {
+  vk::Image surface(context, Target(options_, vk::kRgba32f));
+  vk::Image depth(context, Target(options_, vk::kDepth32f));
+  context.Submit([&](const vk::CommandBuffer& cmd) {
     surface.InitializeLayout(cmd);
     depth.InitializeLayout(cmd);
     {

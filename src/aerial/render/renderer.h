@@ -107,7 +107,7 @@ class Renderer {
   // every terrain chunk the frame needs whatever the budget (the first frame always does) and
   // remake a sky-view table made for a nearby altitude, so that the frame is the one
   // `aerial render` makes of the same view.
-  void Record(const ::vk::raii::CommandBuffer& cmd, const Scene& scene, uint32_t slot = 0,
+  void Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t slot = 0,
               bool complete = false);
   // The terrain's error bound for the next frames (RenderOptions::terrain_error_px, validated):
   // only the selection uses it, so it may change from frame to frame.
@@ -144,12 +144,12 @@ class Renderer {
  private:
   terrain::LodView FrameLodView(const Scene& scene) const;
   void SelectTerrain(const Scene& scene, bool complete);
-  void RecordShadowMap(const ::vk::raii::CommandBuffer& cmd, const Scene& scene);
-  void RecordSkyView(const ::vk::raii::CommandBuffer& cmd, const vk::Buffer& frame, bool exact);
+  void RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene);
+  void RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& frame, bool exact);
   std::vector<vk::Slot> MeshSlots(uint32_t slot) const;
-  void DrawOpaque(const ::vk::raii::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
+  void DrawOpaque(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
                   const std::vector<vk::Slot>& slots) const;
-  void DrawSkyAndTransparent(const ::vk::raii::CommandBuffer& cmd, uint32_t slot,
+  void DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot,
                              const std::vector<vk::Slot>& mesh_slots) const;
   bool SunVisibilityCached();
 

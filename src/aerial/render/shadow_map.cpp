@@ -43,7 +43,7 @@ ShadowMap::ShadowMap(const vk::Context& context, bool enabled)
 
 uint64_t ShadowMap::MemoryBytes(bool enabled) { return uint64_t(AtlasTexels(enabled)) * AtlasTexels(enabled) * 4; }
 
-void ShadowMap::Record(const ::vk::raii::CommandBuffer& cmd, const ShadowCascades& cascades,
+void ShadowMap::Record(const vk::CommandBuffer& cmd, const ShadowCascades& cascades,
                        const glm::dvec3& camera_position, const SceneGeometry& geometry,
                        const TerrainChunkCache* terrain, const ShadowTerrain& chunks) const {
   vk::Rendering rendering(cmd, {.depth = &atlas_, .clear_depth = 0.0f});

@@ -34,7 +34,7 @@ class ShadowMap {
 
   // Draws every cascade's casters: the scene's opaque meshes (both faces: a mesh open to the sun
   // still shades what is behind it) and the terrain chunks of each cascade.
-  void Record(const ::vk::raii::CommandBuffer& cmd, const ShadowCascades& cascades,
+  void Record(const vk::CommandBuffer& cmd, const ShadowCascades& cascades,
               const glm::dvec3& camera_position, const SceneGeometry& geometry,
               const TerrainChunkCache* terrain, const ShadowTerrain& chunks) const;
 

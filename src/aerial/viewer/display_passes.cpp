@@ -60,14 +60,14 @@ DisplayPasses::DisplayPasses(const vk::Context& context, ::vk::RenderPass render
       difference_(context, FullScreen(render_pass, format, "view/difference.frag", {kSampled, kSampled},
                                       sizeof(DifferencePush))) {}
 
-void DisplayPasses::RecordToneMap(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,
+void DisplayPasses::RecordToneMap(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
                                   const vk::Image& radiance, float exposure) const {
   ToneMapPush push{{float(extent.width), float(extent.height)}, exposure};
   tone_map_.Bind(cmd, {vk::SampledImageSlot{&radiance, *linear_}}, &push);
   vk::DrawFullScreenTriangle(cmd);
 }
 
-void DisplayPasses::RecordTerm(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,
+void DisplayPasses::RecordTerm(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
                                const Renderer& renderer, uint32_t slot, Term term,
                                float exposure) const {
   const AtmosphereTables& tables = renderer.tables();
@@ -85,7 +85,7 @@ void DisplayPasses::RecordTerm(const ::vk::raii::CommandBuffer& cmd, ::vk::Exten
   vk::DrawFullScreenTriangle(cmd);
 }
 
-void DisplayPasses::RecordFroxelSlice(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,
+void DisplayPasses::RecordFroxelSlice(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
                                       const FroxelVolume& froxels, int slice, float exposure) const {
   SlicePush push{{float(extent.width), float(extent.height)}, slice, exposure};
   froxel_slice_.Bind(cmd,
@@ -96,7 +96,7 @@ void DisplayPasses::RecordFroxelSlice(const ::vk::raii::CommandBuffer& cmd, ::vk
   vk::DrawFullScreenTriangle(cmd);
 }
 
-void DisplayPasses::RecordDifference(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,
+void DisplayPasses::RecordDifference(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
                                      const vk::Image& radiance_4d, const vk::Image& radiance_3d,
                                      float full_scale) const {
   DifferencePush push{{float(extent.width), float(extent.height)}, full_scale};

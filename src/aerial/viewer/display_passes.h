@@ -19,20 +19,20 @@ class DisplayPasses {
   // Each records one draw over a target of `extent` inside the caller's render pass.
   // The picture: radiance times exposure through ACES and sRGB (shaders/view/present.frag),
   // resampled bilinearly to the target.
-  void RecordToneMap(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,
+  void RecordToneMap(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
                      const vk::Image& radiance, float exposure) const;
 
   enum class Term { kRayleigh = 0, kMie = 1, kTransmittance = 2 };
   // One term of the aerial perspective alone (shaders/view/inscatter.frag), for the renderer's
   // frame recorded with the per-frame resources of `slot`.
-  void RecordTerm(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,
+  void RecordTerm(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
                   const Renderer& renderer, uint32_t slot, Term term, float exposure) const;
   // Depth slice `slice` of the froxel volume (shaders/view/froxel_slice.frag).
-  void RecordFroxelSlice(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,
+  void RecordFroxelSlice(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
                          const FroxelVolume& froxels, int slice, float exposure) const;
   // The 3D-vs-4D relative difference as a heat map, white at full_scale
   // (shaders/view/difference.frag).
-  void RecordDifference(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent,
+  void RecordDifference(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
                         const vk::Image& radiance_4d, const vk::Image& radiance_3d,
                         float full_scale) const;
 

@@ -59,7 +59,7 @@ ImGuiLayer::ImGuiLayer(const vk::Context& context, GLFWwindow* window,
   info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
   info.CheckVkResultFn = &CheckImGuiVulkanResult;
   ImGui_ImplVulkan_Init(&info, swapchain.render_pass());
-  context.Submit([](const ::vk::raii::CommandBuffer& cmd) { ImGui_ImplVulkan_CreateFontsTexture(*cmd); });
+  context.Submit([](const vk::CommandBuffer& cmd) { ImGui_ImplVulkan_CreateFontsTexture(*cmd); });
   ImGui_ImplVulkan_DestroyFontUploadObjects();
 }
 
@@ -81,7 +81,7 @@ void ImGuiLayer::NewFrame() {
 
 void ImGuiLayer::EndFrame() { ImGui::Render(); }
 
-void ImGuiLayer::Record(const ::vk::raii::CommandBuffer& cmd) {
+void ImGuiLayer::Record(const vk::CommandBuffer& cmd) {
   ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), *cmd);
 }
 

@@ -21,7 +21,7 @@ class ImGuiLayer {
   // Ends the frame (ImGui::Render): its draw data is then ready, whether or not it gets drawn.
   void EndFrame();
   // Records the ended frame's draw; call inside the swapchain's overlay render pass.
-  void Record(const ::vk::raii::CommandBuffer& cmd);
+  void Record(const vk::CommandBuffer& cmd);
 
   // True while the pointer is over a panel or a widget has the keyboard: the 3D view ignores them.
   bool wants_mouse() const;

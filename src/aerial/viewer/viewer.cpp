@@ -112,7 +112,7 @@ class Viewer::Impl {
   void Say(std::string message);
   void CollectFinishedFrame(uint32_t slot);
   void ForgetRecordedFrames();
-  void RecordDisplay(const ::vk::raii::CommandBuffer& cmd, uint32_t slot, const Renderer& primary,
+  void RecordDisplay(const vk::CommandBuffer& cmd, uint32_t slot, const Renderer& primary,
                      const Renderer* other);
   PanelInfo MakePanelInfo(const Renderer& primary) const;
 
@@ -295,14 +295,14 @@ void Viewer::Impl::CollectFinishedFrame(uint32_t slot) {
 }
 
 // The display pass for the settings' view and the panel over it, into the swapchain's image.
-void Viewer::Impl::RecordDisplay(const ::vk::raii::CommandBuffer& cmd, uint32_t slot,
+void Viewer::Impl::RecordDisplay(const vk::CommandBuffer& cmd, uint32_t slot,
                                  const Renderer& primary, const Renderer* other) {
   // The difference view needs both frames; until the other variant's tables arrive, the picture.
   DebugView view = settings_.view == DebugView::kDifference && !other ? DebugView::kFinal : settings_.view;
   ::vk::Extent2D extent = swapchain_.extent();
   vk::GpuTimer& timer = *timers_[slot];
   timer.Reset(cmd);
-  swapchain_.RecordDraw(cmd, [&](const ::vk::raii::CommandBuffer& cmd) {
+  swapchain_.RecordDraw(cmd, [&](const vk::CommandBuffer& cmd) {
     timer.Begin(cmd, PassName(view));
     switch (view) {
       case DebugView::kFinal:
@@ -379,7 +379,7 @@ bool Viewer::Impl::Step() {
     other = stack_.Get(Other(settings_.variant), render);
   }
 
-  const ::vk::raii::CommandBuffer& cmd = ring_.Begin();
+  const vk::CommandBuffer& cmd = ring_.Begin();
   uint32_t slot = ring_.slot();
   CollectFinishedFrame(slot);
   recorded_[slot].clear();

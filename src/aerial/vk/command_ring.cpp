@@ -26,7 +26,7 @@ CommandRing::~CommandRing() {
   }
 }
 
-const ::vk::raii::CommandBuffer& CommandRing::Begin() {
+const CommandBuffer& CommandRing::Begin() {
   slot_ = (slot_ + 1) % slots();
   if (context_.device().waitForFences(*done_[slot_], VK_TRUE, UINT64_MAX) != ::vk::Result::eSuccess)
     throw Error("vkWaitForFences", "timeout", "completion");

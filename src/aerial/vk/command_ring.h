@@ -17,7 +17,7 @@ class CommandRing {
   CommandRing& operator=(const CommandRing&) = delete;
 
   // Moves to the next slot, waits for its previous frame to finish and begins its command buffer.
-  const ::vk::raii::CommandBuffer& Begin();
+  const CommandBuffer& Begin();
   // Ends the current slot's command buffer and submits it, waiting on `wait` (each at its stage)
   // and signalling `signal` and the slot's fence.
   void Submit(std::span<const ::vk::Semaphore> wait = {},

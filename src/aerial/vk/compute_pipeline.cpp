@@ -16,7 +16,7 @@ ComputePipeline::ComputePipeline(const Context& context, const std::string& shad
           .layout = *layout_.layout});
 }
 
-void ComputePipeline::Dispatch(const ::vk::raii::CommandBuffer& cmd, const std::vector<Slot>& slots,
+void ComputePipeline::Dispatch(const CommandBuffer& cmd, const std::vector<Slot>& slots,
                                ::vk::Extent3D threads, ::vk::Extent3D local_size,
                                const void* push_constants) const {
   cmd.bindPipeline(::vk::PipelineBindPoint::eCompute, *pipeline_);

@@ -18,7 +18,7 @@ class ComputePipeline {
 
   // Binds the pipeline, pushes the descriptors and constants, and dispatches enough workgroups of
   // `local_size` to cover `threads`.
-  void Dispatch(const ::vk::raii::CommandBuffer& cmd, const std::vector<Slot>& slots,
+  void Dispatch(const CommandBuffer& cmd, const std::vector<Slot>& slots,
                 ::vk::Extent3D threads, ::vk::Extent3D local_size,
                 const void* push_constants = nullptr) const;
 

@@ -225,7 +225,7 @@ std::string Context::device_name() const {
   return physical_device_.getProperties().deviceName.data();
 }
 
-void Context::Submit(const std::function<void(const ::vk::raii::CommandBuffer&)>& record) const {
+void Context::Submit(const std::function<void(const CommandBuffer&)>& record) const {
   const auto& cmd = submit_buffer_;
   cmd.reset();
   cmd.begin(::vk::CommandBufferBeginInfo{.flags = ::vk::CommandBufferUsageFlagBits::eOneTimeSubmit});

@@ -12,6 +12,10 @@
 
 namespace aerial::vk {
 
+// The command buffer that passes record into: the caller's own per frame, the context's for
+// one-off work (Context::Submit).
+using CommandBuffer = ::vk::raii::CommandBuffer;
+
 struct ContextCreateInfo {
   // Substring of the device name to pick (case-insensitive); empty: AERIAL_DEVICE or the best.
   std::string device_name;
@@ -82,7 +86,7 @@ class Context {
   // readbacks, a single frame). The command buffer and fence are the context's own, reused by
   // every call, so a Submit must not be made from inside another one's record, nor from two
   // threads at once. Frames that should not wait use a CommandRing (command_ring.h).
-  void Submit(const std::function<void(const ::vk::raii::CommandBuffer&)>& record) const;
+  void Submit(const std::function<void(const CommandBuffer&)>& record) const;
 
   // The size of the device's largest device-local memory heap, in bytes.
   uint64_t largest_heap_bytes() const;

@@ -27,14 +27,14 @@ TEST(ExternalDevice, WorksOnTheCallersDeviceAndLeavesItAlive) {
     EXPECT_EQ(adopted.device_name(), owner.device_name());
     Buffer buffer(adopted, BufferCreateInfo{.size = 4, .usage = ::vk::BufferUsageFlagBits::eTransferDst,
                                             .host_visible = true});
-    adopted.Submit([&](const ::vk::raii::CommandBuffer& cmd) { cmd.fillBuffer(buffer.handle(), 0, 4, 0x2a2a2a2au); });
+    adopted.Submit([&](const CommandBuffer& cmd) { cmd.fillBuffer(buffer.handle(), 0, 4, 0x2a2a2a2au); });
     uint32_t value = 0;
     std::memcpy(&value, buffer.mapped(), 4);
     EXPECT_EQ(value, 0x2a2a2a2au);
   }
   Buffer after(owner, BufferCreateInfo{.size = 4, .usage = ::vk::BufferUsageFlagBits::eTransferDst,
                                        .host_visible = true});
-  owner.Submit([&](const ::vk::raii::CommandBuffer& cmd) { cmd.fillBuffer(after.handle(), 0, 4, 7u); });
+  owner.Submit([&](const CommandBuffer& cmd) { cmd.fillBuffer(after.handle(), 0, 4, 7u); });
   uint32_t value = 0;
   std::memcpy(&value, after.mapped(), 4);
   EXPECT_EQ(value, 7u) << "the owner's device still works";

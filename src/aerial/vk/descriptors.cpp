@@ -30,7 +30,7 @@ PushDescriptorLayout::PushDescriptorLayout(const Context& context,
                                      .pPushConstantRanges = &range});
 }
 
-void PushDescriptorLayout::Push(const ::vk::raii::CommandBuffer& cmd,
+void PushDescriptorLayout::Push(const CommandBuffer& cmd,
                                 ::vk::PipelineBindPoint bind_point, const std::vector<Slot>& slots,
                                 const void* push_constants, const std::string& pipeline_name) const {
   if (slots.size() != slot_types.size())

@@ -16,7 +16,8 @@ struct SampledImageSlot { const Image* image; ::vk::Sampler sampler; };
 struct StorageImageSlot { const Image* image; };
 using Slot = std::variant<UniformBufferSlot, StorageBufferSlot, SampledImageSlot, StorageImageSlot>;
 
-// Descriptor types for slot lists, shorter to read in pass tables.
+// Descriptor types for slot lists, shorter to read in pass tables: binding i has SlotTypes[i].
+using SlotTypes = std::vector<::vk::DescriptorType>;
 inline constexpr auto kUniform = ::vk::DescriptorType::eUniformBuffer;
 inline constexpr auto kStorageBuffer = ::vk::DescriptorType::eStorageBuffer;
 inline constexpr auto kSampled = ::vk::DescriptorType::eCombinedImageSampler;
@@ -28,7 +29,7 @@ struct PushDescriptorLayout {
                        uint32_t push_constant_bytes, ::vk::ShaderStageFlags stages);
 
   // Pushes slots[i] to binding i and the push constants (when the layout has them).
-  void Push(const ::vk::raii::CommandBuffer& cmd, ::vk::PipelineBindPoint bind_point,
+  void Push(const CommandBuffer& cmd, ::vk::PipelineBindPoint bind_point,
             const std::vector<Slot>& slots, const void* push_constants,
             const std::string& pipeline_name) const;
 

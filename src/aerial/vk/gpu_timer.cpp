@@ -10,19 +10,19 @@ GpuTimer::GpuTimer(const Context& context, uint32_t max_passes)
                                                         .queryCount = 2 * max_passes}),
       capacity_(max_passes) {}
 
-void GpuTimer::Reset(const ::vk::raii::CommandBuffer& cmd) {
+void GpuTimer::Reset(const CommandBuffer& cmd) {
   cmd.resetQueryPool(*pool_, 0, 2 * capacity_);
   passes_.clear();
 }
 
-void GpuTimer::Begin(const ::vk::raii::CommandBuffer& cmd, std::string pass) {
+void GpuTimer::Begin(const CommandBuffer& cmd, std::string pass) {
   if (passes_.size() >= capacity_)
     throw Error("timed passes", std::to_string(passes_.size() + 1), "at most " + std::to_string(capacity_));
   cmd.writeTimestamp(::vk::PipelineStageFlagBits::eTopOfPipe, *pool_, uint32_t(2 * passes_.size()));
   passes_.push_back(std::move(pass));
 }
 
-void GpuTimer::End(const ::vk::raii::CommandBuffer& cmd) {
+void GpuTimer::End(const CommandBuffer& cmd) {
   cmd.writeTimestamp(::vk::PipelineStageFlagBits::eBottomOfPipe, *pool_,
                      uint32_t(2 * passes_.size() - 1));
 }

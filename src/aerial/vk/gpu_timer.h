@@ -18,9 +18,9 @@ class GpuTimer {
  public:
   explicit GpuTimer(const Context& context, uint32_t max_passes = 256);
   // Resets the queries; call at the start of a command buffer, before any Begin.
-  void Reset(const ::vk::raii::CommandBuffer& cmd);
-  void Begin(const ::vk::raii::CommandBuffer& cmd, std::string pass);
-  void End(const ::vk::raii::CommandBuffer& cmd);
+  void Reset(const CommandBuffer& cmd);
+  void Begin(const CommandBuffer& cmd, std::string pass);
+  void End(const CommandBuffer& cmd);
   // Times of the passes recorded since Reset, in recording order.
   std::vector<PassTime> Collect() const;
 

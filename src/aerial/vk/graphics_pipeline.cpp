@@ -90,13 +90,13 @@ GraphicsPipeline::GraphicsPipeline(const Context& context, const GraphicsPipelin
                                        .renderPass = info.render_pass});
 }
 
-void GraphicsPipeline::Bind(const ::vk::raii::CommandBuffer& cmd, const std::vector<Slot>& slots,
+void GraphicsPipeline::Bind(const CommandBuffer& cmd, const std::vector<Slot>& slots,
                             const void* push_constants) const {
   cmd.bindPipeline(::vk::PipelineBindPoint::eGraphics, *pipeline_);
   layout_.Push(cmd, ::vk::PipelineBindPoint::eGraphics, slots, push_constants, name_);
 }
 
-Rendering::Rendering(const ::vk::raii::CommandBuffer& cmd, const RenderTargets& targets) : cmd_(cmd) {
+Rendering::Rendering(const CommandBuffer& cmd, const RenderTargets& targets) : cmd_(cmd) {
   const Image* sized = targets.colors.empty() ? targets.depth : targets.colors.front();
   if (!sized) throw Error("render targets", "none", "at least one color or depth image");
   std::vector<::vk::RenderingAttachmentInfo> colors;
@@ -131,26 +131,26 @@ Rendering::Rendering(const ::vk::raii::CommandBuffer& cmd, const RenderTargets& 
 
 Rendering::~Rendering() { cmd_.endRendering(); }
 
-void SetViewport(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent, ::vk::Offset2D offset) {
+void SetViewport(const CommandBuffer& cmd, ::vk::Extent2D extent, ::vk::Offset2D offset) {
   cmd.setViewport(0, ::vk::Viewport{.x = float(offset.x), .y = float(offset.y), .width = float(extent.width),
                                     .height = float(extent.height), .minDepth = 0.0f, .maxDepth = 1.0f});
   cmd.setScissor(0, ::vk::Rect2D{.offset = offset, .extent = extent});
 }
 
-void SetCullBackFaces(const ::vk::raii::CommandBuffer& cmd, bool cull_back) {
+void SetCullBackFaces(const CommandBuffer& cmd, bool cull_back) {
   cmd.setCullMode(cull_back ? ::vk::CullModeFlagBits::eBack : ::vk::CullModeFlagBits::eNone);
 }
 
-void BindMesh(const ::vk::raii::CommandBuffer& cmd, const Buffer& vertices, const Buffer& indices) {
+void BindMesh(const CommandBuffer& cmd, const Buffer& vertices, const Buffer& indices) {
   cmd.bindVertexBuffers(0, vertices.handle(), ::vk::DeviceSize(0));
   cmd.bindIndexBuffer(indices.handle(), 0, ::vk::IndexType::eUint32);
 }
 
-void DrawIndexed(const ::vk::raii::CommandBuffer& cmd, uint32_t index_count, uint32_t first_index,
+void DrawIndexed(const CommandBuffer& cmd, uint32_t index_count, uint32_t first_index,
                  int32_t vertex_offset) {
   cmd.drawIndexed(index_count, 1, first_index, vertex_offset, 0);
 }
 
-void DrawFullScreenTriangle(const ::vk::raii::CommandBuffer& cmd) { cmd.draw(3, 1, 0, 0); }
+void DrawFullScreenTriangle(const CommandBuffer& cmd) { cmd.draw(3, 1, 0, 0); }
 
 }  // namespace aerial::vk

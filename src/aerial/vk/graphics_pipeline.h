@@ -20,6 +20,11 @@ struct VertexAttribute {
   uint32_t offset;
 };
 
+// Depth tests: the nearer fragment passes (reversed Z: the greater depth), or only an equal one
+// (a pass that draws where an earlier one left the cleared depth).
+inline constexpr ::vk::CompareOp kDepthNearer = ::vk::CompareOp::eGreater;
+inline constexpr ::vk::CompareOp kDepthEqual = ::vk::CompareOp::eEqual;
+
 struct GraphicsPipelineCreateInfo {
   std::string vertex_shader;    // "frame/opaque.vert"
   std::string fragment_shader;  // "frame/opaque.frag"; empty: none (a depth-only pass)
@@ -31,7 +36,7 @@ struct GraphicsPipelineCreateInfo {
   std::optional<::vk::Format> depth_format;
   ::vk::RenderPass render_pass = nullptr;   // set: draws in subpass 0 of it instead
   bool depth_write = true;
-  ::vk::CompareOp depth_compare = ::vk::CompareOp::eGreater;  // reversed-Z
+  ::vk::CompareOp depth_compare = kDepthNearer;
   bool alpha_blend = false;  // premultiplied: src + (1 - src_alpha) dst
   // The cull mode is dynamic state: every draw sets it (SetCullMode) before drawing.
   bool dynamic_cull_mode = false;
@@ -47,7 +52,7 @@ class GraphicsPipeline {
   GraphicsPipeline(const Context& context, const GraphicsPipelineCreateInfo& info);
 
   // Binds the pipeline, pushes its descriptors and constants. Draws follow.
-  void Bind(const ::vk::raii::CommandBuffer& cmd, const std::vector<Slot>& slots,
+  void Bind(const CommandBuffer& cmd, const std::vector<Slot>& slots,
             const void* push_constants = nullptr) const;
 
  private:
@@ -67,22 +72,22 @@ struct RenderTargets {
 // covering the first target (or the depth target when there is no color).
 class Rendering {
  public:
-  Rendering(const ::vk::raii::CommandBuffer& cmd, const RenderTargets& targets);
+  Rendering(const CommandBuffer& cmd, const RenderTargets& targets);
   ~Rendering();
   Rendering(const Rendering&) = delete;
   Rendering& operator=(const Rendering&) = delete;
 
  private:
-  const ::vk::raii::CommandBuffer& cmd_;
+  const CommandBuffer& cmd_;
 };
 
 // The viewport and scissor of a rectangle (by default the whole extent from the origin).
-void SetViewport(const ::vk::raii::CommandBuffer& cmd, ::vk::Extent2D extent, ::vk::Offset2D offset = {});
-void SetCullBackFaces(const ::vk::raii::CommandBuffer& cmd, bool cull_back);
-void BindMesh(const ::vk::raii::CommandBuffer& cmd, const Buffer& vertices, const Buffer& indices);
-void DrawIndexed(const ::vk::raii::CommandBuffer& cmd, uint32_t index_count, uint32_t first_index = 0,
+void SetViewport(const CommandBuffer& cmd, ::vk::Extent2D extent, ::vk::Offset2D offset = {});
+void SetCullBackFaces(const CommandBuffer& cmd, bool cull_back);
+void BindMesh(const CommandBuffer& cmd, const Buffer& vertices, const Buffer& indices);
+void DrawIndexed(const CommandBuffer& cmd, uint32_t index_count, uint32_t first_index = 0,
                  int32_t vertex_offset = 0);
 // Three vertices and no buffers: a full-screen triangle made in the vertex shader.
-void DrawFullScreenTriangle(const ::vk::raii::CommandBuffer& cmd);
+void DrawFullScreenTriangle(const CommandBuffer& cmd);
 
 }  // namespace aerial::vk

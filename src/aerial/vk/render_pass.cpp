@@ -46,7 +46,7 @@ namespace aerial::vk {
                                                              .layers = 1});
 }
 
-void BeginRenderPass(const ::vk::raii::CommandBuffer& cmd, ::vk::RenderPass render_pass,
+void BeginRenderPass(const CommandBuffer& cmd, ::vk::RenderPass render_pass,
                      ::vk::Framebuffer framebuffer, ::vk::Extent2D extent) {
   cmd.beginRenderPass(::vk::RenderPassBeginInfo{.renderPass = render_pass,
                                                 .framebuffer = framebuffer,

@@ -12,7 +12,7 @@ namespace aerial::vk {
 ::vk::raii::Framebuffer CreateFramebuffer(const Context& context, ::vk::RenderPass render_pass,
                                           ::vk::ImageView view, ::vk::Extent2D extent);
 // Begins the render pass over the whole framebuffer and sets the viewport and scissor to it.
-void BeginRenderPass(const ::vk::raii::CommandBuffer& cmd, ::vk::RenderPass render_pass,
+void BeginRenderPass(const CommandBuffer& cmd, ::vk::RenderPass render_pass,
                      ::vk::Framebuffer framebuffer, ::vk::Extent2D extent);
 
 }  // namespace aerial::vk

@@ -92,7 +92,7 @@ size_t Image::byte_size() const {
   return texel_bytes() * extent_.width * extent_.height * extent_.depth;
 }
 
-void Image::InitializeLayout(const ::vk::raii::CommandBuffer& cmd) const {
+void Image::InitializeLayout(const CommandBuffer& cmd) const {
   ::vk::ImageMemoryBarrier barrier{.srcAccessMask = {},
                                    .dstAccessMask = ::vk::AccessFlagBits::eMemoryRead |
                                                     ::vk::AccessFlagBits::eMemoryWrite,
@@ -106,7 +106,7 @@ void Image::InitializeLayout(const ::vk::raii::CommandBuffer& cmd) const {
                       ::vk::PipelineStageFlagBits::eAllCommands, {}, {}, {}, barrier);
 }
 
-void Image::Clear(const ::vk::raii::CommandBuffer& cmd) const {
+void Image::Clear(const CommandBuffer& cmd) const {
   cmd.clearColorImage(*image_, ::vk::ImageLayout::eGeneral,
                       ::vk::ClearColorValue{.float32 = std::array<float, 4>{0, 0, 0, 0}}, WholeRange(format_));
 }
@@ -118,12 +118,12 @@ namespace {
 }
 }  // namespace
 
-void Image::CopyToBuffer(const ::vk::raii::CommandBuffer& cmd, const Buffer& buffer) const {
+void Image::CopyToBuffer(const CommandBuffer& cmd, const Buffer& buffer) const {
   cmd.copyImageToBuffer(*image_, ::vk::ImageLayout::eGeneral, buffer.handle(),
                         WholeImageCopy(extent_, format_));
 }
 
-void Image::CopyFromBuffer(const ::vk::raii::CommandBuffer& cmd, const Buffer& buffer) const {
+void Image::CopyFromBuffer(const CommandBuffer& cmd, const Buffer& buffer) const {
   cmd.copyBufferToImage(buffer.handle(), *image_, ::vk::ImageLayout::eGeneral,
                         WholeImageCopy(extent_, format_));
 }
@@ -144,6 +144,18 @@ std::vector<float> ReadImageFloats(const Context& context, const Image& image) {
   std::vector<float> texels(bytes.size() / sizeof(float));
   std::memcpy(texels.data(), bytes.data(), texels.size() * sizeof(float));
   return texels;
+}
+
+BufferCreateInfo UniformBufferInfo(::vk::DeviceSize size) {
+  return {.size = size, .usage = ::vk::BufferUsageFlagBits::eUniformBuffer, .host_visible = true};
+}
+
+ImageCreateInfo RenderTargetInfo(uint32_t width, uint32_t height, ::vk::Format format) {
+  ::vk::ImageUsageFlags attachment = format == kDepth32f ? ::vk::ImageUsageFlagBits::eDepthStencilAttachment
+                                                         : ::vk::ImageUsageFlagBits::eColorAttachment;
+  return {.extent = {width, height, 1},
+          .format = format,
+          .usage = attachment | ::vk::ImageUsageFlagBits::eSampled | ::vk::ImageUsageFlagBits::eTransferSrc};
 }
 
 namespace {
@@ -175,7 +187,7 @@ namespace {
   return CreateClampSampler(context, ::vk::Filter::eLinear, compare);
 }
 
-void FullBarrier(const ::vk::raii::CommandBuffer& cmd) {
+void FullBarrier(const CommandBuffer& cmd) {
   // Everything before against everything after: passes are few and large, so finer barriers would
   // buy nothing on lavapipe and little on a GPU.
   ::vk::MemoryBarrier barrier{

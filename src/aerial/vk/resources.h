@@ -15,6 +15,16 @@ struct BufferCreateInfo {
   bool host_visible = false;  // mapped for the whole lifetime (uniforms, readback, staging)
 };
 
+// A uniform block the CPU writes (once per frame, say) and shaders read.
+BufferCreateInfo UniformBufferInfo(::vk::DeviceSize size);
+
+// Texel formats by what they hold: 32-bit floats, four, three or one per texel, and depth.
+using Format = ::vk::Format;
+inline constexpr ::vk::Format kRgba32f = ::vk::Format::eR32G32B32A32Sfloat;
+inline constexpr ::vk::Format kRgb32f = ::vk::Format::eR32G32B32Sfloat;  // vertex attributes
+inline constexpr ::vk::Format kR32f = ::vk::Format::eR32Sfloat;
+inline constexpr ::vk::Format kDepth32f = ::vk::Format::eD32Sfloat;
+
 class Buffer {
  public:
   Buffer(const Context& context, const BufferCreateInfo& info);
@@ -40,6 +50,10 @@ struct ImageCreateInfo {
                                 ::vk::ImageUsageFlagBits::eTransferDst;
 };
 
+// A 2D image that raster passes draw into (a color target, or the depth target for kDepth32f)
+// and that later passes sample or the CPU reads back (Granite's ImageCreateInfo::render_target).
+ImageCreateInfo RenderTargetInfo(uint32_t width, uint32_t height, ::vk::Format format);
+
 // Images live in VK_IMAGE_LAYOUT_GENERAL after creation: every table is both written by compute
 // passes and sampled by later ones.
 class Image {
@@ -54,10 +68,10 @@ class Image {
   size_t byte_size() const;
 
   // Transitions to GENERAL; call once in the first command buffer that uses the image.
-  void InitializeLayout(const ::vk::raii::CommandBuffer& cmd) const;
-  void Clear(const ::vk::raii::CommandBuffer& cmd) const;
-  void CopyToBuffer(const ::vk::raii::CommandBuffer& cmd, const Buffer& buffer) const;
-  void CopyFromBuffer(const ::vk::raii::CommandBuffer& cmd, const Buffer& buffer) const;
+  void InitializeLayout(const CommandBuffer& cmd) const;
+  void Clear(const CommandBuffer& cmd) const;
+  void CopyToBuffer(const CommandBuffer& cmd, const Buffer& buffer) const;
+  void CopyFromBuffer(const CommandBuffer& cmd, const Buffer& buffer) const;
 
  private:
   ::vk::raii::Image image_;
@@ -77,7 +91,7 @@ class Image {
 ::vk::raii::Sampler CreateDepthCompareSampler(const Context& context, ::vk::CompareOp compare);
 
 // Makes every earlier shader or transfer write visible to every later shader or transfer access.
-void FullBarrier(const ::vk::raii::CommandBuffer& cmd);
+void FullBarrier(const CommandBuffer& cmd);
 
 // The whole image's texels, copied to the host after every earlier GPU write (tightly packed, x
 // fastest). ReadImageFloats: the same for a 32-bit float format.

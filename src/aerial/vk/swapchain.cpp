@@ -121,7 +121,7 @@ bool Swapchain::Acquire(const CommandRing& ring) {
   }
 }
 
-void Swapchain::RecordDraw(const ::vk::raii::CommandBuffer& cmd, const Recorder& draw) const {
+void Swapchain::RecordDraw(const CommandBuffer& cmd, const Recorder& draw) const {
   BeginRenderPass(cmd, *render_pass_, *framebuffers_[image_], extent_);
   draw(cmd);
   cmd.endRenderPass();

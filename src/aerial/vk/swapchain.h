@@ -15,7 +15,7 @@
 
 namespace aerial::vk {
 
-using Recorder = std::function<void(const ::vk::raii::CommandBuffer&)>;
+using Recorder = std::function<void(const CommandBuffer&)>;
 
 // Whether a format sRGB-encodes what is stored to it (the _SRGB ones aerial uses).
 bool EncodesSrgb(::vk::Format format);
@@ -39,7 +39,7 @@ class Swapchain {
   // the swapchain is out of date: Recreate, and record nothing for this frame.
   bool Acquire(const CommandRing& ring);
   // Records the render pass over the acquired image: `draw` must write every pixel.
-  void RecordDraw(const ::vk::raii::CommandBuffer& cmd, const Recorder& draw) const;
+  void RecordDraw(const CommandBuffer& cmd, const Recorder& draw) const;
   // Submits the ring's command buffer (waiting for the acquire) and presents the image. False
   // when the swapchain is out of date or suboptimal: Recreate.
   bool SubmitAndPresent(CommandRing& ring);
