@@ -18,8 +18,11 @@ FroxelVolume::FroxelVolume(const vk::Context& context, const FroxelGrid& grid)
       mie_(context, FroxelImage(grid)),
       transmittance_(context, FroxelImage(grid)),
       pipeline_(context, "frame/froxel.comp",
-                {vk::kUniform, vk::kUniform, vk::kSampled, vk::kSampled, vk::kStorageImage,
-                 vk::kStorageImage, vk::kStorageImage, vk::kUniform, vk::kSampled}) {
+                {{"AtmosphereBlock", vk::kUniform}, {"FrameBlock", vk::kUniform},
+                 {"transmittance_texture", vk::kSampled}, {"multiple_density_texture", vk::kSampled},
+                 {"rayleigh_froxels", vk::kStorageImage}, {"mie_froxels", vk::kStorageImage},
+                 {"transmittance_froxels", vk::kStorageImage}, {"ShadowBlock", vk::kUniform},
+                 {"shadow_map", vk::kSampled}}) {
   grid.Validate();
   context.Submit([&](const auto& cmd) {
     for (const vk::Image* image : {&rayleigh_, &mie_, &transmittance_}) image->InitializeLayout(cmd);

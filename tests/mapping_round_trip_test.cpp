@@ -21,7 +21,7 @@ std::array<float, 4> MaxRoundTripErrors(const PrecomputeOptions& options) {
                               .host_visible = true});
   std::memset(errors.mapped(), 0, 4 * sizeof(uint32_t));
   vk::ComputePipeline pipeline(context, "test/mapping_round_trip.comp",
-                               {vk::kUniform, vk::kStorageBuffer}, sizeof(int));
+                               {{"AtmosphereBlock", vk::kUniform}, {"Errors", vk::kStorageBuffer}}, sizeof(int));
   const TableResolution& r = options.resolution;
   context.Submit([&](const auto& cmd) {
     std::array<::vk::Extent3D, 3> extents = {

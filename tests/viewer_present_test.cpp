@@ -56,7 +56,7 @@ TEST_F(ViewerToneMap, GpuMatchesCpuBeforeRounding) {
   vk::Image input = Upload(ramp);
   vk::Image output(context, {.extent = {kRampSize, 1, 1}});
   ::vk::raii::Sampler sampler = vk::CreateLinearClampSampler(context);
-  vk::ComputePipeline pipeline(context, "test/tone_map.comp", {vk::kSampled, vk::kStorageImage});
+  vk::ComputePipeline pipeline(context, "test/tone_map.comp", {{"radiance_image", vk::kSampled}, {"display_values", vk::kStorageImage}});
   context.Submit([&](const auto& cmd) {
     output.InitializeLayout(cmd);
     pipeline.Dispatch(cmd, {vk::SampledImageSlot{&input, *sampler}, vk::StorageImageSlot{&output}},

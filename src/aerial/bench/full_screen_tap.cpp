@@ -11,7 +11,7 @@ FullScreenTap::FullScreenTap(const vk::Context& context, uint32_t width, uint32_
       sampler_(vk::CreateLinearClampSampler(context)),
       pipeline_(context, {.vertex_shader = "frame/fullscreen.vert",
                           .fragment_shader = "bench/full_screen_tap.frag",
-                          .slot_types = {vk::kSampled},
+                          .slots = {{"volume", vk::kSampled}},
                           .push_constant_bytes = 2 * sizeof(float),
                           .color_formats = {::vk::Format::eR32G32B32A32Sfloat}}),
       timer_(context) {

@@ -28,26 +28,41 @@ struct AccumulateStep {
   int divide_by_rayleigh_phase;
 };
 
-// The passes' pipelines; slot order = binding order in each shader.
+// The passes' pipelines; slots in binding order, named as in each shader (checked).
 struct Pipelines {
   explicit Pipelines(const vk::Context& c)
-      : transmittance(c, "precompute/transmittance.comp", {kUniform, kStorageImage}),
-        direct_irradiance(c, "precompute/direct_irradiance.comp", {kUniform, kSampled, kStorageImage}),
+      : transmittance(c, "precompute/transmittance.comp",
+                      {{"AtmosphereBlock", kUniform}, {"transmittance_image", kStorageImage}}),
+        direct_irradiance(c, "precompute/direct_irradiance.comp",
+                          {{"AtmosphereBlock", kUniform}, {"transmittance_texture", kSampled},
+                           {"delta_irradiance_image", kStorageImage}}),
         single_scattering(c, "precompute/single_scattering.comp",
-                          {kUniform, kSampled, kStorageImage, kStorageImage, kStorageImage}),
+                          {{"AtmosphereBlock", kUniform}, {"transmittance_texture", kSampled},
+                           {"delta_rayleigh_image", kStorageImage}, {"single_mie_image", kStorageImage},
+                           {"rayleigh_accumulator", kStorageImage}}),
         incident_radiance(c, "precompute/incident_radiance.comp",
-                          {kUniform, kSampled, kSampled, kSampled, kSampled, kSampled,
-                           kStorageBuffer, kStorageBuffer}, sizeof(int)),
+                          {{"AtmosphereBlock", kUniform}, {"transmittance_texture", kSampled},
+                           {"single_rayleigh_texture", kSampled}, {"single_mie_texture", kSampled},
+                           {"multiple_scattering_texture", kSampled}, {"delta_irradiance_texture", kSampled},
+                           {"IncidentRadiance", kStorageBuffer}, {"Directions", kStorageBuffer}},
+                          sizeof(int)),
         scattering_density(c, "precompute/scattering_density.comp",
-                           {kUniform, kStorageBuffer, kStorageBuffer, kStorageImage}),
+                           {{"AtmosphereBlock", kUniform}, {"IncidentRadiance", kStorageBuffer},
+                            {"Directions", kStorageBuffer}, {"scattering_density_image", kStorageImage}}),
         indirect_irradiance(c, "precompute/indirect_irradiance.comp",
-                            {kUniform, kSampled, kSampled, kSampled, kSampled, kStorageImage, kStorageImage,
-                             kSampled},
+                            {{"AtmosphereBlock", kUniform}, {"single_rayleigh_texture", kSampled},
+                             {"single_mie_texture", kSampled}, {"multiple_scattering_texture", kSampled},
+                             {"previous_delta_irradiance", kSampled}, {"delta_irradiance_image", kStorageImage},
+                             {"irradiance_accumulator", kStorageImage}, {"transmittance_texture", kSampled}},
                             sizeof(SeriesStep)),
         multiple_scattering(c, "precompute/multiple_scattering.comp",
-                            {kUniform, kSampled, kSampled, kStorageImage}),
+                            {{"AtmosphereBlock", kUniform}, {"transmittance_texture", kSampled},
+                             {"scattering_density_texture", kSampled},
+                             {"delta_multiple_scattering_image", kStorageImage}}),
         accumulate(c, "precompute/accumulate_multiple_scattering.comp",
-                   {kUniform, kSampled, kSampled, kStorageImage}, sizeof(AccumulateStep)) {}
+                   {{"AtmosphereBlock", kUniform}, {"order_texture", kSampled},
+                    {"previous_order_texture", kSampled}, {"accumulator", kStorageImage}},
+                   sizeof(AccumulateStep)) {}
   vk::ComputePipeline transmittance, direct_irradiance, single_scattering, incident_radiance,
       scattering_density, indirect_irradiance, multiple_scattering, accumulate;
 };

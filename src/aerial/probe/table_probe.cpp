@@ -39,9 +39,11 @@ std::vector<ProbeResult> ProbeTables(const AtmosphereTables& tables,
                                      .usage = ::vk::BufferUsageFlagBits::eStorageBuffer,
                                      .host_visible = true});
   vk::ComputePipeline pipeline(context, "probe/probe.comp",
-                               {vk::kUniform, vk::kSampled, vk::kSampled, vk::kSampled,
-                                vk::kSampled, vk::kSampled, vk::kSampled, vk::kStorageBuffer,
-                                vk::kStorageBuffer},
+                               {{"AtmosphereBlock", vk::kUniform}, {"transmittance_texture", vk::kSampled},
+                                {"irradiance_texture", vk::kSampled}, {"rayleigh_texture", vk::kSampled},
+                                {"mie_texture", vk::kSampled}, {"multiple_texture", vk::kSampled},
+                                {"multiple_density_texture", vk::kSampled}, {"Queries", vk::kStorageBuffer},
+                                {"Results", vk::kStorageBuffer}},
                                sizeof(int));
   int count = int(queries.size());
   context.Submit([&](const auto& cmd) {

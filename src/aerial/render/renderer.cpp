@@ -27,8 +27,23 @@ constexpr uint32_t kTerrainChunkSlots = 8192;
 // transmittance and irradiance tables (lighting), the multiple density table (per-pixel mode),
 // the froxels, the shadow block and map (shadow.glsl, SHADOW_BINDING 8), and the screen's cached
 // sun visibility (opaque_fragment.glsl).
-const vk::SlotTypes kMeshSlots = {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled,
-                                                      kSampled, kSampled, kUniform, kSampled, kSampled};
+const vk::SlotLayout kMeshSlots = {
+    {"AtmosphereBlock", kUniform},        {"FrameBlock", kUniform},
+    {"transmittance_texture", kSampled},  {"irradiance_texture", kSampled},
+    {"multiple_density_texture", kSampled}, {"rayleigh_froxels", kSampled},
+    {"mie_froxels", kSampled},            {"transmittance_froxels", kSampled},
+    {"ShadowBlock", kUniform},            {"shadow_map", kSampled},
+    {"cached_sun_visibility", kSampled}};
+
+// The sky-view pass (sky_view.comp) and the sky (sky.frag) bind the same resources, the sky-view
+// table written by the one (sky_view_type: storage images) and read by the other (sampled).
+vk::SlotLayout SkySlots(::vk::DescriptorType sky_view_type) {
+  return {{"AtmosphereBlock", kUniform},      {"FrameBlock", kUniform},
+          {"transmittance_texture", kSampled}, {"rayleigh_texture", kSampled},
+          {"mie_texture", kSampled},           {"multiple_texture", kSampled},
+          {"irradiance_texture", kSampled},    {"rayleigh_sky", sky_view_type},
+          {"mie_sky", sky_view_type},          {"background_sky", sky_view_type}};
+}
 
 // Where an opaque fragment's sun visibility comes from (opaque_fragment.glsl).
 enum class SunVisibilitySource { kShadowMap, kCache };
@@ -47,7 +62,7 @@ vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std
                                             std::vector<vk::Format> color_formats = {vk::kRgba32f}) {
   return {.vertex_shader = vertex,
           .fragment_shader = fragment,
-          .slot_types = kMeshSlots,
+          .slots = kMeshSlots,
           .vertex_stride = sizeof(Vertex),
           .attributes = {{vk::kRgb32f, offsetof(Vertex, position)},
                          {vk::kRgb32f, offsetof(Vertex, normal)},
@@ -66,8 +81,7 @@ vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std
 vk::GraphicsPipelineCreateInfo SkyPipeline(AerialMode mode) {
   return {.vertex_shader = "frame/sky.vert",
           .fragment_shader = "frame/sky.frag",
-          .slot_types = {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled,
-                         kSampled, kSampled, kSampled},
+          .slots = SkySlots(kSampled),
           .color_formats = {vk::kRgba32f},
           .depth_format = vk::kDepth32f,
           .depth_write = false,
@@ -172,8 +186,7 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       shadow_map_(tables.context(), options.shadows),
       casters_(SceneCasterBounds(scene)),
       sky_view_(tables.context(), "frame/sky_view.comp",
-                {kUniform, kUniform, kSampled, kSampled, kSampled, kSampled, kSampled,
-                 vk::kStorageImage, vk::kStorageImage, vk::kStorageImage},
+                SkySlots(vk::kStorageImage),
                 sizeof(kSkyViewSize)),
       opaque_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/opaque.frag", false,
                                              MeshConstants(options, SurfaceLight::kSunAndSky,

@@ -3,12 +3,10 @@
 namespace aerial::vk {
 
 ComputePipeline::ComputePipeline(const Context& context, const std::string& shader,
-                                 std::vector<::vk::DescriptorType> slot_types,
-                                 uint32_t push_constant_bytes)
+                                 SlotLayout slots, uint32_t push_constant_bytes)
     : name_(shader),
-      layout_(context, std::move(slot_types), push_constant_bytes,
-              ::vk::ShaderStageFlagBits::eCompute) {
-  ::vk::raii::ShaderModule module = CreateShaderModule(context, shader);
+      layout_(context, std::move(slots), push_constant_bytes, ::vk::ShaderStageFlagBits::eCompute) {
+  ::vk::raii::ShaderModule module = CreateShaderModule(context, shader, layout_.slots);
   pipeline_ = ::vk::raii::Pipeline(
       context.device(), nullptr,
       ::vk::ComputePipelineCreateInfo{

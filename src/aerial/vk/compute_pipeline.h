@@ -11,10 +11,11 @@ namespace aerial::vk {
 // Binding i of set 0 receives slots[i]: the order of a pass's slots is its binding numbers.
 class ComputePipeline {
  public:
-  // shader: the path under shaders/ ("precompute/transmittance.comp"). slot_types: one descriptor
-  // type per binding, from 0. push_constant_bytes: 0 when the shader has none.
-  ComputePipeline(const Context& context, const std::string& shader,
-                  std::vector<::vk::DescriptorType> slot_types, uint32_t push_constant_bytes = 0);
+  // shader: the path under shaders/ ("precompute/transmittance.comp"). slots: one named slot per
+  // binding, from 0, checked against the shader's (shader_bindings.h). push_constant_bytes: 0
+  // when the shader has none.
+  ComputePipeline(const Context& context, const std::string& shader, SlotLayout slots,
+                  uint32_t push_constant_bytes = 0);
 
   // Binds the pipeline, pushes the descriptors and constants, and dispatches enough workgroups of
   // `local_size` to cover `threads`.

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "aerial/vk/resources.h"
+#include "aerial/vk/shader_bindings.h"
 
 namespace aerial::vk {
 
@@ -16,31 +17,32 @@ struct SampledImageSlot { const Image* image; ::vk::Sampler sampler; };
 struct StorageImageSlot { const Image* image; };
 using Slot = std::variant<UniformBufferSlot, StorageBufferSlot, SampledImageSlot, StorageImageSlot>;
 
-// Descriptor types for slot lists, shorter to read in pass tables: binding i has SlotTypes[i].
-using SlotTypes = std::vector<::vk::DescriptorType>;
+// Descriptor types for slot lists (SlotLayout, shader_bindings.h), shorter to read in pass tables.
 inline constexpr auto kUniform = ::vk::DescriptorType::eUniformBuffer;
 inline constexpr auto kStorageBuffer = ::vk::DescriptorType::eStorageBuffer;
 inline constexpr auto kSampled = ::vk::DescriptorType::eCombinedImageSampler;
 inline constexpr auto kStorageImage = ::vk::DescriptorType::eStorageImage;
 
-// Binding i of set 0 has slot_types[i]; push constants, if any, start at offset 0.
+// Binding i of set 0 is slots[i]; push constants, if any, start at offset 0.
 struct PushDescriptorLayout {
-  PushDescriptorLayout(const Context& context, std::vector<::vk::DescriptorType> slot_types,
-                       uint32_t push_constant_bytes, ::vk::ShaderStageFlags stages);
+  PushDescriptorLayout(const Context& context, SlotLayout slots, uint32_t push_constant_bytes,
+                       ::vk::ShaderStageFlags stages);
 
-  // Pushes slots[i] to binding i and the push constants (when the layout has them).
+  // Pushes slots[i] to binding i and the push constants (when the layout has them). Throws
+  // aerial::Error when a slot's kind is not its binding's type.
   void Push(const CommandBuffer& cmd, ::vk::PipelineBindPoint bind_point,
             const std::vector<Slot>& slots, const void* push_constants,
             const std::string& pipeline_name) const;
 
-  std::vector<::vk::DescriptorType> slot_types;
+  SlotLayout slots;
   uint32_t push_constant_bytes;
   ::vk::ShaderStageFlags stages;
   ::vk::raii::DescriptorSetLayout set_layout{nullptr};
   ::vk::raii::PipelineLayout layout{nullptr};
 };
 
-// Throws aerial::Error when the name is not one of shaders/.
-::vk::raii::ShaderModule CreateShaderModule(const Context& context, const std::string& shader);
+// Throws aerial::Error when the name is not one of shaders/, or when its bindings do not match
+// slots by name and type (CheckShaderBindings).
+::vk::raii::ShaderModule CreateShaderModule(const Context& context, const std::string& shader, const SlotLayout& slots);
 
 }  // namespace aerial::vk

@@ -6,12 +6,12 @@ namespace aerial::vk {
 
 GraphicsPipeline::GraphicsPipeline(const Context& context, const GraphicsPipelineCreateInfo& info)
     : name_(info.vertex_shader + "+" + info.fragment_shader),
-      layout_(context, info.slot_types, info.push_constant_bytes,
+      layout_(context, info.slots, info.push_constant_bytes,
               ::vk::ShaderStageFlagBits::eVertex | ::vk::ShaderStageFlagBits::eFragment) {
-  ::vk::raii::ShaderModule vertex = CreateShaderModule(context, info.vertex_shader);
+  ::vk::raii::ShaderModule vertex = CreateShaderModule(context, info.vertex_shader, info.slots);
   bool has_fragment = !info.fragment_shader.empty();
   ::vk::raii::ShaderModule fragment =
-      has_fragment ? CreateShaderModule(context, info.fragment_shader) : ::vk::raii::ShaderModule(nullptr);
+      has_fragment ? CreateShaderModule(context, info.fragment_shader, info.slots) : ::vk::raii::ShaderModule(nullptr);
   std::vector<::vk::SpecializationMapEntry> entries;
   for (uint32_t i = 0; i < info.specialization.size(); ++i)
     entries.push_back({.constantID = i, .offset = uint32_t(i * sizeof(int32_t)), .size = sizeof(int32_t)});

@@ -28,7 +28,7 @@ inline constexpr ::vk::CompareOp kDepthEqual = ::vk::CompareOp::eEqual;
 struct GraphicsPipelineCreateInfo {
   std::string vertex_shader;    // "frame/opaque.vert"
   std::string fragment_shader;  // "frame/opaque.frag"; empty: none (a depth-only pass)
-  std::vector<::vk::DescriptorType> slot_types;
+  SlotLayout slots;  // checked against both stages' bindings (shader_bindings.h)
   uint32_t push_constant_bytes = 0;
   uint32_t vertex_stride = 0;               // 0 with no attributes: no vertex buffer
   std::vector<VertexAttribute> attributes;  // location i = attributes[i]
