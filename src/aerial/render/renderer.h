@@ -8,7 +8,9 @@
 //      nearest first, each fragment lit and seen through the air in the same shader (froxels or
 //      tables, phases from the fragment's own ray); then the sky, only where no geometry was
 //      drawn (depth test EQUAL against the cleared depth); then the transparent objects, back to
-//      front, reading the froxels per vertex, phases per pixel, blended.
+//      front, reading the froxels per vertex, phases per pixel, blended. With shadows, a frame
+//      whose view moved draws its opaque geometry in a scope of its own that also writes the sun's
+//      visibility, which the frames of a still view then read back (opaque_fragment.glsl).
 // The same renderer serves `aerial render`, the viewer and the exporters. Record writes nothing
 // the GPU may still be reading: its per-frame buffers have one copy per frame in flight.
 #include <memory>
