@@ -14,8 +14,8 @@
 #include <regex>
 #include <string>
 
-#include "aerial/precompute/atmosphere_uniforms.h"
-#include "aerial/render/shadow_uniforms.h"
+#include "aerial/shader_abi/atmosphere_block.h"
+#include "aerial/shader_abi/shadow_block.h"
 #include "aerial/shader_abi/frame_block.h"
 
 namespace aerial {

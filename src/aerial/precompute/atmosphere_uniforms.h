@@ -1,43 +1,11 @@
 #pragma once
-// The std140 uniform block every shader reads (shaders/include/definitions.glsl, AtmosphereBlock):
-// the atmosphere in float, plus table sizes and sample counts.
-#include <array>
-#include <cstddef>
-
+// The atmosphere's uniform block (shader_abi/atmosphere_block.h) filled from its parameters and
+// the tables' options.
 #include "aerial/atmosphere/parameters.h"
 #include "aerial/precompute/precompute_options.h"
+#include "aerial/shader_abi/atmosphere_block.h"
 
 namespace aerial {
-
-struct alignas(16) GpuDensityLayer {
-  float width, exp_term, exp_scale, linear_term, constant_term, pad0, pad1, pad2;
-};
-
-struct alignas(16) AtmosphereUniforms {
-  std::array<float, 4> solar_irradiance;
-  std::array<float, 4> rayleigh_scattering;
-  std::array<float, 4> mie_scattering;
-  std::array<float, 4> mie_extinction;
-  std::array<float, 4> absorption_extinction;
-  std::array<float, 4> ground_albedo;
-  std::array<GpuDensityLayer, 2> rayleigh_density;
-  std::array<GpuDensityLayer, 2> mie_density;
-  std::array<GpuDensityLayer, 2> absorption_density;
-  float bottom_radius, top_radius, sun_angular_radius, mie_phase_g;
-  float mu_s_min, pad0, pad1, pad2;
-  std::array<int, 4> transmittance_size;
-  std::array<int, 4> irradiance_size;
-  std::array<int, 4> scattering_size;     // r, mu, mu_s, nu
-  std::array<int, 4> density_size;        // r, mu, mu_s, nu
-  std::array<int, 4> density_directions;  // theta up, theta down, phi, unused
-  std::array<int, 4> sample_counts;       // transmittance, ray, irradiance zenith, azimuth
-  std::array<int, 4> multiple_scattering_steps;
-  std::array<int, 4> multiple_density_size;  // r, mu, mu_s, nu
-};
-static_assert(offsetof(AtmosphereUniforms, rayleigh_density) == 96);
-static_assert(offsetof(AtmosphereUniforms, bottom_radius) == 96 + 3 * 64);
-static_assert(offsetof(AtmosphereUniforms, transmittance_size) == 96 + 3 * 64 + 32);
-static_assert(sizeof(AtmosphereUniforms) == 96 + 3 * 64 + 32 + 8 * 16);
 
 AtmosphereUniforms MakeAtmosphereUniforms(const AtmosphereParameters& atmosphere,
                                           const PrecomputeOptions& options);

@@ -19,10 +19,9 @@
 #include <glm/glm.hpp>
 
 #include "aerial/scene/scene.h"
+#include "aerial/shader_abi/shadow_block.h"
 
 namespace aerial {
-
-inline constexpr int kShadowCascades = 4;
 
 // Texels around each slice's bounding square that still belong to its tile: the lookup's reach
 // from any point of the slice (its filter and its offset along the normal,
