@@ -1,5 +1,7 @@
 #include "froxel/froxel_volume.h"
 
+#include "aerial/shader_abi/shadow_block.h"
+
 
 namespace aerial {
 namespace {
@@ -22,10 +24,15 @@ FroxelVolume::FroxelVolume(const vk::Context& context, const FroxelGrid& grid)
                  {"transmittance_texture", vk::kSampled}, {"multiple_density_texture", vk::kSampled},
                  {"rayleigh_froxels", vk::kStorageImage}, {"mie_froxels", vk::kStorageImage},
                  {"transmittance_froxels", vk::kStorageImage}, {"ShadowBlock", vk::kUniform},
-                 {"shadow_map", vk::kSampled}}) {
+                 {"shadow_map", vk::kSampled}}),
+      no_shadow_block_(context, vk::UniformBufferInfo(sizeof(ShadowUniforms))),
+      no_shadow_map_(context, vk::RenderTargetInfo(1, 1, vk::kDepth32f)),
+      no_shadow_sampler_(vk::CreateShadowMapSampler(context)) {
+  ShadowUniforms none{};  // cascades.x = 0: no shadows
+  no_shadow_block_.Write(std::as_bytes(std::span(&none, 1)));
   grid.Validate();
   context.Submit([&](const auto& cmd) {
-    for (const vk::Image* image : {&rayleigh_, &mie_, &transmittance_}) image->InitializeLayout(cmd);
+    for (const vk::Image* image : {&rayleigh_, &mie_, &transmittance_, &no_shadow_map_}) image->InitializeLayout(cmd);
   });
 }
 
@@ -41,6 +48,11 @@ void FroxelVolume::Build(const vk::CommandBuffer& cmd, const AtmosphereTables& t
                       vk::StorageImageSlot{&transmittance_}, vk::UniformBufferSlot{&shadow_uniforms},
                       shadow_map},
                      {uint32_t(grid_.width), uint32_t(grid_.height), 1}, {32, 1, 1});
+}
+
+void FroxelVolume::Build(const vk::CommandBuffer& cmd, const AtmosphereTables& tables,
+                         const vk::Buffer& frame_uniforms) const {
+  Build(cmd, tables, frame_uniforms, no_shadow_block_, {&no_shadow_map_, *no_shadow_sampler_});
 }
 
 FroxelTexels FroxelVolume::Read(const vk::Context& context) const {

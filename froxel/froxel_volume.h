@@ -18,6 +18,9 @@ class FroxelVolume {
   void Build(const vk::CommandBuffer& cmd, const AtmosphereTables& tables,
              const vk::Buffer& frame_uniforms, const vk::Buffer& shadow_uniforms,
              const vk::SampledImageSlot& shadow_map) const;
+  // The same without the sun's shadows (every visibility 1), for a caller with no shadow map: a
+  // renderer that embeds aerial and fills the FrameBlock for its own camera (docs/api.md).
+  void Build(const vk::CommandBuffer& cmd, const AtmosphereTables& tables, const vk::Buffer& frame_uniforms) const;
 
   const FroxelGrid& grid() const { return grid_; }
   const vk::Image& rayleigh() const { return rayleigh_; }
@@ -32,6 +35,11 @@ class FroxelVolume {
   FroxelGrid grid_;
   vk::Image rayleigh_, mie_, transmittance_;
   vk::ComputePipeline pipeline_;
+  // What the shadowless Build binds for the shadow map: a ShadowBlock with no cascades (so the
+  // shader never reads the map) and a one-texel depth map with its comparing sampler.
+  vk::Buffer no_shadow_block_;
+  vk::Image no_shadow_map_;
+  ::vk::raii::Sampler no_shadow_sampler_;
 };
 
 }  // namespace aerial

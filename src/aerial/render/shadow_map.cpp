@@ -35,8 +35,7 @@ vk::GraphicsPipelineCreateInfo DepthPipeline() {
 
 ShadowMap::ShadowMap(const vk::Context& context, bool enabled)
     : atlas_(context, AtlasImage(enabled)),
-      // The lookup's reference is the receiver's depth: lit where it is at least the caster's.
-      sampler_(vk::CreateDepthCompareSampler(context, ::vk::CompareOp::eGreaterOrEqual)),
+      sampler_(vk::CreateShadowMapSampler(context)),
       depth_(context, DepthPipeline()) {
   context.Submit([&](const auto& cmd) { atlas_.InitializeLayout(cmd); });
 }

@@ -183,8 +183,8 @@ namespace {
   return CreateClampSampler(context, ::vk::Filter::eNearest);
 }
 
-::vk::raii::Sampler CreateDepthCompareSampler(const Context& context, ::vk::CompareOp compare) {
-  return CreateClampSampler(context, ::vk::Filter::eLinear, compare);
+::vk::raii::Sampler CreateShadowMapSampler(const Context& context) {
+  return CreateClampSampler(context, ::vk::Filter::eLinear, ::vk::CompareOp::eGreaterOrEqual);
 }
 
 void FullBarrier(const CommandBuffer& cmd) {

@@ -86,9 +86,11 @@ class Image {
 ::vk::raii::Sampler CreateLinearClampSampler(const Context& context);
 // Nearest texel, clamp-to-edge: for images read texel by texel (a depth buffer).
 ::vk::raii::Sampler CreateNearestClampSampler(const Context& context);
-// Linear, clamp-to-edge, comparing: a lookup returns the bilinear blend of `reference compare
-// texel` over the four nearest texels (hardware PCF), for sampler2DShadow.
-::vk::raii::Sampler CreateDepthCompareSampler(const Context& context, ::vk::CompareOp compare);
+// Linear, clamp-to-edge, comparing, for sampler2DShadow: a lookup in a reversed-Z shadow map
+// (depth 1 toward the light) with the receiver's depth as the reference is 1 (lit) where the
+// receiver is at least as near the light as the caster, blended bilinearly over the four nearest
+// texels (hardware PCF; shaders/include/shadow.glsl).
+::vk::raii::Sampler CreateShadowMapSampler(const Context& context);
 
 // Makes every earlier shader or transfer write visible to every later shader or transfer access.
 void FullBarrier(const CommandBuffer& cmd);
