@@ -2,7 +2,6 @@
 
 #include "aerial/shader_abi/shadow_block.h"
 
-
 namespace aerial {
 namespace {
 

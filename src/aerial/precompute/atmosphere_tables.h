@@ -49,7 +49,6 @@ class AtmosphereTables {
   const PrecomputeOptions& options() const { return options_; }
   const AtmosphereUniforms& uniforms() const { return uniforms_; }
   const vk::Buffer& uniform_buffer() const { return uniform_buffer_; }
-  ::vk::Sampler sampler() const { return *sampler_; }
   // An image (a table, or any other) as shaders sample the tables: linear, clamped to the edge.
   vk::SampledImageSlot Sampled(const vk::Image& image) const { return {&image, *sampler_}; }
 

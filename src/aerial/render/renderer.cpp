@@ -18,7 +18,6 @@ using vk::kUniform;
 
 int32_t PerPixel(AerialMode mode) { return mode == AerialMode::kPerPixel ? 1 : 0; }
 
-
 // Terrain chunk slots on the GPU: the default view at 720p draws a few hundred chunks and walks
 // through about as many coarser ones; the rest keeps chunks around for a camera that moves.
 constexpr uint32_t kTerrainChunkSlots = 8192;
@@ -266,8 +265,9 @@ void Renderer::RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& fra
   frame_info_.sky_view_updated = true;
   sky_view_.Dispatch(cmd,
                      {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame},
-                      tables_.Sampled(tables_.transmittance()), tables_.Sampled(tables_.rayleigh()), tables_.Sampled(tables_.mie()),
-                      tables_.Sampled(tables_.multiple()), tables_.Sampled(tables_.irradiance()),
+                      tables_.Sampled(tables_.transmittance()), tables_.Sampled(tables_.rayleigh()),
+                      tables_.Sampled(tables_.mie()), tables_.Sampled(tables_.multiple()),
+                      tables_.Sampled(tables_.irradiance()),
                       vk::StorageImageSlot{&sky_rayleigh_}, vk::StorageImageSlot{&sky_mie_},
                       vk::StorageImageSlot{&sky_background_}},
                      {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}, {8, 8, 1},
@@ -309,9 +309,9 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene)
 std::vector<vk::Slot> Renderer::MeshSlots(uint32_t slot) const {
   return {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame_buffers_[slot]},
           tables_.Sampled(tables_.transmittance()), tables_.Sampled(tables_.irradiance()),
-          tables_.Sampled(tables_.multiple_density()), tables_.Sampled(froxels_.rayleigh()), tables_.Sampled(froxels_.mie()),
-          tables_.Sampled(froxels_.transmittance()), vk::UniformBufferSlot{&shadow_buffers_[slot]},
-          shadow_map_.slot(), tables_.Sampled(sun_visibility_)};
+          tables_.Sampled(tables_.multiple_density()), tables_.Sampled(froxels_.rayleigh()),
+          tables_.Sampled(froxels_.mie()), tables_.Sampled(froxels_.transmittance()),
+          vk::UniformBufferSlot{&shadow_buffers_[slot]}, shadow_map_.slot(), tables_.Sampled(sun_visibility_)};
 }
 
 // Nearest first, so that early depth tests skip the shading of what is hidden: the scene's meshes
@@ -344,8 +344,9 @@ void Renderer::DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot
   timer.Begin(cmd, "sky");
   if (options_.passes.sky) {
     sky_.Bind(cmd, {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame_buffers_[slot]},
-                    tables_.Sampled(tables_.transmittance()), tables_.Sampled(tables_.rayleigh()), tables_.Sampled(tables_.mie()),
-                    tables_.Sampled(tables_.multiple()), tables_.Sampled(tables_.irradiance()), tables_.Sampled(sky_rayleigh_),
+                    tables_.Sampled(tables_.transmittance()), tables_.Sampled(tables_.rayleigh()),
+                    tables_.Sampled(tables_.mie()), tables_.Sampled(tables_.multiple()),
+                    tables_.Sampled(tables_.irradiance()), tables_.Sampled(sky_rayleigh_),
                     tables_.Sampled(sky_mie_), tables_.Sampled(sky_background_)});
     vk::DrawFullScreenTriangle(cmd);
   }

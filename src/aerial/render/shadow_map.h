@@ -39,7 +39,6 @@ class ShadowMap {
               const TerrainChunkCache* terrain, const ShadowTerrain& chunks) const;
 
   const vk::Image& atlas() const { return atlas_; }
-  ::vk::Sampler sampler() const { return *sampler_; }
   // The atlas with its comparing sampler, as the shaders bind it (shadow_map in shadow.glsl).
   vk::SampledImageSlot slot() const { return {&atlas_, *sampler_}; }
 

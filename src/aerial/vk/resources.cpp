@@ -150,7 +150,7 @@ BufferCreateInfo UniformBufferInfo(::vk::DeviceSize size) {
   return {.size = size, .usage = ::vk::BufferUsageFlagBits::eUniformBuffer, .host_visible = true};
 }
 
-ImageCreateInfo RenderTargetInfo(uint32_t width, uint32_t height, ::vk::Format format) {
+ImageCreateInfo RenderTargetInfo(uint32_t width, uint32_t height, Format format) {
   ::vk::ImageUsageFlags attachment = format == kDepth32f ? ::vk::ImageUsageFlagBits::eDepthStencilAttachment
                                                          : ::vk::ImageUsageFlagBits::eColorAttachment;
   return {.extent = {width, height, 1},

@@ -20,10 +20,10 @@ BufferCreateInfo UniformBufferInfo(::vk::DeviceSize size);
 
 // Texel formats by what they hold: 32-bit floats, four, three or one per texel, and depth.
 using Format = ::vk::Format;
-inline constexpr ::vk::Format kRgba32f = ::vk::Format::eR32G32B32A32Sfloat;
-inline constexpr ::vk::Format kRgb32f = ::vk::Format::eR32G32B32Sfloat;  // vertex attributes
-inline constexpr ::vk::Format kR32f = ::vk::Format::eR32Sfloat;
-inline constexpr ::vk::Format kDepth32f = ::vk::Format::eD32Sfloat;
+inline constexpr Format kRgba32f = Format::eR32G32B32A32Sfloat;
+inline constexpr Format kRgb32f = Format::eR32G32B32Sfloat;  // vertex attributes
+inline constexpr Format kR32f = Format::eR32Sfloat;
+inline constexpr Format kDepth32f = Format::eD32Sfloat;
 
 class Buffer {
  public:
@@ -43,7 +43,7 @@ class Buffer {
 struct ImageCreateInfo {
   ::vk::Extent3D extent;  // depth 1: a 2D image, unless volume is set
   bool volume = false;    // a 3D image even with depth 1 (a placeholder for a 3D table)
-  ::vk::Format format = ::vk::Format::eR32G32B32A32Sfloat;
+  Format format = kRgba32f;
   ::vk::ImageUsageFlags usage = ::vk::ImageUsageFlagBits::eStorage |
                                 ::vk::ImageUsageFlagBits::eSampled |
                                 ::vk::ImageUsageFlagBits::eTransferSrc |
@@ -52,7 +52,7 @@ struct ImageCreateInfo {
 
 // A 2D image that raster passes draw into (a color target, or the depth target for kDepth32f)
 // and that later passes sample or the CPU reads back (Granite's ImageCreateInfo::render_target).
-ImageCreateInfo RenderTargetInfo(uint32_t width, uint32_t height, ::vk::Format format);
+ImageCreateInfo RenderTargetInfo(uint32_t width, uint32_t height, Format format);
 
 // Images live in VK_IMAGE_LAYOUT_GENERAL after creation: every table is both written by compute
 // passes and sampled by later ones.

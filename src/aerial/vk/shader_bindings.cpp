@@ -1,7 +1,7 @@
 #include "aerial/vk/shader_bindings.h"
 
 #include <map>
-#include <optional>
+#include <set>
 
 #include "aerial/core/error.h"
 
@@ -28,8 +28,6 @@ std::string LiteralString(std::span<const uint32_t> words) {
   return text;
 }
 
-std::string DescriptorTypeName(::vk::DescriptorType type) { return ::vk::to_string(type); }
-
 }  // namespace
 
 std::vector<ShaderBinding> ReflectShaderBindings(std::span<const uint32_t> spirv) {
@@ -39,7 +37,7 @@ std::vector<ShaderBinding> ReflectShaderBindings(std::span<const uint32_t> spirv
   std::map<uint32_t, uint32_t> image_sampled;   // image type id -> its Sampled operand
   std::map<uint32_t, uint32_t> pointee;         // pointer type id -> pointee type id
   std::map<uint32_t, uint32_t> element;         // array type id -> element type id
-  std::map<uint32_t, bool> sampled_image_types, struct_types;
+  std::set<uint32_t> sampled_image_types, struct_types;
   struct Variable { uint32_t id, pointer_type, storage; };
   std::vector<Variable> variables;
   for (size_t i = kHeaderWords; i < spirv.size();) {
@@ -54,9 +52,9 @@ std::vector<ShaderBinding> ReflectShaderBindings(std::span<const uint32_t> spirv
         if (w[2] == kBlock || w[2] == kBufferBlock) block_kind[w[1]] = w[2];
         break;
       case kOpTypeImage: image_sampled[w[1]] = w[7]; break;
-      case kOpTypeSampledImage: sampled_image_types[w[1]] = true; break;
+      case kOpTypeSampledImage: sampled_image_types.insert(w[1]); break;
       case kOpTypeArray: element[w[1]] = w[2]; break;
-      case kOpTypeStruct: struct_types[w[1]] = true; break;
+      case kOpTypeStruct: struct_types.insert(w[1]); break;
       case kOpTypePointer: pointee[w[1]] = w[3]; break;
       case kOpVariable: variables.push_back({w[2], w[1], w[3]}); break;
       default: break;
@@ -95,7 +93,7 @@ void CheckShaderBindings(const std::string& shader, std::span<const uint32_t> sp
     const SlotSpec& slot = slots[b.binding];
     if (slot.name != b.name) throw Error(where + " name", slot.name + " in the pipeline", b.name);
     if (slot.type != b.type)
-      throw Error(where + " type", DescriptorTypeName(slot.type) + " in the pipeline", DescriptorTypeName(b.type));
+      throw Error(where + " type", ::vk::to_string(slot.type) + " in the pipeline", ::vk::to_string(b.type));
   }
 }
 
