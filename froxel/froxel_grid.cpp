@@ -1,10 +1,10 @@
-#include "froxel/froxel_grid.h"
+#include "aerial/froxel_grid.h"
 
 #include <cmath>
 #include <cstdio>
 #include <regex>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/core/toml_reader.h"
 
 namespace aerial {

@@ -14,7 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "aerial/shader_abi/frame_block.h"
-#include "froxel/froxel_grid.h"
+#include "aerial/froxel_grid.h"
 
 namespace aerial {
 

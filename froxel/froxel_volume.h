@@ -4,7 +4,7 @@
 // single scattering shadowed through the sun's shadow map.
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/vk/compute_pipeline.h"
-#include "froxel/froxel_grid.h"
+#include "aerial/froxel_grid.h"
 #include "froxel/froxel_placement.h"
 
 namespace aerial {

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "aerial/atmosphere/parameters.h"
-#include "aerial/probe/view_geometry.h"
+#include "aerial/atmosphere.h"
+#include "aerial/view_geometry.h"
 
 namespace aerial::testing {
 

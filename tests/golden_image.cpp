@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/image/image_writer.h"
 #include "image_compare.h"
 

@@ -12,7 +12,7 @@
 #include <fstream>
 #include <string>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/core/input_limits.h"
 #include "aerial/scene/gltf_loader.h"
 #include "command_run.h"

@@ -13,11 +13,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/export/froxel_export.h"
 #include "aerial/image/scratch_dir_test_util.h"
 #include "aerial/render/renderer.h"
 #include "aerial/scene/presets.h"
+#include "aerial/version.h"
 #include "aerial/viewer/froxel_export.h"
 #include "gpu_fixture.h"
 

@@ -1,6 +1,6 @@
 // The atmosphere config (--atmosphere FILE): TOML text through the same parser and validation.
 #include "aerial/atmosphere/config.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -1,5 +1,5 @@
 // The viewer's camera path (--camera-path FILE): TOML keyframes.
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/viewer/camera_path.h"
 #include "fuzz_input.h"
 

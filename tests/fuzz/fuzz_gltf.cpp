@@ -2,7 +2,7 @@
 // container's magic and as a .gltf (JSON) otherwise, as LoadGltfMesh decides by extension.
 #include <cstring>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/scene/gltf_loader.h"
 #include "fuzz_input.h"
 

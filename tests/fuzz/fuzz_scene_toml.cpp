@@ -1,6 +1,6 @@
 // The scene file (--scene FILE): TOML text; its glTF paths resolve against examples/scenes, so
 // the seeds' meshes load and a mutated path reaches the glTF loader's file checks.
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/scene/scene_file.h"
 #include "fuzz_input.h"
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "aerial/core/checksum.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/precompute/table_cache.h"
 #include "fuzz_input.h"
 

@@ -9,7 +9,17 @@ here="$(cd "$(dirname "$0")" && pwd)"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
-cmake -S "$here" -B "$work/client" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+# Only the public API is installed: no header of aerial's implementation (src/).
+for internal in vk precompute render froxel; do
+  if [ -e "$work/prefix/include/aerial/$internal" ] || [ -e "$work/prefix/include/$internal" ]; then
+    echo "an implementation directory was installed: $internal" >&2
+    exit 1
+  fi
+done
+echo "public headers installed: $(cd "$work/prefix/include" && find aerial -name '*.h' | sort | tr '\n' ' ')"
+# A Debug client of a Release aerial: the public headers use Vulkan's C API only, so build types
+# (NDEBUG) need not match.
+cmake -S "$here" -B "$work/client" -G Ninja -DCMAKE_BUILD_TYPE=Debug \
   -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
 cmake --build "$work/client" >/dev/null
 for shader in client_surface.frag client_particle.vert; do

@@ -7,7 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "aerial/atmosphere/parameters.h"
+#include "aerial/atmosphere.h"
 #include "aerial/bench/precompute_measurement.h"
 #include "aerial/bench/variant_comparison.h"
 #include "aerial/core/atomic_file.h"

@@ -23,7 +23,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "aerial/atmosphere/parameters.h"
+#include "aerial/atmosphere.h"
 #include "aerial/bench/frame_measurement.h"
 #include "aerial/bench/full_screen_tap.h"
 #include "aerial/core/atomic_file.h"

@@ -12,7 +12,7 @@
 #include "aerial/bench/sky_accuracy.h"
 #include "aerial/cli/common_options.h"
 #include "aerial/core/atomic_file.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/precompute/table_store.h"
 #include "bench_main.h"
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "aerial/atmosphere/config_layers.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/core/toml_reader.h"
 
 namespace aerial {

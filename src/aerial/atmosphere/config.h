@@ -1,5 +1,6 @@
 #pragma once
-// Atmosphere parameters from TOML files (examples/atmospheres/*.toml), and back.
+// Atmosphere parameters from TOML text, and back to it. LoadAtmosphereFile and Validate, the
+// public calls, are declared in aerial/atmosphere.h.
 //
 // Every key is optional: values start from AtmosphereParameters::Earth() and the file overrides
 // them. Keys carry their SI unit in their name (bottom_radius_m, exp_scale_per_m). Spectra are
@@ -16,25 +17,12 @@
 #include <string>
 #include <string_view>
 
-#include "aerial/atmosphere/parameters.h"
+#include "aerial/atmosphere.h"
 
 namespace aerial {
 
-// Reads and validates a file. A missing or unreadable file throws an Error naming the path.
-AtmosphereParameters LoadAtmosphereFile(const std::filesystem::path& path);
-
 // Parses and validates TOML text; where names the source in messages (usually the path).
 AtmosphereParameters ParseAtmosphereToml(std::string_view text, const std::string& where);
-
-// Checks physical ranges, on each value as the shaders receive it (rounded to float): bottom
-// radius in [1000, 100000] km and thickness top - bottom in [1, 1000] km; wavelengths in
-// [300, 1000] nm; solar irradiance in [0, 1000] W/m^2/nm; sun angular radius in [1e-4, 0.1] rad;
-// scattering, extinction and absorption in [0, 0.1] m^-1, with Mie extinction >= Mie scattering;
-// Mie g in (-1, 1); albedo in [0, 1]; mu_s_min in [-1, 0] (max_sun_zenith_deg in [90, 180]);
-// density layers with width >= 0 and each term within +-1e6 at every altitude. Why each range:
-// config.cpp, next to the constants. Errors name fields by their TOML keys. where is copied into
-// the Error.
-void Validate(const AtmosphereParameters& atmosphere, const std::string& where = "");
 
 // Writes every field in the format above. Doubles are printed in their shortest form that reads
 // back to the same double, so ParseAtmosphereToml(ToToml(p)) == p field by field. One caveat:

@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-#include "aerial/atmosphere/parameters.h"
+#include "aerial/atmosphere.h"
 
 namespace aerial::config_layers {
 

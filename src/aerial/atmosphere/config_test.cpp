@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <regex>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 #ifndef AERIAL_SOURCE_DIR
 #define AERIAL_SOURCE_DIR "."

@@ -1,4 +1,4 @@
-#include "aerial/atmosphere/parameters.h"
+#include "aerial/atmosphere.h"
 
 #include <algorithm>
 #include <cmath>

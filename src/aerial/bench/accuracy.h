@@ -12,7 +12,7 @@
 #include "aerial/bench/bench_results.h"
 #include "aerial/bench/reference_sampling.h"
 #include "aerial/precompute/atmosphere_tables.h"
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 
 namespace aerial::bench {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "aerial/precompute/precompute_options.h"
+#include "aerial/table_options.h"
 
 namespace aerial::bench {
 

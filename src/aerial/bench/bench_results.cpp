@@ -1,7 +1,7 @@
 #include "aerial/bench/bench_results.h"
 
 #include "aerial/bench/frame_measurement.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial::bench {
 namespace {

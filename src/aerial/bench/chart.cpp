@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial::bench {
 namespace {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial::bench {
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "aerial/atmosphere/parameters.h"
+#include "aerial/atmosphere.h"
 #include "aerial/bench/precompute_report.h"
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/vk/context.h"

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "aerial/precompute/precompute_options.h"
+#include "aerial/table_options.h"
 #include "aerial/bench/pass_stats.h"
 
 namespace aerial::bench {

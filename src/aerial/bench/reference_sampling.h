@@ -24,7 +24,7 @@
 #include "aerial/image/image.h"
 #include "aerial/reference/reference.h"
 #include "aerial/render/frame_uniforms.h"
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 
 namespace aerial::bench {
 

@@ -22,7 +22,7 @@
 #include <optional>
 
 #include "aerial/bench/lambertian_radiance.h"
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 
 namespace aerial::bench {
 

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "aerial/core/atomic_file.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/probe/table_probe.h"
 #include "aerial/reference/reference.h"
 

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "aerial/precompute/atmosphere_tables.h"
-#include "aerial/probe/view_geometry.h"
+#include "aerial/view_geometry.h"
 #include "aerial/reference/monte_carlo.h"
 
 namespace aerial::bench {

@@ -6,7 +6,7 @@
 #include "aerial/bench/bench_plan.h"
 #include "aerial/bench/bench_results.h"
 #include "aerial/precompute/atmosphere_tables.h"
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 
 namespace aerial::bench {
 

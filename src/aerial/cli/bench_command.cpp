@@ -14,6 +14,7 @@
 #include "aerial/bench/bench_run.h"
 #include "aerial/cli/commands.h"
 #include "aerial/cli/scene_options.h"
+#include "aerial/version.h"
 
 namespace aerial::cli {
 namespace {

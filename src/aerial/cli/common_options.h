@@ -10,7 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "aerial/atmosphere/parameters.h"
+#include "aerial/atmosphere.h"
 #include "aerial/core/memory_budget.h"
 #include "aerial/precompute/table_store.h"
 #include "aerial/vk/context.h"

@@ -8,7 +8,8 @@
 #include <CLI/CLI.hpp>
 
 #include "aerial/cli/commands.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
+#include "aerial/version.h"
 #include "aerial/vk/context.h"
 
 namespace {

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "aerial/core/memory_budget.h"
-#include "aerial/precompute/precompute_options.h"
+#include "aerial/table_options.h"
 #include "aerial/render/renderer.h"
 
 namespace aerial::cli {

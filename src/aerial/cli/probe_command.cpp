@@ -11,7 +11,7 @@
 #include "aerial/cli/commands.h"
 #include "aerial/cli/common_options.h"
 #include "aerial/cli/memory_uses.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/core/toml_reader.h"
 #include "aerial/probe/table_probe.h"
 #include "aerial/reference/reference.h"

@@ -1,6 +1,6 @@
 #include "aerial/cli/scene_options.h"
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/core/toml_reader.h"
 #include "aerial/scene/presets.h"
 #include "aerial/scene/scene_file.h"

@@ -9,9 +9,9 @@
 #include <CLI/CLI.hpp>
 
 #include "aerial/render/renderer.h"
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 #include "aerial/scene/scene_overrides.h"
-#include "froxel/froxel_grid.h"
+#include "aerial/froxel_grid.h"
 
 namespace aerial::cli {
 

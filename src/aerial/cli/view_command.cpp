@@ -7,7 +7,7 @@
 #include "aerial/cli/memory_uses.h"
 #include "aerial/cli/scene_options.h"
 #include "aerial/core/atomic_file.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/image/image_writer.h"
 #include "aerial/viewer/viewer.h"
 

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <system_error>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial {
 namespace fs = std::filesystem;

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial {
 namespace {

@@ -8,7 +8,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial {
 namespace {

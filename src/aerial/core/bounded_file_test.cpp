@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "tests/scratch_directory.h"
 
 namespace aerial {

@@ -1,4 +1,4 @@
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/core/input_limits.h"
 
 namespace aerial {

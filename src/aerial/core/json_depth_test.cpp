@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/core/input_limits.h"
 
 namespace aerial {

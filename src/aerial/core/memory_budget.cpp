@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial {
 namespace {

@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "aerial/core/bounded_file.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/core/input_limits.h"
 
 namespace aerial {

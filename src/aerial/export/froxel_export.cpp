@@ -7,9 +7,10 @@
 #include <cstdio>
 
 #include "aerial/core/atomic_file.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/render/renderer.h"
 #include "aerial/scene/camera.h"
+#include "aerial/version.h"
 
 namespace aerial {
 namespace {

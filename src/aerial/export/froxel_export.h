@@ -17,7 +17,7 @@
 #include <filesystem>
 #include <string>
 
-#include "aerial/atmosphere/parameters.h"
+#include "aerial/atmosphere.h"
 #include "aerial/export/vdb_file.h"
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/render/frame_uniforms.h"

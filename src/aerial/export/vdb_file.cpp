@@ -9,7 +9,7 @@
 #include <openvdb/openvdb.h>
 
 #include "aerial/core/atomic_file.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial {
 namespace {

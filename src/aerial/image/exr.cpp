@@ -9,7 +9,7 @@
 
 #include <exception>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial {
 namespace {

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "aerial/core/atomic_file.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/image/image_writer.h"
 #include "aerial/image/scratch_dir_test_util.h"
 

@@ -1,6 +1,6 @@
 #include "aerial/image/image.h"
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "aerial/core/atomic_file.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/image/exr.h"
 #include "aerial/image/png.h"
 

@@ -6,7 +6,7 @@
 #include <functional>
 #include <string>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/image/scratch_dir_test_util.h"
 
 namespace aerial {

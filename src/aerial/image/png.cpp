@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/image/image.h"
 
 // The implementation lives here and nowhere else in aerial_lib. STATIC keeps its symbols local

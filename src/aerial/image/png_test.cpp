@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "aerial/core/atomic_file.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/image/image_writer.h"
 #include "aerial/image/scratch_dir_test_util.h"
 #include "aerial/image/tone_map.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial {
 namespace {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial {
 namespace {

@@ -4,7 +4,7 @@
 #include <cstring>
 
 #include "aerial/core/checksum.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/vk/shader_registry.h"
 
 namespace aerial {

@@ -11,10 +11,11 @@
 #include <memory>
 #include <string_view>
 
-#include "aerial/atmosphere/parameters.h"
+#include "aerial/atmosphere.h"
 #include "aerial/precompute/atmosphere_uniforms.h"
-#include "aerial/precompute/precompute_options.h"
+#include "aerial/table_options.h"
 #include "aerial/precompute/table_cache.h"
+#include "aerial/version.h"
 #include "aerial/vk/descriptors.h"
 #include "aerial/vk/resources.h"
 

@@ -1,4 +1,5 @@
 #include "aerial/precompute/atmosphere_tables.h"
+#include "aerial/version.h"
 
 #include <gtest/gtest.h>
 

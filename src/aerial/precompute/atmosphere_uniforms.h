@@ -1,8 +1,8 @@
 #pragma once
 // The atmosphere's uniform block (shader_abi/atmosphere_block.h) filled from its parameters and
 // the tables' options.
-#include "aerial/atmosphere/parameters.h"
-#include "aerial/precompute/precompute_options.h"
+#include "aerial/atmosphere.h"
+#include "aerial/table_options.h"
 #include "aerial/shader_abi/atmosphere_block.h"
 
 namespace aerial {

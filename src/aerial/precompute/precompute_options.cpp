@@ -1,11 +1,11 @@
-#include "aerial/precompute/precompute_options.h"
+#include "aerial/table_options.h"
 
 #include <algorithm>
 #include <cstring>
 #include <limits>
 #include <string>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial {
 

@@ -10,7 +10,7 @@
 
 #include "aerial/core/atomic_file.h"
 #include "aerial/core/checksum.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/core/input_limits.h"
 
 namespace aerial {

@@ -4,7 +4,7 @@
 #include <cstdlib>
 
 #include "aerial/core/atomic_file.h"
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/core/progress.h"
 #include "aerial/precompute/precomputer.h"
 

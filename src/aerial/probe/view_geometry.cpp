@@ -1,11 +1,11 @@
-#include "aerial/probe/view_geometry.h"
+#include "aerial/view_geometry.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial {
 namespace {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "aerial/atmosphere/parameters.h"
+#include "aerial/atmosphere.h"
 
 namespace aerial::reference {
 

@@ -14,7 +14,7 @@
 #include <limits>
 #include <vector>
 
-#include "aerial/atmosphere/parameters.h"
+#include "aerial/atmosphere.h"
 
 namespace aerial::reference {
 

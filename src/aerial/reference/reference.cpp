@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/reference/geometry.h"
 #include "aerial/reference/irradiance.h"
 #include "aerial/reference/multiple_scattering.h"

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "aerial/atmosphere/parameters.h"
+#include "aerial/atmosphere.h"
 #include "aerial/reference/medium.h"
 #include "aerial/reference/monte_carlo.h"
 #include "aerial/reference/single_scattering.h"

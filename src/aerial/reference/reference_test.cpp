@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial::reference {
 namespace {

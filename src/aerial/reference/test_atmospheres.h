@@ -1,6 +1,6 @@
 #pragma once
 // Simple atmospheres with closed-form answers, for the reference's unit tests.
-#include "aerial/atmosphere/parameters.h"
+#include "aerial/atmosphere.h"
 
 namespace aerial::reference::testing {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/image/resample.h"
 #include "aerial/render/shadow_uniforms.h"
 #include "aerial/scene/terrain.h"

@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 #include "aerial/vk/resources.h"
 
 namespace aerial {

@@ -18,7 +18,7 @@
 
 #include <glm/glm.hpp>
 
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 #include "aerial/shader_abi/shadow_block.h"
 
 namespace aerial {

@@ -5,7 +5,7 @@
 #include <cstring>
 #include <thread>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial {
 namespace {

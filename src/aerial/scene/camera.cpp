@@ -1,7 +1,12 @@
 #include "aerial/scene/camera.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "aerial/froxels.h"
 
 namespace aerial {
 namespace {
@@ -49,6 +54,19 @@ glm::dmat4 ProjectionMatrix(const Camera& camera, double aspect) {
   projection[3][2] = camera.near_m;  // clip.z = near
   projection[2][3] = -1.0;           // clip.w = -z_view
   return projection;
+}
+
+FrameCamera MakeFrameCamera(const Scene& scene, uint32_t width, uint32_t height) {
+  // Shaders see camera-relative positions, so the view matrix drops the camera's translation.
+  Camera at_origin = scene.camera;
+  at_origin.position = glm::dvec3(0.0);
+  glm::dmat4 view_projection = ProjectionMatrix(scene.camera, double(width) / double(height)) * ViewMatrix(at_origin);
+  FrameCamera camera{.width = width, .height = height};
+  std::copy_n(glm::value_ptr(view_projection), 16, camera.view_projection.begin());
+  glm::dvec3 sun = scene.sun.Direction();
+  camera.position_m = {scene.camera.position.x, scene.camera.position.y, scene.camera.position.z};
+  camera.sun_direction = {sun.x, sun.y, sun.z};
+  return camera;
 }
 
 }  // namespace aerial

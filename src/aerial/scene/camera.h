@@ -5,7 +5,7 @@
 // convention). Clip space is Vulkan's: x right, y down, depth in [0, 1].
 #include <glm/glm.hpp>
 
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 
 namespace aerial {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "aerial/scene/camera.h"
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 #include "aerial/scene/terrain.h"
 
 namespace aerial {

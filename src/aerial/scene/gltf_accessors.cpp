@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial {
 namespace {

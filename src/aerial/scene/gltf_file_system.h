@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/scene/tiny_gltf_config.h"
 
 namespace aerial {

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/core/input_limits.h"
 #include "aerial/core/json_depth.h"
 #include "aerial/scene/gltf_accessors.h"

@@ -22,7 +22,7 @@
 #include <filesystem>
 #include <string>
 
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 
 namespace aerial {
 

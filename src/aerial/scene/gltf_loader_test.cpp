@@ -9,7 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 #ifndef AERIAL_SOURCE_DIR
 #define AERIAL_SOURCE_DIR "."

@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 
 namespace aerial {
 

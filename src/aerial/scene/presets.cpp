@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/scene/terrain.h"
 
 namespace aerial {

@@ -16,16 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 
 namespace aerial {
-
-// In the order above.
-std::vector<std::string> PresetNames();
-
-// The built-in scene (BuildDefaultScene) seen from the named preset; scene.name is the preset's.
-// An unknown name throws Error("--preset", name, "one of: noon, afternoon, ...").
-Scene BuildPreset(const std::string& name, double planet_radius_m);
 
 // Sets scene.camera, scene.sun and scene.name to the named preset's and leaves the meshes alone.
 // Throws like BuildPreset.

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/scene/camera.h"
 #include "aerial/scene/scene_limits.h"
 

@@ -3,7 +3,7 @@
 // has outward unit normals and counter-clockwise triangles seen from outside (scene.h).
 #include <glm/glm.hpp>
 
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 
 namespace aerial {
 

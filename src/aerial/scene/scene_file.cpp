@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/core/toml_reader.h"
 #include "aerial/scene/gltf_loader.h"
 #include "aerial/scene/presets.h"
@@ -84,8 +84,9 @@ struct Placement {
   glm::dmat3 turn;
 };
 
+// terrain: whether [x, y] positions stand on the built-in terrain or on the bare planet.
 Mesh ReadMesh(TomlReader& r, const toml::node& node, const std::string& field,
-              const std::filesystem::path& base_dir, double planet_radius_m) {
+              const std::filesystem::path& base_dir, double planet_radius_m, bool terrain) {
   auto key = [&](std::string_view k) { return TomlReader::Join(field, k); };
   const toml::table& t = r.Table(node, field);
   r.RejectUnknownKeys(t, field,
@@ -106,7 +107,7 @@ Mesh ReadMesh(TomlReader& r, const toml::node& node, const std::string& field,
       if (!std::isfinite(p[i]))
         r.Fail(*n.as_array()->get(i), TomlReader::Index(name, i), "a finite number (m)");
     anchor = p.size() == 3 ? glm::dvec3(p[0], p[1], p[2])
-                           : SurfacePoint(p[0], p[1], TerrainHeightM(p[0], p[1]), planet_radius_m);
+                           : SurfacePoint(p[0], p[1], terrain ? TerrainHeightM(p[0], p[1]) : 0.0, planet_radius_m);
   });
   IfPresent(t, "scale", [&](const toml::node& n) {
     scale = r.Number(n, key("scale"), "");
@@ -158,7 +159,9 @@ Scene ParseSceneToml(std::string_view text, const std::string& where,
   // Floats shown in their shortest form ("50"), as the range checks show them.
   TomlReader r(where, FormatNumber);
   toml::table root = r.Parse(text);
-  r.RejectUnknownKeys(root, "", {"preset", "camera", "sun", "mesh"});
+  r.RejectUnknownKeys(root, "", {"preset", "built_in", "camera", "sun", "mesh"});
+  bool built_in = true;
+  IfPresent(root, "built_in", [&](const toml::node& n) { built_in = r.Bool(n, "built_in"); });
   // Everything is read and checked on the preset's view and the extra meshes first, and the
   // built-in scene is built only once the file is known to be valid.
   Scene view;
@@ -181,11 +184,11 @@ Scene ParseSceneToml(std::string_view text, const std::string& where,
     if (!meshes) r.Fail(n, "mesh", "an array of tables ([[mesh]])");
     for (size_t i = 0; i < meshes->size(); ++i) {
       view.meshes.push_back(
-          ReadMesh(r, *meshes->get(i), TomlReader::Index("mesh", i), base_dir, planet_radius_m));
+          ReadMesh(r, *meshes->get(i), TomlReader::Index("mesh", i), base_dir, planet_radius_m, built_in));
     }
   });
 
-  Scene scene = BuildDefaultScene(planet_radius_m);
+  Scene scene = built_in ? BuildDefaultScene(planet_radius_m) : Scene{};
   scene.camera = view.camera;
   scene.sun = view.sun;
   scene.name = view.name;

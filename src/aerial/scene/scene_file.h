@@ -3,6 +3,8 @@
 // (examples/scenes/*.toml). Every key is optional:
 //
 //   preset = "noon"                  # the base scene (presets.h); default "noon"
+//   built_in = true                  # the built-in terrain and models; false: only the meshes
+//                                    # below, on the bare planet (the preset's camera and sun stay)
 //   [camera]
 //   position_m = [0.0, 0.0, 30.0]    # world frame of scene.h, m
 //   yaw_deg = 0.0                    # compass azimuth of the view: 0 north, 90 east
@@ -14,7 +16,7 @@
 //   azimuth_deg = 160.0              # compass, like yaw_deg
 //   [[mesh]]                         # any number of these
 //   gltf = "cube.gltf"               # .gltf or .glb, relative to this file
-//   position_m = [0.0, 800.0, 0.0]   # where the model's origin goes; [x, y] puts it on the terrain
+//   position_m = [0.0, 800.0, 0.0]   # where the model's origin goes; [x, y] puts it on the ground
 //   scale = 1.0                      # > 0, uniform
 //   yaw_deg = 0.0                    # turns the model's front (-y after gltf_loader.h's axis
 //                                    # change) clockwise seen from above, like a compass
@@ -31,13 +33,9 @@
 #include <string>
 #include <string_view>
 
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 
 namespace aerial {
-
-// Reads a scene file; a missing or unreadable file throws an Error naming the path. The scene's
-// name is the file's stem.
-Scene LoadSceneFile(const std::filesystem::path& path, double planet_radius_m);
 
 // Parses TOML text; where names the source in messages, and glTF paths resolve against base_dir.
 Scene ParseSceneToml(std::string_view text, const std::string& where,

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/scene/terrain.h"
 
 #ifndef AERIAL_SOURCE_DIR

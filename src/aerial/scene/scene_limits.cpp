@@ -3,7 +3,7 @@
 #include <charconv>
 #include <cmath>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial {
 namespace {

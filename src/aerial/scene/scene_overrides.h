@@ -3,7 +3,7 @@
 #include <glm/glm.hpp>
 #include <optional>
 
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 
 namespace aerial {
 

@@ -8,7 +8,7 @@
 // sqrt(R^2 - x^2 - y^2) - R). Everything here is deterministic (noise.h).
 #include <glm/glm.hpp>
 
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 
 namespace aerial {
 

@@ -3,6 +3,26 @@
 #include <glm/gtc/type_ptr.hpp>
 
 namespace aerial {
+namespace {
+
+std::array<float, 4> ToFloat4(const std::array<double, 3>& v) { return {float(v[0]), float(v[1]), float(v[2]), 0.0f}; }
+
+}  // namespace
+
+FrameUniforms MakeFrameUniforms(const FrameCamera& camera, double planet_radius_m, const FroxelGrid& grid) {
+  glm::dmat4 view_projection = glm::make_mat4(camera.view_projection.data());
+  FrameUniforms u{};
+  u.view_projection = ToColumnMajorFloats(view_projection);
+  u.inverse_view_projection = ToColumnMajorFloats(glm::inverse(view_projection));
+  u.camera_scene_position = ToFloat4(camera.position_m);
+  u.camera_planet_position =
+      ToFloat4({camera.position_m[0], camera.position_m[1], camera.position_m[2] + planet_radius_m});
+  u.sun_direction = ToFloat4(camera.sun_direction);
+  u.froxel_size = {grid.width, grid.height, grid.depth, 0};
+  u.froxel_depth = {float(grid.far_m), 0, 0, 0};
+  u.viewport = {float(camera.width), float(camera.height), 0, 0};
+  return u;
+}
 
 std::array<float, 16> ToColumnMajorFloats(const glm::dmat4& m) {
   std::array<float, 16> out;

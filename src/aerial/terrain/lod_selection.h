@@ -12,7 +12,7 @@
 
 #include <glm/glm.hpp>
 
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 #include "aerial/terrain/terrain_chunk.h"
 
 namespace aerial::terrain {

@@ -15,7 +15,7 @@
 
 #include <glm/glm.hpp>
 
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 #include "aerial/terrain/chunk_id.h"
 
 namespace aerial::terrain {

@@ -1,6 +1,6 @@
 #pragma once
 // The atmosphere parameters the viewer's panel edits, as changes to a base atmosphere (the
-// built-in "earth" or --atmosphere FILE; parameters.h):
+// built-in "earth" or --atmosphere FILE; aerial/atmosphere.h):
 //   - Rayleigh and Mie scale heights H: every density layer with an exponential term gets
 //     exp_scale_per_m = -1 / H (density exp(-h / H), Bruneton 2017's DensityProfileLayer);
 //   - Mie asymmetry g of the Cornette-Shanks phase function;
@@ -8,7 +8,7 @@
 //   - ground albedo: one grey Lambertian albedo for the three wavelengths.
 #include <optional>
 
-#include "aerial/atmosphere/parameters.h"
+#include "aerial/atmosphere.h"
 
 namespace aerial::viewer {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/core/toml_reader.h"
 #include "aerial/scene/scene_limits.h"
 

@@ -18,7 +18,7 @@
 #include <string_view>
 #include <vector>
 
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 
 namespace aerial::viewer {
 

@@ -5,7 +5,7 @@
 #include <ostream>
 #include <string>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial::viewer {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 // The fly camera: keys move the camera along its view direction, its horizontal right and the
 // world's up; the mouse turns it. Pure state update, so it is tested without a window.
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 
 namespace aerial::viewer {
 

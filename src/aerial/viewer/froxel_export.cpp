@@ -2,7 +2,7 @@
 
 #include <ctime>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/export/froxel_export.h"
 
 namespace aerial::viewer {

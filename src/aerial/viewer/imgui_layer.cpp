@@ -6,7 +6,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial::viewer {
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 // Where the sun is: moved directly by the arrow keys and the mouse, or set from a time of day.
-#include "aerial/scene/scene.h"
+#include "aerial/scene.h"
 
 namespace aerial::viewer {
 

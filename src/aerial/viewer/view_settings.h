@@ -1,10 +1,10 @@
 #pragma once
 // What the viewer's panel edits. The frame options (froxels, aerial mode) become the Renderer's
 // RenderOptions, the table options a table request; the rest only steers the display passes.
-#include "aerial/precompute/precompute_options.h"
+#include "aerial/table_options.h"
 #include "aerial/render/frame_uniforms.h"
 #include "aerial/viewer/atmosphere_knobs.h"
-#include "froxel/froxel_grid.h"
+#include "aerial/froxel_grid.h"
 
 namespace aerial::viewer {
 

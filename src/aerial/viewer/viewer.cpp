@@ -8,7 +8,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/image/image_writer.h"
 #include "aerial/viewer/display_passes.h"
 #include "aerial/viewer/frame_stats.h"
@@ -239,7 +239,7 @@ void Viewer::Impl::Steer(const FrameInput& input, double dt_s) {
   SteerSun(scene.sun, input.sun_d_azimuth_deg, input.sun_d_zenith_deg, MaxSunZenithDeg());
 }
 
-// The lowest sun the tables cover: mu_s_min (parameters.h).
+// The lowest sun the tables cover: mu_s_min (aerial/atmosphere.h).
 double Viewer::Impl::MaxSunZenithDeg() const {
   return std::acos(options_.atmosphere.mu_s_min) * 180.0 / std::numbers::pi;
 }

@@ -3,7 +3,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial::viewer {
 namespace {

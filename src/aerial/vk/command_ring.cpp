@@ -1,6 +1,6 @@
 #include "aerial/vk/command_ring.h"
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial::vk {
 

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial::vk {
 namespace {
@@ -144,12 +144,12 @@ Context::Context(const ContextCreateInfo& info) {
                                                .pQueueCreateInfos = &queue_info,
                                                .enabledExtensionCount = uint32_t(device_extensions.size()),
                                                .ppEnabledExtensionNames = device_extensions.data(),
-                                               .pEnabledFeatures = &features.core});
+                                               .pEnabledFeatures = reinterpret_cast<const ::vk::PhysicalDeviceFeatures*>(&features.core)});
   queue_ = device_.getQueue(queue_family_, 0);
   CreateSubmitObjects();
 }
 
-Context::Context(const ExternalDevice& external) : external_(true) {
+Context::Context(const DeviceHandoff& external) : external_(true) {
   if (!external.instance || !external.physical_device || !external.device)
     throw Error("external device", "a null handle", "the caller's instance, physical device and device");
   instance_ = ::vk::raii::Instance(loader_, external.instance);

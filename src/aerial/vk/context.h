@@ -10,6 +10,8 @@
 
 #include <vulkan/vulkan_raii.hpp>
 
+#include "aerial/device.h"
+
 namespace aerial::vk {
 
 // The command buffer that passes record into: the caller's own per frame, the context's for
@@ -29,46 +31,12 @@ struct ContextCreateInfo {
   std::function<bool(::vk::Instance, ::vk::PhysicalDevice, uint32_t queue_family)> present_support;
 };
 
-// A Vulkan device that the caller created and keeps, for aerial to work on: a client's own
-// renderer (docs in README, "Using aerial as a library"). The instance and the device must be
-// made for Vulkan 1.3 with what aerial needs: the extensions of kRequiredDeviceExtensions and the
-// features of RequiredDeviceFeatures. aerial checks the version, the queue family and that the
-// extensions are supported; which features were enabled it cannot see. On that device aerial
-// makes its own command pool, fence and resources, submits one-off work (uploads, the
-// precompute, read-backs) to the queue, which the caller must not use from another thread
-// meanwhile, and destroys neither the device nor the instance. Frames are recorded into the
-// caller's command buffers (Renderer::Record, FroxelVolume::Build), which the caller submits.
-struct ExternalDevice {
-  VkInstance instance = VK_NULL_HANDLE;
-  VkPhysicalDevice physical_device = VK_NULL_HANDLE;
-  VkDevice device = VK_NULL_HANDLE;
-  uint32_t queue_family = 0;  // graphics and compute, with timestamps
-  uint32_t queue_index = 0;
-};
-
-// The device extensions aerial uses (descriptors are pushed, not allocated from pools).
-inline constexpr std::array<const char*, 1> kRequiredDeviceExtensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
-
-// The device features aerial uses: storage images written without a format in the shader
-// (precompute), dynamic rendering (the frame's raster passes) and host query reset (timers).
-struct RequiredDeviceFeatures {
-  ::vk::PhysicalDeviceFeatures core{.shaderStorageImageWriteWithoutFormat = VK_TRUE};
-  ::vk::PhysicalDeviceVulkan12Features vulkan12{.hostQueryReset = VK_TRUE};
-  ::vk::PhysicalDeviceVulkan13Features vulkan13{.dynamicRendering = VK_TRUE};
-  // The chain for VkDeviceCreateInfo::pNext, with pEnabledFeatures = &core; next: the caller's
-  // own chain, placed after it. Valid while this object lives and stays where it is.
-  void* Chain(void* next = nullptr) {
-    vulkan13.pNext = next;
-    vulkan12.pNext = &vulkan13;
-    return &vulkan12;
-  }
-};
-
 class Context {
  public:
   explicit Context(const ContextCreateInfo& info = {});
-  // Works on the caller's device (ExternalDevice); validation is then the caller's instance's.
-  explicit Context(const ExternalDevice& external);
+  // Works on the caller's device (aerial/device.h says what it must have and what aerial does on
+  // it); validation is then the caller's instance's.
+  explicit Context(const DeviceHandoff& handoff);
   ~Context();
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
@@ -112,8 +80,23 @@ class Context {
   ::vk::raii::Fence submit_done_{nullptr};
   uint32_t queue_family_ = 0;
   bool validation_ = false;
-  bool external_ = false;  // the instance and the device are the caller's (ExternalDevice)
+  bool external_ = false;  // the instance and the device are the caller's (DeviceHandoff)
   double timestamp_period_ns_ = 1.0;
+};
+
+// A caller's command buffer (the public API's VkCommandBuffer) as aerial's passes record into
+// it, for the length of one call; it stays the caller's, who allocated it and frees it.
+class BorrowedCommandBuffer {
+ public:
+  BorrowedCommandBuffer(const Context& context, VkCommandBuffer handle)
+      : buffer_(context.device(), handle, VK_NULL_HANDLE) {}
+  ~BorrowedCommandBuffer() { buffer_.release(); }
+  BorrowedCommandBuffer(const BorrowedCommandBuffer&) = delete;
+  BorrowedCommandBuffer& operator=(const BorrowedCommandBuffer&) = delete;
+  const CommandBuffer& operator*() const { return buffer_; }
+
+ private:
+  CommandBuffer buffer_;
 };
 
 }  // namespace aerial::vk

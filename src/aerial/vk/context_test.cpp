@@ -4,13 +4,13 @@
 
 #include <cstring>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/vk/resources.h"
 
 namespace aerial::vk {
 namespace {
 
-ExternalDevice HandlesOf(const Context& owner) {
+DeviceHandoff HandlesOf(const Context& owner) {
   return {.instance = *owner.instance(), .physical_device = *owner.physical_device(),
           .device = *owner.device(), .queue_family = owner.queue_family()};
 }
@@ -18,7 +18,7 @@ ExternalDevice HandlesOf(const Context& owner) {
 // A context on a device it did not make (here another context's, as a client's renderer would
 // hand its own over) works on it and, when it goes, leaves the device and the instance to their
 // owner, which keeps working; the validation layers see nothing wrong on either side.
-TEST(ExternalDevice, WorksOnTheCallersDeviceAndLeavesItAlive) {
+TEST(DeviceHandoff, WorksOnTheCallersDeviceAndLeavesItAlive) {
   Context owner({.validation = true});
   const int before = Context::ValidationMessageCount();
   {
@@ -42,16 +42,16 @@ TEST(ExternalDevice, WorksOnTheCallersDeviceAndLeavesItAlive) {
 }
 
 // Handles that cannot work are refused with the field and the value named.
-TEST(ExternalDevice, NullHandlesAndAWrongQueueFamilyAreRefused) {
+TEST(DeviceHandoff, NullHandlesAndAWrongQueueFamilyAreRefused) {
   try {
-    Context adopted(ExternalDevice{});
+    Context adopted(DeviceHandoff{});
     FAIL() << "null handles were accepted";
   } catch (const Error& e) {
     EXPECT_EQ(e.field(), "external device");
     EXPECT_EQ(e.value(), "a null handle");
   }
   Context owner;
-  ExternalDevice wrong = HandlesOf(owner);
+  DeviceHandoff wrong = HandlesOf(owner);
   wrong.queue_family = 99;
   try {
     Context adopted(wrong);

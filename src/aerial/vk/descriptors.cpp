@@ -1,6 +1,6 @@
 #include "aerial/vk/descriptors.h"
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/vk/shader_registry.h"
 
 namespace aerial::vk {

@@ -1,6 +1,6 @@
 #include "aerial/vk/graphics_pipeline.h"
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial::vk {
 

@@ -3,7 +3,7 @@
 #include <cstring>
 #include <optional>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial::vk {
 namespace {
@@ -44,6 +44,16 @@ void Buffer::Write(std::span<const std::byte> bytes, ::vk::DeviceSize offset) {
     throw Error("buffer write", std::to_string(bytes.size()) + " bytes",
                 "a host-visible buffer of at least " + std::to_string(offset + bytes.size()));
   std::memcpy(mapped_ + offset, bytes.data(), bytes.size());
+}
+
+void Buffer::RecordUpdate(const CommandBuffer& cmd, std::span<const std::byte> bytes) const {
+  // vkCmdUpdateBuffer's limits (Vulkan spec, VUID-vkCmdUpdateBuffer-dataSize-00037/00038).
+  if (bytes.size() > 65536 || bytes.size() % 4 != 0 || bytes.size() > size_)
+    throw Error("recorded buffer update", std::to_string(bytes.size()) + " bytes",
+                "a multiple of 4, at most 65536 and at most the buffer's " + std::to_string(size_));
+  FullBarrier(cmd);
+  cmd.updateBuffer(*buffer_, 0, ::vk::ArrayProxy<const std::byte>(uint32_t(bytes.size()), bytes.data()));
+  FullBarrier(cmd);
 }
 
 Image::Image(const Context& context, const ImageCreateInfo& info)
@@ -148,6 +158,10 @@ std::vector<float> ReadImageFloats(const Context& context, const Image& image) {
 
 BufferCreateInfo UniformBufferInfo(::vk::DeviceSize size) {
   return {.size = size, .usage = ::vk::BufferUsageFlagBits::eUniformBuffer, .host_visible = true};
+}
+
+BufferCreateInfo RecordedUniformBufferInfo(::vk::DeviceSize size) {
+  return {.size = size, .usage = ::vk::BufferUsageFlagBits::eUniformBuffer | ::vk::BufferUsageFlagBits::eTransferDst};
 }
 
 ImageCreateInfo RenderTargetInfo(uint32_t width, uint32_t height, Format format) {

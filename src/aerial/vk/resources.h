@@ -17,6 +17,9 @@ struct BufferCreateInfo {
 
 // A uniform block the CPU writes (once per frame, say) and shaders read.
 BufferCreateInfo UniformBufferInfo(::vk::DeviceSize size);
+// A uniform block that command buffers write (Buffer::RecordUpdate), so that frames in flight
+// never see each other's values.
+BufferCreateInfo RecordedUniformBufferInfo(::vk::DeviceSize size);
 
 // Texel formats by what they hold: 32-bit floats, four, three or one per texel, and depth.
 using Format = ::vk::Format;
@@ -32,6 +35,9 @@ class Buffer {
   ::vk::DeviceSize size() const { return size_; }
   std::byte* mapped() const { return mapped_; }
   void Write(std::span<const std::byte> bytes, ::vk::DeviceSize offset = 0);
+  // Records a write of bytes (at most 65536, a multiple of 4) at the start of a buffer made with
+  // TransferDst, between full barriers: after every earlier read, before every later one.
+  void RecordUpdate(const CommandBuffer& cmd, std::span<const std::byte> bytes) const;
 
  private:
   ::vk::raii::Buffer buffer_;

@@ -3,7 +3,7 @@
 #include <map>
 #include <set>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 
 namespace aerial::vk {
 namespace {

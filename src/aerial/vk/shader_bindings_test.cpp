@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "aerial/core/error.h"
+#include "aerial/error.h"
 #include "aerial/vk/compute_pipeline.h"
 #include "aerial/vk/descriptors.h"
 #include "aerial/vk/shader_registry.h"

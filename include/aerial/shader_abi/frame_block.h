@@ -7,6 +7,9 @@
 
 #include <glm/glm.hpp>
 
+#include "aerial/froxel_grid.h"
+#include "aerial/froxels.h"
+
 namespace aerial {
 
 struct alignas(16) FrameUniforms {
@@ -20,6 +23,10 @@ struct alignas(16) FrameUniforms {
   std::array<float, 4> viewport;
 };
 static_assert(sizeof(FrameUniforms) == 2 * 64 + 6 * 16);
+
+// The block for a camera (aerial/froxels.h) on a planet of radius planet_radius_m, with a froxel
+// grid. Shaders see camera-relative positions; the planet's center is at (0, 0, -R).
+FrameUniforms MakeFrameUniforms(const FrameCamera& camera, double planet_radius_m, const FroxelGrid& grid);
 
 // The view ray through the screen point uv ((0, 0) top-left), as frame.glsl computes it.
 glm::dvec3 ViewRayFromScreen(const FrameUniforms& frame, glm::dvec2 uv);

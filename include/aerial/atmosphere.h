@@ -4,6 +4,7 @@
 // each with a density profile of up to two layers. Three wavelengths are rendered ("radiance mode").
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <string>
 
 namespace aerial {
@@ -53,5 +54,19 @@ struct AtmosphereParameters {
   // Stable FNV-1a hash of every physical field (not the name): the cache key.
   uint64_t Hash() const;
 };
+
+// Atmosphere files (TOML, examples/atmospheres/*.toml; the keys: atmosphere/config.h).
+// Reads and validates a file. A missing or unreadable file throws an Error naming the path.
+AtmosphereParameters LoadAtmosphereFile(const std::filesystem::path& path);
+
+// Checks physical ranges, on each value as the shaders receive it (rounded to float): bottom
+// radius in [1000, 100000] km and thickness top - bottom in [1, 1000] km; wavelengths in
+// [300, 1000] nm; solar irradiance in [0, 1000] W/m^2/nm; sun angular radius in [1e-4, 0.1] rad;
+// scattering, extinction and absorption in [0, 0.1] m^-1, with Mie extinction >= Mie scattering;
+// Mie g in (-1, 1); albedo in [0, 1]; mu_s_min in [-1, 0] (max_sun_zenith_deg in [90, 180]);
+// density layers with width >= 0 and each term within +-1e6 at every altitude. Why each range:
+// config.cpp, next to the constants. Errors name fields by their TOML keys. where is copied into
+// the Error.
+void Validate(const AtmosphereParameters& atmosphere, const std::string& where = "");
 
 }  // namespace aerial

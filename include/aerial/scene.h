@@ -20,6 +20,7 @@
 // must be blended after the opaque pass, each fragment attenuated and in-scattered by the air
 // between it and the camera like an opaque one.
 #include <cstdint>
+#include <filesystem>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
@@ -72,5 +73,18 @@ struct Scene {
 // landmarks named "landmark_<d>km" at d = 1, 2, 5, 10, 20 and 40 km, and transparent glass panes,
 // a balloon and a particle cloud; camera and sun from the "noon" preset (presets.h).
 Scene BuildDefaultScene(double planet_radius_m);
+
+// Named views of the built-in scene (scene/presets.h describes each), in the order
+// noon, afternoon, sunset, twilight, high-altitude, evening.
+std::vector<std::string> PresetNames();
+
+// The built-in scene (BuildDefaultScene) seen from the named preset; scene.name is the preset's.
+// An unknown name throws Error("--preset", name, "one of: noon, afternoon, ...").
+Scene BuildPreset(const std::string& name, double planet_radius_m);
+
+// Scene files: a preset, changes to its camera and sun, glTF meshes (the keys: scene/scene_file.h).
+// Reads a scene file; a missing or unreadable file throws an Error naming the path. The scene's
+// name is the file's stem.
+Scene LoadSceneFile(const std::filesystem::path& path, double planet_radius_m);
 
 }  // namespace aerial

@@ -1,7 +1,7 @@
 #pragma once
 // A camera, a view ray and the sun as users give them (altitude, zenith angles, relative azimuth)
 // and as the tables index them (r, mu, mu_s, nu).
-#include "aerial/atmosphere/parameters.h"
+#include "aerial/atmosphere.h"
 
 namespace aerial {
 

@@ -1,0 +1,80 @@
+#pragma once
+// The Vulkan device aerial works on: one it creates itself, or the caller's own (a renderer that
+// embeds aerial). This header and tables.h / froxels.h use Vulkan's C API only, so a caller's
+// build settings (NDEBUG, vulkan.hpp's options) need not match aerial's.
+//
+// On the caller's device aerial makes its own command pool, fence and resources, submits one-off
+// work (uploads, the precompute, read-backs) to the given queue and waits for it; the caller must
+// not use that queue from another thread meanwhile. Frames are recorded into the caller's command
+// buffers (Froxels::Record), which the caller submits: aerial never waits inside a frame. aerial
+// destroys neither the device nor the instance, also when a check fails.
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include <vulkan/vulkan_core.h>
+
+namespace aerial {
+
+// The caller's device, made for Vulkan 1.3 with kRequiredDeviceExtensions and
+// RequiredDeviceFeatures enabled. aerial checks the version, the queue family (graphics, compute
+// and timestamps) and the extensions; which features were enabled it cannot see.
+struct DeviceHandoff {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_device = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  uint32_t queue_family = 0;
+  uint32_t queue_index = 0;
+};
+
+// The device extensions aerial uses (descriptors are pushed, not allocated from pools).
+inline constexpr std::array<const char*, 1> kRequiredDeviceExtensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+
+// The device features aerial uses: storage images written without a format in the shader (the
+// precompute), dynamic rendering (raster passes) and host query reset (GPU timers).
+struct RequiredDeviceFeatures {
+  VkPhysicalDeviceFeatures core{.shaderStorageImageWriteWithoutFormat = VK_TRUE};
+  VkPhysicalDeviceVulkan12Features vulkan12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
+                                            .hostQueryReset = VK_TRUE};
+  VkPhysicalDeviceVulkan13Features vulkan13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+                                            .dynamicRendering = VK_TRUE};
+  // The chain for VkDeviceCreateInfo::pNext, with pEnabledFeatures = &core; next: the caller's
+  // own chain, placed after it. Valid while this object lives and stays where it is.
+  void* Chain(void* next = nullptr) {
+    vulkan13.pNext = next;
+    vulkan12.pNext = &vulkan13;
+    return &vulkan12;
+  }
+};
+
+// aerial's own device.
+struct DeviceOptions {
+  std::string device_name;  // substring of the device's name (any case); empty: $AERIAL_DEVICE or the best
+  bool validation = false;  // Khronos validation layers; also on with AERIAL_VALIDATION=1
+};
+
+class Device {
+ public:
+  // aerial creates an instance and a device of its own.
+  explicit Device(const DeviceOptions& options = {});
+  // aerial works on the caller's device. Throws aerial::Error for null handles, a Vulkan version
+  // below 1.3, a queue family that cannot draw, compute and time, or a missing extension.
+  explicit Device(const DeviceHandoff& handoff);
+  ~Device();
+  Device(Device&&) noexcept;
+  Device& operator=(Device&&) noexcept;
+
+  std::string name() const;
+  bool validation_enabled() const;
+  // Validation messages (warnings and errors) seen so far by every device aerial created itself.
+  static int ValidationMessageCount();
+
+  struct Impl;  // aerial's side (src/aerial/api/)
+  const Impl& impl() const { return *impl_; }
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace aerial

@@ -1,0 +1,27 @@
+#pragma once
+// What `aerial probe` prints, as values: the tables' render-time lookups (the same GLSL the frame
+// uses, shaders/probe/probe.comp) for a batch of view rays, evaluated on the device.
+#include <span>
+#include <vector>
+
+#include "aerial/tables.h"
+#include "aerial/view_geometry.h"
+
+namespace aerial {
+
+struct ProbeQuery {
+  RayParameters ray;
+  double distance_m = 0.0;  // for radiance_to_point and transmittance_to_point
+};
+
+// Radiances in W/m^2/sr/nm, irradiances in W/m^2/nm, per wavelength.
+struct ProbeResult {
+  Spectrum sky_radiance, transmittance, sun_irradiance, sky_irradiance, solar_radiance;
+  Spectrum radiance_to_point, transmittance_to_point;
+  Spectrum rayleigh, mie;  // raw table values without phase, along the whole ray
+};
+
+// One result per query, in order. Waits for the device (it is not a per-frame call).
+std::vector<ProbeResult> Probe(const Tables& tables, std::span<const ProbeQuery> queries);
+
+}  // namespace aerial

@@ -1,0 +1,100 @@
+#pragma once
+// The precomputed atmosphere tables (Bruneton & Neyret 2008; the 3D variant drops nu), on the
+// device, as images a caller binds in its own shaders (shaders/include, installed as
+// share/aerial/glsl, reads them: aerial_perspective.glsl).
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string_view>
+
+#include <vulkan/vulkan_core.h>
+
+#include "aerial/atmosphere.h"
+#include "aerial/device.h"
+#include "aerial/table_options.h"
+
+namespace aerial {
+
+// An image as shaders sample it: the view, aerial's sampler for it (linear, clamped to the edge),
+// the layout it stays in, its format and size.
+struct SampledImage {
+  VkImage image = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;
+  VkSampler sampler = VK_NULL_HANDLE;
+  VkImageLayout layout = VK_IMAGE_LAYOUT_GENERAL;
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  VkExtent3D extent{};
+};
+
+// A uniform block aerial fills, for the caller's descriptor sets.
+struct UniformBlock {
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VkDeviceSize size = 0;
+};
+
+// Called after each precompute pass: done of total passes, and the pass's name.
+using ProgressCallback = std::function<void(int done, int total, std::string_view pass)>;
+
+struct TableLoadOptions {
+  std::filesystem::path cache_dir;  // empty: $AERIAL_CACHE_DIR, $XDG_CACHE_HOME/aerial or ~/.cache/aerial
+  bool read_cache = true;           // false: always precompute
+  bool write_cache = true;          // false: keep the tables in memory only
+  ProgressCallback progress;        // told of each precompute pass, if set
+  // A progress bar on stderr when it is a terminal, and notes on the cache (what aerial's command
+  // line shows). A library caller reports progress through the callback instead.
+  bool print_progress = false;
+};
+
+class Tables {
+ public:
+  // The tables of this atmosphere and these options: read from the cache when a file made for
+  // exactly them by this version of aerial is there and intact (a version, a key and XXH64
+  // checksums guard it), precomputed on the device otherwise and then written to the cache
+  // atomically. A cache that cannot be written is not an error (the tables still work).
+  // Throws aerial::Error for invalid atmospheres or options, naming the field and the value.
+  static Tables LoadOrPrecompute(const Device& device, const AtmosphereParameters& atmosphere,
+                                 const PrecomputeOptions& options, const TableLoadOptions& load = {});
+  // Reads a table file (Store, or `aerial precompute --out`) made for this atmosphere and options;
+  // throws aerial::Error naming what is wrong with it (missing, truncated, another version or key,
+  // a checksum).
+  static Tables Load(const Device& device, const AtmosphereParameters& atmosphere,
+                     const PrecomputeOptions& options, const std::filesystem::path& file);
+  // Writes the tables to file, atomically (a temporary file, then a rename).
+  void Store(const std::filesystem::path& file) const;
+
+  ~Tables();
+  Tables(Tables&&) noexcept;
+  Tables& operator=(Tables&&) noexcept;
+
+  const AtmosphereParameters& atmosphere() const;
+  const PrecomputeOptions& options() const;
+  bool from_cache() const;
+  std::filesystem::path cache_file() const;  // where the cache is (empty with write_cache off)
+  uint64_t gpu_bytes() const;
+
+  // The AtmosphereBlock of shaders/include/definitions.glsl (set 0, binding 0 by the GLSL
+  // contract; its C++ twin is aerial/shader_abi/atmosphere_block.h).
+  UniformBlock atmosphere_block() const;
+  // T(r, mu), 2D.
+  SampledImage transmittance() const;
+  // Ground irradiance E(r, mu_s), 2D.
+  SampledImage irradiance() const;
+  // Rayleigh (with multiple scattering folded in, in 4D) and single Mie scattering without phase:
+  // 4D packed in 3D (x = nu * mu_s size + mu_s), or 3D.
+  SampledImage rayleigh() const;
+  SampledImage mie() const;
+  // 3D variant: multiple scattering without phase (one texel in 4D, where it is in rayleigh()).
+  SampledImage multiple() const;
+  // The scattering density of orders >= 2 (J_ms), for marches along a segment.
+  SampledImage multiple_density() const;
+
+  struct Impl;  // aerial's side (src/aerial/api/)
+  const Impl& impl() const { return *impl_; }
+
+ private:
+  explicit Tables(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace aerial

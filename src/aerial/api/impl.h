@@ -1,0 +1,35 @@
+#pragma once
+// What the public classes of include/aerial/ hold: aerial's side of the API. aerial's own code
+// that works from the public objects (the renderer, the exporters, the command line) reaches the
+// Vulkan layer through these; a caller never sees them.
+#include <memory>
+
+#include "aerial/device.h"
+#include "aerial/froxels.h"
+#include "aerial/precompute/table_store.h"
+#include "aerial/tables.h"
+#include "aerial/vk/context.h"
+#include "froxel/froxel_volume.h"
+
+namespace aerial {
+
+struct Device::Impl {
+  std::unique_ptr<vk::Context> context;
+};
+
+struct Tables::Impl {
+  LoadedTables loaded;
+  const AtmosphereTables& tables() const { return *loaded.tables; }
+};
+
+struct Froxels::Impl {
+  Impl(const vk::Context& context, const FroxelGrid& grid);
+  FroxelVolume volume;
+  vk::Buffer frame_block;  // written by the command buffer (RecordedUniformBufferInfo)
+  ::vk::raii::Sampler sampler;  // linear, clamped to the edge, as aerial's passes read froxels
+};
+
+// The public form of an image of aerial's, with the sampler shaders read it through.
+SampledImage ToSampledImage(const vk::SampledImageSlot& sampled);
+
+}  // namespace aerial

@@ -1,0 +1,77 @@
+// aerial::Tables (include/aerial/tables.h) over the table store and AtmosphereTables.
+#include "aerial/api/impl.h"
+#include "aerial/precompute/table_cache.h"
+
+namespace aerial {
+
+SampledImage ToSampledImage(const vk::SampledImageSlot& sampled) {
+  const vk::Image& image = *sampled.image;
+  ::vk::Extent3D extent = image.extent();
+  return {.image = image.handle(),
+          .view = image.view(),
+          .sampler = sampled.sampler,
+          .layout = VK_IMAGE_LAYOUT_GENERAL,  // where aerial's images live (vk/resources.h)
+          .format = VkFormat(image.format()),
+          .extent = {extent.width, extent.height, extent.depth}};
+}
+
+namespace {
+
+// One of the tables with the tables' sampler.
+SampledImage Public(const AtmosphereTables& tables, const vk::Image& (AtmosphereTables::*table)() const) {
+  return ToSampledImage(tables.Sampled((tables.*table)()));
+}
+
+}  // namespace
+
+Tables::Tables(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Tables::~Tables() = default;
+Tables::Tables(Tables&&) noexcept = default;
+Tables& Tables::operator=(Tables&&) noexcept = default;
+
+Tables Tables::LoadOrPrecompute(const Device& device, const AtmosphereParameters& atmosphere,
+                                const PrecomputeOptions& options, const TableLoadOptions& load) {
+  Validate(atmosphere);
+  TableStoreOptions store{.cache_dir = load.cache_dir,
+                          .read_cache = load.read_cache,
+                          .write_cache = load.write_cache,
+                          .quiet = !load.print_progress,
+                          .progress = load.progress};
+  return Tables(std::make_unique<Impl>(
+      Impl{aerial::LoadOrPrecompute(*device.impl().context, atmosphere, options, store)}));
+}
+
+Tables Tables::Load(const Device& device, const AtmosphereParameters& atmosphere,
+                    const PrecomputeOptions& options, const std::filesystem::path& file) {
+  Validate(atmosphere);
+  options.Validate();
+  LoadedTables loaded{.tables = std::make_unique<AtmosphereTables>(*device.impl().context, atmosphere, options),
+                      .from_cache = true,
+                      .cache_file = file};
+  loaded.tables->Upload(ReadTableCache(file, loaded.tables->cache_key()));
+  return Tables(std::make_unique<Impl>(Impl{std::move(loaded)}));
+}
+
+void Tables::Store(const std::filesystem::path& file) const { WriteTableCache(file, impl_->tables().Download()); }
+
+const AtmosphereParameters& Tables::atmosphere() const { return impl_->tables().atmosphere(); }
+const PrecomputeOptions& Tables::options() const { return impl_->tables().options(); }
+bool Tables::from_cache() const { return impl_->loaded.from_cache; }
+std::filesystem::path Tables::cache_file() const { return impl_->loaded.cache_file; }
+uint64_t Tables::gpu_bytes() const { return impl_->tables().table_bytes(); }
+
+UniformBlock Tables::atmosphere_block() const {
+  const vk::Buffer& buffer = impl_->tables().uniform_buffer();
+  return {buffer.handle(), buffer.size()};
+}
+
+SampledImage Tables::transmittance() const { return Public(impl_->tables(), &AtmosphereTables::transmittance); }
+SampledImage Tables::irradiance() const { return Public(impl_->tables(), &AtmosphereTables::irradiance); }
+SampledImage Tables::rayleigh() const { return Public(impl_->tables(), &AtmosphereTables::rayleigh); }
+SampledImage Tables::mie() const { return Public(impl_->tables(), &AtmosphereTables::mie); }
+SampledImage Tables::multiple() const { return Public(impl_->tables(), &AtmosphereTables::multiple); }
+SampledImage Tables::multiple_density() const {
+  return Public(impl_->tables(), &AtmosphereTables::multiple_density);
+}
+
+}  // namespace aerial
