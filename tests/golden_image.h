@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "aerial/image/image.h"
+#include "aerial/image.h"
 
 namespace aerial::testing {
 

@@ -2,7 +2,7 @@
 // Image comparisons shared by the render tests.
 #include <vector>
 
-#include "aerial/image/image.h"
+#include "aerial/image.h"
 
 namespace aerial::testing {
 

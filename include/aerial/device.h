@@ -48,6 +48,13 @@ struct RequiredDeviceFeatures {
   }
 };
 
+// The GPU time of one pass of aerial's (a precompute pass, a pass of a frame), from the device's
+// timestamps.
+struct PassTime {
+  std::string pass;
+  double milliseconds = 0.0;
+};
+
 // aerial's own device.
 struct DeviceOptions {
   std::string device_name;  // substring of the device's name (any case); empty: $AERIAL_DEVICE or the best
@@ -67,6 +74,8 @@ class Device {
 
   std::string name() const;
   bool validation_enabled() const;
+  // The size of the device's largest device-local memory heap, in bytes.
+  uint64_t largest_heap_bytes() const;
   // Validation messages (warnings and errors) seen so far by every device aerial created itself.
   static int ValidationMessageCount();
 

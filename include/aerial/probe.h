@@ -1,6 +1,7 @@
 #pragma once
 // What `aerial probe` prints, as values: the tables' render-time lookups (the same GLSL the frame
 // uses, shaders/probe/probe.comp) for a batch of view rays, evaluated on the device.
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -23,5 +24,12 @@ struct ProbeResult {
 
 // One result per query, in order. Waits for the device (it is not a per-frame call).
 std::vector<ProbeResult> Probe(const Tables& tables, std::span<const ProbeQuery> queries);
+
+// The same quantities from aerial's CPU reference in double precision (quadrature for single
+// scattering, Monte Carlo for the orders above it; `aerial probe --reference`), for scattering
+// orders 1..orders (INT_MAX: all of them). radiance_to_point and transmittance_to_point only
+// with a distance; rayleigh and mie stay 0. Seconds per call, not a per-frame function.
+ProbeResult ProbeReference(const AtmosphereParameters& atmosphere, const RayParameters& ray,
+                           std::optional<double> distance_m, int orders);
 
 }  // namespace aerial

@@ -99,4 +99,19 @@ struct PrecomputeOptions {
   std::string Describe() const;  // one line, for logs and the cache header
 };
 
+// Memory by what sizes it (the --transmittance-size, --irradiance-size, --scattering-size and
+// --multiple-density-size options), in bytes: used for the tables themselves and for the precompute's scratch tables.
+struct TableBytes {
+  uint64_t transmittance = 0, irradiance = 0, scattering = 0, multiple_density = 0;
+  uint64_t total() const { return transmittance + irradiance + scattering + multiple_density; }
+};
+
+// The memory AtmosphereTables allocates for these options, known before allocating it: the
+// scattering part is the Rayleigh and Mie tables (and in 3D the multiple scattering one).
+TableBytes TableMemory(const PrecomputeOptions& options);
+
+// The memory of the intermediate tables Precompute allocates besides `tables`, known before it
+// allocates them.
+TableBytes PrecomputeScratchMemory(const PrecomputeOptions& options);
+
 }  // namespace aerial

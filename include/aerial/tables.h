@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <string_view>
+#include <vector>
 
 #include <vulkan/vulkan_core.h>
 
@@ -40,6 +41,9 @@ struct TableLoadOptions {
   std::filesystem::path cache_dir;  // empty: $AERIAL_CACHE_DIR, $XDG_CACHE_HOME/aerial or ~/.cache/aerial
   bool read_cache = true;           // false: always precompute
   bool write_cache = true;          // false: keep the tables in memory only
+  // true: a cache that cannot be written is an error, reported before any work (when writing it
+  // is the point, as for `aerial precompute`); false: a warning, and the tables are still used.
+  bool require_cache_write = false;
   ProgressCallback progress;        // told of each precompute pass, if set
   // A progress bar on stderr when it is a terminal, and notes on the cache (what aerial's command
   // line shows). A library caller reports progress through the callback instead.
@@ -51,7 +55,8 @@ class Tables {
   // The tables of this atmosphere and these options: read from the cache when a file made for
   // exactly them by this version of aerial is there and intact (a version, a key and XXH64
   // checksums guard it), precomputed on the device otherwise and then written to the cache
-  // atomically. A cache that cannot be written is not an error (the tables still work).
+  // atomically. A cache that cannot be written is a warning on stderr (unless
+  // require_cache_write), and the tables still work.
   // Throws aerial::Error for invalid atmospheres or options, naming the field and the value.
   static Tables LoadOrPrecompute(const Device& device, const AtmosphereParameters& atmosphere,
                                  const PrecomputeOptions& options, const TableLoadOptions& load = {});
@@ -72,6 +77,8 @@ class Tables {
   bool from_cache() const;
   std::filesystem::path cache_file() const;  // where the cache is (empty with write_cache off)
   uint64_t gpu_bytes() const;
+  // The GPU time of each precompute pass; empty when the tables were read from a file.
+  const std::vector<PassTime>& precompute_times() const;
 
   // The AtmosphereBlock of shaders/include/definitions.glsl (set 0, binding 0 by the GLSL
   // contract; its C++ twin is aerial/shader_abi/atmosphere_block.h).

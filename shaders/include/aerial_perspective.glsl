@@ -10,7 +10,9 @@
 // aerial::FrameUniforms: their std140 layouts are checked against the GLSL compiler's in
 // tests/uniform_layout_test.cpp), and passes the three froxel images as sampler3D (linear
 // filtering, clamp to edge) wherever its own layout puts them. Positions are camera-relative
-// world vectors (frame.glsl).
+// world vectors (frame.glsl). The include declares specialization constant 0
+// (kAerialPerPixel, frame.glsl: 0 reads the froxels, which is what a caller wants), so the
+// caller's own constants start at 4 (aerial's passes use 1 to 3).
 //   Inscatter segment = GetAerialPerspective(rayleigh, mie, transmittance, gl_FragCoord.xy / frame.viewport.xy,
 //                                            length(relative_position));
 //   color.rgb = ApplyAerialPerspective(surface_radiance, segment, ViewSunCosine(relative_position));
@@ -48,7 +50,7 @@ vec3 ApplyAerialPerspective(vec3 surface_radiance, Inscatter segment, float nu) 
 }
 
 // The sky along a unit view ray (camera-relative world) that meets no geometry, from the tables
-// (aerial::AtmosphereTables): the whole ray's inscatter with the phases of the ray itself, and
+// (aerial::Tables): the whole ray's inscatter with the phases of the ray itself, and
 // behind it the sun's disc or the bare planet. aerial's sky pass draws this in per-pixel mode; in
 // froxel mode it reads the same from a per-frame sky-view table (sky_view.glsl).
 vec3 GetSkyRadianceAlongRay(sampler2D transmittance_texture, sampler3D rayleigh_texture, sampler3D mie_texture,

@@ -24,7 +24,7 @@ struct DensityProfile {
   DensityProfileLayer layers[2];
 };
 
-// Mirrored by aerial::AtmosphereUniforms (src/aerial/precompute/atmosphere_uniforms.h);
+// Mirrored by aerial::AtmosphereUniforms (aerial/shader_abi/atmosphere_block.h);
 // tests/uniform_layout_test.cpp checks every member's offset against the compiler's layout.
 layout(std140, set = 0, binding = 0) uniform AtmosphereBlock {
   vec4 solar_irradiance;        // W/m^2/nm, xyz = the three wavelengths.

@@ -9,7 +9,7 @@
 // constant, so the path not taken is compiled out (a CPU rasterizer would run both).
 layout(constant_id = 0) const int kAerialPerPixel = 0;
 
-// Mirrored by aerial::FrameUniforms (src/aerial/shader_abi/frame_block.h); tests/uniform_layout_test.cpp
+// Mirrored by aerial::FrameUniforms (aerial/shader_abi/frame_block.h); tests/uniform_layout_test.cpp
 // checks every member's offset against the compiler's layout.
 layout(std140, set = 0, binding = 1) uniform FrameBlock {
   mat4 view_projection;          // camera-relative world -> clip (reversed Z, infinite far)

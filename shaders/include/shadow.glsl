@@ -27,7 +27,7 @@ layout(constant_id = 1) const int kSunShadows = 1;
 const int kShadowCascades = 4;
 const int kShadowAtlasTilesPerRow = 2;  // the cascades' tiles in the atlas: 2x2
 
-// Mirrored by aerial::ShadowUniforms (src/aerial/render/shadow_uniforms.h). Light coordinates
+// Mirrored by aerial::ShadowUniforms (aerial/shader_abi/shadow_block.h). Light coordinates
 // are relative to the camera, in meters along the light's axes.
 layout(std140, set = 0, binding = SHADOW_BINDING) uniform ShadowBlock {
   vec4 light_axes[3];                      // xyz: right, up, toward the sun

@@ -46,8 +46,8 @@ void Bench(const BenchOptions& cli) {
         });
     if (!cli.reference_file.empty()) aerial::bench::WriteSkyReference(reference, cli.reference_file);
   }
-  auto context = cli.tables.MakeContext();
-  aerial::LoadedTables loaded = aerial::LoadOrPrecompute(*context, atmosphere, options, cli.tables.MakeStoreOptions());
+  aerial::vk::Context context(cli.tables.MakeContextInfo());
+  aerial::LoadedTables loaded = aerial::LoadOrPrecompute(context, atmosphere, options, cli.tables.MakeStoreOptions());
   auto regions = aerial::bench::CompareSkyWithTables(*loaded.tables, reference);
   std::string table = aerial::bench::FormatSkyAccuracy(regions);
   std::fprintf(stderr, "%s\n", aerial::bench::FormatWorstSamples(regions).c_str());

@@ -15,6 +15,7 @@ Device& Device::operator=(Device&&) noexcept = default;
 
 std::string Device::name() const { return impl_->context->device_name(); }
 bool Device::validation_enabled() const { return impl_->context->validation_enabled(); }
+uint64_t Device::largest_heap_bytes() const { return impl_->context->largest_heap_bytes(); }
 int Device::ValidationMessageCount() { return vk::Context::ValidationMessageCount(); }
 
 }  // namespace aerial

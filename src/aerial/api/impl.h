@@ -7,6 +7,8 @@
 #include "aerial/device.h"
 #include "aerial/froxels.h"
 #include "aerial/precompute/table_store.h"
+#include "aerial/render/renderer.h"
+#include "aerial/renderer.h"
 #include "aerial/tables.h"
 #include "aerial/vk/context.h"
 #include "froxel/froxel_volume.h"
@@ -27,6 +29,10 @@ struct Froxels::Impl {
   FroxelVolume volume;
   vk::Buffer frame_block;  // written by the command buffer (RecordedUniformBufferInfo)
   ::vk::raii::Sampler sampler;  // linear, clamped to the edge, as aerial's passes read froxels
+};
+
+struct SceneRenderer::Impl {
+  Renderer renderer;
 };
 
 // The public form of an image of aerial's, with the sampler shaders read it through.

@@ -1,12 +1,35 @@
-// aerial::Probe (include/aerial/probe.h) over ProbeTables.
+// aerial::Probe and aerial::ProbeReference (include/aerial/probe.h) over ProbeTables and the CPU
+// reference.
+#include <cmath>
+
 #include "aerial/api/impl.h"
 #include "aerial/probe.h"
 #include "aerial/probe/table_probe.h"
+#include "aerial/reference/reference.h"
 
 namespace aerial {
 
 std::vector<ProbeResult> Probe(const Tables& tables, std::span<const ProbeQuery> queries) {
   return ProbeTables(tables.impl().tables(), queries);
+}
+
+ProbeResult ProbeReference(const AtmosphereParameters& atmosphere, const RayParameters& ray,
+                               std::optional<double> distance, int orders) {
+  reference::Reference model(atmosphere);
+  ProbeResult result{};
+  result.sky_radiance = model.ComputeRadiance(ray.r, ray.mu, ray.mu_s, ray.nu, orders).value;
+  result.transmittance = model.TransmittanceToBoundary(ray.r, ray.mu);
+  result.sun_irradiance = model.ComputeDirectIrradiance(ray.r, ray.mu_s);
+  result.sky_irradiance = model.ComputeSkyIrradiance(ray.r, ray.mu_s, orders).value;
+  double alpha = atmosphere.sun_angular_radius_rad;
+  for (int i = 0; i < 3; ++i)
+    result.solar_radiance[i] = atmosphere.solar_irradiance[i] / (M_PI * alpha * alpha);
+  if (distance) {
+    result.radiance_to_point =
+        model.ComputeRadiance(ray.r, ray.mu, ray.mu_s, ray.nu, orders, *distance).value;
+    result.transmittance_to_point = model.Transmittance(ray.r, ray.mu, *distance);
+  }
+  return result;
 }
 
 }  // namespace aerial

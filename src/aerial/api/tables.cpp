@@ -35,6 +35,7 @@ Tables Tables::LoadOrPrecompute(const Device& device, const AtmosphereParameters
   TableStoreOptions store{.cache_dir = load.cache_dir,
                           .read_cache = load.read_cache,
                           .write_cache = load.write_cache,
+                          .require_cache_write = load.require_cache_write,
                           .quiet = !load.print_progress,
                           .progress = load.progress};
   return Tables(std::make_unique<Impl>(
@@ -59,6 +60,7 @@ const PrecomputeOptions& Tables::options() const { return impl_->tables().option
 bool Tables::from_cache() const { return impl_->loaded.from_cache; }
 std::filesystem::path Tables::cache_file() const { return impl_->loaded.cache_file; }
 uint64_t Tables::gpu_bytes() const { return impl_->tables().table_bytes(); }
+const std::vector<PassTime>& Tables::precompute_times() const { return impl_->loaded.pass_times; }
 
 UniformBlock Tables::atmosphere_block() const {
   const vk::Buffer& buffer = impl_->tables().uniform_buffer();

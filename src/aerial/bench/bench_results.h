@@ -7,7 +7,7 @@
 #include "aerial/bench/bench_plan.h"
 #include "aerial/bench/image_metrics.h"
 #include "aerial/bench/precompute_report.h"
-#include "aerial/image/image.h"
+#include "aerial/image.h"
 
 namespace aerial::bench {
 

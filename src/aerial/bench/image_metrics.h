@@ -10,7 +10,7 @@
 #include <array>
 #include <vector>
 
-#include "aerial/image/image.h"
+#include "aerial/image.h"
 
 namespace aerial::bench {
 

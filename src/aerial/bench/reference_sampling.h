@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "aerial/bench/image_metrics.h"
-#include "aerial/image/image.h"
+#include "aerial/image.h"
 #include "aerial/reference/reference.h"
 #include "aerial/render/frame_uniforms.h"
 #include "aerial/scene.h"

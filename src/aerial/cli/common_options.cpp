@@ -71,20 +71,25 @@ PrecomputeOptions TableOptions::MakePrecomputeOptions() const {
   return options;
 }
 
+DeviceOptions TableOptions::MakeDeviceOptions() const { return {.device_name = device, .validation = validation}; }
+
+TableLoadOptions TableOptions::MakeLoadOptions() const {
+  return {.cache_dir = cache_dir, .read_cache = !no_cache, .write_cache = true, .print_progress = !quiet};
+}
+
 vk::ContextCreateInfo TableOptions::MakeContextInfo() const {
-  return {.device_name = device, .validation = validation};
-}
-
-std::unique_ptr<vk::Context> TableOptions::MakeContext() const {
-  return std::make_unique<vk::Context>(MakeContextInfo());
-}
-
-MemoryBudget TableOptions::MakeMemoryBudget(const vk::Context& context) const {
-  return aerial::MakeMemoryBudget(max_memory_mib, context.largest_heap_bytes());
+  DeviceOptions options = MakeDeviceOptions();
+  return {.device_name = options.device_name, .validation = options.validation};
 }
 
 TableStoreOptions TableOptions::MakeStoreOptions() const {
-  return {.cache_dir = cache_dir, .read_cache = !no_cache, .write_cache = true, .quiet = quiet};
+  TableLoadOptions load = MakeLoadOptions();
+  return {.cache_dir = load.cache_dir, .read_cache = load.read_cache, .write_cache = load.write_cache,
+          .quiet = !load.print_progress};
+}
+
+MemoryBudget TableOptions::MakeMemoryBudget(uint64_t largest_heap_bytes) const {
+  return aerial::MakeMemoryBudget(max_memory_mib, largest_heap_bytes);
 }
 
 }  // namespace aerial::cli

@@ -12,7 +12,9 @@
 
 #include "aerial/atmosphere.h"
 #include "aerial/core/memory_budget.h"
+#include "aerial/device.h"
 #include "aerial/precompute/table_store.h"
+#include "aerial/tables.h"
 #include "aerial/vk/context.h"
 
 namespace aerial::cli {
@@ -38,11 +40,14 @@ struct TableOptions {
   void AddTo(CLI::App& command);
   AtmosphereParameters LoadAtmosphere() const;
   PrecomputeOptions MakePrecomputeOptions() const;
-  vk::ContextCreateInfo MakeContextInfo() const;  // --device, --validation
-  std::unique_ptr<vk::Context> MakeContext() const;
+  DeviceOptions MakeDeviceOptions() const;  // --device, --validation
+  TableLoadOptions MakeLoadOptions() const;  // --cache-dir, --no-cache, --quiet
+  // The same for the viewer, whose device must also present to its window (vk::Context with
+  // window extensions, which the public API does not make).
+  vk::ContextCreateInfo MakeContextInfo() const;
   TableStoreOptions MakeStoreOptions() const;
   // --max-memory-mib, else the default budget or the device's heap when smaller.
-  MemoryBudget MakeMemoryBudget(const vk::Context& context) const;
+  MemoryBudget MakeMemoryBudget(uint64_t largest_heap_bytes) const;
 };
 
 }  // namespace aerial::cli

@@ -10,8 +10,8 @@
 #include "aerial/cli/common_options.h"
 #include "aerial/cli/memory_uses.h"
 #include "aerial/cli/scene_options.h"
-#include "aerial/export/froxel_export.h"
-#include "aerial/render/renderer.h"
+#include "aerial/renderer.h"
+#include "aerial/vdb_export.h"
 
 namespace aerial::cli {
 namespace {
@@ -20,37 +20,30 @@ struct ExportVdbCommandOptions {
   TableOptions tables;
   SceneOptions scene;
   FroxelOptions froxels;
-  CaptureSize size;
-  std::optional<double> world_grid_m;
+  VdbExportOptions vdb;
   std::string shadows = "on";
   std::filesystem::path out;
 };
 
 void RunExportVdb(const ExportVdbCommandOptions& options) {
   auto start = std::chrono::steady_clock::now();
-  CheckVdbOutputPath(options.out);
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
   PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
   FroxelGrid grid = options.froxels.Make();
-  RenderOptions render{.width = options.size.width, .height = options.size.height, .froxels = grid,
-                       .shadows = ParseShadows(options.shadows)};
+  VdbExportOptions vdb = options.vdb;
+  vdb.shadows = ParseShadows(options.shadows);
+  RenderOptions render{.width = int(vdb.width), .height = int(vdb.height), .froxels = grid, .shadows = vdb.shadows};
   render.Validate();
   Scene scene = options.scene.Load(atmosphere.bottom_radius_m);
-  if (options.world_grid_m) {
-    FroxelPlacement placement(CaptureFrameUniforms(scene, atmosphere.bottom_radius_m, grid, options.size), grid);
-    CheckWorldGrid(*options.world_grid_m, placement);
-  }
-  auto context = options.tables.MakeContext();
-  options.tables.MakeMemoryBudget(*context).Check(
-      Combined(TableMemoryUses(precompute), Combined(FrameMemoryUses(render), FroxelExportMemoryUses(grid))));
-  LoadedTables loaded = LoadOrPrecompute(*context, atmosphere, precompute, options.tables.MakeStoreOptions());
-  FroxelFrame frame = CaptureFroxels(*loaded.tables, scene, grid, options.size, render.shadows);
-  VdbVolume volume = options.world_grid_m ? MakeWorldSpaceVolume(frame, *options.world_grid_m)
-                                          : MakeFroxelSpaceVolume(frame);
-  WriteVdb(options.out, volume);
+  CheckVdbExport(options.out, scene, atmosphere, grid, vdb);
+  Device device(options.tables.MakeDeviceOptions());
+  options.tables.MakeMemoryBudget(device.largest_heap_bytes())
+      .Check(Combined(TableMemoryUses(precompute), Combined(FrameMemoryUses(render), FroxelExportMemoryUses(grid))));
+  Tables tables = Tables::LoadOrPrecompute(device, atmosphere, precompute, options.tables.MakeLoadOptions());
+  size_t voxels = ExportFroxelVdb(options.out, tables, scene, grid, vdb);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("wrote %s: %zu voxels per grid (%s), %.2f s\n", options.out.c_str(),
-              volume.voxels.size(), options.world_grid_m ? "world grid" : "froxel space", seconds);
+  std::printf("wrote %s: %zu voxels per grid (%s), %.2f s\n", options.out.c_str(), voxels,
+              vdb.world_grid_m ? "world grid" : "froxel space", seconds);
 }
 
 }  // namespace
@@ -62,10 +55,10 @@ void AddExportVdbCommand(CLI::App& app) {
   options->tables.AddTo(*command);
   options->scene.AddTo(*command);
   options->froxels.AddTo(*command);
-  command->add_option("--width", options->size.width,
+  command->add_option("--width", options->vdb.width,
                       "Width of the image the froxels are for (its aspect shapes the frustum)");
-  command->add_option("--height", options->size.height, "Height of that image");
-  command->add_option("--world-grid", options->world_grid_m,
+  command->add_option("--height", options->vdb.height, "Height of that image");
+  command->add_option("--world-grid", options->vdb.world_grid_m,
                       "Resample into a regular world-space grid of this voxel size (m) instead of "
                       "writing the froxels in their own index space");
   command->add_option("--shadows", options->shadows,

@@ -16,21 +16,21 @@ void AddPrecomputeCommand(CLI::App& app) {
   command->callback([options] {
     AtmosphereParameters atmosphere = options->LoadAtmosphere();
     PrecomputeOptions precompute = options->MakePrecomputeOptions();
-    auto context = options->MakeContext();
-    options->MakeMemoryBudget(*context).Check(TableMemoryUses(precompute));
-    TableStoreOptions store = options->MakeStoreOptions();
-    store.require_cache_write = true;
-    LoadedTables loaded = LoadOrPrecompute(*context, atmosphere, precompute, store);
-    std::printf("device: %s\ntables: %s (%s)\n", context->device_name().c_str(),
-                loaded.tables->options().Describe().c_str(), atmosphere.name.c_str());
-    std::printf("table memory: %.2f MiB\n", double(loaded.tables->table_bytes()) / (1 << 20));
-    if (loaded.from_cache) {
-      std::printf("cache: %s (valid, reused; --no-cache recomputes)\n", loaded.cache_file.c_str());
+    Device device(options->MakeDeviceOptions());
+    options->MakeMemoryBudget(device.largest_heap_bytes()).Check(TableMemoryUses(precompute));
+    TableLoadOptions load = options->MakeLoadOptions();
+    load.require_cache_write = true;
+    Tables tables = Tables::LoadOrPrecompute(device, atmosphere, precompute, load);
+    std::printf("device: %s\ntables: %s (%s)\n", device.name().c_str(), tables.options().Describe().c_str(),
+                atmosphere.name.c_str());
+    std::printf("table memory: %.2f MiB\n", double(tables.gpu_bytes()) / (1 << 20));
+    if (tables.from_cache()) {
+      std::printf("cache: %s (valid, reused; --no-cache recomputes)\n", tables.cache_file().c_str());
       return;
     }
-    std::printf("cache: %s (written)\nGPU time per pass:\n", loaded.cache_file.c_str());
+    std::printf("cache: %s (written)\nGPU time per pass:\n", tables.cache_file().c_str());
     double total = 0.0;
-    for (const auto& pass : loaded.pass_times) {
+    for (const auto& pass : tables.precompute_times()) {
       std::printf("  %-36s %10.1f ms\n", pass.pass.c_str(), pass.milliseconds);
       total += pass.milliseconds;
     }

@@ -13,8 +13,7 @@
 #include "aerial/cli/memory_uses.h"
 #include "aerial/error.h"
 #include "aerial/core/toml_reader.h"
-#include "aerial/probe/table_probe.h"
-#include "aerial/reference/reference.h"
+#include "aerial/probe.h"
 
 namespace aerial::cli {
 namespace {
@@ -28,25 +27,6 @@ struct ProbeOptions {
 
 nlohmann::json ToJson(const Spectrum& s) { return nlohmann::json::array({s[0], s[1], s[2]}); }
 
-ProbeResult ProbeWithReference(const AtmosphereParameters& atmosphere, const RayParameters& ray,
-                               std::optional<double> distance, int orders) {
-  reference::Reference model(atmosphere);
-  ProbeResult result{};
-  result.sky_radiance = model.ComputeRadiance(ray.r, ray.mu, ray.mu_s, ray.nu, orders).value;
-  result.transmittance = model.TransmittanceToBoundary(ray.r, ray.mu);
-  result.sun_irradiance = model.ComputeDirectIrradiance(ray.r, ray.mu_s);
-  result.sky_irradiance = model.ComputeSkyIrradiance(ray.r, ray.mu_s, orders).value;
-  double alpha = atmosphere.sun_angular_radius_rad;
-  for (int i = 0; i < 3; ++i)
-    result.solar_radiance[i] = atmosphere.solar_irradiance[i] / (M_PI * alpha * alpha);
-  if (distance) {
-    result.radiance_to_point =
-        model.ComputeRadiance(ray.r, ray.mu, ray.mu_s, ray.nu, orders, *distance).value;
-    result.transmittance_to_point = model.Transmittance(ray.r, ray.mu, *distance);
-  }
-  return result;
-}
-
 void RunProbe(const ProbeOptions& options) {
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
   ValidateViewAngles(options.view, atmosphere);
@@ -59,14 +39,13 @@ void RunProbe(const ProbeOptions& options) {
 
   ProbeResult result;
   if (options.reference) {
-    result = ProbeWithReference(atmosphere, ray, options.distance_m, precompute.RepresentedOrders());
+    result = ProbeReference(atmosphere, ray, options.distance_m, precompute.RepresentedOrders());
   } else {
-    auto context = options.tables.MakeContext();
-    options.tables.MakeMemoryBudget(*context).Check(TableMemoryUses(precompute));
-    LoadedTables loaded =
-        LoadOrPrecompute(*context, atmosphere, precompute, options.tables.MakeStoreOptions());
+    Device device(options.tables.MakeDeviceOptions());
+    options.tables.MakeMemoryBudget(device.largest_heap_bytes()).Check(TableMemoryUses(precompute));
+    Tables tables = Tables::LoadOrPrecompute(device, atmosphere, precompute, options.tables.MakeLoadOptions());
     ProbeQuery query{ray, options.distance_m.value_or(0.0)};
-    result = ProbeTables(*loaded.tables, std::span(&query, 1)).front();
+    result = Probe(tables, std::span(&query, 1)).front();
   }
 
   nlohmann::json json;

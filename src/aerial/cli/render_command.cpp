@@ -8,8 +8,8 @@
 #include "aerial/cli/common_options.h"
 #include "aerial/cli/memory_uses.h"
 #include "aerial/cli/scene_options.h"
-#include "aerial/image/image_writer.h"
-#include "aerial/render/renderer.h"
+#include "aerial/image.h"
+#include "aerial/renderer.h"
 
 namespace aerial::cli {
 namespace {
@@ -28,13 +28,13 @@ void RunRender(const RenderCommandOptions& options) {
   RenderOptions render = options.frame.MakeRenderOptions();
   Scene scene = options.scene.Load(atmosphere.bottom_radius_m);
   PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
-  auto context = options.tables.MakeContext();
-  options.tables.MakeMemoryBudget(*context).Check(Combined(TableMemoryUses(precompute), FrameMemoryUses(render)));
-  LoadedTables loaded =
-      LoadOrPrecompute(*context, atmosphere, precompute, options.tables.MakeStoreOptions());
-  Renderer renderer(*loaded.tables, scene, render);
+  Device device(options.tables.MakeDeviceOptions());
+  options.tables.MakeMemoryBudget(device.largest_heap_bytes())
+      .Check(Combined(TableMemoryUses(precompute), FrameMemoryUses(render)));
+  Tables tables = Tables::LoadOrPrecompute(device, atmosphere, precompute, options.tables.MakeLoadOptions());
+  SceneRenderer renderer(tables, scene, render);
   renderer.Render(scene);  // the first frame includes lavapipe's shader compilation
-  std::vector<vk::PassTime> times = renderer.Render(scene);
+  std::vector<PassTime> times = renderer.Render(scene);
   WriteImage(options.out, renderer.ReadOutput(), {.exposure = options.frame.exposure});
   if (options.timings) {
     double total = 0.0;

@@ -49,7 +49,7 @@ void CheckViewerMemory(const TableOptions& tables, const viewer::ViewerOptions& 
   for (const auto& [variant, precompute] : viewer.tables) uses = Combined(uses, TableMemoryUses(precompute));
   uses = Combined(uses, FrameMemoryUses(viewer.render, int(viewer.tables.size())));
   vk::Context device(viewer.context);
-  tables.MakeMemoryBudget(device).Check(uses);
+  tables.MakeMemoryBudget(device.largest_heap_bytes()).Check(uses);
 }
 
 void RunView(const ViewCommandOptions& options) {

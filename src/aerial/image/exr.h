@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "aerial/image/image.h"
+#include "aerial/image.h"
 
 namespace aerial {
 

@@ -1,4 +1,4 @@
-#include "aerial/image/image.h"
+#include "aerial/image.h"
 
 #include "aerial/error.h"
 

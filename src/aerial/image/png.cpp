@@ -3,7 +3,7 @@
 #include <string>
 
 #include "aerial/error.h"
-#include "aerial/image/image.h"
+#include "aerial/image.h"
 
 // The implementation lives here and nowhere else in aerial_lib. STATIC keeps its symbols local
 // to this file, so another library (or a test) that also compiles stb cannot clash with it.

@@ -1,6 +1,6 @@
 #pragma once
 // Resampling an image to another size.
-#include "aerial/image/image.h"
+#include "aerial/image.h"
 
 namespace aerial {
 

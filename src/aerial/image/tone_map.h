@@ -4,15 +4,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "aerial/image/image.h"
+#include "aerial/image.h"
 
 namespace aerial {
-
-struct ToneMapOptions {
-  // Radiance multiplier applied before the curve. The filmic curve reaches mid grey near 0.18,
-  // so exposure should map the scene's typical radiance to roughly that.
-  double exposure = 1.0;
-};
 
 // Per channel: exposure, then the ACES filmic fit (Narkowicz 2015), then the sRGB OETF
 // (IEC 61966-2-1), rounded to 8 bits. Alpha is coverage, not light: it is only clamped to [0, 1]

@@ -28,17 +28,6 @@ TableCacheKey MakeTableCacheKey(const AtmosphereParameters& atmosphere,
                                 const PrecomputeOptions& options,
                                 std::string_view version = AERIAL_VERSION);
 
-// Memory by what sizes it (the --transmittance-size, --irradiance-size, --scattering-size and
-// --multiple-density-size options), in bytes: used for the tables themselves and for the precompute's scratch tables.
-struct TableBytes {
-  uint64_t transmittance = 0, irradiance = 0, scattering = 0, multiple_density = 0;
-  uint64_t total() const { return transmittance + irradiance + scattering + multiple_density; }
-};
-
-// The memory AtmosphereTables allocates for these options, known before allocating it: the
-// scattering part is the Rayleigh and Mie tables (and in 3D the multiple scattering one).
-TableBytes TableMemory(const PrecomputeOptions& options);
-
 class AtmosphereTables {
  public:
   // Allocates the tables (contents undefined until Precompute or Load).

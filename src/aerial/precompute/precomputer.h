@@ -14,10 +14,6 @@ class Progress;
 // Fills `tables`. Returns the GPU time of every pass, in order. `progress` may be null.
 std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progress);
 
-// The memory of the intermediate tables Precompute allocates besides `tables`, known before it
-// allocates them.
-TableBytes PrecomputeScratchMemory(const PrecomputeOptions& options);
-
 // Number of passes Precompute runs for these options (progress bars size themselves with it).
 int PrecomputePassCount(const PrecomputeOptions& options);
 

@@ -7,8 +7,6 @@
 
 namespace aerial {
 
-enum class AerialMode { kFroxel, kPerPixel };
-
 FrameUniforms MakeFrameUniforms(const Scene& scene, double planet_radius_m, int width, int height,
                                 const FroxelGrid& froxels);
 

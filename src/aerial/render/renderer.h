@@ -17,7 +17,8 @@
 #include <optional>
 #include <vector>
 
-#include "aerial/image/image.h"
+#include "aerial/image.h"
+#include "aerial/renderer.h"
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/render/frame_uniforms.h"
 #include "aerial/render/scene_geometry.h"
@@ -28,71 +29,6 @@
 #include "froxel/froxel_volume.h"
 
 namespace aerial {
-
-// How the built-in terrain is drawn: chunks with a level of detail that follows the camera, or
-// the fixed polar mesh around the origin (BuildTerrainMesh) that the level of detail is measured
-// against.
-enum class TerrainMode { kLod, kStaticMesh };
-
-// The terrain's default screen-space error bound (lod_selection.h), in pixels at 720 rows or
-// more: see README, "Terrain".
-inline constexpr double kDefaultTerrainErrorPx = 4.0;
-
-// Passes a benchmark may leave out to measure what they cost (lavapipe's timestamps inside one
-// raster pass do not bracket its draws): every frame has all of them.
-struct FramePasses {
-  bool sky = true, transparent = true, terrain = true;
-};
-
-struct RenderOptions {
-  int width = 1280;   // the output image
-  int height = 720;
-  // The frame is rasterized at render_scale times the output size, then upscaled (bilinear).
-  double render_scale = 1.0;
-  FroxelGrid froxels;
-  AerialMode mode = AerialMode::kFroxel;
-  TerrainMode terrain = TerrainMode::kLod;
-  double terrain_error_px = kDefaultTerrainErrorPx;
-  // Leave out terrain chunks that nearer ones hide (terrain/screen_horizon.h): the image is the
-  // same either way; off only to measure what it saves.
-  bool terrain_occlusion_culling = true;
-  // CPU time a frame may spend building terrain chunks (ms); until they are built their parents
-  // are drawn. 0: every chunk the frame needs is built first (one-off renders, tests).
-  double terrain_build_budget_ms = 0.0;
-  // Copies of the per-frame resources: frames recorded before the previous ones finished.
-  uint32_t frames_in_flight = 1;
-  // The sun's shadow map (shadow_map.h) on surfaces; off: no shadow map, and the frame of before.
-  bool shadows = true;
-  FramePasses passes;
-
-  void Validate() const;  // throws aerial::Error naming the option
-  int render_width() const;
-  int render_height() const;
-};
-
-// The memory a Renderer and one ReadOutput() take, by what sizes it, known before allocating.
-struct FrameMemory {
-  uint64_t targets = 0;   // radiance and depth at the render size, the sky-view tables
-  uint64_t readback = 0;  // ReadOutput's copies (read back, upscaled) and the encoded image
-  uint64_t froxels = 0;   // the froxel volume
-  uint64_t terrain = 0;   // the terrain chunk slots (--terrain lod)
-  uint64_t shadows = 0;   // the shadow map's depth atlas (--shadows on)
-};
-FrameMemory EstimateFrameMemory(const RenderOptions& options);
-
-// What the last recorded frame did besides drawing.
-struct FrameInfo {
-  size_t chunks = 0, triangles = 0;  // terrain drawn
-  int deferred = 0;  // terrain chunks drawn in place of finer ones not built yet
-  int hidden = 0;    // terrain chunks left out because nearer ones hide them
-  int built = 0;     // terrain chunks built for this frame
-  bool sky_view_updated = false;  // the sky-view table was remade (the camera's r or mu_s moved)
-  bool froxels_updated = false;   // the froxel volume was rebuilt (the camera or the sun moved)
-  bool shadow_map_updated = false;  // the shadow map was redrawn (shadow_map.h)
-  // The opaque pass read the sun visibility that an earlier frame of the same view looked up
-  // (opaque_fragment.glsl) instead of looking it up.
-  bool sun_visibility_cached = false;
-};
 
 // What ReadSurface draws of the lighting: all of it (the sun's part shadowed as in the frame), or
 // the sky's part alone.

@@ -2,7 +2,7 @@
 // What the viewer's panel edits. The frame options (froxels, aerial mode) become the Renderer's
 // RenderOptions, the table options a table request; the rest only steers the display passes.
 #include "aerial/table_options.h"
-#include "aerial/render/frame_uniforms.h"
+#include "aerial/renderer.h"
 #include "aerial/viewer/atmosphere_knobs.h"
 #include "aerial/froxel_grid.h"
 

@@ -9,10 +9,7 @@
 
 namespace aerial::vk {
 
-struct PassTime {
-  std::string pass;
-  double milliseconds = 0.0;
-};
+using PassTime = aerial::PassTime;  // aerial/device.h
 
 class GpuTimer {
  public:

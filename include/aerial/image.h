@@ -3,6 +3,7 @@
 // renderer hands over exactly what it computed and each format decides how to encode it (EXR
 // keeps the floats, PNG tone maps them).
 #include <cstddef>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -33,5 +34,25 @@ inline constexpr int kMaxImageSide = 16384;
 void CheckImageSize(int width, int height, const std::string& where = "");
 // Also requires rgba to hold exactly 4 * width * height floats, so encoders never read past it.
 void CheckImageSize(const ImageRgbF& image);
+
+struct ToneMapOptions {
+  // Radiance multiplier applied before the curve. The filmic curve reaches mid grey near 0.18,
+  // so exposure should map the scene's typical radiance to roughly that.
+  double exposure = 1.0;
+};
+
+// Image files, in the format the extension names (.exr or .png, any case), written atomically
+// (a temporary file, then a rename): a failed, full-disk or killed write leaves the previous file
+// or nothing.
+// Format, an existing directory and writability, so a command fails before spending minutes
+// rendering. Errors name `field`.
+void CheckImageOutputPath(const std::filesystem::path& path, const std::string& field = "--out");
+
+// EXR: float R, G, B, A linear radiance; tone_map is ignored. PNG: ToneMapToSrgb8(image,
+// tone_map). Throws Error("image size") for sides outside 1..kMaxImageSide, Error("--out") for an
+// unknown extension and Error("file", path) for I/O failures; no partial file remains.
+void WriteImage(const std::filesystem::path& path, const ImageRgbF& image,
+                const ToneMapOptions& tone_map);
+
 
 }  // namespace aerial

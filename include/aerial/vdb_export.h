@@ -1,0 +1,35 @@
+#pragma once
+// One frame's froxel volume as an OpenVDB file, to inspect in Houdini or Blender: the grids, their
+// units and frame are in froxel/README.md, "Exporting to OpenVDB".
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+
+#include "aerial/atmosphere.h"
+#include "aerial/froxel_grid.h"
+#include "aerial/scene.h"
+#include "aerial/tables.h"
+
+namespace aerial {
+
+struct VdbExportOptions {
+  uint32_t width = 1280, height = 720;  // the image the froxels are for: its aspect shapes the frustum
+  // Resample onto a regular world-space grid of this voxel size (m), instead of writing the
+  // froxels in their own index space.
+  std::optional<double> world_grid_m;
+  bool shadows = true;  // the sun's shadow map in the frame the volume is captured from
+};
+
+// Checks, before any GPU work, the output path (.vdb, an existing directory where a file can be
+// created; errors name --out) and the world grid (voxel size in (0, far], at most 2^24 voxels
+// over the frustum's bounding box; errors name --world-grid).
+void CheckVdbExport(const std::filesystem::path& out, const Scene& scene, const AtmosphereParameters& atmosphere,
+                    const FroxelGrid& grid, const VdbExportOptions& options);
+
+// Renders the scene's frame once (SceneRenderer) and writes its froxel volume to out, atomically
+// (a temporary file, then a rename). Returns the number of voxels per grid.
+size_t ExportFroxelVdb(const std::filesystem::path& out, const Tables& tables, const Scene& scene,
+                       const FroxelGrid& grid, const VdbExportOptions& options);
+
+}  // namespace aerial

@@ -1,0 +1,32 @@
+// aerial::ExportFroxelVdb (include/aerial/vdb_export.h) over the froxel exporter.
+#include "aerial/vdb_export.h"
+
+#include "aerial/api/impl.h"
+#include "aerial/export/froxel_export.h"
+
+namespace aerial {
+namespace {
+
+CaptureSize SizeOf(const VdbExportOptions& options) { return {int(options.width), int(options.height)}; }
+
+}  // namespace
+
+void CheckVdbExport(const std::filesystem::path& out, const Scene& scene, const AtmosphereParameters& atmosphere,
+                    const FroxelGrid& grid, const VdbExportOptions& options) {
+  CheckVdbOutputPath(out);
+  if (options.world_grid_m) {
+    FroxelPlacement placement(CaptureFrameUniforms(scene, atmosphere.bottom_radius_m, grid, SizeOf(options)), grid);
+    CheckWorldGrid(*options.world_grid_m, placement);
+  }
+}
+
+size_t ExportFroxelVdb(const std::filesystem::path& out, const Tables& tables, const Scene& scene,
+                       const FroxelGrid& grid, const VdbExportOptions& options) {
+  FroxelFrame frame = CaptureFroxels(tables.impl().tables(), scene, grid, SizeOf(options), options.shadows);
+  VdbVolume volume = options.world_grid_m ? MakeWorldSpaceVolume(frame, *options.world_grid_m)
+                                          : MakeFroxelSpaceVolume(frame);
+  WriteVdb(out, volume);
+  return volume.voxels.size();
+}
+
+}  // namespace aerial
