@@ -1,6 +1,6 @@
 #include "aerial/cli/common_options.h"
 
-#include "aerial/atmosphere/config.h"
+#include "aerial/atmosphere.h"
 
 namespace aerial::cli {
 

@@ -6,11 +6,12 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
+#include <vulkan/vulkan.hpp>  // the out-of-memory exceptions below
 
 #include "aerial/cli/commands.h"
+#include "aerial/device.h"
 #include "aerial/error.h"
 #include "aerial/version.h"
-#include "aerial/vk/context.h"
 
 namespace {
 
@@ -69,7 +70,7 @@ int main(int argc, char** argv) {
     return Fail(e);
   }
   // With validation on, any message is a failure even if the command otherwise succeeded.
-  if (int messages = aerial::vk::Context::ValidationMessageCount(); messages > 0) {
+  if (int messages = aerial::Device::ValidationMessageCount(); messages > 0) {
     std::fprintf(stderr, "aerial: error: %d Vulkan validation message(s)\n", messages);
     return 3;
   }

@@ -2,8 +2,6 @@
 
 #include <cstdio>
 
-#include "aerial/precompute/atmosphere_tables.h"
-#include "aerial/precompute/precomputer.h"
 
 namespace aerial::cli {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "aerial/core/memory_budget.h"
 #include "aerial/table_options.h"
-#include "aerial/render/renderer.h"
+#include "aerial/renderer.h"
 
 namespace aerial::cli {
 

@@ -2,8 +2,6 @@
 
 #include "aerial/error.h"
 #include "aerial/core/toml_reader.h"
-#include "aerial/scene/presets.h"
-#include "aerial/scene/scene_file.h"
 
 namespace aerial::cli {
 

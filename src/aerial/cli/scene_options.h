@@ -8,7 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "aerial/render/renderer.h"
+#include "aerial/renderer.h"
 #include "aerial/scene.h"
 #include "aerial/scene/scene_overrides.h"
 #include "aerial/froxel_grid.h"

@@ -82,6 +82,21 @@ TEST(SceneFile, GltfExamplePlacesItsMeshes) {
   for (const Vertex& v : floating.vertices) EXPECT_FLOAT_EQ(v.opacity, 0.4f);
 }
 
+// built_in = false: only the file's meshes on the bare planet, no terrain; [x, y] stands a model
+// on the planet's sphere (z = SurfacePoint at height 0, about -d^2 / 2R), not on the terrain.
+TEST(SceneFile, WithoutTheBuiltInSceneOnlyTheFilesMeshesStandOnTheBarePlanet) {
+  Scene scene = Parse("preset = \"sunset\"\nbuilt_in = false\n[[mesh]]\ngltf = \"cube.gltf\"\n"
+                      "position_m = [3000.0, 4000.0]\n");
+  EXPECT_FALSE(scene.terrain);
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  EXPECT_EQ(scene.sun.zenith_deg, 91.0);  // the preset's view stays
+  double bottom = HUGE_VAL;
+  for (const Vertex& v : scene.meshes[0].vertices) bottom = std::min<double>(bottom, v.position.z);
+  EXPECT_NEAR(bottom, SurfacePoint(3000.0, 4000.0, 0.0, kR).z, 1e-3);
+  EXPECT_LT(bottom, -1.9);  // 5 km from the origin the sphere is 2 m down
+  ExpectError("built_in = 1", "built_in", 1);
+}
+
 TEST(SceneFile, EmptyFileIsTheNoonPreset) {
   Scene scene = Parse("");
   EXPECT_EQ(scene.name, "noon");
