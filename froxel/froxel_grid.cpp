@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <regex>
 
-#include "aerial/error.h"
 #include "aerial/core/toml_reader.h"
+#include "aerial/error.h"
 
 namespace aerial {
 

@@ -13,8 +13,8 @@
 
 #include <glm/glm.hpp>
 
-#include "aerial/shader_abi/frame_block.h"
 #include "aerial/froxel_grid.h"
+#include "aerial/shader_abi/frame_block.h"
 
 namespace aerial {
 

@@ -2,9 +2,9 @@
 // The per-frame froxel volume on the GPU: three 3D images (Rayleigh inscatter, Mie inscatter,
 // transmittance; phase-free) filled by shaders/frame/froxel.comp from the precomputed tables,
 // single scattering shadowed through the sun's shadow map.
+#include "aerial/froxel_grid.h"
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/vk/compute_pipeline.h"
-#include "aerial/froxel_grid.h"
 #include "froxel/froxel_placement.h"
 
 namespace aerial {

@@ -12,8 +12,8 @@
 #include <fstream>
 #include <string>
 
-#include "aerial/error.h"
 #include "aerial/core/input_limits.h"
+#include "aerial/error.h"
 #include "aerial/scene/gltf_loader.h"
 #include "command_run.h"
 #include "scratch_directory.h"

@@ -15,8 +15,8 @@
 #include <string>
 
 #include "aerial/shader_abi/atmosphere_block.h"
-#include "aerial/shader_abi/shadow_block.h"
 #include "aerial/shader_abi/frame_block.h"
+#include "aerial/shader_abi/shadow_block.h"
 
 namespace aerial {
 namespace {

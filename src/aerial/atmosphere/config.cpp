@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "aerial/atmosphere/config_layers.h"
-#include "aerial/error.h"
 #include "aerial/core/toml_reader.h"
+#include "aerial/error.h"
 
 namespace aerial {
 namespace {

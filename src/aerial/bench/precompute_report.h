@@ -8,8 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "aerial/table_options.h"
 #include "aerial/bench/pass_stats.h"
+#include "aerial/table_options.h"
 
 namespace aerial::bench {
 

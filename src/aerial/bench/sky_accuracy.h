@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "aerial/precompute/atmosphere_tables.h"
-#include "aerial/view_geometry.h"
 #include "aerial/reference/monte_carlo.h"
+#include "aerial/view_geometry.h"
 
 namespace aerial::bench {
 

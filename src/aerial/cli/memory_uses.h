@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "aerial/core/memory_budget.h"
-#include "aerial/table_options.h"
 #include "aerial/renderer.h"
+#include "aerial/table_options.h"
 
 namespace aerial::cli {
 

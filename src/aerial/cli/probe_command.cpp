@@ -11,8 +11,8 @@
 #include "aerial/cli/commands.h"
 #include "aerial/cli/common_options.h"
 #include "aerial/cli/memory_uses.h"
-#include "aerial/error.h"
 #include "aerial/core/toml_reader.h"
+#include "aerial/error.h"
 #include "aerial/probe.h"
 
 namespace aerial::cli {

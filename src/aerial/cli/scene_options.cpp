@@ -1,7 +1,7 @@
 #include "aerial/cli/scene_options.h"
 
-#include "aerial/error.h"
 #include "aerial/core/toml_reader.h"
+#include "aerial/error.h"
 
 namespace aerial::cli {
 

@@ -8,10 +8,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include "aerial/froxel_grid.h"
 #include "aerial/renderer.h"
 #include "aerial/scene.h"
 #include "aerial/scene/scene_overrides.h"
-#include "aerial/froxel_grid.h"
 
 namespace aerial::cli {
 

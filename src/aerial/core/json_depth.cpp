@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "aerial/error.h"
 #include "aerial/core/input_limits.h"
+#include "aerial/error.h"
 
 namespace aerial {
 

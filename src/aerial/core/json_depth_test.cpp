@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "aerial/error.h"
 #include "aerial/core/input_limits.h"
+#include "aerial/error.h"
 
 namespace aerial {
 namespace {

@@ -6,8 +6,8 @@
 #include <cstdio>
 
 #include "aerial/core/bounded_file.h"
-#include "aerial/error.h"
 #include "aerial/core/input_limits.h"
+#include "aerial/error.h"
 
 namespace aerial {
 

@@ -13,8 +13,8 @@
 
 #include "aerial/atmosphere.h"
 #include "aerial/precompute/atmosphere_uniforms.h"
-#include "aerial/table_options.h"
 #include "aerial/precompute/table_cache.h"
+#include "aerial/table_options.h"
 #include "aerial/version.h"
 #include "aerial/vk/descriptors.h"
 #include "aerial/vk/resources.h"

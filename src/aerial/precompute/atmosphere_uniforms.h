@@ -2,8 +2,8 @@
 // The atmosphere's uniform block (shader_abi/atmosphere_block.h) filled from its parameters and
 // the tables' options.
 #include "aerial/atmosphere.h"
-#include "aerial/table_options.h"
 #include "aerial/shader_abi/atmosphere_block.h"
+#include "aerial/table_options.h"
 
 namespace aerial {
 

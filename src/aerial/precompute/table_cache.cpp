@@ -10,8 +10,8 @@
 
 #include "aerial/core/atomic_file.h"
 #include "aerial/core/checksum.h"
-#include "aerial/error.h"
 #include "aerial/core/input_limits.h"
+#include "aerial/error.h"
 
 namespace aerial {
 namespace {

@@ -6,8 +6,8 @@
 #include <fstream>
 
 #include "aerial/core/atomic_file.h"
-#include "aerial/error.h"
 #include "aerial/core/input_limits.h"
+#include "aerial/error.h"
 
 namespace aerial {
 namespace {

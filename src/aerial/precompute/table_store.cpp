@@ -4,8 +4,8 @@
 #include <cstdlib>
 
 #include "aerial/core/atomic_file.h"
-#include "aerial/error.h"
 #include "aerial/core/progress.h"
+#include "aerial/error.h"
 #include "aerial/precompute/precomputer.h"
 
 namespace aerial {

@@ -1,9 +1,9 @@
 #pragma once
 // Filling the per-frame block (FrameUniforms, shader_abi/frame_block.h) from a scene: camera,
 // sun, froxel grid.
+#include "aerial/froxel_grid.h"
 #include "aerial/scene.h"
 #include "aerial/shader_abi/frame_block.h"
-#include "aerial/froxel_grid.h"
 
 namespace aerial {
 

@@ -18,12 +18,12 @@
 #include <vector>
 
 #include "aerial/image.h"
-#include "aerial/renderer.h"
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/render/frame_uniforms.h"
 #include "aerial/render/scene_geometry.h"
 #include "aerial/render/shadow_map.h"
 #include "aerial/render/terrain_chunk_cache.h"
+#include "aerial/renderer.h"
 #include "aerial/vk/gpu_timer.h"
 #include "aerial/vk/graphics_pipeline.h"
 #include "froxel/froxel_volume.h"

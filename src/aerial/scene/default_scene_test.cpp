@@ -3,8 +3,8 @@
 #include <cmath>
 #include <string>
 
-#include "aerial/scene/camera.h"
 #include "aerial/scene.h"
+#include "aerial/scene/camera.h"
 #include "aerial/scene/terrain.h"
 
 namespace aerial {

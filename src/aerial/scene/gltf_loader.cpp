@@ -10,9 +10,9 @@
 #include <utility>
 #include <vector>
 
-#include "aerial/error.h"
 #include "aerial/core/input_limits.h"
 #include "aerial/core/json_depth.h"
+#include "aerial/error.h"
 #include "aerial/scene/gltf_accessors.h"
 #include "aerial/scene/gltf_file_system.h"
 #include "aerial/scene/tiny_gltf_config.h"

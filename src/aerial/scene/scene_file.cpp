@@ -5,8 +5,8 @@
 #include <optional>
 #include <vector>
 
-#include "aerial/error.h"
 #include "aerial/core/toml_reader.h"
+#include "aerial/error.h"
 #include "aerial/scene/gltf_loader.h"
 #include "aerial/scene/presets.h"
 #include "aerial/scene/scene_limits.h"

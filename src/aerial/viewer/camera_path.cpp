@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "aerial/error.h"
 #include "aerial/core/toml_reader.h"
+#include "aerial/error.h"
 #include "aerial/scene/scene_limits.h"
 
 namespace aerial::viewer {

@@ -1,10 +1,10 @@
 #pragma once
 // What the viewer's panel edits. The frame options (froxels, aerial mode) become the Renderer's
 // RenderOptions, the table options a table request; the rest only steers the display passes.
-#include "aerial/table_options.h"
-#include "aerial/renderer.h"
-#include "aerial/viewer/atmosphere_knobs.h"
 #include "aerial/froxel_grid.h"
+#include "aerial/renderer.h"
+#include "aerial/table_options.h"
+#include "aerial/viewer/atmosphere_knobs.h"
 
 namespace aerial::viewer {
 
