@@ -1,6 +1,6 @@
 #pragma once
 // Where one frame's froxels sit in the world, on the CPU, from the same FrameBlock the shaders
-// read (src/aerial/shader_abi/frame_block.h), and the CPU twin of the shaders' trilinear read.
+// read (aerial/shader_abi/frame_block.h), and the CPU twin of the shaders' trilinear read.
 //
 // Froxel (i, j, k) stands for the point at distance d_k = far * ((k + 0.5) / D)^2 along the unit
 // view ray through the screen position uv = ((i + 0.5) / W, (j + 0.5) / H), the ray being
@@ -14,7 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "aerial/froxel_grid.h"
-#include "aerial/shader_abi/frame_block.h"
+#include "aerial/shader_abi/frame_geometry.h"
 
 namespace aerial {
 

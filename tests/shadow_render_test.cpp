@@ -21,6 +21,7 @@
 #include "aerial/scene/presets.h"
 #include "aerial/scene/primitives.h"
 #include "aerial/scene/terrain.h"
+#include "aerial/shader_abi/frame_geometry.h"
 #include "gpu_fixture.h"
 
 namespace aerial::testing {

@@ -1,11 +1,9 @@
 #pragma once
 // The frame's uniform block as the shaders see it (FrameBlock in shaders/include/frame.glsl), and
-// the CPU twins of what the shaders compute from it. It sits below render/ and froxel/, which
-// both use it: the renderer fills it (render/frame_uniforms.h), the froxel placement reads it.
+// how a camera fills it. It sits below render/ and froxel/, which both use it: the renderer
+// fills it (render/frame_uniforms.h), the froxel placement reads it (froxel/froxel_placement.h).
 // tests/uniform_layout_test.cpp checks it member by member against the GLSL compiler's layout.
 #include <array>
-
-#include <glm/glm.hpp>
 
 #include "aerial/froxel_grid.h"
 #include "aerial/froxels.h"
@@ -27,10 +25,5 @@ static_assert(sizeof(FrameUniforms) == 2 * 64 + 6 * 16);
 // The block for a camera (aerial/froxels.h) on a planet of radius planet_radius_m, with a froxel
 // grid. Shaders see camera-relative positions; the planet's center is at (0, 0, -R).
 FrameUniforms MakeFrameUniforms(const FrameCamera& camera, double planet_radius_m, const FroxelGrid& grid);
-
-// The view ray through the screen point uv ((0, 0) top-left), as frame.glsl computes it.
-glm::dvec3 ViewRayFromScreen(const FrameUniforms& frame, glm::dvec2 uv);
-
-std::array<float, 16> ToColumnMajorFloats(const glm::dmat4& m);
 
 }  // namespace aerial

@@ -25,6 +25,7 @@
 #include "aerial/reference/reference.h"
 #include "aerial/render/frame_uniforms.h"
 #include "aerial/scene.h"
+#include "aerial/shader_abi/frame_geometry.h"
 
 namespace aerial::bench {
 

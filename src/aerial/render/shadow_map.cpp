@@ -1,6 +1,7 @@
 #include "aerial/render/shadow_map.h"
 
 #include "aerial/render/shadow_uniforms.h"
+#include "aerial/shader_abi/frame_geometry.h"
 #include "aerial/terrain/terrain_chunk.h"
 
 namespace aerial {

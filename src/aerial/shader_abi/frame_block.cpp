@@ -2,6 +2,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "aerial/shader_abi/frame_geometry.h"
+
 namespace aerial {
 namespace {
 

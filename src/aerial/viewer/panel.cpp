@@ -60,7 +60,7 @@ void FroxelSection(FroxelGrid& grid) {
     }
     ImGui::EndCombo();
   }
-  // Only the renderer's distribution: slice k at far ((k + 0.5) / D)^2 (froxel_grid.h).
+  // Only the renderer's distribution: slice k at far ((k + 0.5) / D)^2 (aerial/froxel_grid.h).
   KnobSlider("Froxel far distance", grid.far_m, 8.0f, 512.0f, "%.0f km", 1e3, ImGuiSliderFlags_Logarithmic);
   ImGui::TextDisabled("slices: quadratic, first at %.0f m", grid.SliceDistance(0.5));
 }
