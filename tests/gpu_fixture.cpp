@@ -11,7 +11,7 @@ vk::Context& SharedContext() {
 }
 
 namespace {
-const AtmosphereTables& Tables(const PrecomputeOptions& options) {
+const AtmosphereTables& CachedTables(const PrecomputeOptions& options) {
   // The context first: statics are destroyed in reverse order of construction, and the tables
   // must go before their device.
   vk::Context& context = SharedContext();
@@ -29,11 +29,26 @@ const AtmosphereTables& Tables(const PrecomputeOptions& options) {
 const AtmosphereTables& FullTables(int orders, LutVariant variant) {
   PrecomputeOptions options = PrecomputeOptions::Default(variant);
   options.orders = orders;
-  return Tables(options);
+  return CachedTables(options);
 }
 
 const AtmosphereTables& SmallTables(LutVariant variant) {
-  return Tables(PrecomputeOptions::Small(variant));
+  return CachedTables(PrecomputeOptions::Small(variant));
+}
+
+const Device& SharedDevice() {
+  const vk::Context& context = SharedContext();
+  static Device device(DeviceHandoff{.instance = *context.instance(),
+                                     .physical_device = *context.physical_device(),
+                                     .device = *context.device(),
+                                     .queue_family = context.queue_family()});
+  return device;
+}
+
+const aerial::Tables& SmallPublicTables() {
+  static aerial::Tables tables = aerial::Tables::LoadOrPrecompute(
+      SharedDevice(), AtmosphereParameters::Earth(), PrecomputeOptions::Small());
+  return tables;
 }
 
 std::vector<std::byte> ReadBack(const vk::Image& image) {

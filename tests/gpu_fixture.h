@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "aerial/precompute/table_store.h"
+#include "aerial/tables.h"
 #include "aerial/vk/context.h"
 #include "aerial/vk/resources.h"
 
@@ -17,6 +18,11 @@ vk::Context& SharedContext();
 const AtmosphereTables& FullTables(int orders = 4, LutVariant variant = LutVariant::k4D);
 // Quarter-size tables for tests that check structure rather than accuracy.
 const AtmosphereTables& SmallTables(LutVariant variant = LutVariant::k4D);
+
+// The shared context as the public API's Device (aerial/device.h), and the small tables through
+// it (from the test cache, like SmallTables), for tests of what is built on the public API.
+const Device& SharedDevice();
+const aerial::Tables& SmallPublicTables();
 
 // The image's texels, as stored (x fastest, then y, then z), read back through a staging buffer.
 std::vector<std::byte> ReadBack(const vk::Image& image);

@@ -16,6 +16,7 @@
 #include "aerial/error.h"
 #include "aerial/export/froxel_export.h"
 #include "aerial/image/scratch_dir_test_util.h"
+#include "aerial/api/impl.h"
 #include "aerial/render/renderer.h"
 #include "aerial/scene/presets.h"
 #include "aerial/shader_abi/frame_geometry.h"
@@ -205,7 +206,8 @@ TEST_F(VdbExport, RoundTripHoldsTheGpuVolumeExactly) {
 // and the frame's own size in the metadata.
 TEST_F(VdbExport, ViewerExportWritesTheCurrentFrame) {
   Scene scene = TestScene(tables());
-  Renderer renderer(tables(), scene, {.width = kTestSize.width, .height = kTestSize.height, .froxels = TestGrid()});
+  SceneRenderer renderer(SmallPublicTables(), scene,
+                         {.width = kTestSize.width, .height = kTestSize.height, .froxels = TestGrid()});
   renderer.Render(scene);
   std::string message = viewer::ExportFroxelsToVdb(renderer, scene, dir_);
   std::vector<std::filesystem::path> written;
@@ -216,7 +218,7 @@ TEST_F(VdbExport, ViewerExportWritesTheCurrentFrame) {
   VdbFileData file = ReadVdb(written[0]);
   const VdbGridData* rayleigh = file.Find("rayleigh_inscatter");
   ASSERT_NE(rayleigh, nullptr);
-  std::vector<float> gpu = vk::ReadImageFloats(tables().context(), renderer.froxels().rayleigh());
+  std::vector<float> gpu = vk::ReadImageFloats(tables().context(), renderer.impl().renderer.froxels().rayleigh());
   FroxelGrid grid = TestGrid();
   EXPECT_EQ(rayleigh->values[3 * rayleigh->Offset(0, 0, 0)], gpu[0]);
   EXPECT_EQ(rayleigh->values[3 * rayleigh->Offset(grid.width - 1, grid.height - 1, grid.depth - 1)],

@@ -4,6 +4,7 @@
 
 #include <cstring>
 
+#include "aerial/api/impl.h"
 #include "aerial/image/tone_map.h"
 #include "aerial/scene/presets.h"
 #include "aerial/viewer/display_passes.h"
@@ -26,8 +27,8 @@ class ViewerDebugViews : public GpuTest {
  protected:
   // One frame for the whole suite: building the scene and the renderer is most of the time.
   static void SetUpTestSuite() {
-    scene_ = new Scene(BuildPreset("noon", SmallTables().atmosphere().bottom_radius_m));
-    renderer_ = new Renderer(SmallTables(), *scene_, RenderOptions{.width = kWidth, .height = kHeight});
+    scene_ = new Scene(BuildPreset("noon", SmallPublicTables().atmosphere().bottom_radius_m));
+    renderer_ = new SceneRenderer(SmallPublicTables(), *scene_, RenderOptions{.width = kWidth, .height = kHeight});
     renderer_->Render(*scene_);
     target_ = new DisplayTarget(SharedContext(), kWidth, kHeight);
     passes_ = new viewer::DisplayPasses(SharedContext(), target_->render_pass(), ::vk::Format::eR8G8B8A8Unorm);
@@ -48,7 +49,7 @@ class ViewerDebugViews : public GpuTest {
   }
 
   static inline Scene* scene_ = nullptr;
-  static inline Renderer* renderer_ = nullptr;
+  static inline SceneRenderer* renderer_ = nullptr;
   static inline DisplayTarget* target_ = nullptr;
   static inline viewer::DisplayPasses* passes_ = nullptr;
 };
@@ -56,7 +57,7 @@ class ViewerDebugViews : public GpuTest {
 // What the window shows is what a PNG of the frame holds: the same curve (viewer_present_test.cpp)
 // on the renderer's own output image, at most one 8-bit step apart where rounding straddles.
 TEST_F(ViewerDebugViews, FinalViewIsThePngOfTheFrame) {
-  Display shown = Show([&](const auto& cmd) { passes_->RecordToneMap(cmd, kExtent, renderer_->output_image(), kExposure); });
+  Display shown = Show([&](const auto& cmd) { passes_->RecordToneMap(cmd, kExtent, renderer_->output(), kExposure); });
   std::vector<uint8_t> png = ToneMapToSrgb8(renderer_->ReadOutput(), {.exposure = kExposure});
   int worst = 0;
   for (size_t i = 0; i < png.size(); ++i)
@@ -82,8 +83,8 @@ TEST_F(ViewerDebugViews, RayleighIsBlueAndMieIsGrey) {
 // transmittance column is ~1 in the first slice (12 m at 32 slices to 128 km) and lower in the last
 // (128 km); the sky's whole-ray transmittance is below a near landmark's.
 TEST_F(ViewerDebugViews, TransmittanceFallsWithDistance) {
-  Display first = Show([&](const auto& cmd) { passes_->RecordFroxelSlice(cmd, kExtent, renderer_->froxels(), 0, kExposure); });
-  Display last = Show([&](const auto& cmd) { passes_->RecordFroxelSlice(cmd, kExtent, renderer_->froxels(), 31, kExposure); });
+  Display first = Show([&](const auto& cmd) { passes_->RecordFroxelSlice(cmd, kExtent, *renderer_, 0, kExposure); });
+  Display last = Show([&](const auto& cmd) { passes_->RecordFroxelSlice(cmd, kExtent, *renderer_, 31, kExposure); });
   const uint8_t* near = first.pixel(kWidth * 5 / 6, kHeight / 2);  // the third column
   const uint8_t* far = last.pixel(kWidth * 5 / 6, kHeight / 2);
   EXPECT_GE(near[2], 254);
@@ -91,7 +92,7 @@ TEST_F(ViewerDebugViews, TransmittanceFallsWithDistance) {
   EXPECT_LT(far[2], far[0]) << "blue is attenuated most";
 
   Display transmittance = ShowTerm(viewer::DisplayPasses::Term::kTransmittance);
-  ImageRgbF surface = renderer_->ReadSurface();
+  ImageRgbF surface = renderer_->impl().renderer.ReadSurface();
   int sky = -1, ground = -1;  // a pixel of sky, and one of geometry within 2 km
   for (int i = 0; i < kWidth * kHeight; ++i) {
     float distance = surface.rgba[4 * i + 3];
@@ -105,7 +106,7 @@ TEST_F(ViewerDebugViews, TransmittanceFallsWithDistance) {
 
 // A frame against itself differs nowhere: the heat map is black.
 TEST_F(ViewerDebugViews, DifferenceOfAFrameWithItselfIsBlack) {
-  const vk::Image& output = renderer_->output_image();
+  SampledImage output = renderer_->output();
   Display same = Show([&](const auto& cmd) { passes_->RecordDifference(cmd, kExtent, output, output, 0.05f); });
   int lit = 0;
   for (size_t i = 0; i < same.rgba.size(); ++i) lit += i % 4 != 3 && same.rgba[i] != 0;

@@ -6,8 +6,10 @@
 #include <cmath>
 #include <cstring>
 
+#include "aerial/api/impl.h"
 #include "aerial/image/tone_map.h"
 #include "aerial/viewer/display_passes.h"
+#include "aerial/vk/compute_pipeline.h"
 #include "display_target.h"
 #include "gpu_fixture.h"
 
@@ -54,6 +56,8 @@ TEST_F(ViewerToneMap, GpuMatchesCpuBeforeRounding) {
   vk::Context& context = SharedContext();
   ImageRgbF ramp = Ramp(1.0);
   vk::Image input = Upload(ramp);
+  // The present pass reads images as the public API hands them out (the pass's own sampler).
+  SampledImage sampled_input = ToSampledImage({&input, VK_NULL_HANDLE});
   vk::Image output(context, {.extent = {kRampSize, 1, 1}});
   ::vk::raii::Sampler sampler = vk::CreateLinearClampSampler(context);
   vk::ComputePipeline pipeline(context, "test/tone_map.comp", {{"radiance_image", vk::kSampled}, {"display_values", vk::kStorageImage}});
@@ -83,13 +87,15 @@ TEST_F(ViewerToneMap, PresentPassMatchesPngBytes) {
   const float exposure = 8.0f;
   ImageRgbF ramp = Ramp(1.0 / exposure);
   vk::Image input = Upload(ramp);
+  // The present pass reads images as the public API hands them out (the pass's own sampler).
+  SampledImage sampled_input = ToSampledImage({&input, VK_NULL_HANDLE});
   std::vector<uint8_t> png = ToneMapToSrgb8(ramp, {.exposure = exposure});
   for (auto [format, red] : {std::pair{::vk::Format::eR8G8B8A8Unorm, 0}, std::pair{::vk::Format::eB8G8R8A8Unorm, 2},
                              std::pair{::vk::Format::eR8G8B8A8Srgb, 0}, std::pair{::vk::Format::eB8G8R8A8Srgb, 2}}) {
     DisplayTarget target(context, kRampSize, 1, format);
     viewer::DisplayPasses passes(context, target.render_pass(), format);
     std::vector<uint8_t> display =
-        target.Draw([&](const auto& cmd) { passes.RecordToneMap(cmd, target.extent(), input, exposure); });
+        target.Draw([&](const auto& cmd) { passes.RecordToneMap(cmd, target.extent(), sampled_input, exposure); });
     int worst = 0, differing = 0;
     for (size_t i = 0; i < kRampSize; ++i) {
       for (int c = 0; c < 3; ++c) {

@@ -36,7 +36,7 @@ void StepFrames(viewer::Viewer& viewer, int frames) {
 }
 
 bool HasPass(const viewer::Viewer& viewer, const std::string& fragment) {
-  for (const vk::PassTime& pass : viewer.last_passes())
+  for (const PassTime& pass : viewer.last_passes())
     if (pass.pass.find(fragment) != std::string::npos) return true;
   return false;
 }
@@ -44,14 +44,13 @@ bool HasPass(const viewer::Viewer& viewer, const std::string& fragment) {
 TEST(ViewerSession, ResizesSwitchesAndRecomputesWithoutValidationMessages) {
   XvfbDisplay x;
   ASSERT_FALSE(x.display().empty()) << x.error();
-  const int messages_before = vk::Context::ValidationMessageCount();
+  const int messages_before = Device::ValidationMessageCount();
   {
     viewer::ViewerOptions options;
     options.atmosphere = AtmosphereParameters::Earth();
     options.tables = {{LutVariant::k4D, PrecomputeOptions::Small(LutVariant::k4D)},
                       {LutVariant::k3D, PrecomputeOptions::Small(LutVariant::k3D)}};
-    options.store = {.quiet = true};
-    options.context = {.validation = true};
+    options.device = {.validation = true};
     options.render = {.width = 160, .height = 90};
     options.scene = BuildPreset("noon", options.atmosphere.bottom_radius_m);
     viewer::Viewer viewer(options);
@@ -74,7 +73,7 @@ TEST(ViewerSession, ResizesSwitchesAndRecomputesWithoutValidationMessages) {
       viewer.settings().view = view;
       StepFrames(viewer, kFramesUntilTimed);
       EXPECT_TRUE(HasPass(viewer, "debug view"));
-      EXPECT_EQ(viewer.renderer().froxels().grid().depth, 16);
+      EXPECT_EQ(viewer.renderer().options().froxels.depth, 16);
     }
 
     // The difference view asks the worker for the other variant's tables and shows the picture
@@ -106,7 +105,7 @@ TEST(ViewerSession, ResizesSwitchesAndRecomputesWithoutValidationMessages) {
     viewer.settings().view = viewer::DebugView::kDifference;
     EXPECT_LE(StepUntil(viewer, [&] { return HasPass(viewer, "(4d)"); }, 2000), 2000);
   }
-  EXPECT_EQ(vk::Context::ValidationMessageCount(), messages_before);
+  EXPECT_EQ(Device::ValidationMessageCount(), messages_before);
 }
 
 }  // namespace

@@ -108,8 +108,21 @@ class SceneRenderer {
   // Linear radiance of the last frame at the output size (upscaled when render_scale < 1), once
   // it has finished.
   ImageRgbF ReadOutput() const;
-  // The last frame's radiance at the render size, for the caller's own passes (tone mapping).
+  // The terrain's error bound for the next frames (RenderOptions::terrain_error_px, validated):
+  // only the chunk selection uses it, so it may change from frame to frame without a rebuild.
+  void SetTerrainErrorPx(double error_px);
+
+  // What the caller's own passes may read of the last frame (a viewer's tone map and debug
+  // views): the radiance and the reversed-Z depth at the render size, the FrameBlock of the
+  // slot's frame, and the froxel volume it was shaded with.
   SampledImage output() const;
+  SampledImage depth() const;
+  UniformBlock frame_block(uint32_t slot = 0) const;
+  SampledImage froxel_rayleigh() const;
+  SampledImage froxel_mie() const;
+  SampledImage froxel_transmittance() const;
+
+  const Tables& tables() const;
   const FrameInfo& frame_info() const;
   const RenderOptions& options() const;
 

@@ -50,6 +50,8 @@ struct TableLoadOptions {
   bool print_progress = false;
 };
 
+class TableSnapshot;
+
 class Tables {
  public:
   // The tables of this atmosphere and these options: read from the cache when a file made for
@@ -67,6 +69,11 @@ class Tables {
                      const PrecomputeOptions& options, const std::filesystem::path& file);
   // Writes the tables to file, atomically (a temporary file, then a rename).
   void Store(const std::filesystem::path& file) const;
+  // The tables in host memory, to move them to another device without a file (a background
+  // thread precomputes on a device of its own, the renderer's device takes the result). Reads
+  // the tables back and waits for the device.
+  TableSnapshot Snapshot() const;
+  static Tables FromSnapshot(const Device& device, const TableSnapshot& snapshot);
 
   ~Tables();
   Tables(Tables&&) noexcept;
@@ -101,6 +108,25 @@ class Tables {
 
  private:
   explicit Tables(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+// Tables::Snapshot's result: the texels and what they were made for, table by table as the cache
+// file holds them (each table's name and size are checked when a device takes them).
+class TableSnapshot {
+ public:
+  ~TableSnapshot();
+  TableSnapshot(TableSnapshot&&) noexcept;
+  TableSnapshot& operator=(TableSnapshot&&) noexcept;
+  const AtmosphereParameters& atmosphere() const;
+  const PrecomputeOptions& options() const;
+
+  struct Impl;  // aerial's side (src/aerial/api/)
+  const Impl& impl() const { return *impl_; }
+
+ private:
+  friend class Tables;
+  explicit TableSnapshot(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
 

@@ -8,6 +8,7 @@
 
 #include "aerial/atmosphere.h"
 #include "aerial/froxel_grid.h"
+#include "aerial/renderer.h"
 #include "aerial/scene.h"
 #include "aerial/tables.h"
 
@@ -31,5 +32,9 @@ void CheckVdbExport(const std::filesystem::path& out, const Scene& scene, const 
 // (a temporary file, then a rename). Returns the number of voxels per grid.
 size_t ExportFroxelVdb(const std::filesystem::path& out, const Tables& tables, const Scene& scene,
                        const FroxelGrid& grid, const VdbExportOptions& options);
+
+// The froxel volume of the renderer's last frame (RenderOptions::mode kFroxel), which drew scene,
+// in the froxel-space layout; call once that frame has finished. Returns the voxels per grid.
+size_t ExportFroxelVdb(const std::filesystem::path& out, const SceneRenderer& renderer, const Scene& scene);
 
 }  // namespace aerial

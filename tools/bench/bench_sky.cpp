@@ -13,7 +13,7 @@
 #include "aerial/cli/common_options.h"
 #include "aerial/core/atomic_file.h"
 #include "aerial/error.h"
-#include "aerial/precompute/table_store.h"
+#include "aerial/tables.h"
 #include "bench_main.h"
 
 namespace {
@@ -46,9 +46,9 @@ void Bench(const BenchOptions& cli) {
         });
     if (!cli.reference_file.empty()) aerial::bench::WriteSkyReference(reference, cli.reference_file);
   }
-  aerial::vk::Context context(cli.tables.MakeContextInfo());
-  aerial::LoadedTables loaded = aerial::LoadOrPrecompute(context, atmosphere, options, cli.tables.MakeStoreOptions());
-  auto regions = aerial::bench::CompareSkyWithTables(*loaded.tables, reference);
+  aerial::Device device(cli.tables.MakeDeviceOptions());
+  aerial::Tables tables = aerial::Tables::LoadOrPrecompute(device, atmosphere, options, cli.tables.MakeLoadOptions());
+  auto regions = aerial::bench::CompareSkyWithTables(tables, reference);
   std::string table = aerial::bench::FormatSkyAccuracy(regions);
   std::fprintf(stderr, "%s\n", aerial::bench::FormatWorstSamples(regions).c_str());
   std::printf("tables: %s\nreference: %d paths per query, %s\n\n%s", options.Describe().c_str(),

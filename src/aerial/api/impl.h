@@ -24,6 +24,12 @@ struct Tables::Impl {
   const AtmosphereTables& tables() const { return *loaded.tables; }
 };
 
+struct TableSnapshot::Impl {
+  AtmosphereParameters atmosphere;
+  PrecomputeOptions options;
+  TableCache texels;
+};
+
 struct Froxels::Impl {
   Impl(const vk::Context& context, const FroxelGrid& grid);
   FroxelVolume volume;
@@ -32,6 +38,7 @@ struct Froxels::Impl {
 };
 
 struct SceneRenderer::Impl {
+  const Tables& tables;
   Renderer renderer;
 };
 

@@ -3,8 +3,17 @@
 
 namespace aerial {
 
+namespace {
+
+// An image of the renderer's with the tables' sampler (linear, clamped to the edge).
+SampledImage Sampled(const Renderer& renderer, const vk::Image& image) {
+  return ToSampledImage(renderer.tables().Sampled(image));
+}
+
+}  // namespace
+
 SceneRenderer::SceneRenderer(const Tables& tables, const Scene& scene, const RenderOptions& options)
-    : impl_(new Impl{Renderer(tables.impl().tables(), scene, options)}) {}
+    : impl_(new Impl{tables, Renderer(tables.impl().tables(), scene, options)}) {}
 SceneRenderer::~SceneRenderer() = default;
 SceneRenderer::SceneRenderer(SceneRenderer&&) noexcept = default;
 SceneRenderer& SceneRenderer::operator=(SceneRenderer&&) noexcept = default;
@@ -19,9 +28,21 @@ std::vector<PassTime> SceneRenderer::Render(const Scene& scene, bool complete) {
 }
 std::vector<PassTime> SceneRenderer::PassTimes(uint32_t slot) const { return impl_->renderer.PassTimes(slot); }
 ImageRgbF SceneRenderer::ReadOutput() const { return impl_->renderer.ReadOutput(); }
-SampledImage SceneRenderer::output() const {
-  return ToSampledImage(impl_->renderer.tables().Sampled(impl_->renderer.output_image()));
+void SceneRenderer::SetTerrainErrorPx(double error_px) { impl_->renderer.SetTerrainErrorPx(error_px); }
+
+SampledImage SceneRenderer::output() const { return Sampled(impl_->renderer, impl_->renderer.output_image()); }
+SampledImage SceneRenderer::depth() const { return Sampled(impl_->renderer, impl_->renderer.depth_image()); }
+UniformBlock SceneRenderer::frame_block(uint32_t slot) const {
+  const vk::Buffer& block = impl_->renderer.frame_buffer(slot);
+  return {block.handle(), block.size()};
 }
+SampledImage SceneRenderer::froxel_rayleigh() const { return Sampled(impl_->renderer, impl_->renderer.froxels().rayleigh()); }
+SampledImage SceneRenderer::froxel_mie() const { return Sampled(impl_->renderer, impl_->renderer.froxels().mie()); }
+SampledImage SceneRenderer::froxel_transmittance() const {
+  return Sampled(impl_->renderer, impl_->renderer.froxels().transmittance());
+}
+
+const Tables& SceneRenderer::tables() const { return impl_->tables; }
 const FrameInfo& SceneRenderer::frame_info() const { return impl_->renderer.frame_info(); }
 const RenderOptions& SceneRenderer::options() const { return impl_->renderer.options(); }
 

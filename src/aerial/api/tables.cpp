@@ -55,6 +55,26 @@ Tables Tables::Load(const Device& device, const AtmosphereParameters& atmosphere
 
 void Tables::Store(const std::filesystem::path& file) const { WriteTableCache(file, impl_->tables().Download()); }
 
+TableSnapshot Tables::Snapshot() const {
+  return TableSnapshot(std::make_unique<TableSnapshot::Impl>(
+      TableSnapshot::Impl{atmosphere(), options(), impl_->tables().Download()}));
+}
+
+Tables Tables::FromSnapshot(const Device& device, const TableSnapshot& snapshot) {
+  const TableSnapshot::Impl& taken = snapshot.impl();
+  LoadedTables loaded{.tables = std::make_unique<AtmosphereTables>(*device.impl().context, taken.atmosphere,
+                                                                   taken.options)};
+  loaded.tables->Upload(taken.texels);
+  return Tables(std::make_unique<Impl>(Impl{std::move(loaded)}));
+}
+
+TableSnapshot::TableSnapshot(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+TableSnapshot::~TableSnapshot() = default;
+TableSnapshot::TableSnapshot(TableSnapshot&&) noexcept = default;
+TableSnapshot& TableSnapshot::operator=(TableSnapshot&&) noexcept = default;
+const AtmosphereParameters& TableSnapshot::atmosphere() const { return impl_->atmosphere; }
+const PrecomputeOptions& TableSnapshot::options() const { return impl_->options; }
+
 const AtmosphereParameters& Tables::atmosphere() const { return impl_->tables().atmosphere(); }
 const PrecomputeOptions& Tables::options() const { return impl_->tables().options(); }
 bool Tables::from_cache() const { return impl_->loaded.from_cache; }

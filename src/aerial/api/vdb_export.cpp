@@ -29,4 +29,10 @@ size_t ExportFroxelVdb(const std::filesystem::path& out, const Tables& tables, c
   return volume.voxels.size();
 }
 
+size_t ExportFroxelVdb(const std::filesystem::path& out, const SceneRenderer& renderer, const Scene& scene) {
+  VdbVolume volume = MakeFroxelSpaceVolume(ReadFroxelFrame(renderer.impl().renderer, scene));
+  WriteVdb(out, volume);
+  return volume.voxels.size();
+}
+
 }  // namespace aerial

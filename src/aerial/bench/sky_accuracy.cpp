@@ -8,7 +8,7 @@
 
 #include "aerial/core/atomic_file.h"
 #include "aerial/error.h"
-#include "aerial/probe/table_probe.h"
+#include "aerial/probe.h"
 #include "aerial/reference/reference.h"
 
 namespace aerial::bench {
@@ -213,13 +213,13 @@ double RegionAccuracy::Median() const {
 
 double RegionAccuracy::Max() const { return std::max({channels[0].max, channels[1].max, channels[2].max}); }
 
-std::vector<RegionAccuracy> CompareSkyWithTables(const AtmosphereTables& tables, const SkyReference& reference) {
+std::vector<RegionAccuracy> CompareSkyWithTables(const Tables& tables, const SkyReference& reference) {
   const AtmosphereParameters& atmosphere = tables.atmosphere();
   const double distance = reference.point_distance_m;
   std::vector<ProbeQuery> queries;
   for (const SkySample& s : reference.samples)
     queries.push_back({ToRayParameters(s.view, atmosphere), s.quantity == SkyQuantity::kRadianceToPoint ? distance : 0.0});
-  std::vector<ProbeResult> results = ProbeTables(tables, queries);
+  std::vector<ProbeResult> results = Probe(tables, queries);
 
   std::vector<RegionAccuracy> regions;
   std::vector<std::array<std::vector<double>, 3>> errors;

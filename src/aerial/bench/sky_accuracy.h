@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/reference/monte_carlo.h"
+#include "aerial/tables.h"
 #include "aerial/view_geometry.h"
 
 namespace aerial::bench {
@@ -88,7 +88,7 @@ struct RegionAccuracy {
   double Max() const;
 };
 
-std::vector<RegionAccuracy> CompareSkyWithTables(const AtmosphereTables& tables, const SkyReference& reference);
+std::vector<RegionAccuracy> CompareSkyWithTables(const Tables& tables, const SkyReference& reference);
 
 // A Markdown table: one row per quantity, band and altitude; median / max per channel (%).
 std::string FormatSkyAccuracy(const std::vector<RegionAccuracy>& regions);

@@ -77,17 +77,6 @@ TableLoadOptions TableOptions::MakeLoadOptions() const {
   return {.cache_dir = cache_dir, .read_cache = !no_cache, .write_cache = true, .print_progress = !quiet};
 }
 
-vk::ContextCreateInfo TableOptions::MakeContextInfo() const {
-  DeviceOptions options = MakeDeviceOptions();
-  return {.device_name = options.device_name, .validation = options.validation};
-}
-
-TableStoreOptions TableOptions::MakeStoreOptions() const {
-  TableLoadOptions load = MakeLoadOptions();
-  return {.cache_dir = load.cache_dir, .read_cache = load.read_cache, .write_cache = load.write_cache,
-          .quiet = !load.print_progress};
-}
-
 MemoryBudget TableOptions::MakeMemoryBudget(uint64_t largest_heap_bytes) const {
   return aerial::MakeMemoryBudget(max_memory_mib, largest_heap_bytes);
 }

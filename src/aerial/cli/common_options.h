@@ -13,9 +13,7 @@
 #include "aerial/atmosphere.h"
 #include "aerial/core/memory_budget.h"
 #include "aerial/device.h"
-#include "aerial/precompute/table_store.h"
 #include "aerial/tables.h"
-#include "aerial/vk/context.h"
 
 namespace aerial::cli {
 
@@ -42,10 +40,6 @@ struct TableOptions {
   PrecomputeOptions MakePrecomputeOptions() const;
   DeviceOptions MakeDeviceOptions() const;  // --device, --validation
   TableLoadOptions MakeLoadOptions() const;  // --cache-dir, --no-cache, --quiet
-  // The same for the viewer, whose device must also present to its window (vk::Context with
-  // window extensions, which the public API does not make).
-  vk::ContextCreateInfo MakeContextInfo() const;
-  TableStoreOptions MakeStoreOptions() const;
   // --max-memory-mib, else the default budget or the device's heap when smaller.
   MemoryBudget MakeMemoryBudget(uint64_t largest_heap_bytes) const;
 };

@@ -42,14 +42,13 @@ std::map<LutVariant, PrecomputeOptions> TableVariants(const TableOptions& tables
 }
 
 // Each variant's tables (the difference view shows both, each drawn by its own renderer), the
-// background precompute's scratch, and the window. A short-lived context on the same device gives
+// background precompute's scratch, and the window. A short-lived device of the same choice gives
 // the budget its heap size, before the viewer allocates anything.
 void CheckViewerMemory(const TableOptions& tables, const viewer::ViewerOptions& viewer) {
   std::vector<MemoryUse> uses = SwapchainMemoryUses(viewer.render);
   for (const auto& [variant, precompute] : viewer.tables) uses = Combined(uses, TableMemoryUses(precompute));
   uses = Combined(uses, FrameMemoryUses(viewer.render, int(viewer.tables.size())));
-  vk::Context device(viewer.context);
-  tables.MakeMemoryBudget(device.largest_heap_bytes()).Check(uses);
+  tables.MakeMemoryBudget(Device(viewer.device).largest_heap_bytes()).Check(uses);
 }
 
 void RunView(const ViewCommandOptions& options) {
@@ -69,8 +68,8 @@ void RunView(const ViewCommandOptions& options) {
   if (!options.camera_path.empty())
     viewer.camera_path = viewer::CameraPath::Load(options.camera_path, viewer.atmosphere.bottom_radius_m);
   viewer.scene = options.scene.Load(viewer.atmosphere.bottom_radius_m);
-  viewer.store = options.tables.MakeStoreOptions();
-  viewer.context = options.tables.MakeContextInfo();
+  viewer.load = options.tables.MakeLoadOptions();
+  viewer.device = options.tables.MakeDeviceOptions();
   CheckViewerMemory(options.tables, viewer);
   viewer.exposure = options.frame.exposure;
   viewer.frames = options.frames;

@@ -75,48 +75,43 @@ DisplayPasses::DisplayPasses(const vk::Context& context, ::vk::RenderPass render
                                       sizeof(DifferencePush))) {}
 
 void DisplayPasses::RecordToneMap(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
-                                  const vk::Image& radiance, float exposure) const {
+                                  const SampledImage& radiance, float exposure) const {
   ToneMapPush push{{float(extent.width), float(extent.height)}, exposure};
-  tone_map_.Bind(cmd, {vk::SampledImageSlot{&radiance, *linear_}}, &push);
+  tone_map_.Bind(cmd, {Linear(radiance)}, &push);
   vk::DrawFullScreenTriangle(cmd);
 }
 
 void DisplayPasses::RecordTerm(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
-                               const Renderer& renderer, uint32_t slot, Term term,
+                               const SceneRenderer& renderer, uint32_t slot, Term term,
                                float exposure) const {
-  const AtmosphereTables& tables = renderer.tables();
-  const FroxelVolume& froxels = renderer.froxels();
-  auto sampled = [&](const vk::Image& image) { return vk::SampledImageSlot{&image, *linear_}; };
+  const Tables& tables = renderer.tables();
   TermPush push{{float(extent.width), float(extent.height)}, int32_t(term),
                 renderer.options().mode == AerialMode::kFroxel ? 1 : 0, exposure};
   term_.Bind(cmd,
-             {vk::UniformBufferSlot{&tables.uniform_buffer()}, vk::UniformBufferSlot{&renderer.frame_buffer(slot)},
-              sampled(tables.transmittance()), sampled(tables.rayleigh()), sampled(tables.mie()),
-              sampled(tables.multiple()), sampled(tables.multiple_density()), sampled(froxels.rayleigh()),
-              sampled(froxels.mie()),
-              sampled(froxels.transmittance()), vk::SampledImageSlot{&renderer.depth_image(), *nearest_}},
+             {vk::UniformBlockSlot{tables.atmosphere_block().buffer},
+              vk::UniformBlockSlot{renderer.frame_block(slot).buffer}, Linear(tables.transmittance()),
+              Linear(tables.rayleigh()), Linear(tables.mie()), Linear(tables.multiple()),
+              Linear(tables.multiple_density()), Linear(renderer.froxel_rayleigh()), Linear(renderer.froxel_mie()),
+              Linear(renderer.froxel_transmittance()), vk::SampledViewSlot{renderer.depth().view, *nearest_}},
              &push);
   vk::DrawFullScreenTriangle(cmd);
 }
 
 void DisplayPasses::RecordFroxelSlice(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
-                                      const FroxelVolume& froxels, int slice, float exposure) const {
+                                      const SceneRenderer& renderer, int slice, float exposure) const {
   SlicePush push{{float(extent.width), float(extent.height)}, slice, exposure};
   froxel_slice_.Bind(cmd,
-                     {vk::SampledImageSlot{&froxels.rayleigh(), *linear_},
-                      vk::SampledImageSlot{&froxels.mie(), *linear_},
-                      vk::SampledImageSlot{&froxels.transmittance(), *linear_}},
+                     {Linear(renderer.froxel_rayleigh()), Linear(renderer.froxel_mie()),
+                      Linear(renderer.froxel_transmittance())},
                      &push);
   vk::DrawFullScreenTriangle(cmd);
 }
 
 void DisplayPasses::RecordDifference(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
-                                     const vk::Image& radiance_4d, const vk::Image& radiance_3d,
+                                     const SampledImage& radiance_4d, const SampledImage& radiance_3d,
                                      float full_scale) const {
   DifferencePush push{{float(extent.width), float(extent.height)}, full_scale};
-  difference_.Bind(cmd,
-                   {vk::SampledImageSlot{&radiance_4d, *linear_}, vk::SampledImageSlot{&radiance_3d, *linear_}},
-                   &push);
+  difference_.Bind(cmd, {Linear(radiance_4d), Linear(radiance_3d)}, &push);
   vk::DrawFullScreenTriangle(cmd);
 }
 

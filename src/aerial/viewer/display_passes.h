@@ -2,9 +2,10 @@
 // The viewer's last passes, drawn straight into the window's image inside its render pass: the
 // renderer's frame tone mapped, or a debug view of it (shaders/include/display.glsl). Each is one
 // full-screen triangle whose fragment shader writes every pixel; nothing is copied. They only
-// read the renderer's images: the frame itself is always Renderer::Record's, as in
+// read the renderer's images, as aerial's public API hands them out (aerial/renderer.h): the
+// frame itself is always SceneRenderer::Record's, as in
 // `aerial render`.
-#include "aerial/render/renderer.h"
+#include "aerial/renderer.h"
 #include "aerial/vk/graphics_pipeline.h"
 
 namespace aerial::viewer {
@@ -20,23 +21,26 @@ class DisplayPasses {
   // The picture: radiance times exposure through ACES and sRGB (shaders/view/present.frag),
   // resampled bilinearly to the target.
   void RecordToneMap(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
-                     const vk::Image& radiance, float exposure) const;
+                     const SampledImage& radiance, float exposure) const;
 
   enum class Term { kRayleigh = 0, kMie = 1, kTransmittance = 2 };
   // One term of the aerial perspective alone (shaders/view/inscatter.frag), for the renderer's
   // frame recorded with the per-frame resources of `slot`.
   void RecordTerm(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
-                  const Renderer& renderer, uint32_t slot, Term term, float exposure) const;
-  // Depth slice `slice` of the froxel volume (shaders/view/froxel_slice.frag).
+                  const SceneRenderer& renderer, uint32_t slot, Term term, float exposure) const;
+  // Depth slice `slice` of the renderer's froxel volume (shaders/view/froxel_slice.frag).
   void RecordFroxelSlice(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
-                         const FroxelVolume& froxels, int slice, float exposure) const;
+                         const SceneRenderer& renderer, int slice, float exposure) const;
   // The 3D-vs-4D relative difference as a heat map, white at full_scale
   // (shaders/view/difference.frag).
   void RecordDifference(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
-                        const vk::Image& radiance_4d, const vk::Image& radiance_3d,
+                        const SampledImage& radiance_4d, const SampledImage& radiance_3d,
                         float full_scale) const;
 
  private:
+  // One of aerial's images with this pass's linear sampler.
+  vk::SampledViewSlot Linear(const SampledImage& image) const { return {image.view, *linear_}; }
+
   ::vk::raii::Sampler linear_, nearest_;
   vk::GraphicsPipeline tone_map_, term_, froxel_slice_, difference_;
 };

@@ -19,10 +19,10 @@ double Percentile(std::vector<double> values, double p) {
 
 void FrameStats::AddFrame(double frame_ms) { frame_ms_.push_back(frame_ms); }
 
-void FrameStats::AddGpuFrame(const std::vector<vk::PassTime>& passes) {
+void FrameStats::AddGpuFrame(const std::vector<PassTime>& passes) {
   if (passes.empty()) return;
   double total = 0.0;
-  for (const vk::PassTime& pass : passes) {
+  for (const PassTime& pass : passes) {
     pass_ms_[pass.pass].push_back(pass.milliseconds);
     total += pass.milliseconds;
   }

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "aerial/vk/gpu_timer.h"
+#include "aerial/device.h"
 
 namespace aerial::viewer {
 
@@ -23,7 +23,7 @@ double Percentile(std::vector<double> values, double p);
 class FrameStats {
  public:
   void AddFrame(double frame_ms);
-  void AddGpuFrame(const std::vector<vk::PassTime>& passes);
+  void AddGpuFrame(const std::vector<PassTime>& passes);
 
   size_t frames() const { return frame_ms_.size(); }
   // Over the last `window` frames (all when 0).

@@ -3,11 +3,11 @@
 #include <ctime>
 
 #include "aerial/error.h"
-#include "aerial/export/froxel_export.h"
+#include "aerial/vdb_export.h"
 
 namespace aerial::viewer {
 
-std::string ExportFroxelsToVdb(const Renderer& renderer, const Scene& scene,
+std::string ExportFroxelsToVdb(const SceneRenderer& renderer, const Scene& scene,
                                const std::filesystem::path& directory) {
   if (renderer.options().mode != AerialMode::kFroxel)
     return "VDB export: the froxel volume is only built in froxel mode";
@@ -18,7 +18,7 @@ std::string ExportFroxelsToVdb(const Renderer& renderer, const Scene& scene,
   std::strftime(name, sizeof name, "aerial-froxels-%Y%m%d-%H%M%S.vdb", &local);
   std::filesystem::path path = directory / name;
   try {
-    WriteVdb(path, MakeFroxelSpaceVolume(ReadFroxelFrame(renderer, scene)));
+    ExportFroxelVdb(path, renderer, scene);
   } catch (const Error& e) {
     return std::string("VDB export: ") + e.what();
   }

@@ -4,14 +4,14 @@
 #include <filesystem>
 #include <string>
 
-#include "aerial/render/renderer.h"
+#include "aerial/renderer.h"
 
 namespace aerial::viewer {
 
 // Exports the froxels of the renderer's last frame of `scene` to
 // directory/aerial-froxels-<date>-<time>.vdb; returns the message the viewer prints and shows in
 // its panel (also on failure, which does not stop the viewer).
-std::string ExportFroxelsToVdb(const Renderer& renderer, const Scene& scene,
+std::string ExportFroxelsToVdb(const SceneRenderer& renderer, const Scene& scene,
                                const std::filesystem::path& directory = ".");
 
 }  // namespace aerial::viewer

@@ -111,7 +111,7 @@ void Timings(const PanelInfo& info) {
   ImGui::Text("%.1f FPS, %.1f ms per frame", info.fps, info.frame_ms);
   ImGui::Text("terrain: %zu chunks, %zu triangles", info.terrain_chunks, info.terrain_triangles);
   double total = 0.0;
-  for (const vk::PassTime& pass : info.passes) {
+  for (const PassTime& pass : info.passes) {
     ImGui::Text("  %-20s %7.2f ms", pass.pass.c_str(), pass.milliseconds);
     total += pass.milliseconds;
   }

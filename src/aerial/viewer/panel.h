@@ -4,15 +4,15 @@
 #include <string>
 #include <vector>
 
+#include "aerial/device.h"
 #include "aerial/viewer/table_worker.h"
 #include "aerial/viewer/view_settings.h"
-#include "aerial/vk/gpu_timer.h"
 
 namespace aerial::viewer {
 
 struct PanelInfo {
   double fps = 0, frame_ms = 0;       // medians over the last frames
-  std::vector<vk::PassTime> passes;   // GPU time of each pass of the last finished frame
+  std::vector<PassTime> passes;   // GPU time of each pass of the last finished frame
   size_t terrain_chunks = 0, terrain_triangles = 0;  // drawn in the last frame
   TableWorkStatus work;
   std::string tables;                 // the tables in use

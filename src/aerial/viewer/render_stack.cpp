@@ -10,28 +10,28 @@ bool SameRenderOptions(const RenderOptions& a, const RenderOptions& b) {
          a.froxels.depth == b.froxels.depth && a.froxels.far_m == b.froxels.far_m;
 }
 
-void RenderStack::Install(std::unique_ptr<AtmosphereTables> tables, const RenderOptions& options) {
+void RenderStack::Install(std::unique_ptr<Tables> tables, const RenderOptions& options) {
   Entry& entry = entries_[tables->options().variant];
   if (entry.renderer) before_rebuild_();
   entry.renderer.reset();  // it refers to the old tables
   entry.tables = std::move(tables);
-  entry.renderer = std::make_unique<Renderer>(*entry.tables, scene_, options);
+  entry.renderer = std::make_unique<SceneRenderer>(*entry.tables, scene_, options);
 }
 
-Renderer* RenderStack::Get(LutVariant variant, const RenderOptions& options) {
+SceneRenderer* RenderStack::Get(LutVariant variant, const RenderOptions& options) {
   auto it = entries_.find(variant);
   if (it == entries_.end()) return nullptr;
   Entry& entry = it->second;
   if (!SameRenderOptions(entry.renderer->options(), options)) {
     before_rebuild_();
     entry.renderer.reset();
-    entry.renderer = std::make_unique<Renderer>(*entry.tables, scene_, options);
+    entry.renderer = std::make_unique<SceneRenderer>(*entry.tables, scene_, options);
   }
   entry.renderer->SetTerrainErrorPx(options.terrain_error_px);
   return entry.renderer.get();
 }
 
-const AtmosphereTables* RenderStack::tables(LutVariant variant) const {
+const Tables* RenderStack::tables(LutVariant variant) const {
   auto it = entries_.find(variant);
   return it == entries_.end() ? nullptr : it->second.tables.get();
 }

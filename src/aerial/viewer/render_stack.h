@@ -1,6 +1,6 @@
 #pragma once
 // The table sets and renderers the viewer draws with: one per table variant, the current one and,
-// for the 3D-vs-4D view, the other. Every renderer is aerial's one Renderer (render/renderer.h),
+// for the 3D-vs-4D view, the other. Every renderer is aerial's SceneRenderer (aerial/renderer.h),
 // rebuilt when its tables or its options change: the size (a resize or the render scale), the
 // froxel grid, the aerial mode and the shadows, which are specialization constants of its
 // pipelines (and the shadows its shadow map); the terrain's error bound is passed on without a
@@ -10,7 +10,7 @@
 #include <map>
 #include <memory>
 
-#include "aerial/render/renderer.h"
+#include "aerial/renderer.h"
 
 namespace aerial::viewer {
 
@@ -22,18 +22,18 @@ class RenderStack {
       : scene_(scene), before_rebuild_(std::move(before_rebuild)) {}
 
   // Replaces the tables of their variant, and that variant's renderer.
-  void Install(std::unique_ptr<AtmosphereTables> tables, const RenderOptions& options);
+  void Install(std::unique_ptr<Tables> tables, const RenderOptions& options);
   // The variant's renderer, rebuilt first if its options differ; null if the variant has no
   // tables yet. Its tables may be for an older atmosphere while new ones are being made: check
   // renderer->tables().atmosphere() where that matters.
-  Renderer* Get(LutVariant variant, const RenderOptions& options);
+  SceneRenderer* Get(LutVariant variant, const RenderOptions& options);
   // The variant's tables, whatever atmosphere they were made for; null if none.
-  const AtmosphereTables* tables(LutVariant variant) const;
+  const Tables* tables(LutVariant variant) const;
 
  private:
   struct Entry {
-    std::unique_ptr<AtmosphereTables> tables;
-    std::unique_ptr<Renderer> renderer;
+    std::unique_ptr<Tables> tables;
+    std::unique_ptr<SceneRenderer> renderer;
   };
   const Scene& scene_;
   std::function<void()> before_rebuild_;

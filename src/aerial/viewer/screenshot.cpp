@@ -2,11 +2,11 @@
 
 #include <ctime>
 
-#include "aerial/image/image_writer.h"
+#include "aerial/image.h"
 
 namespace aerial::viewer {
 
-std::string SaveScreenshots(const Renderer& renderer, double exposure,
+std::string SaveScreenshots(const SceneRenderer& renderer, double exposure,
                             const std::filesystem::path& directory) {
   std::time_t now = std::time(nullptr);
   std::tm local{};

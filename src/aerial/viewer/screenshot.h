@@ -5,12 +5,12 @@
 #include <filesystem>
 #include <string>
 
-#include "aerial/render/renderer.h"
+#include "aerial/renderer.h"
 
 namespace aerial::viewer {
 
 // Returns the message the viewer prints and shows in its panel; throws Error if a write fails.
-std::string SaveScreenshots(const Renderer& renderer, double exposure,
+std::string SaveScreenshots(const SceneRenderer& renderer, double exposure,
                             const std::filesystem::path& directory = ".");
 
 }  // namespace aerial::viewer

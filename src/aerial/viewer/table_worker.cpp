@@ -6,8 +6,8 @@
 
 namespace aerial::viewer {
 
-TableWorker::TableWorker(vk::ContextCreateInfo context_info)
-    : context_info_(std::move(context_info)), thread_([this] { Run(); }) {}
+TableWorker::TableWorker(DeviceOptions device_options)
+    : device_options_(std::move(device_options)), thread_([this] { Run(); }) {}
 
 TableWorker::~TableWorker() {
   {
@@ -60,16 +60,15 @@ void TableWorker::Run() {
 
 TableResult TableWorker::Make(TableRequest request) {
   TableResult result{.request = request};
-  request.store.quiet = true;
-  request.store.progress = [this](int done, int total, std::string_view) {
+  request.load.print_progress = false;
+  request.load.progress = [this](int done, int total, std::string_view) {
     std::lock_guard lock(mutex_);
     status_.done_steps = done;
     status_.total_steps = total;
   };
   try {
-    if (!context_) context_ = std::make_unique<vk::Context>(context_info_);
-    LoadedTables loaded = LoadOrPrecompute(*context_, request.atmosphere, request.options, request.store);
-    result.tables = loaded.tables->Download();
+    if (!device_) device_ = std::make_unique<Device>(device_options_);
+    result.tables = Tables::LoadOrPrecompute(*device_, request.atmosphere, request.options, request.load).Snapshot();
   } catch (const std::exception& e) {
     result.error = e.what();
   }

@@ -1,10 +1,10 @@
 #pragma once
 // Table sets made off the viewer's thread, so the window keeps drawing while a precompute runs
-// (seconds to tens of seconds on lavapipe). The worker has its own Vulkan context, with its own
+// (seconds to tens of seconds on lavapipe). The worker has its own aerial::Device, with its own
 // device and queue: its submissions never touch the viewer's queue (a VkQueue must not be used
-// from two threads at once). Finished tables come back as CPU bytes in the cache format
-// (TableCache), which the viewer uploads into its own context (AtmosphereTables::Upload): the same
-// hand-over as a cache file, without the file.
+// from two threads at once). Finished tables come back as a TableSnapshot (host memory), which
+// the viewer makes tables on its own device from (Tables::FromSnapshot): the same hand-over as a
+// cache file, without the file.
 #include <condition_variable>
 #include <deque>
 #include <memory>
@@ -13,7 +13,7 @@
 #include <string>
 #include <thread>
 
-#include "aerial/precompute/table_store.h"
+#include "aerial/tables.h"
 
 namespace aerial::viewer {
 
@@ -21,12 +21,12 @@ struct TableRequest {
   int slot = 0;  // what the tables are for; a newer queued request for the same slot replaces it
   AtmosphereParameters atmosphere;
   PrecomputeOptions options;
-  TableStoreOptions store;  // cache directory and use; progress is reported through status()
+  TableLoadOptions load;  // cache directory and use; progress is reported through status()
 };
 
 struct TableResult {
   TableRequest request;
-  std::optional<TableCache> tables;  // unset on failure
+  std::optional<TableSnapshot> tables;  // unset on failure
   std::string error;                 // why, on failure
 };
 
@@ -38,7 +38,7 @@ struct TableWorkStatus {
 
 class TableWorker {
  public:
-  explicit TableWorker(vk::ContextCreateInfo context_info);
+  explicit TableWorker(DeviceOptions device_options);
   // Waits for the running request: a precompute cannot be interrupted.
   ~TableWorker();
   TableWorker(const TableWorker&) = delete;
@@ -53,8 +53,8 @@ class TableWorker {
   void Run();
   TableResult Make(TableRequest request);
 
-  vk::ContextCreateInfo context_info_;
-  std::unique_ptr<vk::Context> context_;  // created by the worker thread on its first request
+  DeviceOptions device_options_;
+  std::unique_ptr<Device> device_;  // created by the worker thread on its first request
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::deque<TableRequest> queued_;

@@ -9,7 +9,7 @@
 #include <GLFW/glfw3.h>
 
 #include "aerial/error.h"
-#include "aerial/image/image_writer.h"
+#include "aerial/image.h"
 #include "aerial/viewer/display_passes.h"
 #include "aerial/viewer/frame_stats.h"
 #include "aerial/viewer/froxel_export.h"
@@ -22,6 +22,7 @@
 #include "aerial/viewer/table_worker.h"
 #include "aerial/viewer/window.h"
 #include "aerial/vk/command_ring.h"
+#include "aerial/vk/gpu_timer.h"
 #include "aerial/vk/swapchain.h"
 
 namespace aerial::viewer {
@@ -44,9 +45,19 @@ LutVariant Other(LutVariant variant) {
   return variant == LutVariant::k4D ? LutVariant::k3D : LutVariant::k4D;
 }
 
-vk::ContextCreateInfo WithWindowSupport(vk::ContextCreateInfo info) {
+// The viewer's own Vulkan device: the one aerial is asked for, with what the window needs.
+vk::ContextCreateInfo WithWindowSupport(const DeviceOptions& device) {
+  vk::ContextCreateInfo info{.device_name = device.device_name, .validation = device.validation};
   GlfwSession::AddWindowSupport(info);
   return info;
+}
+
+// The window's device handed to aerial, as an engine hands over its own (aerial/device.h).
+DeviceHandoff HandoffOf(const vk::Context& context) {
+  return {.instance = *context.instance(),
+          .physical_device = *context.physical_device(),
+          .device = *context.device(),
+          .queue_family = context.queue_family()};
 }
 
 const char* PassName(DebugView view) {
@@ -62,13 +73,12 @@ RenderOptions ForTheWindow(RenderOptions render) {
 }
 
 // The first tables, loaded (or precomputed, with the terminal's progress bar) on the viewer's own
-// context before the window opens, and their renderer at the size asked for.
-RenderStack FirstStack(const vk::Context& context, const ViewerOptions& options,
-                       std::function<void()> before_rebuild) {
+// device before the window opens, and their renderer at the size asked for.
+RenderStack FirstStack(const Device& device, const ViewerOptions& options, std::function<void()> before_rebuild) {
   RenderStack stack(options.scene, std::move(before_rebuild));
-  LoadedTables loaded = LoadOrPrecompute(context, options.atmosphere, options.tables.at(options.variant),
-                                         options.store);
-  stack.Install(std::move(loaded.tables), ForTheWindow(options.render));
+  stack.Install(std::make_unique<Tables>(Tables::LoadOrPrecompute(device, options.atmosphere,
+                                                                   options.tables.at(options.variant), options.load)),
+                ForTheWindow(options.render));
   return stack;
 }
 
@@ -96,8 +106,8 @@ class Viewer::Impl {
   TableWorker worker_;             // its own context, and nothing of the others
   ViewSettings settings_;
   AtmosphereKnobs applied_knobs_;  // the knobs the tables are asked for (the panel's, on release)
-  std::vector<vk::PassTime> last_passes_;
-  Renderer* shown_ = nullptr;      // the renderer of the last frame
+  std::vector<PassTime> last_passes_;
+  SceneRenderer* shown_ = nullptr;  // the renderer of the last frame
 
  private:
   RenderOptions CurrentRenderOptions() const;
@@ -108,24 +118,25 @@ class Viewer::Impl {
   void Steer(const FrameInput& input, double dt_s);
   double MaxSunZenithDeg() const;
   void FollowSunClock();
-  void Act(const PanelEvents& events, const std::vector<int>& keys, const Renderer& renderer);
+  void Act(const PanelEvents& events, const std::vector<int>& keys, const SceneRenderer& renderer);
   void Say(std::string message);
   void CollectFinishedFrame(uint32_t slot);
   void ForgetRecordedFrames();
-  void RecordDisplay(const vk::CommandBuffer& cmd, uint32_t slot, const Renderer& primary,
-                     const Renderer* other);
-  PanelInfo MakePanelInfo(const Renderer& primary) const;
+  void RecordDisplay(const vk::CommandBuffer& cmd, uint32_t slot, const SceneRenderer& primary,
+                     const SceneRenderer* other);
+  PanelInfo MakePanelInfo(const SceneRenderer& primary) const;
 
   ViewerOptions options_;
   AtmosphereParameters wanted_;                // the base with the applied knobs
   std::map<LutVariant, uint64_t> requested_;   // atmosphere hash asked of the worker, per variant
   GlfwSession glfw_;
   vk::ContextCreateInfo context_info_;
-  vk::Context context_;
+  vk::Context context_;  // the window's device, the viewer's own
+  Device device_;        // the same device, handed to aerial
   vk::CommandRing ring_;
   // The renderers each slot's frame was recorded with (and the suffix of their pass names), so
   // that their GPU times are read once the slot's frame has finished.
-  std::vector<std::vector<std::pair<const Renderer*, std::string>>> recorded_;
+  std::vector<std::vector<std::pair<const SceneRenderer*, std::string>>> recorded_;
   RenderStack stack_;
   Window window_;
   vk::Swapchain swapchain_;
@@ -140,14 +151,15 @@ class Viewer::Impl {
 };
 
 Viewer::Impl::Impl(ViewerOptions options)
-    : worker_(options.context),
+    : worker_(options.device),
       options_(std::move(options)),
       wanted_(options_.atmosphere),
-      context_info_(WithWindowSupport(options_.context)),
+      context_info_(WithWindowSupport(options_.device)),
       context_(context_info_),
+      device_(HandoffOf(context_)),
       ring_(context_, kFramesInFlight),
       recorded_(kFramesInFlight),
-      stack_(FirstStack(context_, options_, [this] { ForgetRecordedFrames(); })),
+      stack_(FirstStack(device_, options_, [this] { ForgetRecordedFrames(); })),
       window_(context_, options_.render.width, options_.render.height, "aerial view: " + options_.scene.name),
       swapchain_(context_, window_.surface(), window_.framebuffer_extent(), kFramesInFlight),
       imgui_(context_, window_.handle(), swapchain_),
@@ -180,7 +192,7 @@ RenderOptions Viewer::Impl::CurrentRenderOptions() const {
 }
 
 bool Viewer::Impl::HasCurrentTables(LutVariant variant) const {
-  const AtmosphereTables* tables = stack_.tables(variant);
+  const Tables* tables = stack_.tables(variant);
   return tables && tables->atmosphere().Hash() == wanted_.Hash();
 }
 
@@ -199,13 +211,13 @@ void Viewer::Impl::RequestTables() {
       Say(ToString(variant) + " tables are not available with the command line's table sizes");
       continue;
     }
-    TableStoreOptions store = options_.store;
-    store.write_cache = wanted_.Hash() == options_.atmosphere.Hash();
-    worker_.Submit({.slot = int(variant), .atmosphere = wanted_, .options = options->second, .store = store});
+    TableLoadOptions load = options_.load;
+    load.write_cache = wanted_.Hash() == options_.atmosphere.Hash();
+    worker_.Submit({.slot = int(variant), .atmosphere = wanted_, .options = options->second, .load = load});
   }
 }
 
-// Uploads the worker's finished tables into this context; results for an atmosphere the panel has
+// Makes the worker's finished tables on this device; results for an atmosphere the panel has
 // since left are dropped.
 void Viewer::Impl::AdoptFinishedTables() {
   while (std::optional<TableResult> result = worker_.TakeResult()) {
@@ -215,9 +227,7 @@ void Viewer::Impl::AdoptFinishedTables() {
       continue;
     }
     if (request.atmosphere.Hash() != wanted_.Hash()) continue;
-    auto tables = std::make_unique<AtmosphereTables>(context_, request.atmosphere, request.options);
-    tables->Upload(*result->tables);
-    stack_.Install(std::move(tables), CurrentRenderOptions());
+    stack_.Install(std::make_unique<Tables>(Tables::FromSnapshot(device_, *result->tables)), CurrentRenderOptions());
   }
 }
 
@@ -256,7 +266,7 @@ void Viewer::Impl::FollowSunClock() {
 }
 
 // Screenshots and exports of the frame just rendered.
-void Viewer::Impl::Act(const PanelEvents& events, const std::vector<int>& keys, const Renderer& renderer) {
+void Viewer::Impl::Act(const PanelEvents& events, const std::vector<int>& keys, const SceneRenderer& renderer) {
   bool screenshot = events.screenshot, export_vdb = events.export_vdb;
   for (int key : keys) {
     screenshot |= key == GLFW_KEY_F12 || key == GLFW_KEY_P;
@@ -281,22 +291,22 @@ void Viewer::Impl::ForgetRecordedFrames() {
 
 // The GPU times of the frame the slot held, which has finished (CommandRing::Begin waited for it).
 void Viewer::Impl::CollectFinishedFrame(uint32_t slot) {
-  std::vector<vk::PassTime> passes;
+  std::vector<PassTime> passes;
   for (const auto& [renderer, suffix] : recorded_[slot]) {
-    for (vk::PassTime pass : renderer->PassTimes(slot)) {
+    for (PassTime pass : renderer->PassTimes(slot)) {
       pass.pass += suffix;
       passes.push_back(pass);
     }
   }
   if (passes.empty()) return;  // nothing recorded in this slot yet
-  for (const vk::PassTime& pass : timers_[slot]->Collect()) passes.push_back(pass);
+  for (const PassTime& pass : timers_[slot]->Collect()) passes.push_back(pass);
   stats_.AddGpuFrame(passes);
   last_passes_ = std::move(passes);
 }
 
 // The display pass for the settings' view and the panel over it, into the swapchain's image.
 void Viewer::Impl::RecordDisplay(const vk::CommandBuffer& cmd, uint32_t slot,
-                                 const Renderer& primary, const Renderer* other) {
+                                 const SceneRenderer& primary, const SceneRenderer* other) {
   // The difference view needs both frames; until the other variant's tables arrive, the picture.
   DebugView view = settings_.view == DebugView::kDifference && !other ? DebugView::kFinal : settings_.view;
   ::vk::Extent2D extent = swapchain_.extent();
@@ -306,7 +316,7 @@ void Viewer::Impl::RecordDisplay(const vk::CommandBuffer& cmd, uint32_t slot,
     timer.Begin(cmd, PassName(view));
     switch (view) {
       case DebugView::kFinal:
-        display_.RecordToneMap(cmd, extent, primary.output_image(), settings_.exposure);
+        display_.RecordToneMap(cmd, extent, primary.output(), settings_.exposure);
         break;
       case DebugView::kRayleigh:
       case DebugView::kMie:
@@ -315,13 +325,13 @@ void Viewer::Impl::RecordDisplay(const vk::CommandBuffer& cmd, uint32_t slot,
                             DisplayPasses::Term(int(view) - int(DebugView::kRayleigh)), settings_.exposure);
         break;
       case DebugView::kFroxelSlice:
-        display_.RecordFroxelSlice(cmd, extent, primary.froxels(), settings_.froxel_slice, settings_.exposure);
+        display_.RecordFroxelSlice(cmd, extent, primary, settings_.froxel_slice, settings_.exposure);
         break;
       case DebugView::kDifference: {
         bool primary_4d = primary.tables().options().variant == LutVariant::k4D;
-        const Renderer& l4 = primary_4d ? primary : *other;
-        const Renderer& l3 = primary_4d ? *other : primary;
-        display_.RecordDifference(cmd, extent, l4.output_image(), l3.output_image(),
+        const SceneRenderer& l4 = primary_4d ? primary : *other;
+        const SceneRenderer& l3 = primary_4d ? *other : primary;
+        display_.RecordDifference(cmd, extent, l4.output(), l3.output(),
                                   settings_.difference_full_scale);
         break;
       }
@@ -333,8 +343,8 @@ void Viewer::Impl::RecordDisplay(const vk::CommandBuffer& cmd, uint32_t slot,
   });
 }
 
-PanelInfo Viewer::Impl::MakePanelInfo(const Renderer& primary) const {
-  const AtmosphereTables& tables = primary.tables();
+PanelInfo Viewer::Impl::MakePanelInfo(const SceneRenderer& primary) const {
+  const Tables& tables = primary.tables();
   double frame_ms = stats_.MedianFrameMs(kPanelWindow);
   return {.fps = frame_ms > 0.0 ? 1000.0 / frame_ms : 0.0,
           .frame_ms = frame_ms,
@@ -365,7 +375,7 @@ bool Viewer::Impl::Step() {
   imgui_.NewFrame();
   Steer(input_.Read(dt_s, imgui_.wants_mouse(), imgui_.wants_keyboard()), dt_s);
   RenderOptions render = CurrentRenderOptions();
-  Renderer* primary = stack_.Get(settings_.variant, render);
+  SceneRenderer* primary = stack_.Get(settings_.variant, render);
   if (!primary) primary = stack_.Get(Other(settings_.variant), render);
   PanelEvents events = DrawPanel(settings_, MakePanelInfo(*primary));
   imgui_.EndFrame();
@@ -373,7 +383,7 @@ bool Viewer::Impl::Step() {
   if (events.tables_changed) applied_knobs_ = settings_.knobs;
   RequestTables();
   // Got before recording: a renderer rebuilt for new options waits for the frames in flight.
-  Renderer* other = nullptr;
+  SceneRenderer* other = nullptr;
   if (settings_.view == DebugView::kDifference && HasCurrentTables(LutVariant::k4D) &&
       HasCurrentTables(LutVariant::k3D) && HasCurrentTables(settings_.variant)) {
     other = stack_.Get(Other(settings_.variant), render);
@@ -389,11 +399,11 @@ bool Viewer::Impl::Step() {
   }
   // The last frame of a scripted run is saved: it is completed like `aerial render`'s.
   bool last = options_.frames > 0 && frames_ + 1 == options_.frames;
-  primary->Record(cmd, options_.scene, slot, last);
+  primary->Record(*cmd, options_.scene, slot, last);
   recorded_[slot].push_back({primary, ""});
   shown_ = primary;
   if (other) {
-    other->Record(cmd, options_.scene, slot);
+    other->Record(*cmd, options_.scene, slot);
     recorded_[slot].push_back({other, " (" + ToString(other->tables().options().variant) + ")"});
   }
   RecordDisplay(cmd, slot, *primary, other);
@@ -428,8 +438,8 @@ void Viewer::Run() { impl_->Run(); }
 bool Viewer::Step() { return impl_->Step(); }
 ViewSettings& Viewer::settings() { return impl_->settings_; }
 void Viewer::ApplyTableSettings() { impl_->applied_knobs_ = impl_->settings_.knobs; }
-const Renderer& Viewer::renderer() const { return *impl_->shown_; }
-const std::vector<vk::PassTime>& Viewer::last_passes() const { return impl_->last_passes_; }
+const SceneRenderer& Viewer::renderer() const { return *impl_->shown_; }
+const std::vector<PassTime>& Viewer::last_passes() const { return impl_->last_passes_; }
 TableWorkStatus Viewer::table_work() const { return impl_->worker_.status(); }
 GLFWwindow* Viewer::window() const { return impl_->window(); }
 

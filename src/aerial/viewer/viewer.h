@@ -1,16 +1,19 @@
 #pragma once
-// aerial view: the real-time viewer. Each frame the scene goes through aerial's one Renderer
-// (render/renderer.h, as in `aerial render`); the viewer's own passes only tone map it, or show a
-// debug view of the renderer's images, into the swapchain, with a Dear ImGui panel on top. Table
-// changes are made on a worker thread with its own device (table_worker.h), so the window keeps
-// drawing with the old tables until the new ones are uploaded.
+// aerial view: the real-time viewer, a client of aerial's public API (include/aerial/) like an
+// engine. It makes its device with the window's extensions and hands it to aerial::Device; each
+// frame the scene goes through aerial's SceneRenderer (as in `aerial render`), recorded into the
+// viewer's command buffer; the viewer's own passes only tone map it, or show a debug view of the
+// images the renderer hands out, into the swapchain, with a Dear ImGui panel on top. Table changes
+// are made on a worker thread with its own device (table_worker.h), so the window keeps drawing
+// with the old tables until the new ones arrive.
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
 
-#include "aerial/precompute/table_store.h"
-#include "aerial/render/renderer.h"
+#include "aerial/device.h"
+#include "aerial/renderer.h"
+#include "aerial/tables.h"
 #include "aerial/viewer/camera_path.h"
 #include "aerial/viewer/table_worker.h"
 #include "aerial/viewer/view_settings.h"
@@ -26,8 +29,8 @@ struct ViewerOptions {
   // 3D with a nu resolution above 1, is not offered); `variant` is the one shown first.
   std::map<LutVariant, PrecomputeOptions> tables;
   LutVariant variant = LutVariant::k4D;
-  TableStoreOptions store;
-  vk::ContextCreateInfo context;    // device and validation; the window's needs are added
+  TableLoadOptions load;
+  DeviceOptions device;             // device and validation; the window's needs are added
   RenderOptions render;             // width and height: the window's first size
   double exposure = 8.0;
   int frames = 0;                   // > 0: close after that many presented frames
@@ -53,8 +56,8 @@ class Viewer {
   // applied, as the panel applies them when a slider is released.
   ViewSettings& settings();
   void ApplyTableSettings();
-  const Renderer& renderer() const;  // the one of the last frame
-  const std::vector<vk::PassTime>& last_passes() const;
+  const SceneRenderer& renderer() const;  // the one of the last frame
+  const std::vector<PassTime>& last_passes() const;
   TableWorkStatus table_work() const;
   GLFWwindow* window() const;
 

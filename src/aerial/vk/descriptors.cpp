@@ -9,9 +9,11 @@ namespace {
 
 // The descriptor type a slot's resource can fill.
 ::vk::DescriptorType SlotKind(const Slot& slot) {
-  if (std::holds_alternative<UniformBufferSlot>(slot)) return ::vk::DescriptorType::eUniformBuffer;
+  if (std::holds_alternative<UniformBufferSlot>(slot) || std::holds_alternative<UniformBlockSlot>(slot))
+    return ::vk::DescriptorType::eUniformBuffer;
   if (std::holds_alternative<StorageBufferSlot>(slot)) return ::vk::DescriptorType::eStorageBuffer;
-  if (std::holds_alternative<SampledImageSlot>(slot)) return ::vk::DescriptorType::eCombinedImageSampler;
+  if (std::holds_alternative<SampledImageSlot>(slot) || std::holds_alternative<SampledViewSlot>(slot))
+    return ::vk::DescriptorType::eCombinedImageSampler;
   return ::vk::DescriptorType::eStorageImage;
 }
 
@@ -59,6 +61,13 @@ void PushDescriptorLayout::Push(const CommandBuffer& cmd,
     if (auto* u = std::get_if<UniformBufferSlot>(&slot)) {
       buffer_infos[i] = ::vk::DescriptorBufferInfo{.buffer = u->buffer->handle(), .range = VK_WHOLE_SIZE};
       write.pBufferInfo = &buffer_infos[i];
+    } else if (auto* b = std::get_if<UniformBlockSlot>(&slot)) {
+      buffer_infos[i] = ::vk::DescriptorBufferInfo{.buffer = b->buffer, .range = VK_WHOLE_SIZE};
+      write.pBufferInfo = &buffer_infos[i];
+    } else if (auto* v = std::get_if<SampledViewSlot>(&slot)) {
+      image_infos[i] = ::vk::DescriptorImageInfo{.sampler = v->sampler, .imageView = v->view,
+                                                 .imageLayout = ::vk::ImageLayout::eGeneral};
+      write.pImageInfo = &image_infos[i];
     } else if (auto* s = std::get_if<StorageBufferSlot>(&slot)) {
       buffer_infos[i] = ::vk::DescriptorBufferInfo{.buffer = s->buffer->handle(), .range = VK_WHOLE_SIZE};
       write.pBufferInfo = &buffer_infos[i];

@@ -15,7 +15,12 @@ struct UniformBufferSlot { const Buffer* buffer; };
 struct StorageBufferSlot { const Buffer* buffer; };
 struct SampledImageSlot { const Image* image; ::vk::Sampler sampler; };
 struct StorageImageSlot { const Image* image; };
-using Slot = std::variant<UniformBufferSlot, StorageBufferSlot, SampledImageSlot, StorageImageSlot>;
+// A buffer or an image that the public API handed out (aerial/tables.h: UniformBlock,
+// SampledImage) rather than one of this layer's objects: the viewer binds aerial's images so.
+struct UniformBlockSlot { ::vk::Buffer buffer; };
+struct SampledViewSlot { ::vk::ImageView view; ::vk::Sampler sampler; };
+using Slot = std::variant<UniformBufferSlot, StorageBufferSlot, SampledImageSlot, StorageImageSlot, UniformBlockSlot,
+                          SampledViewSlot>;
 
 // Descriptor types for slot lists (SlotLayout, shader_bindings.h), shorter to read in pass tables.
 inline constexpr auto kUniform = ::vk::DescriptorType::eUniformBuffer;
