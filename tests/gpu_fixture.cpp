@@ -37,11 +37,7 @@ const AtmosphereTables& SmallTables(LutVariant variant) {
 }
 
 const Device& SharedDevice() {
-  const vk::Context& context = SharedContext();
-  static Device device(DeviceHandoff{.instance = *context.instance(),
-                                     .physical_device = *context.physical_device(),
-                                     .device = *context.device(),
-                                     .queue_family = context.queue_family()});
+  static Device device(SharedContext().Handoff());
   return device;
 }
 

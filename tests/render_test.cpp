@@ -9,7 +9,7 @@
 
 #include "aerial/probe/table_probe.h"
 #include "aerial/render/renderer.h"
-#include "aerial/scene/presets.h"
+#include "aerial/scene.h"
 #include "golden_image.h"
 #include "gpu_fixture.h"
 #include "image_compare.h"

@@ -13,7 +13,7 @@
 #include "aerial/bench/reference_sampling.h"
 #include "aerial/bench/scene_surface.h"
 #include "aerial/render/renderer.h"
-#include "aerial/scene/presets.h"
+#include "aerial/scene.h"
 #include "gpu_fixture.h"
 
 namespace aerial::testing {

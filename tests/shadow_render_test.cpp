@@ -18,7 +18,7 @@
 #include "aerial/render/renderer.h"
 #include "aerial/render/shadow_cascades.h"
 #include "aerial/scene/camera.h"
-#include "aerial/scene/presets.h"
+#include "aerial/scene.h"
 #include "aerial/scene/primitives.h"
 #include "aerial/scene/terrain.h"
 #include "aerial/shader_abi/frame_geometry.h"

@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "aerial/render/renderer.h"
-#include "aerial/scene/presets.h"
+#include "aerial/scene.h"
 #include "aerial/scene/terrain.h"
 #include "gpu_fixture.h"
 #include "image_compare.h"

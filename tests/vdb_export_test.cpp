@@ -18,7 +18,7 @@
 #include "aerial/image/scratch_dir_test_util.h"
 #include "aerial/api/impl.h"
 #include "aerial/render/renderer.h"
-#include "aerial/scene/presets.h"
+#include "aerial/scene.h"
 #include "aerial/shader_abi/frame_geometry.h"
 #include "aerial/version.h"
 #include "aerial/viewer/froxel_export.h"

@@ -6,7 +6,7 @@
 
 #include "aerial/api/impl.h"
 #include "aerial/image/tone_map.h"
-#include "aerial/scene/presets.h"
+#include "aerial/scene.h"
 #include "aerial/viewer/display_passes.h"
 #include "display_target.h"
 #include "gpu_fixture.h"

@@ -9,7 +9,7 @@
 
 #include <functional>
 
-#include "aerial/scene/presets.h"
+#include "aerial/scene.h"
 #include "aerial/viewer/viewer.h"
 #include "xvfb_display.h"
 

@@ -14,6 +14,7 @@
 #include "aerial/froxel_grid.h"
 #include "aerial/image.h"
 #include "aerial/scene.h"
+#include "aerial/shader_abi/frame_block.h"
 #include "aerial/tables.h"
 
 namespace aerial {
@@ -87,6 +88,10 @@ struct FrameInfo {
   bool sun_visibility_cached = false;
 };
 
+// What ReadSurface draws of the lighting: all of it (the sun's part shadowed as in the frame), or
+// the sky's part alone.
+enum class SurfaceLight { kSunAndSky, kSkyOnly };
+
 class SceneRenderer {
  public:
   // The scene's meshes are uploaded once; its camera and sun may change from frame to frame.
@@ -121,6 +126,13 @@ class SceneRenderer {
   SampledImage froxel_rayleigh() const;
   SampledImage froxel_mie() const;
   SampledImage froxel_transmittance() const;
+
+  // For checks and benchmarks (frames never draw it): the last frame's opaque geometry drawn
+  // again at the render size without aerial perspective, lit surface radiance in rgb and the
+  // distance from the camera (m) in a, -1 where no geometry is; and the FrameBlock it was drawn
+  // with.
+  ImageRgbF ReadSurface(SurfaceLight light = SurfaceLight::kSunAndSky) const;
+  const FrameUniforms& frame_uniforms() const;
 
   const Tables& tables() const;
   const FrameInfo& frame_info() const;

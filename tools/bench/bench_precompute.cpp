@@ -11,7 +11,7 @@
 #include "aerial/bench/precompute_measurement.h"
 #include "aerial/bench/variant_comparison.h"
 #include "aerial/core/atomic_file.h"
-#include "aerial/vk/context.h"
+#include "aerial/device.h"
 #include "bench_main.h"
 
 namespace {
@@ -45,14 +45,14 @@ void Bench(const BenchOptions& cli) {
   for (const std::string& lut : cli.Variants()) options.push_back(cli.MakePrecomputeOptions(lut));
   // Fail on an unwritable --json path now rather than after minutes of precomputation.
   if (!cli.json_file.empty()) aerial::CheckWritable(cli.json_file);
-  aerial::vk::Context context(aerial::vk::ContextCreateInfo{.device_name = "", .validation = false});
+  aerial::Device device;
   auto on_run = [](const aerial::bench::BenchResult& result, const aerial::bench::RunResult& run,
                    bool warming, int index) {
     std::fprintf(stderr, "%s %d (%s): %.1f ms GPU, %.1f ms wall\n", warming ? "warm-up" : "run", index,
                  aerial::ToString(result.options.variant).c_str(), run.GpuMs(), run.wall_ms);
   };
   std::vector<aerial::bench::BenchResult> results;
-  for (auto& m : aerial::bench::MeasurePrecompute(context, aerial::AtmosphereParameters::Earth(), options,
+  for (auto& m : aerial::bench::MeasurePrecompute(device, aerial::AtmosphereParameters::Earth(), options,
                                                   cli.warmup, cli.runs, on_run))
     results.push_back(std::move(m.result));
   if (results.size() == 1) {

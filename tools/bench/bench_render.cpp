@@ -27,9 +27,10 @@
 #include "aerial/bench/frame_measurement.h"
 #include "aerial/bench/full_screen_tap.h"
 #include "aerial/core/atomic_file.h"
-#include "aerial/precompute/table_store.h"
-#include "aerial/render/renderer.h"
-#include "aerial/scene/presets.h"
+#include "aerial/device.h"
+#include "aerial/renderer.h"
+#include "aerial/scene.h"
+#include "aerial/tables.h"
 #include "aerial/vk/context.h"
 #include "bench_main.h"
 
@@ -76,9 +77,10 @@ void Bench(const BenchOptions& cli) {
   if (!cli.json_file.empty()) aerial::CheckWritable(cli.json_file);
 
   aerial::AtmosphereParameters atmosphere = aerial::AtmosphereParameters::Earth();
+  // The bench's own device (its reference pass is its own), handed to aerial as an engine would.
   aerial::vk::Context context;
-  aerial::LoadedTables loaded = aerial::LoadOrPrecompute(context, atmosphere, precompute,
-                                                         aerial::TableStoreOptions{.quiet = true});
+  aerial::Device device(context.Handoff());
+  aerial::Tables tables = aerial::Tables::LoadOrPrecompute(device, atmosphere, precompute);
   aerial::Scene scene = aerial::BuildPreset("noon", atmosphere.bottom_radius_m);
   using aerial::RenderOptions;
   using aerial::bench::Motion;
@@ -101,16 +103,16 @@ void Bench(const BenchOptions& cli) {
   constexpr size_t kFirstAblation = 9;
   constexpr size_t kStill = 1, kNoShadows = 2, kStillNoShadows = 3, kSun = 4, kSunNoShadows = 5, kPerPixel = 6,
                    kFineMesh = 7;
-  std::vector<std::unique_ptr<aerial::Renderer>> renderers;
+  std::vector<std::unique_ptr<aerial::SceneRenderer>> renderers;
   std::vector<aerial::bench::FrameSource> order;
   for (Configuration& c : configurations) {
     RenderOptions options = base;
     c.change(options);
-    renderers.push_back(std::make_unique<aerial::Renderer>(*loaded.tables, scene, options));
+    renderers.push_back(std::make_unique<aerial::SceneRenderer>(tables, scene, options));
     order.push_back({renderers.back().get(), c.motion});
   }
   aerial::bench::FullScreenTap tap(context, uint32_t(base.render_width()), uint32_t(base.render_height()),
-                                   renderers.front()->froxels().rayleigh());
+                                   renderers.front()->froxel_rayleigh());
   std::vector<RunResult> tap_runs;
   // The reference pass runs once after every round of frames, so it sees the same load.
   int round = 0;

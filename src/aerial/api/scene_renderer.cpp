@@ -42,6 +42,9 @@ SampledImage SceneRenderer::froxel_transmittance() const {
   return Sampled(impl_->renderer, impl_->renderer.froxels().transmittance());
 }
 
+ImageRgbF SceneRenderer::ReadSurface(SurfaceLight light) const { return impl_->renderer.ReadSurface(light); }
+const FrameUniforms& SceneRenderer::frame_uniforms() const { return impl_->renderer.frame_uniforms(); }
+
 const Tables& SceneRenderer::tables() const { return impl_->tables; }
 const FrameInfo& SceneRenderer::frame_info() const { return impl_->renderer.frame_info(); }
 const RenderOptions& SceneRenderer::options() const { return impl_->renderer.options(); }

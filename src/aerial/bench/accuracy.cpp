@@ -2,18 +2,18 @@
 
 #include <memory>
 
-#include "aerial/render/renderer.h"
-#include "aerial/scene/presets.h"
+#include "aerial/renderer.h"
+#include "aerial/scene.h"
 
 namespace aerial::bench {
 namespace {
 
-std::unique_ptr<Renderer> ImageRenderer(const AtmosphereTables& tables, const Scene& scene,
+std::unique_ptr<SceneRenderer> ImageRenderer(const Tables& tables, const Scene& scene,
                                         const BenchPlan& plan, AerialMode mode) {
   // No shadows: the CPU reference has none (lambertian_radiance.h).
   RenderOptions options{.width = plan.image_width, .height = plan.image_height, .mode = mode, .shadows = false};
   options.Validate();
-  return std::make_unique<Renderer>(tables, scene, options);
+  return std::make_unique<SceneRenderer>(tables, scene, options);
 }
 
 // One variant's frame of a view on both paths; the surface is the same on both.
@@ -21,7 +21,7 @@ struct VariantImages {
   ImageRgbF froxel, per_pixel, surface;
 };
 
-VariantImages Render(Renderer& froxel, Renderer& per_pixel, const Scene& scene) {
+VariantImages Render(SceneRenderer& froxel, SceneRenderer& per_pixel, const Scene& scene) {
   froxel.Render(scene);
   per_pixel.Render(scene);
   return {froxel.ReadOutput(), per_pixel.ReadOutput(), per_pixel.ReadSurface()};
@@ -52,11 +52,11 @@ Scene OpaqueScene(const Scene& scene) {
   return opaque;
 }
 
-std::vector<ViewReference> SampleViews(const AtmosphereTables& tables, Scene& scene, const BenchPlan& plan,
+std::vector<ViewReference> SampleViews(const Tables& tables, Scene& scene, const BenchPlan& plan,
                                        const std::function<void()>& on_pixel) {
   const AtmosphereParameters& atmosphere = tables.atmosphere();
   reference::Reference model(atmosphere);
-  std::unique_ptr<Renderer> renderer = ImageRenderer(tables, scene, plan, AerialMode::kFroxel);
+  std::unique_ptr<SceneRenderer> renderer = ImageRenderer(tables, scene, plan, AerialMode::kFroxel);
   ReferenceSampling sampling{.columns = plan.reference_columns,
                              .rows = plan.reference_rows,
                              .orders = tables.options().RepresentedOrders(),
@@ -72,14 +72,14 @@ std::vector<ViewReference> SampleViews(const AtmosphereTables& tables, Scene& sc
   return references;
 }
 
-void MeasureAccuracy(VariantResult& lut4d, const AtmosphereTables& tables4d, VariantResult& lut3d,
-                     const AtmosphereTables& tables3d, Scene& scene, const BenchPlan& plan,
+void MeasureAccuracy(VariantResult& lut4d, const Tables& tables4d, VariantResult& lut3d,
+                     const Tables& tables3d, Scene& scene, const BenchPlan& plan,
                      const std::vector<ViewReference>& references, std::vector<FigureImages>* figures,
                      const std::function<void()>& on_view) {
-  std::unique_ptr<Renderer> froxel4d = ImageRenderer(tables4d, scene, plan, AerialMode::kFroxel);
-  std::unique_ptr<Renderer> per_pixel4d = ImageRenderer(tables4d, scene, plan, AerialMode::kPerPixel);
-  std::unique_ptr<Renderer> froxel3d = ImageRenderer(tables3d, scene, plan, AerialMode::kFroxel);
-  std::unique_ptr<Renderer> per_pixel3d = ImageRenderer(tables3d, scene, plan, AerialMode::kPerPixel);
+  std::unique_ptr<SceneRenderer> froxel4d = ImageRenderer(tables4d, scene, plan, AerialMode::kFroxel);
+  std::unique_ptr<SceneRenderer> per_pixel4d = ImageRenderer(tables4d, scene, plan, AerialMode::kPerPixel);
+  std::unique_ptr<SceneRenderer> froxel3d = ImageRenderer(tables3d, scene, plan, AerialMode::kFroxel);
+  std::unique_ptr<SceneRenderer> per_pixel3d = ImageRenderer(tables3d, scene, plan, AerialMode::kPerPixel);
   lut4d.accuracy.clear();
   lut3d.accuracy.clear();
   for (size_t v = 0; v < plan.views.size(); ++v) {

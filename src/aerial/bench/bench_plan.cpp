@@ -1,6 +1,6 @@
 #include "aerial/bench/bench_plan.h"
 
-#include "aerial/scene/presets.h"
+#include "aerial/scene.h"
 
 namespace aerial::bench {
 namespace {

@@ -6,7 +6,7 @@
 #include "aerial/bench/precompute_measurement.h"
 #include "aerial/bench/variant_frames.h"
 #include "aerial/core/progress.h"
-#include "aerial/scene/presets.h"
+#include "aerial/scene.h"
 
 namespace aerial::bench {
 namespace {
@@ -28,7 +28,7 @@ ReferenceSummary SummarizeReference(const std::string& view, const ViewReference
 
 }  // namespace
 
-BenchResults RunBench(const BenchPlan& plan, const vk::Context& context, const MachineInfo& machine,
+BenchResults RunBench(const BenchPlan& plan, const Device& device, const MachineInfo& machine,
                       bool quiet) {
   auto start = std::chrono::steady_clock::now();
   AtmosphereParameters atmosphere = AtmosphereParameters::Earth();
@@ -39,7 +39,7 @@ BenchResults RunBench(const BenchPlan& plan, const vk::Context& context, const M
   for (const TableTier& tier : plan.tiers)
     for (LutVariant variant : {LutVariant::k4D, LutVariant::k3D}) options.push_back(tier.Options(variant));
   std::vector<PrecomputeMeasurement> tables =
-      MeasurePrecompute(context, atmosphere, options, plan.precompute_warmup, plan.precompute_runs,
+      MeasurePrecompute(device, atmosphere, options, plan.precompute_warmup, plan.precompute_runs,
                         [&](const BenchResult& r, const RunResult&, bool, int) {
                           progress.Advance("precompute, " + ToString(r.options.variant) + " " +
                                            ScatteringSize(r.options.resolution));

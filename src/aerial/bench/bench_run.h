@@ -4,12 +4,12 @@
 // view, then measure every tier's accuracy against it and against each other.
 #include "aerial/bench/bench_plan.h"
 #include "aerial/bench/bench_results.h"
-#include "aerial/vk/context.h"
+#include "aerial/device.h"
 
 namespace aerial::bench {
 
 // quiet: no progress bar (it is only drawn on a terminal anyway).
-BenchResults RunBench(const BenchPlan& plan, const vk::Context& context, const MachineInfo& machine,
+BenchResults RunBench(const BenchPlan& plan, const Device& device, const MachineInfo& machine,
                       bool quiet);
 
 }  // namespace aerial::bench

@@ -2,14 +2,14 @@
 // Frames of several renderers of one scene, interleaved (frame i: every renderer in turn) so that
 // all see the same machine noise, after warm-up frames: lavapipe compiles each pipeline on its
 // first use, so the first frame of a renderer costs far more than the next ones. Each frame has
-// its GPU pass times, its wall-clock time (Renderer::Render from the call to the end of the wait,
+// its GPU pass times, its wall-clock time (SceneRenderer::Render from the call to the end of the wait,
 // the CPU's part: terrain selection, sorting, recording, submitting, included) and the process's
 // CPU time over it.
 #include <functional>
 #include <vector>
 
 #include "aerial/bench/pass_stats.h"
-#include "aerial/render/renderer.h"
+#include "aerial/renderer.h"
 
 namespace aerial::bench {
 
@@ -24,12 +24,12 @@ inline constexpr const char* kShadowMapPass = "shadow map";
 // measures what a frame costs when nothing moves. A moving sun (frame i: the sun's zenith angle
 // i x 0.02 degrees larger, a sunset 15 times faster than the Earth's at 60 frames per second)
 // under a still camera redraws the shadow map and rebuilds the froxel volume and the sky-view
-// table every frame. Frames are drawn as the viewer draws them, not complete (Renderer::Record):
+// table every frame. Frames are drawn as the viewer draws them, not complete (SceneRenderer::Record):
 // a sky-view table made within 10 m of altitude is kept.
 enum class Motion { kCamera, kStill, kSun };
 
 struct FrameSource {
-  Renderer* renderer;
+  SceneRenderer* renderer;
   Motion motion = Motion::kCamera;
 };
 

@@ -3,7 +3,7 @@
 namespace aerial::bench {
 
 FullScreenTap::FullScreenTap(const vk::Context& context, uint32_t width, uint32_t height,
-                             const vk::Image& volume)
+                             const SampledImage& volume)
     : context_(context),
       volume_(volume),
       target_(context, {.extent = {width, height, 1},
@@ -18,14 +18,14 @@ FullScreenTap::FullScreenTap(const vk::Context& context, uint32_t width, uint32_
   context.Submit([&](const auto& cmd) { target_.InitializeLayout(cmd); });
 }
 
-std::vector<vk::PassTime> FullScreenTap::Run() {
+std::vector<PassTime> FullScreenTap::Run() {
   float size[2] = {float(target_.extent().width), float(target_.extent().height)};
   context_.Submit([&](const vk::CommandBuffer& cmd) {
     timer_.Reset(cmd);
     timer_.Begin(cmd, "full-screen tap");
     {
       vk::Rendering rendering(cmd, {.colors = {&target_}, .clear_colors = {std::nullopt}});
-      pipeline_.Bind(cmd, {vk::SampledImageSlot{&volume_, *sampler_}}, size);
+      pipeline_.Bind(cmd, {vk::SampledViewSlot{volume_.view, *sampler_}}, size);
       vk::DrawFullScreenTriangle(cmd);
     }
     timer_.End(cmd);

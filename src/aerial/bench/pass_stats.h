@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "aerial/vk/gpu_timer.h"
+#include "aerial/device.h"
 
 namespace aerial::bench {
 
@@ -14,7 +14,7 @@ namespace aerial::bench {
 // wall-clock time of the whole call (which also covers pipeline creation, allocation and
 // submissions).
 struct RunResult {
-  std::vector<vk::PassTime> passes;
+  std::vector<PassTime> passes;
   double wall_ms = 0.0;
   // CPU time of the whole process over the run (frames only): lavapipe's threads and the caller's.
   // Other processes on the machine lengthen wall and GPU times but barely this, so it tells a

@@ -9,14 +9,14 @@
 
 #include "aerial/atmosphere.h"
 #include "aerial/bench/precompute_report.h"
-#include "aerial/precompute/atmosphere_tables.h"
-#include "aerial/vk/context.h"
+#include "aerial/device.h"
+#include "aerial/tables.h"
 
 namespace aerial::bench {
 
 struct PrecomputeMeasurement {
   BenchResult result;
-  std::unique_ptr<AtmosphereTables> tables;  // the last run's, ready to render with
+  std::unique_ptr<Tables> tables;  // the last run's, ready to render with
 };
 
 // Called after every run, warm-up or measured; index counts from 1 within each kind.
@@ -24,7 +24,7 @@ using PrecomputeRunCallback =
     std::function<void(const BenchResult& result, const RunResult& run, bool warming, int index)>;
 
 // One measurement per option, in the order given. on_run may be empty.
-std::vector<PrecomputeMeasurement> MeasurePrecompute(const vk::Context& context,
+std::vector<PrecomputeMeasurement> MeasurePrecompute(const Device& device,
                                                      const AtmosphereParameters& atmosphere,
                                                      const std::vector<PrecomputeOptions>& options,
                                                      int warmup, int runs,

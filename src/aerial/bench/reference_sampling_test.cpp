@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "aerial/render/frame_uniforms.h"
 #include "aerial/scene/camera.h"
 
 namespace aerial::bench {

@@ -6,17 +6,17 @@
 
 namespace aerial::bench {
 
-void MeasureVariantFrames(VariantResult& lut4d, const AtmosphereTables& tables4d, VariantResult& lut3d,
-                          const AtmosphereTables& tables3d, const Scene& scene, const BenchPlan& plan,
+void MeasureVariantFrames(VariantResult& lut4d, const Tables& tables4d, VariantResult& lut3d,
+                          const Tables& tables3d, const Scene& scene, const BenchPlan& plan,
                           const std::function<void()>& on_frame) {
-  std::vector<std::unique_ptr<Renderer>> renderers;
+  std::vector<std::unique_ptr<SceneRenderer>> renderers;
   std::vector<FrameSource> order;
-  for (const AtmosphereTables* tables : {&tables4d, &tables3d})
+  for (const Tables* tables : {&tables4d, &tables3d})
     for (AerialMode mode : {AerialMode::kFroxel, AerialMode::kPerPixel}) {
       RenderOptions options{.width = plan.frame_width, .height = plan.frame_height, .mode = mode,
                             .shadows = plan.shadows};
       options.Validate();
-      renderers.push_back(std::make_unique<Renderer>(*tables, scene, options));
+      renderers.push_back(std::make_unique<SceneRenderer>(*tables, scene, options));
       order.push_back({renderers.back().get()});
     }
   auto frames = MeasureFrames(order, scene, plan.frame_warmup, plan.frames, on_frame);

@@ -5,14 +5,14 @@
 
 #include "aerial/bench/bench_plan.h"
 #include "aerial/bench/bench_results.h"
-#include "aerial/precompute/atmosphere_tables.h"
+#include "aerial/tables.h"
 #include "aerial/scene.h"
 
 namespace aerial::bench {
 
 // Fills the froxel_frames and per_pixel_frames of both results, at plan.frame_width x height.
-void MeasureVariantFrames(VariantResult& lut4d, const AtmosphereTables& tables4d, VariantResult& lut3d,
-                          const AtmosphereTables& tables3d, const Scene& scene, const BenchPlan& plan,
+void MeasureVariantFrames(VariantResult& lut4d, const Tables& tables4d, VariantResult& lut3d,
+                          const Tables& tables3d, const Scene& scene, const BenchPlan& plan,
                           const std::function<void()>& on_frame);
 
 }  // namespace aerial::bench

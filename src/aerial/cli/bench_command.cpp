@@ -60,15 +60,15 @@ void RunBenchCommand(const BenchCommandOptions& options) {
   bench::CheckOutputDirectory(options.out);
   bench::BenchPlan plan = options.quick ? bench::BenchPlan::Quick() : bench::BenchPlan::Full();
   plan.shadows = ParseShadows(options.shadows);
-  vk::Context context(vk::ContextCreateInfo{.device_name = options.device, .validation = options.validation});
-  bench::MachineInfo machine{.device = context.device_name(),
+  Device device(DeviceOptions{.device_name = options.device, .validation = options.validation});
+  bench::MachineInfo machine{.device = device.name(),
                              .date = UtcNow(),
                              .command = options.Command(),
                              .version = AERIAL_VERSION,
                              .cores = int(std::thread::hardware_concurrency()),
-                             .validation = context.validation_enabled(),
+                             .validation = device.validation_enabled(),
                              .load_before = LoadAverage()};
-  bench::BenchResults results = bench::RunBench(plan, context, machine, options.quiet);
+  bench::BenchResults results = bench::RunBench(plan, device, machine, options.quiet);
   results.machine.load_after = LoadAverage();
   bench::WriteBenchOutputs(options.out, results);
   std::printf("aerial bench: %s mode, %.0f s; wrote %s\n", plan.quick ? "quick" : "full", results.seconds,

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "aerial/scene/noise.h"
-#include "aerial/scene/presets.h"
+#include "aerial/scene.h"
 #include "aerial/scene/primitives.h"
 #include "aerial/scene/terrain.h"
 

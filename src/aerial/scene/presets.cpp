@@ -1,4 +1,4 @@
-#include "aerial/scene/presets.h"
+#include "aerial/scene.h"
 
 #include <cmath>
 #include <numbers>

@@ -8,7 +8,7 @@
 #include "aerial/core/toml_reader.h"
 #include "aerial/error.h"
 #include "aerial/scene/gltf_loader.h"
-#include "aerial/scene/presets.h"
+#include "aerial/scene.h"
 #include "aerial/scene/scene_limits.h"
 #include "aerial/scene/terrain.h"
 

@@ -2,7 +2,7 @@
 // Scene files: a preset plus changes to its camera and sun and extra glTF meshes, in TOML
 // (examples/scenes/*.toml). Every key is optional:
 //
-//   preset = "noon"                  # the base scene (presets.h); default "noon"
+//   preset = "noon"                  # the base scene (aerial/scene.h); default "noon"
 //   built_in = true                  # the built-in terrain and models; false: only the meshes
 //                                    # below, on the bare planet (the preset's camera and sun stay)
 //   [camera]

@@ -7,7 +7,7 @@
 #include <optional>
 #include <random>
 
-#include "aerial/scene/presets.h"
+#include "aerial/scene.h"
 #include "aerial/scene/terrain.h"
 
 namespace aerial::terrain {

@@ -52,13 +52,6 @@ vk::ContextCreateInfo WithWindowSupport(const DeviceOptions& device) {
   return info;
 }
 
-// The window's device handed to aerial, as an engine hands over its own (aerial/device.h).
-DeviceHandoff HandoffOf(const vk::Context& context) {
-  return {.instance = *context.instance(),
-          .physical_device = *context.physical_device(),
-          .device = *context.device(),
-          .queue_family = context.queue_family()};
-}
 
 const char* PassName(DebugView view) {
   return view == DebugView::kFinal ? "present" : "debug view";
@@ -156,7 +149,7 @@ Viewer::Impl::Impl(ViewerOptions options)
       wanted_(options_.atmosphere),
       context_info_(WithWindowSupport(options_.device)),
       context_(context_info_),
-      device_(HandoffOf(context_)),
+      device_(context_.Handoff()),  // as an engine hands over its own (aerial/device.h)
       ring_(context_, kFramesInFlight),
       recorded_(kFramesInFlight),
       stack_(FirstStack(device_, options_, [this] { ForgetRecordedFrames(); })),

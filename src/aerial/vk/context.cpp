@@ -221,6 +221,10 @@ void Context::CreateSubmitObjects() {
   submit_done_ = ::vk::raii::Fence(device_, ::vk::FenceCreateInfo{});
 }
 
+DeviceHandoff Context::Handoff() const {
+  return {.instance = *instance_, .physical_device = *physical_device_, .device = *device_, .queue_family = queue_family_};
+}
+
 std::string Context::device_name() const {
   return physical_device_.getProperties().deviceName.data();
 }

@@ -47,6 +47,8 @@ class Context {
   const ::vk::raii::Queue& queue() const { return queue_; }
   uint32_t queue_family() const { return queue_family_; }
   std::string device_name() const;
+  // This context's handles, to hand to aerial::Device (the viewer's window device, a bench's).
+  DeviceHandoff Handoff() const;
   bool validation_enabled() const { return validation_; }
   double timestamp_period_ns() const { return timestamp_period_ns_; }
 

@@ -10,11 +10,6 @@
 namespace aerial::vk {
 namespace {
 
-DeviceHandoff HandlesOf(const Context& owner) {
-  return {.instance = *owner.instance(), .physical_device = *owner.physical_device(),
-          .device = *owner.device(), .queue_family = owner.queue_family()};
-}
-
 // A context on a device it did not make (here another context's, as a client's renderer would
 // hand its own over) works on it and, when it goes, leaves the device and the instance to their
 // owner, which keeps working; the validation layers see nothing wrong on either side.
@@ -22,7 +17,7 @@ TEST(DeviceHandoff, WorksOnTheCallersDeviceAndLeavesItAlive) {
   Context owner({.validation = true});
   const int before = Context::ValidationMessageCount();
   {
-    Context adopted(HandlesOf(owner));
+    Context adopted(owner.Handoff());
     EXPECT_FALSE(adopted.validation_enabled()) << "validation is the caller's instance's";
     EXPECT_EQ(adopted.device_name(), owner.device_name());
     Buffer buffer(adopted, BufferCreateInfo{.size = 4, .usage = ::vk::BufferUsageFlagBits::eTransferDst,
@@ -51,7 +46,7 @@ TEST(DeviceHandoff, NullHandlesAndAWrongQueueFamilyAreRefused) {
     EXPECT_EQ(e.value(), "a null handle");
   }
   Context owner;
-  DeviceHandoff wrong = HandlesOf(owner);
+  DeviceHandoff wrong = owner.Handoff();
   wrong.queue_family = 99;
   try {
     Context adopted(wrong);
