@@ -1,4 +1,4 @@
-// The scene's own surface (src/aerial/bench/scene_surface.h) at the renderer's depth, over every
+// The scene's own surface (aerial/scene_surface.h) at the renderer's depth, over every
 // opaque pixel of the presets' views: the bench's reference lights surfaces where SurfaceAtDepth
 // finds them, so it must find them wherever the renderer draws the terrain or a landmark. When
 // written: none missing in the four views from the ground (landmarks found as meshes on 102
@@ -11,7 +11,7 @@
 #include "aerial/bench/accuracy.h"
 #include "aerial/bench/image_metrics.h"
 #include "aerial/bench/reference_sampling.h"
-#include "aerial/bench/scene_surface.h"
+#include "aerial/scene_surface.h"
 #include "aerial/render/renderer.h"
 #include "aerial/scene.h"
 #include "gpu_fixture.h"
@@ -37,13 +37,13 @@ TEST_F(SceneSurfaceRender, FoundAtTheRenderersDepthAtAlmostEveryOpaquePixel) {
     Renderer renderer(tables, scene, {.width = 320, .height = 180});
     renderer.Render(scene);
     ImageRgbF surface = renderer.ReadSurface();
-    double tolerance = bench::TerrainTolerancePerM(scene.camera, surface.height, renderer.options().terrain_error_px);
+    double tolerance = TerrainTolerancePerM(scene.camera, surface.height, renderer.options().terrain_error_px);
     int opaque = 0, missing = 0, landmark = 0;
     for (int y = 0; y < surface.height; ++y) {
       for (int x = 0; x < surface.width; ++x) {
         if (bench::IsSky(surface, x, y)) continue;
         ++opaque;
-        auto found = bench::SurfaceAtDepth(scene, R, bench::PixelRay(renderer.frame_uniforms(), x, y),
+        auto found = SurfaceAtDepth(scene, R, bench::PixelRay(renderer.frame_uniforms(), x, y),
                                            surface.pixel(x, y)[3], tolerance);
         if (!found) {
           ++missing;

@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "aerial/api/impl.h"
-#include "aerial/image/tone_map.h"
+#include "aerial/image.h"
 #include "aerial/scene.h"
 #include "aerial/viewer/display_passes.h"
 #include "display_target.h"

@@ -3,7 +3,9 @@
 // renderer hands over exactly what it computed and each format decides how to encode it (EXR
 // keeps the floats, PNG tone maps them).
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,6 +42,18 @@ struct ToneMapOptions {
   // so exposure should map the scene's typical radiance to roughly that.
   double exposure = 1.0;
 };
+
+// Linear radiance to 8-bit display values, for PNG previews.
+// Per channel: exposure, then the ACES filmic fit (Narkowicz 2015), then the sRGB OETF
+// (IEC 61966-2-1), rounded to 8 bits. Alpha is coverage, not light: it is only clamped to [0, 1]
+// and scaled. Returns RGBA8, row-major, top row first. Throws Error("image size") on a malformed
+// image and Error("exposure") unless exposure is finite and > 0.
+std::vector<uint8_t> ToneMapToSrgb8(const ImageRgbF& image, const ToneMapOptions& options);
+
+// PNG encoding in memory (stb_image_write), for the caller to write the file as it likes.
+// rgba8: width * height pixels of 4 bytes, row-major, top row first (as ToneMapToSrgb8 returns).
+// Throws Error("image size") if rgba8 has the wrong length, Error("PNG encoding") if stb fails.
+std::vector<std::byte> EncodePng(std::span<const uint8_t> rgba8, int width, int height);
 
 // Image files, in the format the extension names (.exr or .png, any case), written atomically
 // (a temporary file, then a rename): a failed, full-disk or killed write leaves the previous file

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "aerial/bench/font5x7.h"
-#include "aerial/image/png.h"
+#include "aerial/image.h"
 
 namespace aerial::bench {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "aerial/bench/heatmap.h"
-#include "aerial/image/tone_map.h"
+#include "aerial/image.h"
 
 namespace aerial::bench {
 namespace {

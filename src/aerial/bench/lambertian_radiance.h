@@ -21,14 +21,11 @@
 #include <glm/glm.hpp>
 
 #include "aerial/reference/reference.h"
+#include "aerial/scene_surface.h"
 
 namespace aerial::bench {
 
-struct LambertianSurface {
-  glm::dvec3 point{0.0};   // planet frame: the planet's centre at the origin
-  glm::dvec3 normal{0.0};  // unit length
-  Spectrum albedo{};
-};
+using LambertianSurface = SceneSurface;
 
 // sun: unit vector toward the sun; orders and monte_carlo: of the sky irradiance (its std_error
 // is the estimate's).

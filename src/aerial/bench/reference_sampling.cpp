@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "aerial/bench/lambertian_radiance.h"
-#include "aerial/bench/scene_surface.h"
+#include "aerial/scene_surface.h"
 
 namespace aerial::bench {
 namespace {

@@ -10,11 +10,11 @@
 //     facing up.
 //   opaque pixels: L = S + T L_surface over the segment to the surface, the surface lit by the
 //     reference itself (lambertian_radiance.h: sun and tilted-sky irradiance of the same orders, no
-//     shadows) at the point, normal and albedo the scene has there (scene_surface.h). The
+//     shadows) at the point, normal and albedo the scene has there (aerial/scene_surface.h). The
 //     renderer's surface image (SceneRenderer::ReadSurface) only gives the depth and tells sky from
 //     geometry: its lighting is what is checked, with the aerial perspective.
 // Pixels that see the sun disc are left out (the disc is not a scattering quantity), and opaque
-// pixels where the scene has no surface at the renderer's depth (scene_surface.h).
+// pixels where the scene has no surface at the renderer's depth (aerial/scene_surface.h).
 #include <array>
 #include <functional>
 #include <glm/glm.hpp>
@@ -45,7 +45,7 @@ struct ReferenceSampling {
   int orders = 4;  // or reference::kAllOrders
   reference::MonteCarloOptions monte_carlo;
   // The renderer's terrain error bound (RenderOptions::terrain_error_px): how far its terrain may
-  // lie from the height function's surface (scene_surface.h).
+  // lie from the height function's surface (aerial/scene_surface.h).
   double terrain_error_px = 0.0;
 };
 

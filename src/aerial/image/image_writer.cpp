@@ -8,7 +8,7 @@
 #include "aerial/core/atomic_file.h"
 #include "aerial/error.h"
 #include "aerial/image/exr.h"
-#include "aerial/image/png.h"
+#include "aerial/image.h"
 
 namespace aerial {
 

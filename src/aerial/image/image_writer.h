@@ -6,7 +6,6 @@
 #include <string>
 
 #include "aerial/image.h"
-#include "aerial/image/tone_map.h"
 
 // WriteImage and CheckImageOutputPath, the public calls, are declared in aerial/image.h.
 

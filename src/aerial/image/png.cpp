@@ -1,4 +1,3 @@
-#include "aerial/image/png.h"
 
 #include <string>
 

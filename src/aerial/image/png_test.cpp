@@ -1,4 +1,4 @@
-#include "aerial/image/png.h"
+#include "aerial/image.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,6 @@
 #include "aerial/error.h"
 #include "aerial/image/image_writer.h"
 #include "aerial/image/scratch_dir_test_util.h"
-#include "aerial/image/tone_map.h"
 
 // The decoder is only needed here; STATIC keeps its symbols out of every other object.
 #define STB_IMAGE_IMPLEMENTATION

@@ -1,4 +1,4 @@
-#include "aerial/bench/scene_surface.h"
+#include "aerial/scene_surface.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include "aerial/scene/mesh_ray_cast.h"
 #include "aerial/scene/terrain.h"
 
-namespace aerial::bench {
+namespace aerial {
 namespace {
 
 constexpr double kR = 6360e3;
@@ -68,4 +68,4 @@ TEST(SceneSurface, TerrainWithinTheTolerance) {
 }
 
 }  // namespace
-}  // namespace aerial::bench
+}  // namespace aerial

@@ -1,5 +1,6 @@
 #pragma once
-// The CPU twins of what the shaders compute from the FrameBlock (aerial/shader_abi/frame_block.h).
+// The CPU twins of what the shaders compute from the FrameBlock (aerial/shader_abi/frame_block.h):
+// the ray through a pixel, for a check that traces the pixels a renderer drew.
 #include <array>
 
 #include <glm/glm.hpp>

@@ -1,9 +1,9 @@
 #pragma once
-// The surface the scene itself has where the renderer drew opaque geometry, for the reference's
-// own lighting of it (reference_sampling.h): the renderer's depth along the pixel's ray says where
-// (geometry), the scene's description says what is there (point, normal, albedo), never the
-// renderer's lighting.
-//  - Meshes: the nearest hit of a CPU ray cast (scene/mesh_ray_cast.h), taken where it is at the
+// The surface the scene itself has where a renderer drew opaque geometry, for checking that
+// renderer's lighting against a reference (aerial bench: src/aerial/bench/reference_sampling.h,
+// with aerial/reference/): the renderer's depth along the pixel's ray says where (geometry), the
+// scene's description says what is there (point, normal, albedo), never the renderer's lighting.
+//  - Meshes: the nearest hit of a CPU ray cast (src/aerial/scene/mesh_ray_cast.h), taken where it is at the
 //    renderer's depth d within kMeshDepthTolerance d + 1 cm. Both draw the same float triangles;
 //    the depth is interpolated in float (~1e-7 relative) and the ray rebuilt from the frame's float
 //    matrices (~1e-6 rad), which moves the hit along a face seen at a grazing angle g by
@@ -21,10 +21,17 @@
 #include <glm/glm.hpp>
 #include <optional>
 
-#include "aerial/bench/lambertian_radiance.h"
+#include "aerial/atmosphere.h"
 #include "aerial/scene.h"
 
-namespace aerial::bench {
+namespace aerial {
+
+// A point of the scene's surface with what lights it: where, which way it faces, what it reflects.
+struct SceneSurface {
+  glm::dvec3 point{0.0};   // planet frame: the planet's centre at the origin
+  glm::dvec3 normal{0.0};  // unit length
+  Spectrum albedo{};       // Lambertian
+};
 
 inline constexpr double kMeshDepthTolerance = 1e-4;
 
@@ -34,7 +41,7 @@ double TerrainTolerancePerM(const Camera& camera, int height_px, double terrain_
 
 // The surface at depth_m along the unit ray (world frame) from scene.camera, its point in the
 // planet frame (centre at the origin) for lighting.
-std::optional<LambertianSurface> SurfaceAtDepth(const Scene& scene, double planet_radius_m, const glm::dvec3& ray,
+std::optional<SceneSurface> SurfaceAtDepth(const Scene& scene, double planet_radius_m, const glm::dvec3& ray,
                                                 double depth_m, double terrain_tolerance_per_m);
 
-}  // namespace aerial::bench
+}  // namespace aerial

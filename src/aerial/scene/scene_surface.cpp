@@ -1,4 +1,4 @@
-#include "aerial/bench/scene_surface.h"
+#include "aerial/scene_surface.h"
 
 #include <cmath>
 
@@ -7,7 +7,7 @@
 #include "aerial/terrain/lod_selection.h"
 #include "aerial/terrain/terrain_chunk.h"
 
-namespace aerial::bench {
+namespace aerial {
 namespace {
 
 Spectrum ToSpectrum(const glm::dvec3& v) { return {v.r, v.g, v.b}; }
@@ -20,13 +20,13 @@ double TerrainTolerancePerM(const Camera& camera, int height_px, double terrain_
   return 1.25 * view.max_error_px / view.pixels_per_radian;
 }
 
-std::optional<LambertianSurface> SurfaceAtDepth(const Scene& scene, double planet_radius_m, const glm::dvec3& ray,
+std::optional<SceneSurface> SurfaceAtDepth(const Scene& scene, double planet_radius_m, const glm::dvec3& ray,
                                                 double depth_m, double terrain_tolerance_per_m) {
   const glm::dvec3 camera = scene.camera.position, planet_offset(0.0, 0.0, planet_radius_m);
   std::optional<MeshHit> hit = CastRay(scene.meshes, camera, ray);
   double mesh_tolerance = kMeshDepthTolerance * depth_m + 0.01;
   if (hit && std::fabs(hit->distance_m - depth_m) <= mesh_tolerance)
-    return LambertianSurface{.point = camera + hit->distance_m * ray + planet_offset,
+    return SceneSurface{.point = camera + hit->distance_m * ray + planet_offset,
                              .normal = hit->normal,
                              .albedo = ToSpectrum(hit->albedo)};
   if (!scene.terrain || (hit && hit->distance_m < depth_m)) return std::nullopt;
@@ -35,9 +35,9 @@ std::optional<LambertianSurface> SurfaceAtDepth(const Scene& scene, double plane
   if (std::fabs(HeightAboveTerrainM(point, planet_radius_m)) > terrain_tolerance) return std::nullopt;
   glm::dvec3 sea_level = SeaLevelPoint(point, planet_radius_m);
   TerrainSurface surface = TerrainSurfaceAt(sea_level.x, sea_level.y, planet_radius_m);
-  return LambertianSurface{.point = surface.point + planet_offset,
+  return SceneSurface{.point = surface.point + planet_offset,
                            .normal = surface.normal,
                            .albedo = ToSpectrum(surface.albedo)};
 }
 
-}  // namespace aerial::bench
+}  // namespace aerial
