@@ -3,7 +3,6 @@
 // resolution knobs, the cache, the Vulkan device.
 #include <filesystem>
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
