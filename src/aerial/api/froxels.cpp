@@ -49,6 +49,8 @@ const FroxelGrid& Froxels::grid() const { return impl_->volume.grid(); }
 UniformBlock Froxels::frame_block() const { return {impl_->frame_block.handle(), impl_->frame_block.size()}; }
 SampledImage Froxels::rayleigh() const { return ToSampledImage({&impl_->volume.rayleigh(), *impl_->sampler}); }
 SampledImage Froxels::mie() const { return ToSampledImage({&impl_->volume.mie(), *impl_->sampler}); }
-SampledImage Froxels::transmittance() const { return ToSampledImage({&impl_->volume.transmittance(), *impl_->sampler}); }
+SampledImage Froxels::transmittance() const {
+  return ToSampledImage({&impl_->volume.transmittance(), *impl_->sampler});
+}
 
 }  // namespace aerial

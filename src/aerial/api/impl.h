@@ -44,5 +44,7 @@ struct SceneRenderer::Impl {
 
 // The public form of an image of aerial's, with the sampler shaders read it through.
 SampledImage ToSampledImage(const vk::SampledImageSlot& sampled);
+// An image (a table, a frame's) with the tables' sampler: linear, clamped to the edge.
+SampledImage SampledLikeTheTables(const AtmosphereTables& tables, const vk::Image& image);
 
 }  // namespace aerial

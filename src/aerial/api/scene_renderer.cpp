@@ -3,15 +3,6 @@
 
 namespace aerial {
 
-namespace {
-
-// An image of the renderer's with the tables' sampler (linear, clamped to the edge).
-SampledImage Sampled(const Renderer& renderer, const vk::Image& image) {
-  return ToSampledImage(renderer.tables().Sampled(image));
-}
-
-}  // namespace
-
 SceneRenderer::SceneRenderer(const Tables& tables, const Scene& scene, const RenderOptions& options)
     : impl_(new Impl{tables, Renderer(tables.impl().tables(), scene, options)}) {}
 SceneRenderer::~SceneRenderer() = default;
@@ -30,16 +21,24 @@ std::vector<PassTime> SceneRenderer::PassTimes(uint32_t slot) const { return imp
 ImageRgbF SceneRenderer::ReadOutput() const { return impl_->renderer.ReadOutput(); }
 void SceneRenderer::SetTerrainErrorPx(double error_px) { impl_->renderer.SetTerrainErrorPx(error_px); }
 
-SampledImage SceneRenderer::output() const { return Sampled(impl_->renderer, impl_->renderer.output_image()); }
-SampledImage SceneRenderer::depth() const { return Sampled(impl_->renderer, impl_->renderer.depth_image()); }
+SampledImage SceneRenderer::output() const {
+  return SampledLikeTheTables(impl_->renderer.tables(), impl_->renderer.output_image());
+}
+SampledImage SceneRenderer::depth() const {
+  return SampledLikeTheTables(impl_->renderer.tables(), impl_->renderer.depth_image());
+}
 UniformBlock SceneRenderer::frame_block(uint32_t slot) const {
   const vk::Buffer& block = impl_->renderer.frame_buffer(slot);
   return {block.handle(), block.size()};
 }
-SampledImage SceneRenderer::froxel_rayleigh() const { return Sampled(impl_->renderer, impl_->renderer.froxels().rayleigh()); }
-SampledImage SceneRenderer::froxel_mie() const { return Sampled(impl_->renderer, impl_->renderer.froxels().mie()); }
+SampledImage SceneRenderer::froxel_rayleigh() const {
+  return SampledLikeTheTables(impl_->renderer.tables(), impl_->renderer.froxels().rayleigh());
+}
+SampledImage SceneRenderer::froxel_mie() const {
+  return SampledLikeTheTables(impl_->renderer.tables(), impl_->renderer.froxels().mie());
+}
 SampledImage SceneRenderer::froxel_transmittance() const {
-  return Sampled(impl_->renderer, impl_->renderer.froxels().transmittance());
+  return SampledLikeTheTables(impl_->renderer.tables(), impl_->renderer.froxels().transmittance());
 }
 
 ImageRgbF SceneRenderer::ReadSurface(SurfaceLight light) const { return impl_->renderer.ReadSurface(light); }

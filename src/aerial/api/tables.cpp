@@ -15,11 +15,24 @@ SampledImage ToSampledImage(const vk::SampledImageSlot& sampled) {
           .extent = {extent.width, extent.height, extent.depth}};
 }
 
+SampledImage SampledLikeTheTables(const AtmosphereTables& tables, const vk::Image& image) {
+  return ToSampledImage(tables.Sampled(image));
+}
+
 namespace {
 
 // One of the tables with the tables' sampler.
 SampledImage Public(const AtmosphereTables& tables, const vk::Image& (AtmosphereTables::*table)() const) {
-  return ToSampledImage(tables.Sampled((tables.*table)()));
+  return SampledLikeTheTables(tables, (tables.*table)());
+}
+
+// Tables for these parameters on the device, filled with texels read back before (a file, a
+// snapshot); Upload checks each table's name and size.
+LoadedTables Uploaded(const Device& device, const AtmosphereParameters& atmosphere,
+                      const PrecomputeOptions& options, const TableCache& texels) {
+  LoadedTables loaded{.tables = std::make_unique<AtmosphereTables>(*device.impl().context, atmosphere, options)};
+  loaded.tables->Upload(texels);
+  return loaded;
 }
 
 }  // namespace
@@ -46,10 +59,10 @@ Tables Tables::Load(const Device& device, const AtmosphereParameters& atmosphere
                     const PrecomputeOptions& options, const std::filesystem::path& file) {
   Validate(atmosphere);
   options.Validate();
-  LoadedTables loaded{.tables = std::make_unique<AtmosphereTables>(*device.impl().context, atmosphere, options),
-                      .from_cache = true,
-                      .cache_file = file};
-  loaded.tables->Upload(ReadTableCache(file, loaded.tables->cache_key()));
+  LoadedTables loaded =
+      Uploaded(device, atmosphere, options, ReadTableCache(file, MakeTableCacheKey(atmosphere, options)));
+  loaded.from_cache = true;
+  loaded.cache_file = file;
   return Tables(std::make_unique<Impl>(Impl{std::move(loaded)}));
 }
 
@@ -62,10 +75,7 @@ TableSnapshot Tables::Snapshot() const {
 
 Tables Tables::FromSnapshot(const Device& device, const TableSnapshot& snapshot) {
   const TableSnapshot::Impl& taken = snapshot.impl();
-  LoadedTables loaded{.tables = std::make_unique<AtmosphereTables>(*device.impl().context, taken.atmosphere,
-                                                                   taken.options)};
-  loaded.tables->Upload(taken.texels);
-  return Tables(std::make_unique<Impl>(Impl{std::move(loaded)}));
+  return Tables(std::make_unique<Impl>(Impl{Uploaded(device, taken.atmosphere, taken.options, taken.texels)}));
 }
 
 TableSnapshot::TableSnapshot(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}

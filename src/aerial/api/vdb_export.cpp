@@ -15,8 +15,8 @@ void CheckVdbExport(const std::filesystem::path& out, const Scene& scene, const 
                     const FroxelGrid& grid, const VdbExportOptions& options) {
   CheckVdbOutputPath(out);
   if (options.world_grid_m) {
-    FroxelPlacement placement(CaptureFrameUniforms(scene, atmosphere.bottom_radius_m, grid, SizeOf(options)), grid);
-    CheckWorldGrid(*options.world_grid_m, placement);
+    FrameUniforms frame = CaptureFrameUniforms(scene, atmosphere.bottom_radius_m, grid, SizeOf(options));
+    CheckWorldGrid(*options.world_grid_m, FroxelPlacement(frame, grid));
   }
 }
 
