@@ -41,7 +41,8 @@ const char* kTwilight = "twilight (95-108)";
 // arctangent mapping, 4 orders + the series' tail, the density grid's zenith cells quadratic
 // toward the horizon above and below it, the ground irradiance of order 1 corrected by single
 // scattering integrated along an 8x8 grid, the irradiance read exponentially in r), radiance to a
-// point marched with the multiple density table R16 MU64 MU_S32 NU4.
+// point marched with the multiple density table R16 MU64 MU_S32 NU4, and the sky's single
+// scattering corrected where the sun is low (GetSingleScatteringCorrection, sky_lookup.glsl).
 struct RegionBound {
   SkyQuantity quantity;
   const char* band;
@@ -70,22 +71,22 @@ const RegionBound kBounds[] = {
     {SkyQuantity::kSkyRadiance, kAfternoon, 50, 30, 0.028, 0.012482, kNone, 0},  // max 2.496%, median 1.22%: no target, pinned
     {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 24, 0.018, 0.007823, kNone, 0},  // max 1.565%, median 0.39%: no target, pinned
     {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.512%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.13, 0.056593, kNone, 0},  // max 11.319%: MISSED, target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.088, 0.039682, kNone, 0},  // max 7.936%: MISSED, target 3%
     {SkyQuantity::kRadianceToPoint, kLowSun, 0, 90, 0.13, 0.057699, kNone, 0},  // max 11.540%: MISSED, target 3%
     {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 2.461%: target 3%
     {SkyQuantity::kSkyRadiance, kLowSun, 10, 150, 0.18, 0.080153, kNone, 0},  // max 16.031%: MISSED, target 3%
     {SkyQuantity::kRadianceToPoint, kLowSun, 10, 140, 0.12, 0.051528, kNone, 0},  // max 10.306%: MISSED, target 3%
     {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 2.523%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.09, 0.04056, kNone, 0},  // max 8.112%: MISSED, target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.034, 0.015241, kNone, 0},  // max 3.048%: MISSED, target 3%
     {SkyQuantity::kRadianceToPoint, kLowSun, 50, 120, 0.03, 0, kNone, 0},  // max 1.372%: target 3%
     {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 5.764%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.08, 0, kNone, 0},  // max 5.888%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.08, 0, kNone, 0},  // max 6.216%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 1.135%: target 8%
     {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.12, 0.051277, kNone, 0},  // max 10.255%: MISSED, target 8%
     {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.16, 0.068357, kNone, 0},  // max 13.671%: MISSED, target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 10, 0, kNone, 0, kNone, 0},  // no value above the floor
     {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 1.593%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 4.022%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 4.639%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 50, 0, kNone, 0, kNone, 0},  // no value above the floor
 };
 

@@ -1,6 +1,6 @@
 // aerial_bench_render: the cost of a whole frame and of its parts, in one process.
 //
-// Renderers of the same scene (preset noon) draw frames in turn after warm-up frames
+// Renderers of the same scene (a preset, noon by default) draw frames in turn after warm-up frames
 // (aerial/bench/frame_measurement.h), the camera moving a little every frame so that each frame
 // rebuilds its froxel volume and sky-view table: the frame as `aerial render` and the viewer draw
 // it, the same with a still camera, and with a still camera under a moving sun; all three again
@@ -45,7 +45,7 @@ constexpr double kFrameGoalMs = 25.0;
 
 struct BenchOptions {
   int width = 1280, height = 720, frames = 9, warmup = 2;
-  std::string lut = "4d", froxels = "32x32x32", json_file;
+  std::string lut = "4d", froxels = "32x32x32", preset = "noon", json_file;
   double terrain_error_px = aerial::kDefaultTerrainErrorPx;
 };
 
@@ -81,7 +81,7 @@ void Bench(const BenchOptions& cli) {
   aerial::vk::Context context;
   aerial::Device device(context.Handoff());
   aerial::Tables tables = aerial::Tables::LoadOrPrecompute(device, atmosphere, precompute);
-  aerial::Scene scene = aerial::BuildPreset("noon", atmosphere.bottom_radius_m);
+  aerial::Scene scene = aerial::BuildPreset(cli.preset, atmosphere.bottom_radius_m);
   using aerial::RenderOptions;
   using aerial::bench::Motion;
   auto same = [](RenderOptions&) {};
@@ -125,15 +125,15 @@ void Bench(const BenchOptions& cli) {
   const Configuration& frame = configurations[0];
   const aerial::FrameInfo& terrain = renderers[0]->frame_info();
 
-  std::printf("device: %s\n%dx%d, froxels %s, %s tables, preset noon, terrain error <= %.2f px "
+  std::printf("device: %s\n%dx%d, froxels %s, %s tables, preset %s, terrain error <= %.2f px "
               "(%zu chunks, %zu triangles)\n",
               context.device_name().c_str(), cli.width, cli.height, base.froxels.Describe().c_str(),
-              cli.lut.c_str(), base.terrain_error_px, terrain.chunks, terrain.triangles);
+              cli.lut.c_str(), cli.preset.c_str(), base.terrain_error_px, terrain.chunks, terrain.triangles);
   std::printf("frames: %d measured per configuration (interleaved) after %d warm-up\n", cli.frames, cli.warmup);
   std::printf("\n=== whole frame, GPU (sum of the passes' timestamps) ===\n  %-34s %9s %9s %9s\n", "",
               "median ms", "min ms", "max ms");
   nlohmann::json doc = {{"device", context.device_name()}, {"width", cli.width}, {"height", cli.height},
-                        {"froxels", cli.froxels}, {"lut", cli.lut}, {"preset", "noon"},
+                        {"froxels", cli.froxels}, {"lut", cli.lut}, {"preset", cli.preset},
                         {"frames", cli.frames}, {"warmup", cli.warmup},
                         {"terrain", {{"error_px", base.terrain_error_px}, {"chunks", terrain.chunks},
                                      {"triangles", terrain.triangles}}}};
@@ -216,6 +216,7 @@ int main(int argc, char** argv) {
   app.add_option("--warmup", cli.warmup, "Unmeasured frames per configuration first")->check(CLI::Range(0, 1000));
   app.add_option("--lut", cli.lut, "Scattering table variant")->check(CLI::IsMember({"4d", "3d"}));
   app.add_option("--froxels", cli.froxels, "Froxel grid WxHxD");
+  app.add_option("--preset", cli.preset, "Built-in scene")->check(CLI::IsMember(aerial::PresetNames()));
   app.add_option("--terrain-error-px", cli.terrain_error_px, "Terrain level of detail's error bound (px)");
   app.add_option("--json", cli.json_file, "Also write the results as JSON to this file");
   return aerial::bench::ParseAndRun(app, argc, argv, "aerial_bench_render", [&] { Bench(cli); });

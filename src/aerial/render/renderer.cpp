@@ -91,6 +91,9 @@ vk::GraphicsPipelineCreateInfo SkyPipeline(AerialMode mode) {
 // The sky-view table's size (Hillaire 2020 uses 192x108): azimuth over [0, pi], zenith split at
 // the horizon (54 rows each side).
 constexpr std::array<int, 2> kSkyViewSize = {192, 108};
+// sky_view.comp's workgroup: its rows never straddle the horizon (see the shader).
+constexpr ::vk::Extent3D kSkyViewGroup = {16, 6, 1};
+static_assert(kSkyViewSize[0] % kSkyViewGroup.width == 0 && kSkyViewSize[1] / 2 % kSkyViewGroup.height == 0);
 
 vk::ImageCreateInfo SkyViewImage() {
   return {.extent = {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}};
@@ -270,7 +273,7 @@ void Renderer::RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& fra
                       tables_.Sampled(tables_.irradiance()),
                       vk::StorageImageSlot{&sky_rayleigh_}, vk::StorageImageSlot{&sky_mie_},
                       vk::StorageImageSlot{&sky_background_}},
-                     {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}, {8, 8, 1},
+                     {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}, kSkyViewGroup,
                      kSkyViewSize.data());
 }
 
