@@ -113,6 +113,7 @@ void GetSingleScatteringCorrection(sampler2D transmittance_texture, ivec4 size, 
   mie *= sun * atmosphere.mie_scattering.rgb;
 }
 
+// Clamped at zero: in the Earth's shadow the table's value and the correction nearly cancel.
 void AddSingleScatteringCorrection(vec3 rayleigh, vec3 mie, inout Inscatter sky) {
   sky.rayleigh = max(sky.rayleigh + rayleigh, vec3(0.0));
   sky.mie = max(sky.mie + mie, vec3(0.0));
@@ -121,8 +122,8 @@ void AddSingleScatteringCorrection(vec3 rayleigh, vec3 mie, inout Inscatter sky)
 // S(x, v) as the scattering tables hold it: the Rayleigh and Mie inscatter (without phase) along
 // the whole view ray (r, mu), to the ground or the top of the atmosphere, and its transmittance.
 Inscatter GetSkyInscatterFromTables(sampler2D transmittance_texture, sampler3D rayleigh_texture,
-                          sampler3D mie_texture, sampler3D multiple_texture, float r, float mu,
-                          float mu_s, float nu) {
+                                    sampler3D mie_texture, sampler3D multiple_texture, float r,
+                                    float mu, float mu_s, float nu) {
   bool ray_r_mu_intersects_ground = RayIntersectsGround(r, mu);
   Inscatter result;
   result.rayleigh = GetRayleighScattering(rayleigh_texture, multiple_texture, r, mu, mu_s, nu,

@@ -18,7 +18,7 @@ constexpr int kFileVersion = 2;
 constexpr double kFloorFraction = 1e-4;
 // The reference's noise goal per compared value, and how far the path count may grow to meet it.
 constexpr double kTargetRelativeStdError = 0.01;
-constexpr int kMaxPathsFactor = 4;
+constexpr int kMaxPathsFactor = 16;
 
 // One reference query: its quantity and view.
 struct Query {
