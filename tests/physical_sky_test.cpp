@@ -71,22 +71,22 @@ const RegionBound kBounds[] = {
     {SkyQuantity::kSkyRadiance, kAfternoon, 50, 30, 0.028, 0.012482, kNone, 0},  // max 2.496%, median 1.22%: no target, pinned
     {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 24, 0.018, 0.007823, kNone, 0},  // max 1.565%, median 0.39%: no target, pinned
     {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.512%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.088, 0.039682, kNone, 0},  // max 7.936%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 90, 0.13, 0.057699, kNone, 0},  // max 11.540%: MISSED, target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 2.461%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 10, 150, 0.18, 0.080153, kNone, 0},  // max 16.031%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 140, 0.12, 0.051528, kNone, 0},  // max 10.306%: MISSED, target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.064, 0.02904, kNone, 0},  // max 5.808%: MISSED, target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 90, 0.114, 0.05176, kNone, 0},  // max 10.354%: MISSED, target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 1.929%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 10, 150, 0.089, 0.04024, kNone, 0},  // max 8.050%: MISSED, target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 140, 0.062, 0.02789, kNone, 0},  // max 5.578%: MISSED, target 3%
     {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 2.523%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.034, 0.015241, kNone, 0},  // max 3.048%: MISSED, target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.034, 0.01524, kNone, 0},  // max 3.048%: MISSED, target 3%
     {SkyQuantity::kRadianceToPoint, kLowSun, 50, 120, 0.03, 0, kNone, 0},  // max 1.372%: target 3%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 5.764%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.08, 0, kNone, 0},  // max 6.216%: target 8%
-    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 1.135%: target 8%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.12, 0.051277, kNone, 0},  // max 10.255%: MISSED, target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.16, 0.068357, kNone, 0},  // max 13.671%: MISSED, target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 1.182%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.095, 0.04283, kNone, 0},  // max 8.568%: MISSED, target 8%
+    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 0.370%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 3.208%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.162, 0.07319, kNone, 0},  // max 14.638%: MISSED, target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 10, 0, kNone, 0, kNone, 0},  // no value above the floor
     {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 1.593%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 4.639%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 5.010%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 50, 0, kNone, 0, kNone, 0},  // no value above the floor
 };
 
