@@ -51,7 +51,7 @@ TEST(ResourceLimits, TablesBeyondTheTexelCapsFailBeforeAnyWork) {
 TEST(ResourceLimits, OverTheDefaultBudgetFailsBeforeAnyWork) {
   ExpectRejected("render --width 16384 --height 16384 --out /tmp/aerial-budget-test.png",
                  {"--width/--height = 16384x16384 is invalid",
-                  "--width/--height 16384x16384: render targets, read-back and encoded image 21504.9 MiB",
+                  "--width/--height 16384x16384: render targets, read-back and encoded image 21505.0 MiB",
                   "> budget 2048.0 MiB (the default"});
   EXPECT_FALSE(fs::exists("/tmp/aerial-budget-test.png"));
   ExpectRejected("export-vdb --froxels 256x256x256 --out /tmp/aerial-budget-test.vdb",

@@ -56,8 +56,6 @@ TEST_F(ViewerToneMap, GpuMatchesCpuBeforeRounding) {
   vk::Context& context = SharedContext();
   ImageRgbF ramp = Ramp(1.0);
   vk::Image input = Upload(ramp);
-  // The present pass reads images as the public API hands them out (the pass's own sampler).
-  SampledImage sampled_input = ToSampledImage({&input, VK_NULL_HANDLE});
   vk::Image output(context, {.extent = {kRampSize, 1, 1}});
   ::vk::raii::Sampler sampler = vk::CreateLinearClampSampler(context);
   vk::ComputePipeline pipeline(context, "test/tone_map.comp", {{"radiance_image", vk::kSampled}, {"display_values", vk::kStorageImage}});

@@ -47,18 +47,29 @@ struct SingleScatteringSuns {
   float mu_s[SINGLE_SCATTERING_SUNS], nu[SINGLE_SCATTERING_SUNS], weight[SINGLE_SCATTERING_SUNS];
 };
 
+// The mu_s texels that the table's read at mu_s blends: (x) their mu_s, (y) the upper one's weight.
+vec3 GetScatteringMuSBlend(ivec4 size, float mu_s) {
+  float mu_s_size = float(size.z);
+  float x = clamp(GetScatteringUMuS(size, mu_s) * mu_s_size - 0.5, 0.0, mu_s_size - 1.0);
+  float i0 = min(floor(x), mu_s_size - 2.0);
+  return vec3(GetMuSFromScatteringUMuS(size, (i0 + 0.5) / mu_s_size),
+              GetMuSFromScatteringUMuS(size, (i0 + 1.5) / mu_s_size), x - i0);
+}
+
+// Whether the sky's single scattering is corrected with the sun at mu_s (the same for every ray
+// of a camera).
+bool SingleScatteringCorrectionApplies(ivec4 size, float mu_s) {
+  return size.w > 1 && GetScatteringMuSBlend(size, mu_s).x <= SINGLE_SCATTERING_CORRECTION_MU_S;
+}
+
 // The query's sun (weight 1) and the texels' suns that the table's read blends (minus their
 // weights); false where the correction is not needed.
 bool GetSingleScatteringSuns(ivec4 size, float mu, float mu_s, float nu,
                              out SingleScatteringSuns suns) {
-  if (size.w == 1) return false;
-  float mu_s_size = float(size.z);
-  float x = clamp(GetScatteringUMuS(size, mu_s) * mu_s_size - 0.5, 0.0, mu_s_size - 1.0);
-  float i0 = min(floor(x), mu_s_size - 2.0);
-  vec2 node_mu_s = vec2(GetMuSFromScatteringUMuS(size, (i0 + 0.5) / mu_s_size),
-                        GetMuSFromScatteringUMuS(size, (i0 + 1.5) / mu_s_size));
-  if (node_mu_s.x > SINGLE_SCATTERING_CORRECTION_MU_S) return false;
-  vec2 mu_s_weight = vec2(1.0 - (x - i0), x - i0);
+  if (!SingleScatteringCorrectionApplies(size, mu_s)) return false;
+  vec3 mu_s_blend = GetScatteringMuSBlend(size, mu_s);
+  vec2 node_mu_s = mu_s_blend.xy;
+  vec2 mu_s_weight = vec2(1.0 - mu_s_blend.z, mu_s_blend.z);
   vec2 nu_blend = GetNominalNuBlend(size, vec4((nu + 1.0) / 2.0, 0.0, 0.0, 0.0));
   suns.mu_s[0] = mu_s;
   suns.nu[0] = nu;

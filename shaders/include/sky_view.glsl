@@ -58,4 +58,66 @@ void GetSkyViewFrame(out vec3 up, out vec3 toward_sun, out vec3 side) {
   side = cross(up, toward_sun);
 }
 
+// A view ray of the table: through texel `texel` of a table of `size`, in world space, with its
+// (r, mu, mu_s, nu) at the camera.
+struct SkyViewRay {
+  vec3 direction;
+  float r, mu, mu_s, nu;
+};
+
+SkyViewRay GetSkyViewRay(ivec2 texel, ivec2 size) {
+  SkyViewRay ray;
+  ray.r = length(frame.camera_planet_position.xyz);
+  vec2 angles = GetSkyViewDirection(ray.r, (vec2(texel) + 0.5) / vec2(size), size);
+  vec3 up, toward_sun, side;
+  GetSkyViewFrame(up, toward_sun, side);
+  float sin_theta = sin(angles.y);
+  ray.direction = up * cos(angles.y) +
+                  sin_theta * (toward_sun * angles.x + side * sqrt(max(1.0 - angles.x * angles.x, 0.0)));
+  ray.mu = dot(up, ray.direction);
+  ray.mu_s = dot(up, frame.sun_direction.xyz);
+  ray.nu = dot(ray.direction, frame.sun_direction.xyz);
+  return ray;
+}
+
+// ---- The lattice of the low sun's single scattering correction (sky_view_correction.comp) ----
+// Nodes every 4 texels in azimuth and 3 in zenith, each half of the zenith axis (above and below
+// the horizon, where the correction jumps with the ray's end) on its own nodes, and the last
+// texel of each axis or half a node too, so that texels only interpolate between nodes.
+const ivec2 SKY_VIEW_LATTICE_SPACING = ivec2(4, 3);
+
+// Along an axis of n texels: the node count, and the texel of node i.
+int GetLatticeNodeCount(int n, int spacing) { return (n - 2) / spacing + 2; }
+int GetLatticeNodeTexel(int i, int n, int spacing) { return min(i * spacing, n - 1); }
+
+// The node at or below texel x, and the weight of the one after it.
+void GetLatticeCell(int x, int n, int spacing, out int i, out float t) {
+  i = min(x / spacing, GetLatticeNodeCount(n, spacing) - 2);
+  int x0 = GetLatticeNodeTexel(i, n, spacing);
+  t = float(x - x0) / float(GetLatticeNodeTexel(i + 1, n, spacing) - x0);
+}
+
+ivec2 GetSkyViewLatticeSize(ivec2 size) {
+  return ivec2(GetLatticeNodeCount(size.x, SKY_VIEW_LATTICE_SPACING.x),
+               2 * GetLatticeNodeCount(size.y / 2, SKY_VIEW_LATTICE_SPACING.y));
+}
+
+ivec2 GetSkyViewLatticeTexel(ivec2 node, ivec2 size) {
+  int half_rows = size.y / 2;
+  int half_nodes = GetLatticeNodeCount(half_rows, SKY_VIEW_LATTICE_SPACING.y);
+  int half_index = node.y / half_nodes;
+  return ivec2(GetLatticeNodeTexel(node.x, size.x, SKY_VIEW_LATTICE_SPACING.x),
+               half_index * half_rows +
+                   GetLatticeNodeTexel(node.y - half_index * half_nodes, half_rows, SKY_VIEW_LATTICE_SPACING.y));
+}
+
+// The lattice cell of a texel: its first node, and the weights of the next ones in x and y.
+void GetSkyViewLatticeCell(ivec2 texel, ivec2 size, out ivec2 node, out vec2 t) {
+  int half_rows = size.y / 2;
+  int half_index = texel.y / half_rows;
+  GetLatticeCell(texel.x, size.x, SKY_VIEW_LATTICE_SPACING.x, node.x, t.x);
+  GetLatticeCell(texel.y - half_index * half_rows, half_rows, SKY_VIEW_LATTICE_SPACING.y, node.y, t.y);
+  node.y += half_index * GetLatticeNodeCount(half_rows, SKY_VIEW_LATTICE_SPACING.y);
+}
+
 #endif

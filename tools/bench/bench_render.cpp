@@ -152,7 +152,7 @@ void Bench(const BenchOptions& cli) {
   std::printf("\n=== the frame's passes: timestamps of the compute passes; raster parts by their absence, "
               "in GPU time and in process CPU time ===\n");
   nlohmann::json parts;
-  for (const char* pass : {aerial::bench::kShadowMapPass, aerial::bench::kFroxelBuildPass, "sky view"}) {
+  for (const char* pass : {aerial::bench::kShadowMapPass, aerial::bench::kFroxelBuildPass, "sky view correction", "sky view"}) {
     Stats s = Summarize(aerial::bench::SumOfPasses(frame.frames, {pass}, pass).ms);
     PrintRow(pass, s);
     parts[pass] = {{"gpu_ms", s.median}};

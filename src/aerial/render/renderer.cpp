@@ -34,7 +34,7 @@ const vk::SlotLayout kMeshSlots = {
     {"ShadowBlock", kUniform},            {"shadow_map", kSampled},
     {"cached_sun_visibility", kSampled}};
 
-// The sky-view pass (sky_view.comp) and the sky (sky.frag) bind the same resources, the sky-view
+// The sky-view pass (sky_view.comp) and the sky (sky.frag) bind these resources, the sky-view
 // table written by the one (sky_view_type: storage images) and read by the other (sampled).
 vk::SlotLayout SkySlots(::vk::DescriptorType sky_view_type) {
   return {{"AtmosphereBlock", kUniform},      {"FrameBlock", kUniform},
@@ -42,6 +42,19 @@ vk::SlotLayout SkySlots(::vk::DescriptorType sky_view_type) {
           {"mie_texture", kSampled},           {"multiple_texture", kSampled},
           {"irradiance_texture", kSampled},    {"rayleigh_sky", sky_view_type},
           {"mie_sky", sky_view_type},          {"background_sky", sky_view_type}};
+}
+
+// The sky-view pass also reads the low sun's correction lattice that the correction pass writes.
+vk::SlotLayout SkyViewSlots() {
+  vk::SlotLayout slots = SkySlots(vk::kStorageImage);
+  slots.push_back({"rayleigh_correction", vk::kStorageImage});
+  slots.push_back({"mie_correction", vk::kStorageImage});
+  return slots;
+}
+
+vk::SlotLayout SkyViewCorrectionSlots() {
+  return {{"AtmosphereBlock", kUniform}, {"FrameBlock", kUniform}, {"transmittance_texture", kSampled},
+          {"rayleigh_correction", vk::kStorageImage}, {"mie_correction", vk::kStorageImage}};
 }
 
 // Where an opaque fragment's sun visibility comes from (opaque_fragment.glsl).
@@ -91,12 +104,17 @@ vk::GraphicsPipelineCreateInfo SkyPipeline(AerialMode mode) {
 // The sky-view table's size (Hillaire 2020 uses 192x108): azimuth over [0, pi], zenith split at
 // the horizon (54 rows each side).
 constexpr std::array<int, 2> kSkyViewSize = {192, 108};
-// sky_view.comp's workgroup: its rows never straddle the horizon (see the shader).
-constexpr ::vk::Extent3D kSkyViewGroup = {16, 6, 1};
-static_assert(kSkyViewSize[0] % kSkyViewGroup.width == 0 && kSkyViewSize[1] / 2 % kSkyViewGroup.height == 0);
+// The lattice of the low sun's correction (sky_view.glsl, GetSkyViewLatticeSize): nodes every 4
+// texels in azimuth and 3 in zenith per half, the last texel included.
+constexpr std::array<int, 2> kSkyViewLatticeSize = {(kSkyViewSize[0] - 2) / 4 + 2,
+                                                     2 * ((kSkyViewSize[1] / 2 - 2) / 3 + 2)};
 
 vk::ImageCreateInfo SkyViewImage() {
   return {.extent = {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}};
+}
+
+vk::ImageCreateInfo SkyViewLatticeImage() {
+  return {.extent = {uint32_t(kSkyViewLatticeSize[0]), uint32_t(kSkyViewLatticeSize[1]), 1}};
 }
 
 vk::ImageCreateInfo Target(const RenderOptions& o, vk::Format format) {
@@ -145,7 +163,8 @@ std::unique_ptr<TerrainChunkCache> TerrainCache(const vk::Context& context, cons
 FrameMemory EstimateFrameMemory(const RenderOptions& o) {
   const uint64_t rendered = uint64_t(o.render_width()) * o.render_height();
   const uint64_t output = uint64_t(o.width) * o.height;
-  const uint64_t sky_view = 3 * uint64_t(kSkyViewSize[0]) * kSkyViewSize[1] * 16;
+  const uint64_t sky_view = (3 * uint64_t(kSkyViewSize[0]) * kSkyViewSize[1] +
+                             2 * uint64_t(kSkyViewLatticeSize[0]) * kSkyViewLatticeSize[1]) * 16;
   const uint64_t froxels = uint64_t(o.froxels.width) * o.froxels.height * o.froxels.depth;
   return {
       .targets = rendered * (16 + 4) + sky_view,  // rgba32f radiance, d32 depth
@@ -185,11 +204,13 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       sky_rayleigh_(tables.context(), SkyViewImage()),
       sky_mie_(tables.context(), SkyViewImage()),
       sky_background_(tables.context(), SkyViewImage()),
+      sky_rayleigh_correction_(tables.context(), SkyViewLatticeImage()),
+      sky_mie_correction_(tables.context(), SkyViewLatticeImage()),
       shadow_map_(tables.context(), options.shadows),
       casters_(SceneCasterBounds(scene)),
-      sky_view_(tables.context(), "frame/sky_view.comp",
-                SkySlots(vk::kStorageImage),
-                sizeof(kSkyViewSize)),
+      sky_view_correction_(tables.context(), "frame/sky_view_correction.comp", SkyViewCorrectionSlots(),
+                           sizeof(kSkyViewSize)),
+      sky_view_(tables.context(), "frame/sky_view.comp", SkyViewSlots(), sizeof(kSkyViewSize)),
       opaque_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/opaque.frag", false,
                                              MeshConstants(options, SurfaceLight::kSunAndSky,
                                                            options.shadows ? SunVisibilitySource::kCache
@@ -206,7 +227,8 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
     timers_.push_back(std::make_unique<vk::GpuTimer>(tables.context()));
   }
   tables.context().Submit([&](const auto& cmd) {
-    for (const vk::Image* image : {&depth_, &output_, &sun_visibility_, &sky_rayleigh_, &sky_mie_, &sky_background_})
+    for (const vk::Image* image : {&depth_, &output_, &sun_visibility_, &sky_rayleigh_, &sky_mie_, &sky_background_,
+                                   &sky_rayleigh_correction_, &sky_mie_correction_})
       image->InitializeLayout(cmd);
   });
 }
@@ -255,7 +277,7 @@ void Renderer::SelectTerrain(const Scene& scene, bool complete) {
 // the table itself differs from the per-pixel sky; a camera climbing at 180 m/s remakes it every
 // other frame instead of every frame. An exact frame (Record's `complete`) remakes any table not
 // made for its own r and mu_s.
-void Renderer::RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& frame, bool exact) {
+bool Renderer::SkyViewStale(bool exact) {
   constexpr float kAltitudeToleranceM = 10.0f, kMuSTolerance = 1e-5f;
   const auto& p = frame_uniforms_.camera_planet_position;
   const auto& s = frame_uniforms_.sun_direction;
@@ -263,17 +285,36 @@ void Renderer::RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& fra
   std::array<float, 2> key = {r, (p[0] * s[0] + p[1] * s[1] + p[2] * s[2]) / r};
   bool close = sky_view_key_ && std::fabs((*sky_view_key_)[0] - key[0]) <= kAltitudeToleranceM &&
                std::fabs((*sky_view_key_)[1] - key[1]) <= kMuSTolerance;
-  if (sky_view_key_ == key || (close && !exact)) return;
+  if (sky_view_key_ == key || (close && !exact)) return false;
   sky_view_key_ = key;
   frame_info_.sky_view_updated = true;
+  return true;
+}
+
+// The low sun's single scattering correction at the sky-view table's lattice nodes
+// (sky_view_correction.comp; with a high sun its invocations return at once). It is recorded
+// before the froxel build and followed by a barrier, so that the froxel build and the sky-view pass
+// that reads it still run side by side.
+void Renderer::RecordSkyViewCorrection(const vk::CommandBuffer& cmd, const vk::Buffer& frame) {
+  sky_view_correction_.Dispatch(cmd,
+                                {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame},
+                                 tables_.Sampled(tables_.transmittance()),
+                                 vk::StorageImageSlot{&sky_rayleigh_correction_},
+                                 vk::StorageImageSlot{&sky_mie_correction_}},
+                                {uint32_t(kSkyViewLatticeSize[0]), uint32_t(kSkyViewLatticeSize[1]), 1},
+                                {8, 8, 1}, kSkyViewSize.data());
+}
+
+void Renderer::RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& frame) {
   sky_view_.Dispatch(cmd,
                      {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame},
                       tables_.Sampled(tables_.transmittance()), tables_.Sampled(tables_.rayleigh()),
                       tables_.Sampled(tables_.mie()), tables_.Sampled(tables_.multiple()),
                       tables_.Sampled(tables_.irradiance()),
                       vk::StorageImageSlot{&sky_rayleigh_}, vk::StorageImageSlot{&sky_mie_},
-                      vk::StorageImageSlot{&sky_background_}},
-                     {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}, kSkyViewGroup,
+                      vk::StorageImageSlot{&sky_background_}, vk::StorageImageSlot{&sky_rayleigh_correction_},
+                      vk::StorageImageSlot{&sky_mie_correction_}},
+                     {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}, {8, 8, 1},
                      kSkyViewSize.data());
 }
 
@@ -399,6 +440,13 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
       MakeShadowUniforms(shadow_cascades_, scene.sun.Direction(), scene.camera, options_.shadows);
   shadow_buffers_[slot].Write(std::as_bytes(std::span(&shadow, 1)));
   if (options_.mode == AerialMode::kFroxel) {
+    bool sky_view_stale = SkyViewStale(complete);
+    if (sky_view_stale) {
+      timer.Begin(cmd, "sky view correction");
+      RecordSkyViewCorrection(cmd, frame);
+      timer.End(cmd);
+      vk::FullBarrier(cmd);
+    }
     timer.Begin(cmd, "froxel build");
     // The volume depends on the camera, the sun, the shadow map and the tables only: a still view
     // keeps it.
@@ -411,7 +459,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
     }
     timer.End(cmd);
     timer.Begin(cmd, "sky view");
-    RecordSkyView(cmd, frame, complete);
+    if (sky_view_stale) RecordSkyView(cmd, frame);
     timer.End(cmd);
     vk::FullBarrier(cmd);
   }

@@ -79,7 +79,10 @@ class Renderer {
   terrain::LodView FrameLodView(const Scene& scene) const;
   void SelectTerrain(const Scene& scene, bool complete);
   void RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene);
-  void RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& frame, bool exact);
+  // Whether this frame remakes the sky-view table; if so, its key becomes this frame's.
+  bool SkyViewStale(bool exact);
+  void RecordSkyViewCorrection(const vk::CommandBuffer& cmd, const vk::Buffer& frame);
+  void RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& frame);
   std::vector<vk::Slot> MeshSlots(uint32_t slot) const;
   void DrawOpaque(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
                   const std::vector<vk::Slot>& slots) const;
@@ -109,6 +112,8 @@ class Renderer {
   };
   std::optional<SunVisibilityKey> sun_visibility_key_;
   vk::Image sky_rayleigh_, sky_mie_, sky_background_;
+  // The low sun's single scattering correction at the sky-view table's lattice nodes.
+  vk::Image sky_rayleigh_correction_, sky_mie_correction_;
   // (r, mu_s) the sky-view table was made for: it depends on nothing else of the frame.
   std::optional<std::array<float, 2>> sky_view_key_;
   std::optional<FrameUniforms> froxels_key_;  // the frame the froxel volume was built for
@@ -126,7 +131,7 @@ class Renderer {
   // this frame's would be the same.
   bool still_view_ = false;
   bool shadow_selection_whole_ = false;
-  vk::ComputePipeline sky_view_;
+  vk::ComputePipeline sky_view_correction_, sky_view_;
   // opaque_ reads the sun visibility back when shadows are on (opaque_fragment.glsl);
   // opaque_caching_, only then, looks it up and writes it.
   vk::GraphicsPipeline opaque_, sky_, transparent_, surface_;

@@ -1,0 +1,27 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Sky-view correction pass, before the sky-view pass: the low sun's single scattering correction
+// (GetSingleScatteringCorrection, sky_lookup.glsl) at the lattice nodes of the sky-view table
+// (sky_view.glsl), which sky_view.comp interpolates. It marches five suns along each ray: at
+// every texel of the table it cost 78 ms per rebuild at sunset on lavapipe, at the 1,862 nodes
+// 14 ms (aerial_bench_render --preset sunset). The correction changes slowly over the table
+// except across the horizon row, which no lattice cell spans. A high sun needs no correction:
+// every node returns at once.
+#include "sky_lookup.glsl"
+#include "sky_view.glsl"
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
+layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D rayleigh_correction;
+layout(set = 0, binding = 4, rgba32f) writeonly uniform image2D mie_correction;
+layout(push_constant) uniform Size { ivec2 size; } table;  // the sky-view table's
+
+void main() {
+  ivec2 node = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(node, GetSkyViewLatticeSize(table.size)))) return;
+  SkyViewRay ray = GetSkyViewRay(GetSkyViewLatticeTexel(node, table.size), table.size);
+  vec3 rayleigh, mie;
+  GetSingleScatteringCorrection(transmittance_texture, atmosphere.scattering_size, ray.r, ray.mu,
+                                ray.mu_s, ray.nu, rayleigh, mie);
+  imageStore(rayleigh_correction, node, vec4(rayleigh, 0.0));
+  imageStore(mie_correction, node, vec4(mie, 0.0));
+}
