@@ -47,7 +47,8 @@ struct SingleScatteringSuns {
   float mu_s[SINGLE_SCATTERING_SUNS], nu[SINGLE_SCATTERING_SUNS], weight[SINGLE_SCATTERING_SUNS];
 };
 
-// The mu_s texels that the table's read at mu_s blends: (x) their mu_s, (y) the upper one's weight.
+// The two mu_s texels that the table's read at mu_s blends: (x, y) their mu_s, (z) the upper
+// one's weight.
 vec3 GetScatteringMuSBlend(ivec4 size, float mu_s) {
   float mu_s_size = float(size.z);
   float x = clamp(GetScatteringUMuS(size, mu_s) * mu_s_size - 0.5, 0.0, mu_s_size - 1.0);
