@@ -13,28 +13,29 @@
 namespace aerial::testing {
 namespace {
 
-std::array<float, 4> MaxRoundTripErrors(const PrecomputeOptions& options) {
+std::array<float, 5> MaxRoundTripErrors(const PrecomputeOptions& options) {
   vk::Context& context = SharedContext();
   AtmosphereTables tables(context, AtmosphereParameters::Earth(), options);
-  vk::Buffer errors(context, {.size = 4 * sizeof(uint32_t),
+  vk::Buffer errors(context, {.size = 5 * sizeof(uint32_t),
                               .usage = ::vk::BufferUsageFlagBits::eStorageBuffer,
                               .host_visible = true});
-  std::memset(errors.mapped(), 0, 4 * sizeof(uint32_t));
+  std::memset(errors.mapped(), 0, 5 * sizeof(uint32_t));
   vk::ComputePipeline pipeline(context, "test/mapping_round_trip.comp",
                                {{"AtmosphereBlock", vk::kUniform}, {"Errors", vk::kStorageBuffer}}, sizeof(int));
   const TableResolution& r = options.resolution;
   context.Submit([&](const auto& cmd) {
-    std::array<::vk::Extent3D, 3> extents = {
+    // The scattering extent twice: its ray-length mu axis, then the densities' view-zenith one.
+    std::array<::vk::Extent3D, 4> extents = {
         ::vk::Extent3D{uint32_t(r.transmittance_mu), uint32_t(r.transmittance_r), 1},
         ::vk::Extent3D{uint32_t(r.irradiance_mu_s), uint32_t(r.irradiance_r), 1},
-        tables.rayleigh().extent()};
-    for (int table = 0; table < 3; ++table) {
+        tables.rayleigh().extent(), tables.rayleigh().extent()};
+    for (int table = 0; table < 4; ++table) {
       pipeline.Dispatch(cmd, {vk::UniformBufferSlot{&tables.uniform_buffer()}, vk::StorageBufferSlot{&errors}},
                         extents[table], {8, 8, 1}, &table);
     }
     vk::FullBarrier(cmd);
   });
-  std::array<float, 4> result;
+  std::array<float, 5> result;
   std::memcpy(result.data(), errors.mapped(), sizeof result);
   return result;
 }
@@ -52,6 +53,7 @@ TEST_F(MappingRoundTrip, DefaultTablesLandOnTexelCenters) {
   EXPECT_LT(errors[0], kToleranceInTexels) << "transmittance";
   EXPECT_LT(errors[1], kToleranceInTexels) << "irradiance";
   EXPECT_LT(errors[2], kToleranceInTexels) << "scattering";
+  EXPECT_LT(errors[4], kToleranceInTexels) << "scattering density (view zenith mu axis)";
   EXPECT_EQ(errors[3], 0.0f) << "a scattering texel changed half (ground / sky) in the round trip";
 }
 
@@ -60,6 +62,7 @@ TEST_F(MappingRoundTrip, SmallTablesLandOnTexelCenters) {
   EXPECT_LT(errors[0], kToleranceInTexels);
   EXPECT_LT(errors[1], kToleranceInTexels);
   EXPECT_LT(errors[2], kToleranceInTexels);
+  EXPECT_LT(errors[4], kToleranceInTexels);
   EXPECT_EQ(errors[3], 0.0f);
 }
 

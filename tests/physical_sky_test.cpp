@@ -41,8 +41,10 @@ const char* kTwilight = "twilight (95-108)";
 // arctangent mapping, 4 orders + the series' tail, the density grid's zenith cells quadratic
 // toward the horizon above and below it, the ground irradiance of order 1 corrected by single
 // scattering integrated along an 8x8 grid, the irradiance read exponentially in r), radiance to a
-// point marched with the multiple density table R16 MU64 MU_S32 NU4, and the sky's single
-// scattering corrected where the sun is low (GetSingleScatteringCorrection, sky_lookup.glsl).
+// point marched with the multiple density table R16 MU64 MU_S32 NU4, the sky's single
+// scattering corrected where the sun is low (GetSingleScatteringCorrection, sky_lookup.glsl), and
+// the scattering density tables' mu axis on the view zenith angle (MU_AXIS_VIEW_ZENITH,
+// mappings.glsl).
 struct RegionBound {
   SkyQuantity quantity;
   const char* band;
@@ -52,41 +54,41 @@ struct RegionBound {
 };
 
 const RegionBound kBounds[] = {
-    {SkyQuantity::kSkyIrradiance, kDay, 0, 9, 0.013, 0.005506, 0.004, 0},  // max 1.101%: MISSED, target 1%; median 0.31%: target
-    {SkyQuantity::kSkyRadiance, kDay, 0, 54, 0.01, 0, 0.004, 0},  // max 0.949%: target 1%; median 0.24%: target
-    {SkyQuantity::kRadianceToPoint, kDay, 0, 54, 0.014, 0.006054, 0.004, 0},  // max 1.211%: MISSED, target 1%; median 0.35%: target
-    {SkyQuantity::kSkyIrradiance, kDay, 10, 9, 0.015, 0, 0.0088, 0.004},  // max 0.910%: target 1.5%; median 0.80% MISSED, target 0.4%
-    {SkyQuantity::kSkyRadiance, kDay, 10, 90, 0.026, 0.011453, 0.0085, 0.00385},  // max 2.291%: MISSED, target 1.5%; median 0.77% MISSED, target 0.4%
-    {SkyQuantity::kRadianceToPoint, kDay, 10, 90, 0.02, 0.008831, 0.004, 0},  // max 1.766%: MISSED, target 1.5%; median 0.35%: target
-    {SkyQuantity::kSkyIrradiance, kDay, 50, 9, 0.017, 0.007523, 0.015, 0.0067},  // max 1.505%: MISSED, target 1.5%; median 1.34% MISSED, target 0.4%
-    {SkyQuantity::kSkyRadiance, kDay, 50, 90, 0.03, 0.013245, 0.007, 0.00315},  // max 2.649%: MISSED, target 1.5%; median 0.63% MISSED, target 0.4%
-    {SkyQuantity::kRadianceToPoint, kDay, 50, 72, 0.015, 0, 0.0051, 0.0023},  // max 1.463%: target 1.5%; median 0.46% MISSED, target 0.4%
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 0, 3, 0.0059, 0.002679, kNone, 0},  // max 0.536%, median 0.54%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 0, 18, 0.009, 0.004047, kNone, 0},  // max 0.809%, median 0.54%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 0, 18, 0.0092, 0.004182, kNone, 0},  // max 0.836%, median 0.26%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 10, 3, 0.019, 0.008546, kNone, 0},  // max 1.709%, median 1.71%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 30, 0.026, 0.0116, kNone, 0},  // max 2.320%, median 0.76%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 10, 30, 0.015, 0.006616, kNone, 0},  // max 1.323%, median 0.71%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.027, 0.011929, kNone, 0},  // max 2.386%, median 2.39%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 50, 30, 0.028, 0.012482, kNone, 0},  // max 2.496%, median 1.22%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 24, 0.018, 0.007823, kNone, 0},  // max 1.565%, median 0.39%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.512%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.064, 0.02904, kNone, 0},  // max 5.808%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 90, 0.114, 0.05176, kNone, 0},  // max 10.354%: MISSED, target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 1.929%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 10, 150, 0.089, 0.04024, kNone, 0},  // max 8.050%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 140, 0.062, 0.02789, kNone, 0},  // max 5.578%: MISSED, target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 2.523%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.034, 0.01524, kNone, 0},  // max 3.048%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 50, 120, 0.03, 0, kNone, 0},  // max 1.372%: target 3%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 1.182%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.095, 0.04283, kNone, 0},  // max 8.568%: MISSED, target 8%
-    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 0.370%: target 8%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 3.208%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.162, 0.07319, kNone, 0},  // max 14.638%: MISSED, target 8%
+    {SkyQuantity::kSkyIrradiance, kDay, 0, 9, 0.013, 0.005604, 0.004, 0},  // max 1.121%: MISSED, target 1%; median 0.17%: target
+    {SkyQuantity::kSkyRadiance, kDay, 0, 54, 0.01, 0, 0.004, 0},  // max 0.782%: target 1%; median 0.35%: target
+    {SkyQuantity::kRadianceToPoint, kDay, 0, 54, 0.014, 0.006075, 0.004, 0},  // max 1.215%: MISSED, target 1%; median 0.30%: target
+    {SkyQuantity::kSkyIrradiance, kDay, 10, 9, 0.015, 0, 0.0065, 0.00295},  // max 0.652%: target 1.5%; median 0.59% MISSED, target 0.4%
+    {SkyQuantity::kSkyRadiance, kDay, 10, 90, 0.022, 0.009841, 0.0059, 0.00265},  // max 1.968%: MISSED, target 1.5%; median 0.53% MISSED, target 0.4%
+    {SkyQuantity::kRadianceToPoint, kDay, 10, 90, 0.015, 0, 0.004, 0},  // max 1.191%: target 1.5%; median 0.26%: target
+    {SkyQuantity::kSkyIrradiance, kDay, 50, 9, 0.015, 0, 0.01, 0.0045},  // max 1.217%: target 1.5%; median 0.90% MISSED, target 0.4%
+    {SkyQuantity::kSkyRadiance, kDay, 50, 90, 0.02, 0.008943, 0.0047, 0.0021},  // max 1.789%: MISSED, target 1.5%; median 0.42% MISSED, target 0.4%
+    {SkyQuantity::kRadianceToPoint, kDay, 50, 72, 0.015, 0, 0.004, 0},  // max 0.801%: target 1.5%; median 0.20%: target
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 0, 3, 0.0068, 0.003051, kNone, 0},  // max 0.610%, median 0.61%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 0, 18, 0.0074, 0.003359, kNone, 0},  // max 0.672%, median 0.49%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 0, 18, 0.0069, 0.003095, kNone, 0},  // max 0.619%, median 0.18%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 10, 3, 0.016, 0.007189, kNone, 0},  // max 1.438%, median 1.44%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 30, 0.015, 0.006427, kNone, 0},  // max 1.285%, median 0.65%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 10, 30, 0.0099, 0.004499, kNone, 0},  // max 0.900%, median 0.46%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.021, 0.009481, kNone, 0},  // max 1.896%, median 1.90%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 50, 30, 0.026, 0.011796, kNone, 0},  // max 2.359%, median 0.62%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 24, 0.0068, 0.00305, kNone, 0},  // max 0.610%, median 0.25%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.966%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.067, 0.030021, kNone, 0},  // max 6.004%: MISSED, target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 90, 0.13, 0.055443, kNone, 0},  // max 11.089%: MISSED, target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 2.197%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 10, 150, 0.087, 0.039422, kNone, 0},  // max 7.884%: MISSED, target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 140, 0.064, 0.029064, kNone, 0},  // max 5.813%: MISSED, target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 2.467%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.034, 0.015041, kNone, 0},  // max 3.008%: MISSED, target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 50, 120, 0.03, 0, kNone, 0},  // max 0.278%: target 3%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 1.878%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.08, 0, kNone, 0},  // max 5.265%: target 8%
+    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 0.720%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 3.675%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.17, 0.074165, kNone, 0},  // max 14.833%: MISSED, target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 10, 0, kNone, 0, kNone, 0},  // no value above the floor
-    {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 1.593%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 5.010%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 1.532%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 2.166%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 50, 0, kNone, 0, kNone, 0},  // no value above the floor
 };
 

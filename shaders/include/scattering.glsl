@@ -137,13 +137,14 @@ vec3 GetScattering(sampler3D scattering_texture, ivec4 size, float r, float mu, 
                    float nu, bool ray_r_mu_intersects_ground) {
   return GetScatteringAt(
       scattering_texture, size,
-      GetScatteringTextureUvwzFromRMuMuSNu(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground));
+      GetScatteringTextureUvwzFromRMuMuSNu(size, MU_AXIS_RAY_LENGTH, r, mu, mu_s, nu,
+                                           ray_r_mu_intersects_ground));
 }
 
-vec3 GetScatteringClampedNu(sampler3D scattering_texture, ivec4 size, float r, float mu,
-                            float mu_s, float nu, bool ray_r_mu_intersects_ground) {
-  vec4 uvwz =
-      GetScatteringTextureUvwzFromRMuMuSNu(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+vec3 GetScatteringClampedNu(sampler3D scattering_texture, ivec4 size, int mu_axis, float r,
+                            float mu, float mu_s, float nu, bool ray_r_mu_intersects_ground) {
+  vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, mu_axis, r, mu, mu_s, nu,
+                                                   ray_r_mu_intersects_ground);
   return GetScatteringBlended(scattering_texture, size, GetClampedNuBlend(size, uvwz, mu, mu_s, nu),
                               uvwz.yzw);
 }
@@ -170,8 +171,8 @@ vec3 GetScatteringBlendedExponentialInR(sampler3D scattering_texture, ivec4 size
 // The render-time read of the final radiance tables.
 vec3 GetScatteringExponentialInR(sampler3D scattering_texture, ivec4 size, float r, float mu,
                                  float mu_s, float nu, bool ray_r_mu_intersects_ground) {
-  vec4 uvwz =
-      GetScatteringTextureUvwzFromRMuMuSNu(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+  vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, MU_AXIS_RAY_LENGTH, r, mu, mu_s, nu,
+                                                   ray_r_mu_intersects_ground);
   return GetScatteringBlendedExponentialInR(scattering_texture, size, GetNominalNuBlend(size, uvwz),
                                             uvwz);
 }
@@ -181,8 +182,8 @@ vec3 GetScatteringExponentialInR(sampler3D scattering_texture, ivec4 size, float
 vec3 GetMultipleScatteringDensity(sampler3D multiple_density_texture, float r, float mu,
                                   float mu_s, float nu, bool ray_r_mu_intersects_ground) {
   ivec4 size = atmosphere.multiple_density_size;
-  vec4 uvwz =
-      GetScatteringTextureUvwzFromRMuMuSNu(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+  vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, MU_AXIS_VIEW_ZENITH, r, mu, mu_s, nu,
+                                                   ray_r_mu_intersects_ground);
   return GetScatteringBlendedExponentialInR(multiple_density_texture, size,
                                             GetClampedNuBlend(size, uvwz, mu, mu_s, nu), uvwz);
 }
@@ -200,8 +201,8 @@ vec3 GetScatteringOfOrder(sampler3D single_rayleigh_texture, sampler3D single_mi
                              ray_r_mu_intersects_ground);
     return rayleigh * RayleighPhaseFunction(nu) + mie * MiePhaseFunction(atmosphere.mie_phase_g, nu);
   }
-  return GetScatteringClampedNu(multiple_scattering_texture, atmosphere.density_size, r, mu, mu_s,
-                                nu, ray_r_mu_intersects_ground);
+  return GetScatteringClampedNu(multiple_scattering_texture, atmosphere.density_size,
+                                MU_AXIS_RAY_LENGTH, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
 }
 
 // Multiple scattering of order n (Bruneton 2008 eq. 12 integrated along the ray): the scattering
@@ -214,8 +215,9 @@ vec3 MultipleScatteringIntegrand(sampler2D transmittance_texture,
   float r_d = RadiusAtDistance(r, mu, d);
   float mu_d = MuAtDistance(r, mu, d, r_d);
   float mu_s_d = SunCosineAlongRay(r, mu_s, nu, d, r_d);
-  return GetScatteringClampedNu(scattering_density_texture, atmosphere.density_size, r_d, mu_d,
-                                mu_s_d, nu, ray_r_mu_intersects_ground) *
+  return GetScatteringClampedNu(scattering_density_texture, atmosphere.density_size,
+                                MU_AXIS_VIEW_ZENITH, r_d, mu_d, mu_s_d, nu,
+                                ray_r_mu_intersects_ground) *
          GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
                                     ray_r_mu_intersects_ground);
 }

@@ -28,6 +28,7 @@ layout(push_constant) uniform Step {
   ivec4 target_size;  // the accumulator's axes: r, mu, mu_s, nu
   int close_series;
   int divide_by_rayleigh_phase;
+  int mu_axis;  // of the source and the accumulator: MU_AXIS_VIEW_ZENITH for the densities
 } pass;
 
 void main() {
@@ -35,14 +36,14 @@ void main() {
   if (!IsScatteringTexel(pass.target_size, texel)) return;
   float r, mu, mu_s, nu;
   bool ray_r_mu_intersects_ground;
-  GetRMuMuSNuFromScatteringTexel(pass.target_size, texel, r, mu, mu_s, nu,
+  GetRMuMuSNuFromScatteringTexel(pass.target_size, pass.mu_axis, texel, r, mu, mu_s, nu,
                                  ray_r_mu_intersects_ground);
-  vec3 value = GetScatteringClampedNu(order_texture, atmosphere.density_size, r, mu, mu_s, nu,
-                                      ray_r_mu_intersects_ground);
+  vec3 value = GetScatteringClampedNu(order_texture, atmosphere.density_size, pass.mu_axis, r, mu,
+                                      mu_s, nu, ray_r_mu_intersects_ground);
   if (pass.close_series != 0) {
     value = SumSeriesFromLastOrder(
-        value, GetScatteringClampedNu(previous_order_texture, atmosphere.density_size, r, mu, mu_s,
-                                      nu, ray_r_mu_intersects_ground));
+        value, GetScatteringClampedNu(previous_order_texture, atmosphere.density_size,
+                                      pass.mu_axis, r, mu, mu_s, nu, ray_r_mu_intersects_ground));
   }
   if (pass.divide_by_rayleigh_phase != 0)
     value /= RayleighPhaseFunction(GetScatteringTexelNominalNu(pass.target_size, texel));

@@ -14,8 +14,8 @@ void main() {
   if (!IsScatteringTexel(atmosphere.density_size, texel)) return;
   float r, mu, mu_s, nu;
   bool ray_r_mu_intersects_ground;
-  GetRMuMuSNuFromScatteringTexel(atmosphere.density_size, texel, r, mu, mu_s, nu,
-                                 ray_r_mu_intersects_ground);
+  GetRMuMuSNuFromScatteringTexel(atmosphere.density_size, MU_AXIS_RAY_LENGTH, texel, r, mu,
+                                 mu_s, nu, ray_r_mu_intersects_ground);
   vec3 radiance = ComputeMultipleScattering(transmittance_texture, scattering_density_texture, r,
                                             mu, mu_s, nu, ray_r_mu_intersects_ground);
   imageStore(delta_multiple_scattering_image, texel, vec4(radiance, 0.0));

@@ -108,8 +108,8 @@ void main() {
 
   float r, mu, mu_s, nu;
   bool ray_r_mu_intersects_ground;
-  GetRMuMuSNuFromScatteringTexel(atmosphere.density_size, texel, r, mu, mu_s, nu,
-                                 ray_r_mu_intersects_ground);
+  GetRMuMuSNuFromScatteringTexel(atmosphere.density_size, MU_AXIS_VIEW_ZENITH, texel, r, mu,
+                                 mu_s, nu, ray_r_mu_intersects_ground);
   vec3 rayleigh;
   vec3 mie;
   if (drop_nu) {

@@ -14,7 +14,8 @@ void main() {
   if (!IsScatteringTexel(atmosphere.scattering_size, texel)) return;
   float r, mu, mu_s, nu;
   bool ray_r_mu_intersects_ground;
-  GetRMuMuSNuFromScatteringTexel(atmosphere.scattering_size, texel, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+  GetRMuMuSNuFromScatteringTexel(atmosphere.scattering_size, MU_AXIS_RAY_LENGTH, texel, r, mu,
+                                 mu_s, nu, ray_r_mu_intersects_ground);
   vec3 rayleigh;
   vec3 mie;
   ComputeSingleScattering(transmittance_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground,

@@ -5,8 +5,10 @@
 // floats the unsigned integer order is the float order, so atomicMax works).
 #include "mappings.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(std430, set = 0, binding = 1) buffer Errors { uint max_error_bits[4]; };
-layout(push_constant) uniform Table { int table; } test;  // 0 transmittance, 1 irradiance, 2 scattering
+layout(std430, set = 0, binding = 1) buffer Errors { uint max_error_bits[5]; };
+// 0 transmittance, 1 irradiance, 2 scattering (ray-length mu axis), 3 scattering density (view
+// zenith mu axis, in slot 4).
+layout(push_constant) uniform Table { int table; } test;
 
 void Record(int slot, float error_in_texels) {
   atomicMax(max_error_bits[slot], floatBitsToUint(abs(error_in_texels)));
@@ -33,21 +35,23 @@ void main() {
   } else {
     ivec4 size = atmosphere.scattering_size;
     if (!IsScatteringTexel(size, texel)) return;
+    int mu_axis = test.table == 2 ? MU_AXIS_RAY_LENGTH : MU_AXIS_VIEW_ZENITH;
     float r, mu, mu_s, nu;
     bool ground;
-    GetRMuMuSNuFromScatteringTexel(size, texel, r, mu, mu_s, nu, ground);
-    // The first r slice is the ground itself (r = R), where every downward ray has length 0: the
-    // whole ground half of the mu axis maps to mu = -1 and cannot round-trip. Those texels hold
-    // zero scattering by construction.
-    if (texel.z == 0 && ground) return;
+    GetRMuMuSNuFromScatteringTexel(size, mu_axis, texel, r, mu, mu_s, nu, ground);
+    // The first r slice is the ground itself (r = R), where every downward ray has length 0: on
+    // the ray-length axis the whole ground half maps to mu = -1 and cannot round-trip. Those
+    // texels hold zero scattering by construction.
+    if (mu_axis == MU_AXIS_RAY_LENGTH && texel.z == 0 && ground) return;
     // nu is clamped to what (mu, mu_s) allow, so only the r, mu and mu_s axes must round-trip; the
     // nu axis is checked separately on unclamped values.
-    vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, r, mu, mu_s, nu, ground);
+    vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, mu_axis, r, mu, mu_s, nu, ground);
     int mu_s_index = texel.x % size.z;
     float error_mu_s = (uvwz.y - (float(mu_s_index) + 0.5) / float(size.z)) * float(size.z);
     float error_mu = (uvwz.z - (float(texel.y) + 0.5) / float(size.y)) * float(size.y);
     float error_r = (uvwz.w - (float(texel.z) + 0.5) / float(size.x)) * float(size.x);
-    Record(2, max(max(abs(error_mu_s), abs(error_mu)), abs(error_r)));
+    int slot = mu_axis == MU_AXIS_RAY_LENGTH ? 2 : 4;
+    Record(slot, max(max(abs(error_mu_s), abs(error_mu)), abs(error_r)));
     // Away from the two outermost texels, which both stand for the tangent ray itself (mu exactly
     // at the horizon, where "hits the ground" is a matter of rounding), a texel's half must agree
     // with the ray it stands for.

@@ -26,6 +26,7 @@ struct AccumulateStep {
   std::array<int, 4> target_size;  // r, mu, mu_s, nu
   int close_series;
   int divide_by_rayleigh_phase;
+  int mu_axis;  // mappings.glsl: 0 the ray length (radiance), 1 the view zenith angle (densities)
 };
 
 // The passes' pipelines; slots in binding order, named as in each shader (checked).
@@ -280,7 +281,8 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
     AccumulateStep radiance_step{
         .target_size = {res.scattering_r, res.scattering_mu, res.scattering_mu_s, res.scattering_nu},
         .close_series = last,
-        .divide_by_rayleigh_phase = tables.options().variant == LutVariant::k4D};
+        .divide_by_rayleigh_phase = tables.options().variant == LutVariant::k4D,
+        .mu_axis = 0};
     run("accumulate" + suffix, [&](const auto& cmd) {
       pipelines.accumulate.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, tables.Sampled(scratch.delta_multiple[order % 2]),
                                           tables.Sampled(scratch.delta_multiple[(order - 1) % 2]),
@@ -291,7 +293,8 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
         .target_size = {res.multiple_density_r, res.multiple_density_mu, res.multiple_density_mu_s,
                         res.multiple_density_nu},
         .close_series = last,
-        .divide_by_rayleigh_phase = 0};
+        .divide_by_rayleigh_phase = 0,
+        .mu_axis = 1};
     run("accumulate density" + suffix, [&](const auto& cmd) {
       pipelines.accumulate.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, tables.Sampled(scratch.density[order % 2]),
                                           tables.Sampled(scratch.density[(order - 1) % 2]),
