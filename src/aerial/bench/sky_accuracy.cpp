@@ -16,15 +16,13 @@ namespace {
 
 constexpr int kFileVersion = 2;
 constexpr double kFloorFraction = 1e-4;
-// The reference's noise goal per compared value, and how far the path count may grow to meet it.
-constexpr double kTargetRelativeStdError = 0.01;
-constexpr int kMaxPathsFactor = 16;
 
 // One reference query: its quantity and view.
 struct Query {
   SkyQuantity quantity;
   std::string band;
   ViewAngles view;
+  double noise_goal;  // the band's
 };
 
 std::vector<Query> Queries(const AtmosphereParameters& atmosphere, const SkyGrid& grid) {
@@ -33,15 +31,16 @@ std::vector<Query> Queries(const AtmosphereParameters& atmosphere, const SkyGrid
   for (const SunBand& band : grid.bands) {
     for (double altitude : grid.altitudes_m) {
       for (double sun : band.sun_zeniths_deg) {
-        queries.push_back({SkyQuantity::kSkyIrradiance, band.name, {altitude, 0.0, sun, 0.0}});
+        queries.push_back(
+            {SkyQuantity::kSkyIrradiance, band.name, {altitude, 0.0, sun, 0.0}, band.noise_goal});
         for (double view_zenith : grid.view_zeniths_deg) {
           for (double azimuth : grid.azimuths_deg) {
             ViewAngles view{altitude, view_zenith, sun, azimuth};
-            queries.push_back({SkyQuantity::kSkyRadiance, band.name, view});
+            queries.push_back({SkyQuantity::kSkyRadiance, band.name, view, band.noise_goal});
             // A point 10 km along the ray, where the ray is that long.
             RayParameters ray = ToRayParameters(view, atmosphere);
             if (model.DistanceToBoundary(ray.r, ray.mu) > grid.point_distance_m)
-              queries.push_back({SkyQuantity::kRadianceToPoint, band.name, view});
+              queries.push_back({SkyQuantity::kRadianceToPoint, band.name, view, band.noise_goal});
           }
         }
       }
@@ -106,7 +105,7 @@ SkyGrid SkyGrid::Full() {
   return {.altitudes_m = {0.0, 10e3, 50e3},
           .view_zeniths_deg = {0.0, 30.0, 60.0, 80.0, 85.0, 88.0, 89.5, 90.5, 92.0, 95.0, 100.0, 120.0, 150.0, 180.0},
           .azimuths_deg = {0.0, 60.0, 120.0, 180.0},
-          .bands = {{"day (sun zenith 0-60)", {0.0, 30.0, 45.0, 60.0}},
+          .bands = {{"day (sun zenith 0-60)", {0.0, 30.0, 45.0, 60.0}, 0.0025},
                     {"afternoon (60-85)", {70.0, 80.0}},
                     {"low sun (85-95)", {85.0, 87.0, 88.0, 89.0, 90.0, 91.0, 92.0, 93.0, 95.0}},
                     {"twilight (95-108)", {96.0, 98.0, 100.0, 102.0, 104.0, 106.0, 108.0}}}};
@@ -116,7 +115,7 @@ SkyGrid SkyGrid::Quick() {
   return {.altitudes_m = {0.0, 10e3, 50e3},
           .view_zeniths_deg = {0.0, 60.0, 88.0, 92.0, 120.0},
           .azimuths_deg = {0.0, 180.0},
-          .bands = {{"day (sun zenith 0-60)", {0.0, 45.0, 60.0}},
+          .bands = {{"day (sun zenith 0-60)", {0.0, 45.0, 60.0}, 0.0025},
                     {"afternoon (60-85)", {75.0}},
                     {"low sun (85-95)", {85.0, 88.0, 90.0, 92.0, 95.0}},
                     {"twilight (95-108)", {97.0, 100.0, 104.0, 108.0}}}};
@@ -141,8 +140,8 @@ SkyReference ComputeSkyReference(const AtmosphereParameters& atmosphere, const S
   for (size_t i = 0; i < queries.size(); ++i) {
     const Query& q = queries[i];
     const Spectrum& floor = result.floors[size_t(q.quantity)];
-    // Low sun and twilight skies come from rare paths that reach the sunlit air: more paths until
-    // the noise is small beside the targets.
+    // More paths until the noise is small beside the band's target (low sun and twilight skies
+    // come from rare paths that reach the sunlit air).
     reference::MonteCarloOptions more = options;
     reference::Estimate e;
     while (true) {
@@ -150,7 +149,7 @@ SkyReference ComputeSkyReference(const AtmosphereParameters& atmosphere, const S
       double noise = 0.0;
       for (int c = 0; c < 3; ++c)
         if (e.value[c] >= floor[c]) noise = std::max(noise, e.std_error[c] / e.value[c]);
-      if (noise <= kTargetRelativeStdError || more.paths_per_query >= kMaxPathsFactor * options.paths_per_query) break;
+      if (noise <= q.noise_goal || more.paths_per_query >= kMaxReferencePathsFactor * options.paths_per_query) break;
       more.paths_per_query *= 4;
     }
     result.samples.push_back({q.quantity, q.band, q.view, e.value, e.std_error, more.paths_per_query});

@@ -29,7 +29,14 @@ std::string ToString(SkyQuantity quantity);
 struct SunBand {
   std::string name;
   std::vector<double> sun_zeniths_deg;
+  // The reference's noise goal per compared value (relative standard error): a quarter of issue
+  // 12's target in daylight (1%), so that a sample's error against it says whether the target is
+  // met; 1% elsewhere, where rare paths make less noise unaffordable.
+  double noise_goal = 0.01;
 };
+
+// How far a sample's path count may grow (times 4 at a time) to meet its band's noise goal.
+inline constexpr int kMaxReferencePathsFactor = 16;
 
 struct SkyGrid {
   std::vector<double> altitudes_m;
