@@ -177,8 +177,8 @@ vec3 GetScatteringExponentialInR(sampler3D scattering_texture, ivec4 size, float
                                             uvwz);
 }
 
-// The render-time read of the multiple density table J_ms (clamped nu, exponential in r: the
-// density follows the air's density).
+// The render-time read of the multiple density table J_ms (the view zenith mu axis, clamped nu,
+// exponential in r: the density follows the air's density).
 vec3 GetMultipleScatteringDensity(sampler3D multiple_density_texture, float r, float mu,
                                   float mu_s, float nu, bool ray_r_mu_intersects_ground) {
   ivec4 size = atmosphere.multiple_density_size;

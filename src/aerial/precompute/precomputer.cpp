@@ -26,8 +26,11 @@ struct AccumulateStep {
   std::array<int, 4> target_size;  // r, mu, mu_s, nu
   int close_series;
   int divide_by_rayleigh_phase;
-  int mu_axis;  // mappings.glsl: 0 the ray length (radiance), 1 the view zenith angle (densities)
+  int mu_axis;  // of the source and the target (mappings.glsl)
 };
+// mappings.glsl's MU_AXIS_*: radiance tables map mu by the ray's length, densities by the angle.
+constexpr int kMuAxisRayLength = 0;
+constexpr int kMuAxisViewZenith = 1;
 
 // The passes' pipelines; slots in binding order, named as in each shader (checked).
 struct Pipelines {
@@ -282,7 +285,7 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
         .target_size = {res.scattering_r, res.scattering_mu, res.scattering_mu_s, res.scattering_nu},
         .close_series = last,
         .divide_by_rayleigh_phase = tables.options().variant == LutVariant::k4D,
-        .mu_axis = 0};
+        .mu_axis = kMuAxisRayLength};
     run("accumulate" + suffix, [&](const auto& cmd) {
       pipelines.accumulate.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, tables.Sampled(scratch.delta_multiple[order % 2]),
                                           tables.Sampled(scratch.delta_multiple[(order - 1) % 2]),
@@ -294,7 +297,7 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
                         res.multiple_density_nu},
         .close_series = last,
         .divide_by_rayleigh_phase = 0,
-        .mu_axis = 1};
+        .mu_axis = kMuAxisViewZenith};
     run("accumulate density" + suffix, [&](const auto& cmd) {
       pipelines.accumulate.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, tables.Sampled(scratch.density[order % 2]),
                                           tables.Sampled(scratch.density[(order - 1) % 2]),
