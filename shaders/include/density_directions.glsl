@@ -10,7 +10,7 @@
 // (cos theta_a - cos theta_b) * delta_phi, so the weights of a full sphere sum to 4 pi.
 #ifndef AERIAL_DENSITY_DIRECTIONS_GLSL
 #define AERIAL_DENSITY_DIRECTIONS_GLSL
-#include "definitions.glsl"
+#include "geometry.glsl"
 
 int DensityDirectionCount() {
   return (atmosphere.density_directions.x + atmosphere.density_directions.y) *
@@ -43,7 +43,7 @@ vec4 GetDensityDirection(float r, int index) {
   int phi_count = atmosphere.density_directions.z;
   int theta_index = index / phi_count;
   int phi_index = index % phi_count;
-  float theta_h = PI - asin(clamp(atmosphere.bottom_radius / r, 0.0, 1.0));
+  float theta_h = HorizonZenithAngle(r);
   float theta_a;
   float theta_b;
   if (theta_index < theta_up) {

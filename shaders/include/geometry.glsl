@@ -15,6 +15,11 @@ float SquaredHorizonDistance(float r) {
   return max((r - atmosphere.bottom_radius) * (r + atmosphere.bottom_radius), 0.0);
 }
 
+// Zenith angle of the horizon seen from radius r.
+float HorizonZenithAngle(float r) {
+  return PI - asin(clamp(atmosphere.bottom_radius / r, 0.0, 1.0));
+}
+
 // R_top^2 - r^2, without cancellation.
 float SquaredTopBoundaryFromRadius(float r) {
   return (atmosphere.top_radius - r) * (atmosphere.top_radius + r);

@@ -144,7 +144,7 @@ const int MU_AXIS_VIEW_ZENITH = 1;
 
 float GetUnitRangeFromMuInHalf(int mu_axis, float r, float mu, bool ray_r_mu_intersects_ground) {
   if (mu_axis == MU_AXIS_VIEW_ZENITH) {
-    float theta_h = PI - asin(clamp(atmosphere.bottom_radius / r, 0.0, 1.0));
+    float theta_h = HorizonZenithAngle(r);
     float theta = acos(ClampCosine(mu));
     return clamp(ray_r_mu_intersects_ground ? (PI - theta) / (PI - theta_h) : theta / theta_h,
                  0.0, 1.0);
@@ -166,7 +166,7 @@ float GetUnitRangeFromMuInHalf(int mu_axis, float r, float mu, bool ray_r_mu_int
 
 float GetMuFromUnitRangeInHalf(int mu_axis, float r, float x, bool ray_r_mu_intersects_ground) {
   if (mu_axis == MU_AXIS_VIEW_ZENITH) {
-    float theta_h = PI - asin(clamp(atmosphere.bottom_radius / r, 0.0, 1.0));
+    float theta_h = HorizonZenithAngle(r);
     return cos(ray_r_mu_intersects_ground ? PI - x * (PI - theta_h) : x * theta_h);
   }
   float rho = sqrt(SquaredHorizonDistance(r));

@@ -10,11 +10,6 @@
 #include "frame.glsl"
 #include "mappings.glsl"
 
-// Zenith angle of the horizon seen from radius r.
-float HorizonZenithAngle(float r) {
-  return PI - asin(clamp(atmosphere.bottom_radius / r, 0.0, 1.0));
-}
-
 // (u, v) of a direction: cos_phi relative to the sun's azimuth, theta the zenith angle, theta_h
 // the horizon's (HorizonZenithAngle of the camera's r: the same for every direction of a frame).
 vec2 GetSkyViewUv(float theta_h, float cos_phi, float theta, ivec2 size) {
