@@ -55,41 +55,41 @@ struct RegionBound {
 };
 
 const RegionBound kBounds[] = {
-    {SkyQuantity::kSkyIrradiance, kDay, 0, 9, 0.01, 0, 0.0058, 0.0026},  // max 0.825%: target 1%; median 0.52% MISSED, target 0.4%
-    {SkyQuantity::kSkyRadiance, kDay, 0, 54, 0.01, 0, 0.004, 0},  // max 0.798%: target 1%; median 0.33%: target
-    {SkyQuantity::kRadianceToPoint, kDay, 0, 54, 0.013, 0.005727, 0.004, 0},  // max 1.145%: MISSED, target 1%; median 0.31%: target
-    {SkyQuantity::kSkyIrradiance, kDay, 10, 9, 0.015, 0, 0.004, 0},  // max 0.667%: target 1.5%; median 0.24%: target
-    {SkyQuantity::kSkyRadiance, kDay, 10, 90, 0.02, 0.009002, 0.0077, 0.0035},  // max 1.800%: MISSED, target 1.5%; median 0.70% MISSED, target 0.4%
-    {SkyQuantity::kRadianceToPoint, kDay, 10, 90, 0.015, 0, 0.004, 0},  // max 1.191%: target 1.5%; median 0.36%: target
-    {SkyQuantity::kSkyIrradiance, kDay, 50, 9, 0.015, 0, 0.0097, 0.0044},  // max 1.071%: target 1.5%; median 0.88% MISSED, target 0.4%
-    {SkyQuantity::kSkyRadiance, kDay, 50, 90, 0.017, 0.0077, 0.0046, 0.00205},  // max 1.540%: MISSED, target 1.5%; median 0.41% MISSED, target 0.4%
-    {SkyQuantity::kRadianceToPoint, kDay, 50, 72, 0.015, 0, 0.004, 0},  // max 1.027%: target 1.5%; median 0.22%: target
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 0, 3, 0.0068, 0.003051, kNone, 0},  // max 0.610%, median 0.61%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 0, 18, 0.0074, 0.003359, kNone, 0},  // max 0.672%, median 0.49%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 0, 18, 0.0069, 0.003095, kNone, 0},  // max 0.619%, median 0.18%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 10, 3, 0.016, 0.007189, kNone, 0},  // max 1.438%, median 1.44%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 30, 0.015, 0.006427, kNone, 0},  // max 1.285%, median 0.65%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 10, 30, 0.0099, 0.004499, kNone, 0},  // max 0.900%, median 0.46%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.021, 0.009481, kNone, 0},  // max 1.896%, median 1.90%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 50, 30, 0.026, 0.011796, kNone, 0},  // max 2.359%, median 0.62%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 24, 0.0068, 0.00305, kNone, 0},  // max 0.610%, median 0.25%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.966%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.067, 0.030021, kNone, 0},  // max 6.004%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 90, 0.13, 0.055443, kNone, 0},  // max 11.089%: MISSED, target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 2.197%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 10, 150, 0.087, 0.039422, kNone, 0},  // max 7.884%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 140, 0.064, 0.029064, kNone, 0},  // max 5.813%: MISSED, target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 2.467%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.034, 0.015041, kNone, 0},  // max 3.008%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 50, 120, 0.03, 0, kNone, 0},  // max 0.278%: target 3%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 1.878%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.08, 0, kNone, 0},  // max 5.265%: target 8%
-    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 0.720%: target 8%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 3.675%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.17, 0.074165, kNone, 0},  // max 14.833%: MISSED, target 8%
+    {SkyQuantity::kSkyIrradiance, kDay, 0, 9, 0.01, 0, 0.006, 0.0027},  // max 0.836%: target 1%; median 0.54% MISSED, target 0.4%
+    {SkyQuantity::kSkyRadiance, kDay, 0, 54, 0.01, 0, 0.004, 0},  // max 0.808%: target 1%; median 0.32%: target
+    {SkyQuantity::kRadianceToPoint, kDay, 0, 54, 0.013, 0.005511, 0.004, 0},  // max 1.102%: MISSED, target 1%; median 0.38%: target
+    {SkyQuantity::kSkyIrradiance, kDay, 10, 9, 0.015, 0, 0.004, 0},  // max 0.773%: target 1.5%; median 0.33%: target
+    {SkyQuantity::kSkyRadiance, kDay, 10, 90, 0.02, 0.00893, 0.0087, 0.00395},  // max 1.786%: MISSED, target 1.5%; median 0.79% MISSED, target 0.4%
+    {SkyQuantity::kRadianceToPoint, kDay, 10, 90, 0.015, 0, 0.004, 0},  // max 1.269%: target 1.5%; median 0.27%: target
+    {SkyQuantity::kSkyIrradiance, kDay, 50, 9, 0.015, 0, 0.011, 0.00475},  // max 1.132%: target 1.5%; median 0.95% MISSED, target 0.4%
+    {SkyQuantity::kSkyRadiance, kDay, 50, 90, 0.015, 0, 0.004, 0},  // max 1.422%: target 1.5%; median 0.34%: target
+    {SkyQuantity::kRadianceToPoint, kDay, 50, 72, 0.015, 0, 0.004, 0},  // max 1.101%: target 1.5%; median 0.23%: target
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 0, 3, 0.0069, 0.003104, kNone, 0},  // max 0.621%, median 0.62%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 0, 18, 0.0073, 0.003294, kNone, 0},  // max 0.659%, median 0.50%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 0, 18, 0.0088, 0.003972, kNone, 0},  // max 0.794%, median 0.29%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 10, 3, 0.015, 0.006463, kNone, 0},  // max 1.293%, median 1.29%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 30, 0.015, 0.006511, kNone, 0},  // max 1.302%, median 0.70%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 10, 30, 0.0092, 0.004145, kNone, 0},  // max 0.829%, median 0.37%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.022, 0.009751, kNone, 0},  // max 1.950%, median 1.95%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 50, 30, 0.018, 0.007737, kNone, 0},  // max 1.547%, median 0.55%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 24, 0.0058, 0.002634, kNone, 0},  // max 0.527%, median 0.15%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.975%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.067, 0.030033, kNone, 0},  // max 6.007%: MISSED, target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 90, 0.13, 0.055381, kNone, 0},  // max 11.076%: MISSED, target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 2.202%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 10, 150, 0.085, 0.038437, kNone, 0},  // max 7.687%: MISSED, target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 140, 0.066, 0.029654, kNone, 0},  // max 5.931%: MISSED, target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 2.468%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.03, 0, kNone, 0},  // max 2.790%: target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 50, 120, 0.03, 0, kNone, 0},  // max 0.276%: target 3%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 1.898%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.08, 0, kNone, 0},  // max 5.262%: target 8%
+    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 1.123%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 3.700%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.17, 0.07335, kNone, 0},  // max 14.670%: MISSED, target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 10, 0, kNone, 0, kNone, 0},  // no value above the floor
-    {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 1.532%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 2.166%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 1.527%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 1.889%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 50, 0, kNone, 0, kNone, 0},  // no value above the floor
 };
 
