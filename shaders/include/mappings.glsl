@@ -116,9 +116,9 @@ float GetMuSFromScatteringUMuS(ivec4 size, float u_mu_s) {
 // The r axis: Bruneton 2017's x = rho / H, warped by W(x) = x - R_WARP x^2 (1 - x). rho / H
 // alone is dense near the ground (texels at 0, 0.06, 0.25, 0.56 km) but 3.4-3.8 km apart above
 // 45 km, where single scattering toward the zenith falls to zero at the top of the atmosphere and
-// is concave in x: looking up from 50 / 55 km with the sun overhead it read 1.5 / 5.4% low, and 0.4%
-// with 64 r texels. W keeps the slope 1 at the ground (texels at 0, 0.07, 0.28, 0.65 km) and
-// has slope 1 + R_WARP at the top: 2.2 km apart there, and 2.1 km instead of 1.5 km apart
+// is concave in x: looking up from 50 / 55 km with the sun overhead it read 1.5 / 5.4% low, and
+// 0.4% with 64 r texels. W keeps the slope 1 at the ground (texels at 0, 0.07, 0.28, 0.65 km)
+// and has slope 1 + R_WARP at the top: 2.2 km apart there, and 2.1 km instead of 1.5 km apart
 // around 10 km, where the slope is least (1 - R_WARP / 3). R_WARP 0.35, 0.5, 0.75 and 1 were
 // measured (aerial_bench_sky --grid quick); 0.75 took the daylight sky 50 km up from 1.54% to
 // 1.42% at most and its median from 0.41% to 0.34%, the median radiance to a point 10 km up from

@@ -188,7 +188,8 @@ vec3 GetScatteringClampedNu(sampler3D scattering_texture, ivec4 size, int mu_axi
 // falls off roughly exponentially with altitude, and at the default 32 r slices a slice spans
 // 2.1 km of altitude at 10 km (Mie's scale height is 1.2 km) and 2.3 km at 50 km: linear
 // interpolation overestimated the inscatter seen by a high camera by up to 20% (Mie) and 2.4%
-// (Rayleigh) with slices 1.6 and 3.5 km apart there. Where either slice is zero (night side) the interpolation falls back to linear.
+// (Rayleigh) with slices 1.6 and 3.5 km apart there. Where either slice is zero (night side) the
+// interpolation falls back to linear.
 vec3 GetScatteringBlendedExponentialInR(sampler3D scattering_texture, ivec4 size, int mu_axis,
                                         vec2 nu_blend, vec4 uvwz) {
   float r_size = float(size.x);
