@@ -73,23 +73,23 @@ const RegionBound kBounds[] = {
     {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.022, 0.009751, kNone, 0},  // max 1.950%, median 1.95%: no target, pinned
     {SkyQuantity::kSkyRadiance, kAfternoon, 50, 30, 0.018, 0.007737, kNone, 0},  // max 1.547%, median 0.55%: no target, pinned
     {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 24, 0.0058, 0.002634, kNone, 0},  // max 0.527%, median 0.15%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.413%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.049, 0.022185, kNone, 0},  // max 4.437%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 90, 0.041, 0.018228, kNone, 0},  // max 3.646%: MISSED, target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 2.001%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 10, 150, 0.059, 0.026803, kNone, 0},  // max 5.361%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 140, 0.044, 0.019772, kNone, 0},  // max 3.954%: MISSED, target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 2.474%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.03, 0, kNone, 0},  // max 2.674%: target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.975%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.067, 0.030033, kNone, 0},  // max 6.007%: MISSED, target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 90, 0.043, 0.019464, kNone, 0},  // max 3.893%: MISSED, target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 2.202%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 10, 150, 0.085, 0.038437, kNone, 0},  // max 7.687%: MISSED, target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 140, 0.036, 0.016104, kNone, 0},  // max 3.221%: MISSED, target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 2.468%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.03, 0, kNone, 0},  // max 2.790%: target 3%
     {SkyQuantity::kRadianceToPoint, kLowSun, 50, 120, 0.03, 0, kNone, 0},  // max 0.276%: target 3%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 1.515%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.08, 0, kNone, 0},  // max 7.708%: target 8%
-    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 6.478%: target 8%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 3.520%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.15, 0.064498, kNone, 0},  // max 12.900%: MISSED, target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 1.898%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.08, 0, kNone, 0},  // max 5.262%: target 8%
+    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 6.311%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 3.700%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.17, 0.07335, kNone, 0},  // max 14.670%: MISSED, target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 10, 0, kNone, 0, kNone, 0},  // no value above the floor
-    {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 1.531%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 3.684%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 1.527%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 1.889%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 50, 0, kNone, 0, kNone, 0},  // no value above the floor
 };
 

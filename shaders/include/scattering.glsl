@@ -141,24 +141,27 @@ vec3 GetScattering(sampler3D scattering_texture, ivec4 size, float r, float mu, 
                                            ray_r_mu_intersects_ground));
 }
 
-// The scattering density tables (J_n, J_ms: the view zenith mu axis) in the Earth's shadow. Where
-// the sun is below the horizon, the density of orders >= 2 is the light of the sunlit air above
-// scattered once more, and it falls roughly exponentially as the sun goes down: at sun zenith 95
-// degrees, by a factor 1.6-1.8 from one mu_s texel to the next (0.52 degrees apart). A linear blend
-// of a falling exponential overestimates it (by 3% midway at that ratio), and so does everything
-// integrated from it: orders 1..2 of the sky along a horizontal ray from the ground at sun zenith
-// 95 were 9.5 / 9.7 / 8.8% high, and 152 mu_s texels took them only to 5.0 / 4.3 / 2.9% (`aerial
-// probe --orders 2 --series-tail off` against `--reference`). Between two mu_s texels whose upper
-// one has the sun below the horizon, the densities are blended exponentially; elsewhere, and in
-// the radiance tables, linearly. Both blends agree on the texels, so the read stays continuous.
-// Not for the 3D tables, which have no Earth's shadow: their low-sun radiance to a point on the
-// ground got worse that way (47% -> 54% at most in blue, aerial_bench_sky --lut 3d).
+// The multiple density J_ms in the Earth's shadow. Where the sun is below the horizon, the density
+// of orders >= 2 is the light of the sunlit air above scattered once more, and it falls roughly
+// exponentially as the sun goes down: at sun zenith 95 degrees, by a factor 1.6-1.8 from one mu_s
+// texel to the next (0.52 degrees apart). A linear blend of a falling exponential overestimates it
+// (by 3% midway at that ratio), and so does everything integrated from it: radiance to a point
+// from the ground at sun zenith 95 was 11% high in blue. Between two mu_s texels whose upper one
+// has the sun below the horizon, J_ms is blended exponentially, where the per-order densities are
+// resampled into it and where radiance to a point and the froxel build march it; elsewhere, and in
+// the other tables, linearly. Both blends agree on the texels, so the read stays continuous.
+//  - The precompute's integration of each order's density along the rays gained the same way (the
+//    low-sun sky on the ground 6.0% -> 4.4%), but its reads doubled in the shadow, 70% of the mu_s
+//    axis: the 4D precompute 6.7 -> 8.4 s, over its 8 s target. Not kept.
+//  - Not for the 3D tables, which have no Earth's shadow: their low-sun radiance to a point on the
+//    ground got worse that way (47% -> 54% at most in blue, aerial_bench_sky --lut 3d).
 vec3 GetDensityBlended(sampler3D density_texture, ivec4 size, vec2 nu_blend, vec3 uvw) {
   float mu_s_size = float(size.z);
   float texel = clamp(uvw.x * mu_s_size - 0.5, 0.0, mu_s_size - 1.0);
   float texel0 = min(floor(texel), mu_s_size - 2.0);
   float t = texel - texel0;
-  if (size.w == 1 || t == 0.0 || GetMuSFromUnitRange((texel0 + 1.0) / (mu_s_size - 1.0)) >= 0.0) {
+  // The upper texel's sun at or above the horizon: (texel0 + 1) / (size - 1) >= x(mu_s = 0).
+  if (size.w == 1 || t == 0.0 || texel0 + 1.0 >= GetUnitRangeFromMuS(0.0) * (mu_s_size - 1.0)) {
     return GetScatteringBlended(density_texture, size, nu_blend, uvw);
   }
   vec3 density0 = GetScatteringBlended(density_texture, size, nu_blend,
@@ -168,20 +171,28 @@ vec3 GetDensityBlended(sampler3D density_texture, ivec4 size, vec2 nu_blend, vec
   return MixExponentially(density0, density1, t);
 }
 
-// The blend of the table on `mu_axis`: densities on the view zenith axis, radiance on the other.
-vec3 GetTableBlended(sampler3D scattering_texture, ivec4 size, int mu_axis, vec2 nu_blend,
-                     vec3 uvw) {
-  return mu_axis == MU_AXIS_VIEW_ZENITH
-             ? GetDensityBlended(scattering_texture, size, nu_blend, uvw)
-             : GetScatteringBlended(scattering_texture, size, nu_blend, uvw);
-}
-
 vec3 GetScatteringClampedNu(sampler3D scattering_texture, ivec4 size, int mu_axis, float r,
                             float mu, float mu_s, float nu, bool ray_r_mu_intersects_ground) {
   vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, mu_axis, r, mu, mu_s, nu,
                                                    ray_r_mu_intersects_ground);
-  return GetTableBlended(scattering_texture, size, mu_axis,
-                         GetClampedNuBlend(size, uvwz, mu, mu_s, nu), uvwz.yzw);
+  return GetScatteringBlended(scattering_texture, size, GetClampedNuBlend(size, uvwz, mu, mu_s, nu),
+                              uvwz.yzw);
+}
+
+// A density table read for J_ms (the view zenith mu axis, clamped nu, GetDensityBlended in mu_s).
+vec3 GetDensityClampedNu(sampler3D density_texture, ivec4 size, float r, float mu, float mu_s,
+                         float nu, bool ray_r_mu_intersects_ground) {
+  vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, MU_AXIS_VIEW_ZENITH, r, mu, mu_s, nu,
+                                                   ray_r_mu_intersects_ground);
+  return GetDensityBlended(density_texture, size, GetClampedNuBlend(size, uvwz, mu, mu_s, nu),
+                           uvwz.yzw);
+}
+
+// The blend in mu_s (and nu) of a density (J_ms) or of a radiance table.
+vec3 GetTableBlended(sampler3D scattering_texture, ivec4 size, bool density, vec2 nu_blend,
+                     vec3 uvw) {
+  return density ? GetDensityBlended(scattering_texture, size, nu_blend, uvw)
+                 : GetScatteringBlended(scattering_texture, size, nu_blend, uvw);
 }
 
 // Interpolates exponentially between the two nearest r slices instead of linearly. Scattering
@@ -190,16 +201,16 @@ vec3 GetScatteringClampedNu(sampler3D scattering_texture, ivec4 size, int mu_axi
 // interpolation overestimated the inscatter seen by a high camera by up to 20% (Mie) and 2.4%
 // (Rayleigh) with slices 1.6 and 3.5 km apart there. Where either slice is zero (night side) the
 // interpolation falls back to linear.
-vec3 GetScatteringBlendedExponentialInR(sampler3D scattering_texture, ivec4 size, int mu_axis,
+vec3 GetScatteringBlendedExponentialInR(sampler3D scattering_texture, ivec4 size, bool density,
                                         vec2 nu_blend, vec4 uvwz) {
   float r_size = float(size.x);
   float slice = clamp(uvwz.w * r_size - 0.5, 0.0, r_size - 1.0);
   float slice0 = min(floor(slice), r_size - 2.0);
   float t = slice - slice0;
-  vec3 s0 = GetTableBlended(scattering_texture, size, mu_axis, nu_blend,
+  vec3 s0 = GetTableBlended(scattering_texture, size, density, nu_blend,
                             vec3(uvwz.yz, (slice0 + 0.5) / r_size));
   if (t == 0.0) return s0;  // on a slice (a camera on the ground): uniform over a frame's pixels
-  vec3 s1 = GetTableBlended(scattering_texture, size, mu_axis, nu_blend,
+  vec3 s1 = GetTableBlended(scattering_texture, size, density, nu_blend,
                             vec3(uvwz.yz, (slice0 + 1.5) / r_size));
   return MixExponentially(s0, s1, t);
 }
@@ -209,7 +220,7 @@ vec3 GetScatteringExponentialInR(sampler3D scattering_texture, ivec4 size, float
                                  float mu_s, float nu, bool ray_r_mu_intersects_ground) {
   vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, MU_AXIS_RAY_LENGTH, r, mu, mu_s, nu,
                                                    ray_r_mu_intersects_ground);
-  return GetScatteringBlendedExponentialInR(scattering_texture, size, MU_AXIS_RAY_LENGTH,
+  return GetScatteringBlendedExponentialInR(scattering_texture, size, false,
                                             GetNominalNuBlend(size, uvwz), uvwz);
 }
 
@@ -220,7 +231,7 @@ vec3 GetMultipleScatteringDensity(sampler3D multiple_density_texture, float r, f
   ivec4 size = atmosphere.multiple_density_size;
   vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, MU_AXIS_VIEW_ZENITH, r, mu, mu_s, nu,
                                                    ray_r_mu_intersects_ground);
-  return GetScatteringBlendedExponentialInR(multiple_density_texture, size, MU_AXIS_VIEW_ZENITH,
+  return GetScatteringBlendedExponentialInR(multiple_density_texture, size, true,
                                             GetClampedNuBlend(size, uvwz, mu, mu_s, nu), uvwz);
 }
 

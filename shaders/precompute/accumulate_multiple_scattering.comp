@@ -31,6 +31,18 @@ layout(push_constant) uniform Step {
   int mu_axis;  // of the source and the accumulator: MU_AXIS_VIEW_ZENITH for the densities
 } pass;
 
+// A quantity of order n at (r, mu, mu_s, nu): the densities blended in mu_s like the render-time
+// read of J_ms that they are summed into (GetDensityBlended), the radiance linearly.
+vec3 ReadOrder(sampler3D order_texture, float r, float mu, float mu_s, float nu,
+               bool ray_r_mu_intersects_ground) {
+  if (pass.mu_axis == MU_AXIS_VIEW_ZENITH) {
+    return GetDensityClampedNu(order_texture, atmosphere.density_size, r, mu, mu_s, nu,
+                               ray_r_mu_intersects_ground);
+  }
+  return GetScatteringClampedNu(order_texture, atmosphere.density_size, pass.mu_axis, r, mu, mu_s,
+                                nu, ray_r_mu_intersects_ground);
+}
+
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
   if (!IsScatteringTexel(pass.target_size, texel)) return;
@@ -38,12 +50,10 @@ void main() {
   bool ray_r_mu_intersects_ground;
   GetRMuMuSNuFromScatteringTexel(pass.target_size, pass.mu_axis, texel, r, mu, mu_s, nu,
                                  ray_r_mu_intersects_ground);
-  vec3 value = GetScatteringClampedNu(order_texture, atmosphere.density_size, pass.mu_axis, r, mu,
-                                      mu_s, nu, ray_r_mu_intersects_ground);
+  vec3 value = ReadOrder(order_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
   if (pass.close_series != 0) {
     value = SumSeriesFromLastOrder(
-        value, GetScatteringClampedNu(previous_order_texture, atmosphere.density_size,
-                                      pass.mu_axis, r, mu, mu_s, nu, ray_r_mu_intersects_ground));
+        value, ReadOrder(previous_order_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground));
   }
   if (pass.divide_by_rayleigh_phase != 0)
     value /= RayleighPhaseFunction(GetScatteringTexelNominalNu(pass.target_size, texel));
