@@ -171,28 +171,20 @@ vec3 GetDensityBlended(sampler3D density_texture, ivec4 size, vec2 nu_blend, vec
   return MixExponentially(density0, density1, t);
 }
 
-vec3 GetScatteringClampedNu(sampler3D scattering_texture, ivec4 size, int mu_axis, float r,
-                            float mu, float mu_s, float nu, bool ray_r_mu_intersects_ground) {
-  vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, mu_axis, r, mu, mu_s, nu,
-                                                   ray_r_mu_intersects_ground);
-  return GetScatteringBlended(scattering_texture, size, GetClampedNuBlend(size, uvwz, mu, mu_s, nu),
-                              uvwz.yzw);
-}
-
-// A density table read for J_ms (the view zenith mu axis, clamped nu, GetDensityBlended in mu_s).
-vec3 GetDensityClampedNu(sampler3D density_texture, ivec4 size, float r, float mu, float mu_s,
-                         float nu, bool ray_r_mu_intersects_ground) {
-  vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, MU_AXIS_VIEW_ZENITH, r, mu, mu_s, nu,
-                                                   ray_r_mu_intersects_ground);
-  return GetDensityBlended(density_texture, size, GetClampedNuBlend(size, uvwz, mu, mu_s, nu),
-                           uvwz.yzw);
-}
-
-// The blend in mu_s (and nu) of a density (J_ms) or of a radiance table.
+// The blend in mu_s (and nu): GetDensityBlended for J_ms (density), linear for the other tables.
 vec3 GetTableBlended(sampler3D scattering_texture, ivec4 size, bool density, vec2 nu_blend,
                      vec3 uvw) {
   return density ? GetDensityBlended(scattering_texture, size, nu_blend, uvw)
                  : GetScatteringBlended(scattering_texture, size, nu_blend, uvw);
+}
+
+vec3 GetScatteringClampedNu(sampler3D scattering_texture, ivec4 size, int mu_axis, bool density,
+                            float r, float mu, float mu_s, float nu,
+                            bool ray_r_mu_intersects_ground) {
+  vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, mu_axis, r, mu, mu_s, nu,
+                                                   ray_r_mu_intersects_ground);
+  return GetTableBlended(scattering_texture, size, density,
+                         GetClampedNuBlend(size, uvwz, mu, mu_s, nu), uvwz.yzw);
 }
 
 // Interpolates exponentially between the two nearest r slices instead of linearly. Scattering
@@ -249,7 +241,8 @@ vec3 GetScatteringOfOrder(sampler3D single_rayleigh_texture, sampler3D single_mi
     return rayleigh * RayleighPhaseFunction(nu) + mie * MiePhaseFunction(atmosphere.mie_phase_g, nu);
   }
   return GetScatteringClampedNu(multiple_scattering_texture, atmosphere.density_size,
-                                MU_AXIS_RAY_LENGTH, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+                                MU_AXIS_RAY_LENGTH, false, r, mu, mu_s, nu,
+                                ray_r_mu_intersects_ground);
 }
 
 // Multiple scattering of order n (Bruneton 2008 eq. 12 integrated along the ray): the scattering
@@ -262,8 +255,9 @@ vec3 MultipleScatteringIntegrand(sampler2D transmittance_texture,
   float r_d = RadiusAtDistance(r, mu, d);
   float mu_d = MuAtDistance(r, mu, d, r_d);
   float mu_s_d = SunCosineAlongRay(r, mu_s, nu, d, r_d);
+  // Linear in mu_s even in the Earth's shadow: see GetDensityBlended for what that costs.
   return GetScatteringClampedNu(scattering_density_texture, atmosphere.density_size,
-                                MU_AXIS_VIEW_ZENITH, r_d, mu_d, mu_s_d, nu,
+                                MU_AXIS_VIEW_ZENITH, false, r_d, mu_d, mu_s_d, nu,
                                 ray_r_mu_intersects_ground) *
          GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
                                     ray_r_mu_intersects_ground);
