@@ -35,7 +35,7 @@ void main() {
     ivec2 node;
     vec2 t;
     GetSkyViewLatticeCell(texel, table.size, node, t);
-    AddSingleScatteringCorrection(INTERPOLATE_LATTICE(rayleigh_correction, node, t),
+    AddSkyInscatterCorrection(INTERPOLATE_LATTICE(rayleigh_correction, node, t),
                                   INTERPOLATE_LATTICE(mie_correction, node, t), sky);
   }
   imageStore(rayleigh_sky, texel, vec4(sky.rayleigh, 0.0));

@@ -11,8 +11,9 @@
 #include "sky_view.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
-layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D rayleigh_correction;
-layout(set = 0, binding = 4, rgba32f) writeonly uniform image2D mie_correction;
+layout(set = 0, binding = 3) uniform sampler3D rayleigh_texture;
+layout(set = 0, binding = 4, rgba32f) writeonly uniform image2D rayleigh_correction;
+layout(set = 0, binding = 5, rgba32f) writeonly uniform image2D mie_correction;
 layout(push_constant) uniform Size { ivec2 size; } table;  // the sky-view table's
 
 void main() {
@@ -20,8 +21,8 @@ void main() {
   if (any(greaterThanEqual(node, GetSkyViewLatticeSize(table.size)))) return;
   SkyViewRay ray = GetSkyViewRay(GetSkyViewLatticeTexel(node, table.size), table.size);
   vec3 rayleigh, mie;
-  GetSingleScatteringCorrection(transmittance_texture, atmosphere.scattering_size, ray.r, ray.mu,
-                                ray.mu_s, ray.nu, rayleigh, mie);
+  GetSkyInscatterCorrection(transmittance_texture, rayleigh_texture, ray.r, ray.mu, ray.mu_s,
+                            ray.nu, rayleigh, mie);
   imageStore(rayleigh_correction, node, vec4(rayleigh, 0.0));
   imageStore(mie_correction, node, vec4(mie, 0.0));
 }

@@ -113,6 +113,12 @@ float GetMuSFromScatteringUMuS(ivec4 size, float u_mu_s) {
   return GetMuSFromUnitRange(GetUnitRangeFromTextureCoord(u_mu_s, size.z));
 }
 
+// Whether mu_s texel `texel` of a table with mu_s_size texels holds a sun lower than mu_s:
+// texel / (mu_s_size - 1) < x(mu_s), so no tan per call with a constant mu_s.
+bool IsMuSTexelBelow(float texel, float mu_s_size, float mu_s) {
+  return texel < GetUnitRangeFromMuS(mu_s) * (mu_s_size - 1.0);
+}
+
 // The r axis: Bruneton 2017's x = rho / H, warped by W(x) = x - R_WARP x^2 (1 - x). rho / H
 // alone is dense near the ground (texels at 0, 0.06, 0.25, 0.56 km) but 3.4-3.8 km apart above
 // 45 km, where single scattering toward the zenith falls to zero at the top of the atmosphere and

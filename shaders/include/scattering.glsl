@@ -160,8 +160,7 @@ vec3 GetDensityBlended(sampler3D density_texture, ivec4 size, vec2 nu_blend, vec
   float texel = clamp(uvw.x * mu_s_size - 0.5, 0.0, mu_s_size - 1.0);
   float texel0 = min(floor(texel), mu_s_size - 2.0);
   float t = texel - texel0;
-  // The upper texel's sun at or above the horizon: (texel0 + 1) / (size - 1) >= x(mu_s = 0).
-  if (size.w == 1 || t == 0.0 || texel0 + 1.0 >= GetUnitRangeFromMuS(0.0) * (mu_s_size - 1.0)) {
+  if (size.w == 1 || t == 0.0 || !IsMuSTexelBelow(texel0 + 1.0, mu_s_size, 0.0)) {
     return GetScatteringBlended(density_texture, size, nu_blend, uvw);
   }
   vec3 density0 = GetScatteringBlended(density_texture, size, nu_blend,

@@ -43,18 +43,22 @@ const int SINGLE_SCATTERING_CORRECTION_STEPS = 16;
 const float SINGLE_SCATTERING_CORRECTION_MU_S = 0.26;
 const int SINGLE_SCATTERING_SUNS = 5;  // the query and the blend's four nodes
 
+// The suns marched: the query's (k = 0) and the four texel nodes (k = 1 + 2 a + b: mu_s node a,
+// nu slice b), with the read's blend weights of the upper node and slice.
 struct SingleScatteringSuns {
-  float mu_s[SINGLE_SCATTERING_SUNS], nu[SINGLE_SCATTERING_SUNS], weight[SINGLE_SCATTERING_SUNS];
+  float mu_s[SINGLE_SCATTERING_SUNS], nu[SINGLE_SCATTERING_SUNS];
+  float mu_s_weight, nu_weight;
+  float mu_s_texel;  // the lower node's texel index
 };
 
 // The two mu_s texels that the table's read at mu_s blends: (x, y) their mu_s, (z) the upper
-// one's weight.
-vec3 GetScatteringMuSBlend(ivec4 size, float mu_s) {
+// one's weight, (w) the lower one's texel index.
+vec4 GetScatteringMuSBlend(ivec4 size, float mu_s) {
   float mu_s_size = float(size.z);
   float x = clamp(GetScatteringUMuS(size, mu_s) * mu_s_size - 0.5, 0.0, mu_s_size - 1.0);
   float i0 = min(floor(x), mu_s_size - 2.0);
-  return vec3(GetMuSFromScatteringUMuS(size, (i0 + 0.5) / mu_s_size),
-              GetMuSFromScatteringUMuS(size, (i0 + 1.5) / mu_s_size), x - i0);
+  return vec4(GetMuSFromScatteringUMuS(size, (i0 + 0.5) / mu_s_size),
+              GetMuSFromScatteringUMuS(size, (i0 + 1.5) / mu_s_size), x - i0, i0);
 }
 
 // Whether the sky's single scattering is corrected with the sun at mu_s (the same for every ray
@@ -63,45 +67,46 @@ bool SingleScatteringCorrectionApplies(ivec4 size, float mu_s) {
   return size.w > 1 && GetScatteringMuSBlend(size, mu_s).x <= SINGLE_SCATTERING_CORRECTION_MU_S;
 }
 
-// The query's sun (weight 1) and the texels' suns that the table's read blends (minus their
-// weights); false where the correction is not needed.
+// The query's sun and the texels' suns that the table's read blends; false where the correction
+// is not needed.
 bool GetSingleScatteringSuns(ivec4 size, float mu, float mu_s, float nu,
                              out SingleScatteringSuns suns) {
   if (!SingleScatteringCorrectionApplies(size, mu_s)) return false;
-  vec3 mu_s_blend = GetScatteringMuSBlend(size, mu_s);
-  vec2 node_mu_s = mu_s_blend.xy;
-  vec2 mu_s_weight = vec2(1.0 - mu_s_blend.z, mu_s_blend.z);
+  vec4 mu_s_blend = GetScatteringMuSBlend(size, mu_s);
   vec2 nu_blend = GetNominalNuBlend(size, vec4((nu + 1.0) / 2.0, 0.0, 0.0, 0.0));
+  suns.mu_s_weight = mu_s_blend.z;
+  suns.nu_weight = nu_blend.y;
+  suns.mu_s_texel = mu_s_blend.w;
   suns.mu_s[0] = mu_s;
   suns.nu[0] = nu;
-  suns.weight[0] = 1.0;
   for (int a = 0; a < 2; ++a) {
-    float spread = sqrt(max((1.0 - mu * mu) * (1.0 - node_mu_s[a] * node_mu_s[a]), 0.0));
+    float spread = sqrt(max((1.0 - mu * mu) * (1.0 - mu_s_blend[a] * mu_s_blend[a]), 0.0));
     for (int b = 0; b < 2; ++b) {
       int k = 1 + 2 * a + b;
       // A texel holds its value at its nominal nu clamped to what (mu, mu_s) allow.
       float nominal_nu = 2.0 * (nu_blend.x + float(b)) / float(size.w - 1) - 1.0;
-      suns.mu_s[k] = node_mu_s[a];
-      suns.nu[k] = clamp(nominal_nu, mu * node_mu_s[a] - spread, mu * node_mu_s[a] + spread);
-      suns.weight[k] = -mu_s_weight[a] * (b == 0 ? 1.0 - nu_blend.y : nu_blend.y);
+      suns.mu_s[k] = mu_s_blend[a];
+      suns.nu[k] = clamp(nominal_nu, mu * mu_s_blend[a] - spread, mu * mu_s_blend[a] + spread);
     }
   }
   return true;
 }
 
-// The correction to add to the tables' single scattering of the ray (r, mu) with the sun at
-// (mu_s, nu), without phase; zero where it is not needed.
-void GetSingleScatteringCorrection(sampler2D transmittance_texture, ivec4 size, float r, float mu,
-                                   float mu_s, float nu, out vec3 rayleigh, out vec3 mie) {
-  rayleigh = vec3(0.0);
-  mie = vec3(0.0);
-  SingleScatteringSuns suns;
-  if (!GetSingleScatteringSuns(size, mu, mu_s, nu, suns)) return;
+// The single scattering of the ray (r, mu) for each sun of `suns`, without phase, marched in
+// SINGLE_SCATTERING_CORRECTION_STEPS equal steps with ExponentialStepIntegral.
+void MarchSingleScatteringSuns(sampler2D transmittance_texture, float r, float mu,
+                               SingleScatteringSuns suns,
+                               out vec3 rayleigh[SINGLE_SCATTERING_SUNS],
+                               out vec3 mie[SINGLE_SCATTERING_SUNS]) {
   bool ray_r_mu_intersects_ground = RayIntersectsGround(r, mu);
   float dx = DistanceToNearestAtmosphereBoundary(r, mu, ray_r_mu_intersects_ground) /
              float(SINGLE_SCATTERING_CORRECTION_STEPS);
   vec3 origin = GetRayOpticalDepthOrigin(transmittance_texture, r, mu, ray_r_mu_intersects_ground);
   vec3 rayleigh_previous[SINGLE_SCATTERING_SUNS], mie_previous[SINGLE_SCATTERING_SUNS];
+  for (int k = 0; k < SINGLE_SCATTERING_SUNS; ++k) {
+    rayleigh[k] = vec3(0.0);
+    mie[k] = vec3(0.0);
+  }
   for (int i = 0; i <= SINGLE_SCATTERING_CORRECTION_STEPS; ++i) {
     float d = float(i) * dx;
     float r_d = RadiusAtDistance(r, mu, d);
@@ -113,20 +118,85 @@ void GetSingleScatteringCorrection(sampler2D transmittance_texture, ivec4 size, 
                                          SunCosineAlongRay(r, suns.mu_s[k], suns.nu[k], d, r_d),
                                          view_transmittance, rayleigh_i, mie_i);
       if (i > 0) {
-        rayleigh += suns.weight[k] * ExponentialStepIntegral(rayleigh_previous[k], rayleigh_i);
-        mie += suns.weight[k] * ExponentialStepIntegral(mie_previous[k], mie_i);
+        rayleigh[k] += ExponentialStepIntegral(rayleigh_previous[k], rayleigh_i);
+        mie[k] += ExponentialStepIntegral(mie_previous[k], mie_i);
       }
       rayleigh_previous[k] = rayleigh_i;
       mie_previous[k] = mie_i;
     }
   }
   vec3 sun = atmosphere.solar_irradiance.rgb * dx;
-  rayleigh *= sun * atmosphere.rayleigh_scattering.rgb;
-  mie *= sun * atmosphere.mie_scattering.rgb;
+  for (int k = 0; k < SINGLE_SCATTERING_SUNS; ++k) {
+    rayleigh[k] *= sun * atmosphere.rayleigh_scattering.rgb;
+    mie[k] *= sun * atmosphere.mie_scattering.rgb;
+  }
+}
+
+// The marched suns' blend as the table's read blends its texels: the query's value minus the
+// nodes' weighted values.
+vec3 GetSingleScatteringDifference(SingleScatteringSuns suns,
+                                   vec3 single[SINGLE_SCATTERING_SUNS]) {
+  vec3 lower = mix(single[1], single[2], suns.nu_weight);
+  vec3 upper = mix(single[3], single[4], suns.nu_weight);
+  return single[0] - mix(lower, upper, suns.mu_s_weight);
+}
+
+// Multiple scattering of a low sun, blended exponentially in mu_s. With the sun near or below
+// the horizon the sky's orders >= 2 come more and more from the sunlit air far above and away,
+// and fall roughly exponentially as the sun goes down (as J_ms does, GetDensityBlended): looking
+// 2 degrees above the horizon away from a sun at zenith 92 degrees, the reference's orders <= 2
+// fall by 1.75x between the two mu_s texels around it, and the linear blend read them 4% too
+// bright midway (5-6% in all, 2-4% on the texels). The 4D Rayleigh table holds single and
+// multiple scattering together; the multiple part at each mu_s node is the table's value there
+// minus the node's marched single scattering, so this is a term of the same correction: the
+// exponential blend of the two nodes' multiple scattering minus their linear blend.
+//  - Only between two texels whose upper one has the sun below MULTIPLE_SCATTERING_EXPONENTIAL_MU_S
+//    (sun zenith 84.3 degrees). 0 (the horizon, as for J_ms), 0.1 and 0.2 were measured
+//    (aerial_bench_sky --grid quick): 0.1 took the low-sun sky on the ground from 4.3% to 3.0% in
+//    blue (looking away from a sun at zenith 90 degrees, between the texels at 89.4 and 90.3);
+//    0.2 raised two low-sun medians by 0.05 point and nothing else.
+const float MULTIPLE_SCATTERING_EXPONENTIAL_MU_S = 0.1;
+
+vec3 GetMultipleScatteringBlendCorrection(sampler3D rayleigh_texture, float r, float mu,
+                                          float mu_s, float nu, SingleScatteringSuns suns,
+                                          vec3 rayleigh_single[SINGLE_SCATTERING_SUNS]) {
+  ivec4 size = atmosphere.scattering_size;
+  if (suns.mu_s_weight == 0.0 ||
+      !IsMuSTexelBelow(suns.mu_s_texel + 1.0, float(size.z), MULTIPLE_SCATTERING_EXPONENTIAL_MU_S))
+    return vec3(0.0);
+  vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, MU_AXIS_RAY_LENGTH, r, mu, mu_s, nu,
+                                                   RayIntersectsGround(r, mu));
+  vec2 nu_blend = GetNominalNuBlend(size, uvwz);
+  vec3 multiple[2];
+  for (int a = 0; a < 2; ++a) {
+    uvwz.y = (suns.mu_s_texel + float(a) + 0.5) / float(size.z);
+    multiple[a] = GetScatteringBlendedExponentialInR(rayleigh_texture, size, false, nu_blend, uvwz) -
+                  mix(rayleigh_single[1 + 2 * a], rayleigh_single[2 + 2 * a], suns.nu_weight);
+  }
+  return MixExponentially(multiple[0], multiple[1], suns.mu_s_weight) -
+         mix(multiple[0], multiple[1], suns.mu_s_weight);
+}
+
+// The correction to add to the tables' inscatter of the ray (r, mu) with the sun at (mu_s, nu),
+// without phase: single scattering's, and multiple scattering's in the Earth's shadow. Zero where
+// it is not needed.
+void GetSkyInscatterCorrection(sampler2D transmittance_texture, sampler3D rayleigh_texture,
+                               float r, float mu, float mu_s, float nu, out vec3 rayleigh,
+                               out vec3 mie) {
+  rayleigh = vec3(0.0);
+  mie = vec3(0.0);
+  SingleScatteringSuns suns;
+  if (!GetSingleScatteringSuns(atmosphere.scattering_size, mu, mu_s, nu, suns)) return;
+  vec3 rayleigh_single[SINGLE_SCATTERING_SUNS], mie_single[SINGLE_SCATTERING_SUNS];
+  MarchSingleScatteringSuns(transmittance_texture, r, mu, suns, rayleigh_single, mie_single);
+  rayleigh = GetSingleScatteringDifference(suns, rayleigh_single) +
+             GetMultipleScatteringBlendCorrection(rayleigh_texture, r, mu, mu_s, nu, suns,
+                                                  rayleigh_single);
+  mie = GetSingleScatteringDifference(suns, mie_single);
 }
 
 // Clamped at zero: in the Earth's shadow the table's value and the correction nearly cancel.
-void AddSingleScatteringCorrection(vec3 rayleigh, vec3 mie, inout Inscatter sky) {
+void AddSkyInscatterCorrection(vec3 rayleigh, vec3 mie, inout Inscatter sky) {
   sky.rayleigh = max(sky.rayleigh + rayleigh, vec3(0.0));
   sky.mie = max(sky.mie + mie, vec3(0.0));
 }
@@ -157,9 +227,9 @@ Inscatter GetSkyInscatter(sampler2D transmittance_texture, sampler3D rayleigh_te
   Inscatter sky = GetSkyInscatterFromTables(transmittance_texture, rayleigh_texture, mie_texture,
                                             multiple_texture, r, mu, mu_s, nu);
   vec3 rayleigh, mie;
-  GetSingleScatteringCorrection(transmittance_texture, atmosphere.scattering_size, r, mu, mu_s, nu,
-                                rayleigh, mie);
-  AddSingleScatteringCorrection(rayleigh, mie, sky);
+  GetSkyInscatterCorrection(transmittance_texture, rayleigh_texture, r, mu, mu_s, nu, rayleigh,
+                            mie);
+  AddSkyInscatterCorrection(rayleigh, mie, sky);
   return sky;
 }
 

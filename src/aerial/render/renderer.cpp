@@ -54,7 +54,7 @@ vk::SlotLayout SkyViewSlots() {
 
 vk::SlotLayout SkyViewCorrectionSlots() {
   return {{"AtmosphereBlock", kUniform}, {"FrameBlock", kUniform}, {"transmittance_texture", kSampled},
-          {"rayleigh_correction", vk::kStorageImage}, {"mie_correction", vk::kStorageImage}};
+          {"rayleigh_texture", kSampled}, {"rayleigh_correction", vk::kStorageImage}, {"mie_correction", vk::kStorageImage}};
 }
 
 // Where an opaque fragment's sun visibility comes from (opaque_fragment.glsl).
@@ -299,6 +299,7 @@ void Renderer::RecordSkyViewCorrection(const vk::CommandBuffer& cmd, const vk::B
   sky_view_correction_.Dispatch(cmd,
                                 {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame},
                                  tables_.Sampled(tables_.transmittance()),
+                                 tables_.Sampled(tables_.rayleigh()),
                                  vk::StorageImageSlot{&sky_rayleigh_correction_},
                                  vk::StorageImageSlot{&sky_mie_correction_}},
                                 {uint32_t(kSkyViewLatticeSize[0]), uint32_t(kSkyViewLatticeSize[1]), 1},
