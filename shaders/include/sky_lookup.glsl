@@ -99,16 +99,19 @@ void MarchSingleScatteringSuns(sampler2D transmittance_texture, float r, float m
                                out vec3 rayleigh[SINGLE_SCATTERING_SUNS],
                                out vec3 mie[SINGLE_SCATTERING_SUNS]) {
   bool ray_r_mu_intersects_ground = RayIntersectsGround(r, mu);
-  float dx = DistanceToNearestAtmosphereBoundary(r, mu, ray_r_mu_intersects_ground) /
-             float(SINGLE_SCATTERING_CORRECTION_STEPS);
+  float length = DistanceToNearestAtmosphereBoundary(r, mu, ray_r_mu_intersects_ground);
+  float spacing_exponent = GetStepSpacingExponent(r, suns.mu_s[0]);
   vec3 origin = GetRayOpticalDepthOrigin(transmittance_texture, r, mu, ray_r_mu_intersects_ground);
   vec3 rayleigh_previous[SINGLE_SCATTERING_SUNS], mie_previous[SINGLE_SCATTERING_SUNS];
   for (int k = 0; k < SINGLE_SCATTERING_SUNS; ++k) {
     rayleigh[k] = vec3(0.0);
     mie[k] = vec3(0.0);
   }
+  float d_previous = 0.0;
   for (int i = 0; i <= SINGLE_SCATTERING_CORRECTION_STEPS; ++i) {
-    float d = float(i) * dx;
+    float d = GetStepDistance(length, i, SINGLE_SCATTERING_CORRECTION_STEPS, spacing_exponent);
+    float dx = d - d_previous;
+    d_previous = d;
     float r_d = RadiusAtDistance(r, mu, d);
     vec3 view_transmittance = GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
                                                          ray_r_mu_intersects_ground);
@@ -118,14 +121,14 @@ void MarchSingleScatteringSuns(sampler2D transmittance_texture, float r, float m
                                          SunCosineAlongRay(r, suns.mu_s[k], suns.nu[k], d, r_d),
                                          view_transmittance, rayleigh_i, mie_i);
       if (i > 0) {
-        rayleigh[k] += ExponentialStepIntegral(rayleigh_previous[k], rayleigh_i);
-        mie[k] += ExponentialStepIntegral(mie_previous[k], mie_i);
+        rayleigh[k] += ExponentialStepIntegral(rayleigh_previous[k], rayleigh_i) * dx;
+        mie[k] += ExponentialStepIntegral(mie_previous[k], mie_i) * dx;
       }
       rayleigh_previous[k] = rayleigh_i;
       mie_previous[k] = mie_i;
     }
   }
-  vec3 sun = atmosphere.solar_irradiance.rgb * dx;
+  vec3 sun = atmosphere.solar_irradiance.rgb;
   for (int k = 0; k < SINGLE_SCATTERING_SUNS; ++k) {
     rayleigh[k] *= sun * atmosphere.rayleigh_scattering.rgb;
     mie[k] *= sun * atmosphere.mie_scattering.rgb;
