@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Sky-view correction pass, before the sky-view pass: the low sun's single scattering correction
-// (GetSingleScatteringCorrection, sky_lookup.glsl) at the lattice nodes of the sky-view table
+// Sky-view correction pass, before the sky-view pass: the low sun's correction of the tables'
+// inscatter (GetSkyInscatterCorrection, sky_lookup.glsl) at the lattice nodes of the sky-view table
 // (sky_view.glsl), which sky_view.comp interpolates. It marches five suns along each ray: at
 // every texel of the table it cost 78 ms per rebuild at sunset on lavapipe, at the 1,862 nodes
 // 14 ms (aerial_bench_render --preset sunset). The correction changes slowly over the table
