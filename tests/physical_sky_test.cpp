@@ -75,23 +75,23 @@ const RegionBound kBounds[] = {
     {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.022, 0.009751, kNone, 0},  // max 1.950%, median 1.95%: no target, pinned
     {SkyQuantity::kSkyRadiance, kAfternoon, 50, 30, 0.018, 0.007737, kNone, 0},  // max 1.547%, median 0.55%: no target, pinned
     {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 24, 0.0058, 0.002634, kNone, 0},  // max 0.527%, median 0.15%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.952%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.036, 0.016349, kNone, 0},  // max 3.270%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 90, 0.043, 0.019346, kNone, 0},  // max 3.869%: MISSED, target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 2.100%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 10, 150, 0.055, 0.024639, kNone, 0},  // max 4.928%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 140, 0.037, 0.016433, kNone, 0},  // max 3.287%: MISSED, target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 2.468%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.03, 0, kNone, 0},  // max 2.672%: target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.380%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.03, 0, kNone, 0},  // max 2.081%: target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 90, 0.037, 0.016624, kNone, 0},  // max 3.325%: MISSED, target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 1.954%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 10, 150, 0.035, 0.015889, kNone, 0},  // max 3.178%: MISSED, target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 140, 0.042, 0.018841, kNone, 0},  // max 3.768%: MISSED, target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 2.473%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.03, 0, kNone, 0},  // max 2.675%: target 3%
     {SkyQuantity::kRadianceToPoint, kLowSun, 50, 120, 0.03, 0, kNone, 0},  // max 0.276%: target 3%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 1.892%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.08, 0, kNone, 0},  // max 6.557%: target 8%
-    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 6.312%: target 8%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 3.690%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.15, 0.067955, kNone, 0},  // max 13.591%: MISSED, target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 1.564%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.09, 0.040752, kNone, 0},  // max 8.150%: MISSED, target 8%
+    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 6.457%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 3.533%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.15, 0.065583, kNone, 0},  // max 13.117%: MISSED, target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 10, 0, kNone, 0, kNone, 0},  // no value above the floor
-    {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 1.539%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 2.593%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 1.542%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 4.138%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 50, 0, kNone, 0, kNone, 0},  // no value above the floor
 };
 

@@ -276,13 +276,12 @@ vec3 GetScatteringOfOrder(sampler3D single_rayleigh_texture, sampler3D single_mi
 vec3 MultipleScatteringIntegrand(sampler2D transmittance_texture,
                                  sampler3D scattering_density_texture, vec3 origin, float r,
                                  float mu, float mu_s, float nu, float d,
-                                 bool ray_r_mu_intersects_ground) {
+                                 bool ray_r_mu_intersects_ground, bool density_blended) {
   float r_d = RadiusAtDistance(r, mu, d);
   float mu_d = MuAtDistance(r, mu, d, r_d);
   float mu_s_d = SunCosineAlongRay(r, mu_s, nu, d, r_d);
-  // Linear in mu_s even in the Earth's shadow: see GetDensityBlended for what that costs.
   return GetScatteringClampedNu(scattering_density_texture, atmosphere.density_size,
-                                MU_AXIS_VIEW_ZENITH, false, r_d, mu_d, mu_s_d, nu,
+                                MU_AXIS_VIEW_ZENITH, density_blended, r_d, mu_d, mu_s_d, nu,
                                 ray_r_mu_intersects_ground) *
          GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
                                     ray_r_mu_intersects_ground);
@@ -290,18 +289,18 @@ vec3 MultipleScatteringIntegrand(sampler2D transmittance_texture,
 
 vec3 ComputeMultipleScattering(sampler2D transmittance_texture, sampler3D scattering_density_texture,
                                float r, float mu, float mu_s, float nu,
-                               bool ray_r_mu_intersects_ground) {
+                               bool ray_r_mu_intersects_ground, bool density_blended) {
   int steps = atmosphere.multiple_scattering_steps.x;
   float dx = DistanceToNearestAtmosphereBoundary(r, mu, ray_r_mu_intersects_ground) / float(steps);
   vec3 origin = GetRayOpticalDepthOrigin(transmittance_texture, r, mu, ray_r_mu_intersects_ground);
   vec3 previous = MultipleScatteringIntegrand(transmittance_texture, scattering_density_texture,
                                               origin, r, mu, mu_s, nu, 0.0,
-                                              ray_r_mu_intersects_ground);
+                                              ray_r_mu_intersects_ground, density_blended);
   vec3 radiance_sum = vec3(0.0);
   for (int i = 1; i <= steps; ++i) {
     vec3 current = MultipleScatteringIntegrand(transmittance_texture, scattering_density_texture,
                                                origin, r, mu, mu_s, nu, float(i) * dx,
-                                               ray_r_mu_intersects_ground);
+                                               ray_r_mu_intersects_ground, density_blended);
     radiance_sum += ExponentialStepIntegral(previous, current);
     previous = current;
   }

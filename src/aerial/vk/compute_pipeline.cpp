@@ -1,16 +1,21 @@
 #include "aerial/vk/compute_pipeline.h"
 
+#include "aerial/vk/specialization.h"
+
 namespace aerial::vk {
 
 ComputePipeline::ComputePipeline(const Context& context, const std::string& shader,
-                                 SlotLayout slots, uint32_t push_constant_bytes)
+                                 SlotLayout slots, uint32_t push_constant_bytes,
+                                 std::vector<int32_t> specialization)
     : name_(shader),
       layout_(context, std::move(slots), push_constant_bytes, ::vk::ShaderStageFlagBits::eCompute) {
   ::vk::raii::ShaderModule module = CreateShaderModule(context, shader, layout_.slots);
+  Specialization constants(std::move(specialization));
   pipeline_ = ::vk::raii::Pipeline(
       context.device(), nullptr,
       ::vk::ComputePipelineCreateInfo{
-          .stage = {.stage = ::vk::ShaderStageFlagBits::eCompute, .module = *module, .pName = "main"},
+          .stage = {.stage = ::vk::ShaderStageFlagBits::eCompute, .module = *module, .pName = "main",
+                    .pSpecializationInfo = constants.info()},
           .layout = *layout_.layout});
 }
 

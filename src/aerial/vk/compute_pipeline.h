@@ -1,6 +1,7 @@
 #pragma once
 // A compute pipeline built from an embedded SPIR-V module, with its descriptors pushed per dispatch
 // (VK_KHR_push_descriptor): a pass declares its bindings once and binds resources by slot.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -13,9 +14,10 @@ class ComputePipeline {
  public:
   // shader: the path under shaders/ ("precompute/transmittance.comp"). slots: one named slot per
   // binding, from 0, checked against the shader's (shader_bindings.h). push_constant_bytes: 0
-  // when the shader has none.
+  // when the shader has none. specialization: constant_id i takes specialization[i]
+  // (specialization.h).
   ComputePipeline(const Context& context, const std::string& shader, SlotLayout slots,
-                  uint32_t push_constant_bytes = 0);
+                  uint32_t push_constant_bytes = 0, std::vector<int32_t> specialization = {});
 
   // Binds the pipeline, pushes the descriptors and constants, and dispatches enough workgroups of
   // `local_size` to cover `threads`.

@@ -1,6 +1,7 @@
 #include "aerial/vk/graphics_pipeline.h"
 
 #include "aerial/error.h"
+#include "aerial/vk/specialization.h"
 
 namespace aerial::vk {
 
@@ -12,14 +13,8 @@ GraphicsPipeline::GraphicsPipeline(const Context& context, const GraphicsPipelin
   bool has_fragment = !info.fragment_shader.empty();
   ::vk::raii::ShaderModule fragment =
       has_fragment ? CreateShaderModule(context, info.fragment_shader, info.slots) : ::vk::raii::ShaderModule(nullptr);
-  std::vector<::vk::SpecializationMapEntry> entries;
-  for (uint32_t i = 0; i < info.specialization.size(); ++i)
-    entries.push_back({.constantID = i, .offset = uint32_t(i * sizeof(int32_t)), .size = sizeof(int32_t)});
-  ::vk::SpecializationInfo specialization{.mapEntryCount = uint32_t(entries.size()),
-                                          .pMapEntries = entries.data(),
-                                          .dataSize = info.specialization.size() * sizeof(int32_t),
-                                          .pData = info.specialization.data()};
-  const ::vk::SpecializationInfo* constants = entries.empty() ? nullptr : &specialization;
+  Specialization specialization(info.specialization);
+  const ::vk::SpecializationInfo* constants = specialization.info();
   std::array<::vk::PipelineShaderStageCreateInfo, 2> stages = {
       ::vk::PipelineShaderStageCreateInfo{.stage = ::vk::ShaderStageFlagBits::eVertex,
                                           .module = *vertex, .pName = "main",

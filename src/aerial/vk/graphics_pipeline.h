@@ -41,9 +41,8 @@ struct GraphicsPipelineCreateInfo {
   // The cull mode is dynamic state: every draw sets it (SetCullMode) before drawing.
   bool dynamic_cull_mode = false;
   ::vk::CullModeFlags cull = ::vk::CullModeFlagBits::eNone;
-  // Specialization constants of both stages: constant_id i takes specialization[i]. A CPU
-  // rasterizer executes both sides of every branch its SIMD lanes reach, so choices that are fixed
-  // for a pipeline (aerial perspective per pixel or from froxels) must be constants, not uniforms.
+  // Specialization constants of both stages (specialization.h): constant_id i takes
+  // specialization[i], e.g. aerial perspective per pixel or from froxels.
   std::vector<int32_t> specialization;
 };
 
