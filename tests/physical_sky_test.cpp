@@ -67,28 +67,28 @@ const RegionBound kBounds[] = {
     {SkyQuantity::kSkyRadiance, kDay, 50, 90, 0.015, 0, 0.004, 0},  // max 1.422%: target 1.5%; median 0.34%: target
     {SkyQuantity::kRadianceToPoint, kDay, 50, 72, 0.015, 0, 0.004, 0},  // max 1.101%: target 1.5%; median 0.23%: target
     {SkyQuantity::kSkyIrradiance, kAfternoon, 0, 3, 0.0069, 0.003104, kNone, 0},  // max 0.621%, median 0.62%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 0, 18, 0.0073, 0.003294, kNone, 0},  // max 0.659%, median 0.50%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 0, 18, 0.0073, 0.003293, kNone, 0},  // max 0.659%, median 0.50%: no target, pinned
     {SkyQuantity::kRadianceToPoint, kAfternoon, 0, 18, 0.0088, 0.003972, kNone, 0},  // max 0.794%, median 0.29%: no target, pinned
     {SkyQuantity::kSkyIrradiance, kAfternoon, 10, 3, 0.015, 0.006463, kNone, 0},  // max 1.293%, median 1.29%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 30, 0.015, 0.006511, kNone, 0},  // max 1.302%, median 0.70%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 30, 0.015, 0.006512, kNone, 0},  // max 1.302%, median 0.70%: no target, pinned
     {SkyQuantity::kRadianceToPoint, kAfternoon, 10, 30, 0.0092, 0.004145, kNone, 0},  // max 0.829%, median 0.37%: no target, pinned
     {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.022, 0.009751, kNone, 0},  // max 1.950%, median 1.95%: no target, pinned
     {SkyQuantity::kSkyRadiance, kAfternoon, 50, 30, 0.018, 0.007737, kNone, 0},  // max 1.547%, median 0.55%: no target, pinned
     {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 24, 0.0058, 0.002634, kNone, 0},  // max 0.527%, median 0.15%: no target, pinned
     {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.380%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.03, 0, kNone, 0},  // max 2.081%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.03, 0, kNone, 0},  // max 1.940%: target 3%
     {SkyQuantity::kRadianceToPoint, kLowSun, 0, 90, 0.037, 0.016624, kNone, 0},  // max 3.325%: MISSED, target 3%
     {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 1.954%: target 3%
     {SkyQuantity::kSkyRadiance, kLowSun, 10, 150, 0.035, 0.015889, kNone, 0},  // max 3.178%: MISSED, target 3%
     {SkyQuantity::kRadianceToPoint, kLowSun, 10, 140, 0.042, 0.018841, kNone, 0},  // max 3.768%: MISSED, target 3%
     {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 2.473%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.03, 0, kNone, 0},  // max 2.675%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.03, 0, kNone, 0},  // max 2.674%: target 3%
     {SkyQuantity::kRadianceToPoint, kLowSun, 50, 120, 0.03, 0, kNone, 0},  // max 0.276%: target 3%
     {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 1.564%: target 8%
     {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.09, 0.040752, kNone, 0},  // max 8.150%: MISSED, target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 6.457%: target 8%
     {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 3.533%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.15, 0.065583, kNone, 0},  // max 13.117%: MISSED, target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.14, 0.059405, kNone, 0},  // max 11.881%: MISSED, target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 10, 0, kNone, 0, kNone, 0},  // no value above the floor
     {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 1.542%: target 8%
     {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 4.138%: target 8%
