@@ -57,41 +57,41 @@ struct RegionBound {
 };
 
 const RegionBound kBounds[] = {
-    {SkyQuantity::kSkyIrradiance, kDay, 0, 9, 0.01, 0, 0.006, 0.0027},  // max 0.836%: target 1%; median 0.54% MISSED, target 0.4%
-    {SkyQuantity::kSkyRadiance, kDay, 0, 54, 0.01, 0, 0.004, 0},  // max 0.808%: target 1%; median 0.32%: target
-    {SkyQuantity::kRadianceToPoint, kDay, 0, 54, 0.013, 0.005511, 0.004, 0},  // max 1.102%: MISSED, target 1%; median 0.38%: target
-    {SkyQuantity::kSkyIrradiance, kDay, 10, 9, 0.015, 0, 0.004, 0},  // max 0.773%: target 1.5%; median 0.33%: target
-    {SkyQuantity::kSkyRadiance, kDay, 10, 90, 0.02, 0.00893, 0.0087, 0.00395},  // max 1.786%: MISSED, target 1.5%; median 0.79% MISSED, target 0.4%
-    {SkyQuantity::kRadianceToPoint, kDay, 10, 90, 0.015, 0, 0.004, 0},  // max 1.269%: target 1.5%; median 0.27%: target
-    {SkyQuantity::kSkyIrradiance, kDay, 50, 9, 0.015, 0, 0.011, 0.00475},  // max 1.132%: target 1.5%; median 0.95% MISSED, target 0.4%
-    {SkyQuantity::kSkyRadiance, kDay, 50, 90, 0.015, 0, 0.004, 0},  // max 1.422%: target 1.5%; median 0.34%: target
-    {SkyQuantity::kRadianceToPoint, kDay, 50, 72, 0.015, 0, 0.004, 0},  // max 1.101%: target 1.5%; median 0.23%: target
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 0, 3, 0.0069, 0.003104, kNone, 0},  // max 0.621%, median 0.62%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 0, 18, 0.0073, 0.003293, kNone, 0},  // max 0.659%, median 0.50%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 0, 18, 0.0088, 0.003972, kNone, 0},  // max 0.794%, median 0.29%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 10, 3, 0.015, 0.006463, kNone, 0},  // max 1.293%, median 1.29%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 30, 0.015, 0.006512, kNone, 0},  // max 1.302%, median 0.70%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 10, 30, 0.0092, 0.004145, kNone, 0},  // max 0.829%, median 0.37%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.022, 0.009751, kNone, 0},  // max 1.950%, median 1.95%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 50, 30, 0.018, 0.007737, kNone, 0},  // max 1.547%, median 0.55%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 24, 0.0058, 0.002634, kNone, 0},  // max 0.527%, median 0.15%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.380%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.03, 0, kNone, 0},  // max 1.940%: target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 90, 0.037, 0.016624, kNone, 0},  // max 3.325%: MISSED, target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 1.954%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 10, 150, 0.035, 0.015889, kNone, 0},  // max 3.178%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 140, 0.042, 0.018841, kNone, 0},  // max 3.768%: MISSED, target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 2.473%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.03, 0, kNone, 0},  // max 2.674%: target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 50, 120, 0.03, 0, kNone, 0},  // max 0.276%: target 3%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 1.564%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.09, 0.040752, kNone, 0},  // max 8.150%: MISSED, target 8%
-    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 6.457%: target 8%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 3.533%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.14, 0.059405, kNone, 0},  // max 11.881%: MISSED, target 8%
+    {SkyQuantity::kSkyIrradiance, kDay, 0, 9, 0.01, 0, 0.0059, 0.00265},  // max 0.697%: target 1%; median 0.53% MISSED, target 0.4%
+    {SkyQuantity::kSkyRadiance, kDay, 0, 54, 0.01, 0, 0.004, 0},  // max 0.808%: target 1%; median 0.28%: target
+    {SkyQuantity::kRadianceToPoint, kDay, 0, 54, 0.01, 0, 0.004, 0},  // max 0.894%: target 1%; median 0.38%: target
+    {SkyQuantity::kSkyIrradiance, kDay, 10, 9, 0.015, 0, 0.004, 0},  // max 0.631%: target 1.5%; median 0.32%: target
+    {SkyQuantity::kSkyRadiance, kDay, 10, 90, 0.02, 0.00893, 0.0091, 0.0041},  // max 1.786%: MISSED, target 1.5%; median 0.82% MISSED, target 0.4%
+    {SkyQuantity::kRadianceToPoint, kDay, 10, 90, 0.015, 0, 0.004, 0},  // max 1.238%: target 1.5%; median 0.19%: target
+    {SkyQuantity::kSkyIrradiance, kDay, 50, 9, 0.015, 0, 0.011, 0.00475},  // max 1.142%: target 1.5%; median 0.95% MISSED, target 0.4%
+    {SkyQuantity::kSkyRadiance, kDay, 50, 90, 0.015, 0, 0.004, 0},  // max 1.464%: target 1.5%; median 0.34%: target
+    {SkyQuantity::kRadianceToPoint, kDay, 50, 72, 0.015, 0, 0.004, 0},  // max 0.892%: target 1.5%; median 0.23%: target
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 0, 3, 0.007, 0.00318, kNone, 0},  // max 0.636%, median 0.64%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 0, 18, 0.0067, 0.00301, kNone, 0},  // max 0.602%, median 0.46%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 0, 18, 0.011, 0.004613, kNone, 0},  // max 0.923%, median 0.46%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 10, 3, 0.015, 0.006432, kNone, 0},  // max 1.286%, median 1.29%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 30, 0.015, 0.00645, kNone, 0},  // max 1.290%, median 0.69%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 10, 30, 0.0096, 0.004345, kNone, 0},  // max 0.869%, median 0.40%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.022, 0.009734, kNone, 0},  // max 1.947%, median 1.95%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 50, 30, 0.017, 0.007589, kNone, 0},  // max 1.518%, median 0.54%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 24, 0.0062, 0.002797, kNone, 0},  // max 0.559%, median 0.18%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.190%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.03, 0, kNone, 0},  // max 1.977%: target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 90, 0.04, 0.017941, kNone, 0},  // max 3.588%: MISSED, target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 1.414%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 10, 150, 0.036, 0.016128, kNone, 0},  // max 3.226%: MISSED, target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 140, 0.042, 0.018755, kNone, 0},  // max 3.751%: MISSED, target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 2.283%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.03, 0, kNone, 0},  // max 2.650%: target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 50, 120, 0.03, 0, kNone, 0},  // max 0.258%: target 3%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 2.437%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.08, 0, kNone, 0},  // max 7.954%: target 8%
+    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 6.485%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 4.356%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.14, 0.059975, kNone, 0},  // max 11.995%: MISSED, target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 10, 0, kNone, 0, kNone, 0},  // no value above the floor
-    {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 1.542%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 4.138%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 1.045%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 3.993%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 50, 0, kNone, 0, kNone, 0},  // no value above the floor
 };
 

@@ -62,13 +62,17 @@ void GetRMuFromTransmittanceTextureUv(vec2 uv, out float r, out float mu) {
 // 108 degrees the sky changes by orders of magnitude per few degrees, while from 0 to 60 it
 // hardly changes. The axis follows Yusov 2013's arctangent mapping of mu_s (his centres it on
 // the horizon for mu_s >= -0.2), here centred on MU_S_DENSEST (sun zenith 95.7 degrees) with a
-// width 1 / MU_S_SPREAD, over [mu_s_min, 1]. Of 40 texels it gives 1.4 to sun zeniths 0-60, 5.6 to
-// 60-85, 12.9 to 85-95, 16.6 to 95-108 and 3.5 to 108-120, where Bruneton 2017's distance mapping
-// (which the tables used before) gave 3, 12.4, 14, 8.1 and 2.5. Centres -0.05 to -0.15 and widths 1/6
-// to 1/8 were measured (aerial_bench_sky): -0.1 and 1/8 had the smallest low-sun errors, with
-// daylight as good as before.
+// width 1 / MU_S_SPREAD, over [mu_s_min, 1]. Of the default 38 texels it gives 1.4 to sun zeniths
+// 0-60, 5.8 to 60-85, 11.5 to 85-95, 14.7 to 95-108 and 3.6 to 108-120, where Bruneton 2017's
+// distance mapping (which the tables used before) gave 2.8, 11.8, 13.3, 7.7 and 2.4. Centres -0.05
+// to -0.15 and widths 1/6 to 1/8 were measured (aerial_bench_sky): -0.1 and 1/8 had the smallest
+// low-sun errors at first. Once the low sun's reads were corrected (GetSkyInscatterCorrection,
+// step spacing, order 2's density blend), 1/7 moved texels from the Earth's shadow to the
+// afternoon and took the daylight radiance to a point on the ground from 1.10% to 0.89%, the
+// low-sun sky irradiance on the ground from 2.4% to 2.2% and the twilight sky there from 8.2% to
+// 7.9%; 1/6 took the low-sun irradiance on the ground to 4.5%.
 const float MU_S_DENSEST = -0.1;
-const float MU_S_SPREAD = 8.0;
+const float MU_S_SPREAD = 7.0;
 
 float GetUnitRangeFromMuS(float mu_s) {
   float low = atan(MU_S_SPREAD * (atmosphere.mu_s_min - MU_S_DENSEST));
