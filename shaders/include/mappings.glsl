@@ -86,13 +86,46 @@ float GetMuSFromUnitRange(float x) {
   return ClampCosine(MU_S_DENSEST + tan(low + x * (high - low)) / MU_S_SPREAD);
 }
 
-// ---- Irradiance table: the mu_s axis above, rho/H in r. ----
+// ---- The r axis of the scattering and irradiance tables. ----
+// Bruneton 2017's x = rho / H, warped by W(x) = x - R_WARP x^2 (1 - x). rho / H
+// alone is dense near the ground (texels at 0, 0.06, 0.25, 0.56 km) but 3.4-3.8 km apart above
+// 45 km, where single scattering toward the zenith falls to zero at the top of the atmosphere and
+// is concave in x: looking up from 50 / 55 km with the sun overhead it read 1.5 / 5.4% low, and
+// 0.4% with 64 r texels. W keeps the slope 1 at the ground (texels at 0, 0.07, 0.28, 0.65 km)
+// and has slope 1 + R_WARP at the top: 2.2 km apart there, and 2.1 km instead of 1.5 km apart
+// around 10 km, where the slope is least (1 - R_WARP / 3). R_WARP 0.35, 0.5, 0.75 and 1 were
+// measured (aerial_bench_sky --grid quick); 0.75 took the daylight sky 50 km up from 1.54% to
+// 1.42% at most and its median from 0.41% to 0.34%, the median radiance to a point 10 km up from
+// 0.36% to 0.27%, and made no region worse by more than 0.4 point or past its target.
+const float R_WARP = 0.75;
+
+float WarpR(float x) {
+  return x - R_WARP * x * x * (1.0 - x);
+}
+
+float GetUnitRangeFromR(float r) {
+  return WarpR(sqrt(SquaredHorizonDistance(r)) / HorizonDistanceFromGround());
+}
+
+float GetRFromUnitRange(float u) {
+  // W' lies in [1 - R_WARP / 3, 1 + R_WARP]: Newton's method from x = u converges in a few steps.
+  float x = u;
+  for (int i = 0; i < 6; ++i) {
+    x -= (WarpR(x) - u) / (1.0 - R_WARP * (2.0 * x - 3.0 * x * x));
+  }
+  float rho = HorizonDistanceFromGround() * x;
+  return sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
+}
+
+// ---- Irradiance table: the mu_s axis above, the warped rho/H (above) in r. ----
 // Bruneton 2017 maps r linearly; the sky irradiance changes fastest near the ground (Mie's 1.2 km
 // scale height), where a linear axis of 16 texels puts 4 km between the first two: interpolated at
 // 1 km the red irradiance was 7% high. rho = sqrt(r^2 - R^2), as on the scattering tables, puts
-// texels at 0, 0.27, 1.1, 2.4 km... for the same cost.
+// texels at 0, 0.27, 1.1, 2.4 km... for the same cost. Warped as the scattering tables' r axis:
+// unwarped, the order-1 irradiance 50 km up read 1.1% low in every channel between its rows 3.5 km
+// apart (and exact with 64 rows).
 vec2 GetIrradianceTextureUvFromRMuS(float r, float mu_s) {
-  float x_r = sqrt(SquaredHorizonDistance(r)) / HorizonDistanceFromGround();
+  float x_r = GetUnitRangeFromR(r);
   float x_mu_s = GetUnitRangeFromMuS(mu_s);
   return vec2(GetTextureCoordFromUnitRange(x_mu_s, atmosphere.irradiance_size.x),
               GetTextureCoordFromUnitRange(x_r, atmosphere.irradiance_size.y));
@@ -100,9 +133,7 @@ vec2 GetIrradianceTextureUvFromRMuS(float r, float mu_s) {
 
 void GetRMuSFromIrradianceTextureUv(vec2 uv, out float r, out float mu_s) {
   float x_mu_s = GetUnitRangeFromTextureCoord(uv.x, atmosphere.irradiance_size.x);
-  float x_r = GetUnitRangeFromTextureCoord(uv.y, atmosphere.irradiance_size.y);
-  float rho = x_r * HorizonDistanceFromGround();
-  r = sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
+  r = GetRFromUnitRange(GetUnitRangeFromTextureCoord(uv.y, atmosphere.irradiance_size.y));
   mu_s = GetMuSFromUnitRange(x_mu_s);
 }
 
@@ -123,36 +154,12 @@ bool IsMuSTexelBelow(float texel, float mu_s_size, float mu_s) {
   return texel < GetUnitRangeFromMuS(mu_s) * (mu_s_size - 1.0);
 }
 
-// The r axis: Bruneton 2017's x = rho / H, warped by W(x) = x - R_WARP x^2 (1 - x). rho / H
-// alone is dense near the ground (texels at 0, 0.06, 0.25, 0.56 km) but 3.4-3.8 km apart above
-// 45 km, where single scattering toward the zenith falls to zero at the top of the atmosphere and
-// is concave in x: looking up from 50 / 55 km with the sun overhead it read 1.5 / 5.4% low, and
-// 0.4% with 64 r texels. W keeps the slope 1 at the ground (texels at 0, 0.07, 0.28, 0.65 km)
-// and has slope 1 + R_WARP at the top: 2.2 km apart there, and 2.1 km instead of 1.5 km apart
-// around 10 km, where the slope is least (1 - R_WARP / 3). R_WARP 0.35, 0.5, 0.75 and 1 were
-// measured (aerial_bench_sky --grid quick); 0.75 took the daylight sky 50 km up from 1.54% to
-// 1.42% at most and its median from 0.41% to 0.34%, the median radiance to a point 10 km up from
-// 0.36% to 0.27%, and made no region worse by more than 0.4 point or past its target.
-const float R_WARP = 0.75;
-
-float WarpScatteringR(float x) {
-  return x - R_WARP * x * x * (1.0 - x);
-}
-
 float GetScatteringUR(ivec4 size, float r) {
-  float rho = sqrt(SquaredHorizonDistance(r));
-  return GetTextureCoordFromUnitRange(WarpScatteringR(rho / HorizonDistanceFromGround()), size.x);
+  return GetTextureCoordFromUnitRange(GetUnitRangeFromR(r), size.x);
 }
 
 float GetRFromScatteringUR(ivec4 size, float u_r) {
-  // W' lies in [1 - R_WARP / 3, 1 + R_WARP]: Newton's method from x = u converges in a few steps.
-  float u = GetUnitRangeFromTextureCoord(u_r, size.x);
-  float x = u;
-  for (int i = 0; i < 6; ++i) {
-    x -= (WarpScatteringR(x) - u) / (1.0 - R_WARP * (2.0 * x - 3.0 * x * x));
-  }
-  float rho = HorizonDistanceFromGround() * x;
-  return sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
+  return GetRFromUnitRange(GetUnitRangeFromTextureCoord(u_r, size.x));
 }
 
 // The mu axis, two ways. Both split it at the horizon into two halves, x = 0 at the zenith (sky
