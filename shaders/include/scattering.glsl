@@ -31,7 +31,8 @@ float SunCosineAlongRay(float r, float mu_s, float nu, float d, float r_d) {
   return TablesDropNu() ? mu_s : MuSAtDistance(r, mu_s, nu, d, r_d);
 }
 
-// Where single scattering is marched along a ray: sample i of `steps` at length x^p, x = i / steps.
+// Where single scattering is marched along a ray: sample i of `steps` at the ray's length times
+// x^p, x = i / steps.
 // With the sun near the camera's horizon its disc rises above (or sets below) each point's horizon
 // in the first kilometres of the ray, and the sunlight reaching those points changes by orders of
 // magnitude there (grazing slants, the disc cut by the horizon). Equal steps (12 km along a ray
@@ -50,8 +51,8 @@ float GetStepSpacingExponent(float r, float mu_s) {
   return 2.0 - clamp(abs(elevation) / SUN_NEAR_HORIZON_ELEVATION, 0.0, 1.0);
 }
 
-float GetStepDistance(float length, int i, int steps, float spacing_exponent) {
-  return length * pow(float(i) / float(steps), spacing_exponent);
+float GetStepDistance(float ray_length, int i, int steps, float spacing_exponent) {
+  return ray_length * pow(float(i) / float(steps), spacing_exponent);
 }
 
 // Integrand of single scattering at radius r_d, where the sun's zenith cosine is mu_s_d, given the
@@ -79,11 +80,12 @@ void ComputeSingleScatteringIntegrand(sampler2D transmittance_texture, vec3 orig
 }
 
 // Single scattering (Bruneton 2008 eq. 11 without the phase function), integrated over the
-// distance to the nearest boundary in equal steps with ExponentialStepIntegral.
+// distance to the nearest boundary in steps spaced by GetStepSpacingExponent, with
+// ExponentialStepIntegral.
 void ComputeSingleScatteringInSteps(sampler2D transmittance_texture, float r, float mu,
                                      float mu_s, float nu, bool ray_r_mu_intersects_ground,
                                      int steps, out vec3 rayleigh, out vec3 mie) {
-  float length = DistanceToNearestAtmosphereBoundary(r, mu, ray_r_mu_intersects_ground);
+  float ray_length = DistanceToNearestAtmosphereBoundary(r, mu, ray_r_mu_intersects_ground);
   float spacing_exponent = GetStepSpacingExponent(r, mu_s);
   vec3 origin = GetRayOpticalDepthOrigin(transmittance_texture, r, mu, ray_r_mu_intersects_ground);
   vec3 rayleigh_sum = vec3(0.0);
@@ -95,8 +97,8 @@ void ComputeSingleScatteringInSteps(sampler2D transmittance_texture, float r, fl
   for (int i = 1; i <= steps; ++i) {
     vec3 rayleigh_i;
     vec3 mie_i;
-    float d = GetStepDistance(length, i, steps, spacing_exponent);
-    float dx = d - GetStepDistance(length, i - 1, steps, spacing_exponent);
+    float d = GetStepDistance(ray_length, i, steps, spacing_exponent);
+    float dx = d - GetStepDistance(ray_length, i - 1, steps, spacing_exponent);
     ComputeSingleScatteringIntegrand(transmittance_texture, origin, r, mu, mu_s, nu, d,
                                      ray_r_mu_intersects_ground, rayleigh_i, mie_i);
     rayleigh_sum += ExponentialStepIntegral(rayleigh_previous, rayleigh_i) * dx;
@@ -176,10 +178,10 @@ vec3 GetScattering(sampler3D scattering_texture, ivec4 size, float r, float mu, 
 // has the sun below the horizon, J_ms is blended exponentially, where the per-order densities are
 // resampled into it and where radiance to a point and the froxel build march it; elsewhere, and in
 // the other tables, linearly. Both blends agree on the texels, so the read stays continuous.
-//  - The precompute's integration of order 2's density along the rays too (multiple_scattering.comp),
-//    where most of the multiple scattering in the shadow comes from: the low-sun sky on the ground
-//    3.3% -> 2.1%, 10 km up 4.9% -> 3.2%, for 0.47 s of precompute (7.67 s). Every order: 1.7 s,
-//    over the 8 s target.
+//  - The precompute's integration of order 2's density along the rays too
+//    (multiple_scattering.comp), where most of the multiple scattering in the shadow comes from:
+//    the low-sun sky on the ground 3.3% -> 2.1%, 10 km up 4.9% -> 3.2%, for 0.47 s of precompute
+//    (7.67 s). Every order: 1.7 s, over the 8 s target.
 //  - Not for the 3D tables, which have no Earth's shadow: their low-sun radiance to a point on the
 //    ground got worse that way (47% -> 54% at most in blue, aerial_bench_sky --lut 3d).
 vec3 GetDensityBlended(sampler3D density_texture, ivec4 size, vec2 nu_blend, vec3 uvw) {

@@ -96,13 +96,14 @@ bool GetSingleScatteringSuns(ivec4 size, float mu, float mu_s, float nu,
 }
 
 // The single scattering of the ray (r, mu) for each sun of `suns`, without phase, marched in
-// SINGLE_SCATTERING_CORRECTION_STEPS equal steps with ExponentialStepIntegral.
+// SINGLE_SCATTERING_CORRECTION_STEPS steps spaced for the query's sun (GetStepSpacingExponent)
+// with ExponentialStepIntegral.
 void MarchSingleScatteringSuns(sampler2D transmittance_texture, float r, float mu,
                                SingleScatteringSuns suns,
                                out vec3 rayleigh[SINGLE_SCATTERING_SUNS],
                                out vec3 mie[SINGLE_SCATTERING_SUNS]) {
   bool ray_r_mu_intersects_ground = RayIntersectsGround(r, mu);
-  float length = DistanceToNearestAtmosphereBoundary(r, mu, ray_r_mu_intersects_ground);
+  float ray_length = DistanceToNearestAtmosphereBoundary(r, mu, ray_r_mu_intersects_ground);
   float spacing_exponent = GetStepSpacingExponent(r, suns.mu_s[0]);
   vec3 origin = GetRayOpticalDepthOrigin(transmittance_texture, r, mu, ray_r_mu_intersects_ground);
   vec3 rayleigh_previous[SINGLE_SCATTERING_SUNS], mie_previous[SINGLE_SCATTERING_SUNS];
@@ -112,7 +113,8 @@ void MarchSingleScatteringSuns(sampler2D transmittance_texture, float r, float m
   }
   float d_previous = 0.0;
   for (int i = 0; i <= SINGLE_SCATTERING_CORRECTION_STEPS; ++i) {
-    float d = GetStepDistance(length, i, SINGLE_SCATTERING_CORRECTION_STEPS, spacing_exponent);
+    float d =
+        GetStepDistance(ray_length, i, SINGLE_SCATTERING_CORRECTION_STEPS, spacing_exponent);
     float dx = d - d_previous;
     d_previous = d;
     float r_d = RadiusAtDistance(r, mu, d);
@@ -176,16 +178,17 @@ vec3 GetMultipleScatteringBlendCorrection(sampler3D rayleigh_texture, float r, f
   vec3 multiple[2];
   for (int a = 0; a < 2; ++a) {
     uvwz.y = (suns.mu_s_texel + float(a) + 0.5) / float(size.z);
-    multiple[a] = GetScatteringBlendedExponentialInR(rayleigh_texture, size, false, nu_blend, uvwz) -
-                  mix(rayleigh_single[1 + 2 * a], rayleigh_single[2 + 2 * a], suns.nu_weight);
+    vec3 table = GetScatteringBlendedExponentialInR(rayleigh_texture, size, false, nu_blend, uvwz);
+    vec3 single = mix(rayleigh_single[1 + 2 * a], rayleigh_single[2 + 2 * a], suns.nu_weight);
+    multiple[a] = table - single;
   }
   return MixExponentially(multiple[0], multiple[1], suns.mu_s_weight) -
          mix(multiple[0], multiple[1], suns.mu_s_weight);
 }
 
 // The correction to add to the tables' inscatter of the ray (r, mu) with the sun at (mu_s, nu),
-// without phase: single scattering's, and multiple scattering's in the Earth's shadow. Zero where
-// it is not needed.
+// without phase: single scattering's, and multiple scattering's for a low sun. Zero where it is
+// not needed.
 void GetSkyInscatterCorrection(sampler2D transmittance_texture, sampler3D rayleigh_texture,
                                float r, float mu, float mu_s, float nu, out vec3 rayleigh,
                                out vec3 mie) {
