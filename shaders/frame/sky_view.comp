@@ -36,7 +36,7 @@ void main() {
     vec2 t;
     GetSkyViewLatticeCell(texel, table.size, node, t);
     AddSkyInscatterCorrection(INTERPOLATE_LATTICE(rayleigh_correction, node, t),
-                                  INTERPOLATE_LATTICE(mie_correction, node, t), sky);
+                              INTERPOLATE_LATTICE(mie_correction, node, t), sky);
   }
   imageStore(rayleigh_sky, texel, vec4(sky.rayleigh, 0.0));
   imageStore(mie_sky, texel, vec4(sky.mie, 0.0));
