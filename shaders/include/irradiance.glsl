@@ -87,19 +87,18 @@ vec3 ComputeIndirectIrradiance(sampler2D transmittance_texture, sampler3D single
 
 // The sky irradiance, read bilinearly in mu_s and exponentially in r between the two nearest rows:
 // it falls off roughly exponentially with altitude (to half over 3.5 km at 50 km up, where the
-// rows are 3.5 km apart), so linear interpolation overestimates it between rows: by 2.4% at 50 km
-// on the default table (3.7% off the reference there, 1.3% on the rows themselves;
-// aerial_bench_sky and aerial probe at the rows' altitudes).
+// rows were 3.5 km apart before the r axis was warped; 2.2 km now), so linear interpolation
+// overestimates it between rows: by 2.4% at 50 km on the default table then (3.7% off the
+// reference there, 1.3% on the rows themselves; aerial_bench_sky and aerial probe at the rows'
+// altitudes).
 vec3 GetIrradiance(sampler2D irradiance_texture, float r, float mu_s) {
   vec2 uv = GetIrradianceTextureUvFromRMuS(r, mu_s);
   float rows = float(atmosphere.irradiance_size.y);
-  float row = clamp(uv.y * rows - 0.5, 0.0, rows - 1.0);
-  float row0 = min(floor(row), rows - 2.0);
-  float t = row - row0;
-  vec3 e0 = textureLod(irradiance_texture, vec2(uv.x, (row0 + 0.5) / rows), 0.0).rgb;
-  if (t == 0.0) return e0;
-  vec3 e1 = textureLod(irradiance_texture, vec2(uv.x, (row0 + 1.5) / rows), 0.0).rgb;
-  return MixExponentially(e0, e1, t);
+  vec2 blend = GetTexelBlend(uv.y, rows);
+  vec3 e0 = textureLod(irradiance_texture, vec2(uv.x, (blend.x + 0.5) / rows), 0.0).rgb;
+  if (blend.y == 0.0) return e0;
+  vec3 e1 = textureLod(irradiance_texture, vec2(uv.x, (blend.x + 1.5) / rows), 0.0).rgb;
+  return MixExponentially(e0, e1, blend.y);
 }
 
 #endif

@@ -25,6 +25,15 @@ float GetUnitRangeFromTextureCoord(float u, int size) {
   return (u - 0.5 / float(size)) / (1.0 - 1.0 / float(size));
 }
 
+// The two texels that a linear read at texture coordinate u blends on an axis of `size` texels:
+// (x) the lower one's index, (y) the upper one's weight. For reads that blend them otherwise
+// (exponentially) and fetch each at its centre, (index + 0.5) / size.
+vec2 GetTexelBlend(float u, float size) {
+  float texel = clamp(u * size - 0.5, 0.0, size - 1.0);
+  float lower = min(floor(texel), size - 2.0);
+  return vec2(lower, texel - lower);
+}
+
 // H: distance to the top boundary of a horizontal ray from the ground.
 float HorizonDistanceFromGround() {
   return sqrt(SquaredHorizonDistance(atmosphere.top_radius));

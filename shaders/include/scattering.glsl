@@ -186,17 +186,15 @@ vec3 GetScattering(sampler3D scattering_texture, ivec4 size, float r, float mu, 
 //    ground got worse that way (47% -> 54% at most in blue, aerial_bench_sky --lut 3d).
 vec3 GetDensityBlended(sampler3D density_texture, ivec4 size, vec2 nu_blend, vec3 uvw) {
   float mu_s_size = float(size.z);
-  float texel = clamp(uvw.x * mu_s_size - 0.5, 0.0, mu_s_size - 1.0);
-  float texel0 = min(floor(texel), mu_s_size - 2.0);
-  float t = texel - texel0;
-  if (size.w == 1 || t == 0.0 || !IsMuSTexelBelow(texel0 + 1.0, mu_s_size, 0.0)) {
+  vec2 blend = GetTexelBlend(uvw.x, mu_s_size);
+  if (size.w == 1 || blend.y == 0.0 || !IsMuSTexelBelow(blend.x + 1.0, mu_s_size, 0.0)) {
     return GetScatteringBlended(density_texture, size, nu_blend, uvw);
   }
   vec3 density0 = GetScatteringBlended(density_texture, size, nu_blend,
-                                       vec3((texel0 + 0.5) / mu_s_size, uvw.yz));
+                                       vec3((blend.x + 0.5) / mu_s_size, uvw.yz));
   vec3 density1 = GetScatteringBlended(density_texture, size, nu_blend,
-                                       vec3((texel0 + 1.5) / mu_s_size, uvw.yz));
-  return MixExponentially(density0, density1, t);
+                                       vec3((blend.x + 1.5) / mu_s_size, uvw.yz));
+  return MixExponentially(density0, density1, blend.y);
 }
 
 // The blend in mu_s (and nu): GetDensityBlended for J_ms (density), linear for the other tables.
@@ -224,15 +222,14 @@ vec3 GetScatteringClampedNu(sampler3D scattering_texture, ivec4 size, int mu_axi
 vec3 GetScatteringBlendedExponentialInR(sampler3D scattering_texture, ivec4 size, bool density,
                                         vec2 nu_blend, vec4 uvwz) {
   float r_size = float(size.x);
-  float slice = clamp(uvwz.w * r_size - 0.5, 0.0, r_size - 1.0);
-  float slice0 = min(floor(slice), r_size - 2.0);
-  float t = slice - slice0;
+  vec2 blend = GetTexelBlend(uvwz.w, r_size);
   vec3 s0 = GetTableBlended(scattering_texture, size, density, nu_blend,
-                            vec3(uvwz.yz, (slice0 + 0.5) / r_size));
-  if (t == 0.0) return s0;  // on a slice (a camera on the ground): uniform over a frame's pixels
+                            vec3(uvwz.yz, (blend.x + 0.5) / r_size));
+  // On a slice (a camera on the ground): uniform over a frame's pixels.
+  if (blend.y == 0.0) return s0;
   vec3 s1 = GetTableBlended(scattering_texture, size, density, nu_blend,
-                            vec3(uvwz.yz, (slice0 + 1.5) / r_size));
-  return MixExponentially(s0, s1, t);
+                            vec3(uvwz.yz, (blend.x + 1.5) / r_size));
+  return MixExponentially(s0, s1, blend.y);
 }
 
 // The render-time read of the final radiance tables.

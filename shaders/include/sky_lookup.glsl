@@ -58,10 +58,9 @@ struct SingleScatteringSuns {
 // one's weight, (w) the lower one's texel index.
 vec4 GetScatteringMuSBlend(ivec4 size, float mu_s) {
   float mu_s_size = float(size.z);
-  float x = clamp(GetScatteringUMuS(size, mu_s) * mu_s_size - 0.5, 0.0, mu_s_size - 1.0);
-  float i0 = min(floor(x), mu_s_size - 2.0);
-  return vec4(GetMuSFromScatteringUMuS(size, (i0 + 0.5) / mu_s_size),
-              GetMuSFromScatteringUMuS(size, (i0 + 1.5) / mu_s_size), x - i0, i0);
+  vec2 blend = GetTexelBlend(GetScatteringUMuS(size, mu_s), mu_s_size);
+  return vec4(GetMuSFromScatteringUMuS(size, (blend.x + 0.5) / mu_s_size),
+              GetMuSFromScatteringUMuS(size, (blend.x + 1.5) / mu_s_size), blend.y, blend.x);
 }
 
 // Whether the sky's single scattering is corrected with the sun at mu_s (the same for every ray
