@@ -1,8 +1,8 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Sky-view pass: fills the per-frame sky-view table (sky_view.glsl) from the 4D or 3D tables, and
-// adds the low sun's single scattering correction interpolated from the lattice that
-// sky_view_correction.comp wrote just before.
+// adds the correction of the tables' read (GetSkyInscatterCorrection) interpolated from the
+// lattice that sky_view_correction.comp wrote just before.
 #include "sky_view.glsl"
 #include "surface.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -31,7 +31,7 @@ void main() {
   SkyViewRay ray = GetSkyViewRay(texel, table.size);
   Inscatter sky = GetSkyInscatterFromTables(transmittance_texture, rayleigh_texture, mie_texture,
                                             multiple_texture, ray.r, ray.mu, ray.mu_s, ray.nu);
-  if (SingleScatteringCorrectionApplies(atmosphere.scattering_size, ray.mu_s)) {
+  if (SkyInscatterCorrectionApplies(atmosphere.scattering_size)) {
     ivec2 node;
     vec2 t;
     GetSkyViewLatticeCell(texel, table.size, node, t);

@@ -1,13 +1,15 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Sky-view correction pass, before the sky-view pass: the low sun's correction of the tables'
+// Sky-view correction pass, before the sky-view pass: the correction of the tables'
 // inscatter (GetSkyInscatterCorrection, sky_lookup.glsl) at the lattice nodes of the sky-view
 // table (sky_view.glsl), which sky_view.comp interpolates. It marches five suns along each ray: at
 // every texel of the table it cost 78 ms per rebuild at sunset on lavapipe, at the 1,862 nodes
 // 14 ms with 16 steps per ray (aerial_bench_render --preset sunset); with 32 the moving-sun frame,
 // which rebuilds it each frame, moved within its run-to-run noise (54-62 ms GPU without shadows).
 // The correction changes slowly over the table except across the horizon row, which no lattice
-// cell spans. A high sun needs no correction: every node returns at once.
+// cell spans. Since the correction also re-blends the multiple scattering in nu, it runs for a high
+// sun too (the 3D tables need none: every node returns at once); the frame under a moving sun at
+// noon did not move beyond its run-to-run noise (aerial_bench_render --preset noon).
 #include "sky_lookup.glsl"
 #include "sky_view.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;

@@ -252,9 +252,15 @@ bool IsScatteringTexel(ivec4 size, ivec3 texel) {
   return texel.x < size.z * size.w && texel.y < size.y && texel.z < size.x;
 }
 
-// The nu a texel stands for on the table's nu axis, before clamping to what (mu, mu_s) allow.
+// The nu that nu slice `slice` stands for on the table's nu axis (which spans [-1, 1] with its end
+// points), before clamping to what (mu, mu_s) allow.
+float GetNominalNuOfSlice(ivec4 size, float slice) {
+  return 2.0 * slice / float(size.w - 1) - 1.0;
+}
+
+// The same for a texel of the packed 3D image.
 float GetScatteringTexelNominalNu(ivec4 size, ivec3 texel) {
-  return size.w > 1 ? 2.0 * float(texel.x / size.z) / float(size.w - 1) - 1.0 : 0.0;
+  return size.w > 1 ? GetNominalNuOfSlice(size, float(texel.x / size.z)) : 0.0;
 }
 
 // The texel (x, y, z) of the 3D image that packs the 4D table: x = nu_index * MU_S + mu_s_index.

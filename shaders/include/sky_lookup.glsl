@@ -41,9 +41,17 @@ vec3 GetRayleighScattering(sampler3D rayleigh_texture, sampler3D multiple_textur
 //  - Only while the lower mu_s node is below SINGLE_SCATTERING_CORRECTION_MU_S (sun zenith 75
 //    degrees): above it the sun stays more than 6 degrees above every point of a ray (at most
 //    1000 km long, 9 degrees of the Earth's arc), single scattering is smooth in mu_s, and the
-//    correction moved no daylight or afternoon region by more than 0.05 points.
+//    correction moved no daylight or afternoon region by more than 0.05 points. Above it the march
+//    still runs, for the multiple scattering's blend in nu (GetMultipleScatteringBlendCorrection),
+//    which needs the four nodes' single scattering only to take it out of the table's value and
+//    moves by a fraction (the nodes' P_R ratios minus 1) of any error in it: in
+//    MULTIPLE_SCATTERING_BLEND_STEPS steps. 4, 8, 16 and 32 steps gave the same daylight and
+//    afternoon skies within 0.06 point (aerial_bench_sky --grid quick); with 8 steps and the
+//    query's sun too, the noon frame under a moving sun, which remakes the sky-view lattice, was
+//    10-17 ms slower, with 4 and the nodes only within the run's noise (aerial_bench_render).
 const int SINGLE_SCATTERING_CORRECTION_STEPS = 32;
 const float SINGLE_SCATTERING_CORRECTION_MU_S = 0.26;
+const int MULTIPLE_SCATTERING_BLEND_STEPS = 4;
 const int SINGLE_SCATTERING_SUNS = 5;  // the query and the blend's four nodes
 
 // The suns marched: the query's (k = 0) and the four texel nodes (k = 1 + 2 a + b: mu_s node a,
@@ -63,17 +71,14 @@ vec4 GetScatteringMuSBlend(ivec4 size, float mu_s) {
               GetMuSFromScatteringUMuS(size, (blend.x + 1.5) / mu_s_size), blend.y, blend.x);
 }
 
-// Whether the sky's single scattering is corrected with the sun at mu_s (the same for every ray
-// of a camera).
-bool SingleScatteringCorrectionApplies(ivec4 size, float mu_s) {
-  return size.w > 1 && GetScatteringMuSBlend(size, mu_s).x <= SINGLE_SCATTERING_CORRECTION_MU_S;
-}
+// Whether the sky's inscatter read from tables of this size is corrected (4D tables only).
+bool SkyInscatterCorrectionApplies(ivec4 size) { return size.w > 1; }
 
 // The query's sun and the texels' suns that the table's read blends; false where the correction
 // is not needed.
 bool GetSingleScatteringSuns(ivec4 size, float mu, float mu_s, float nu,
                              out SingleScatteringSuns suns) {
-  if (!SingleScatteringCorrectionApplies(size, mu_s)) return false;
+  if (!SkyInscatterCorrectionApplies(size)) return false;
   vec4 mu_s_blend = GetScatteringMuSBlend(size, mu_s);
   vec2 nu_blend = GetNominalNuBlend(size, vec4((nu + 1.0) / 2.0, 0.0, 0.0, 0.0));
   suns.mu_s_weight = mu_s_blend.z;
@@ -86,19 +91,19 @@ bool GetSingleScatteringSuns(ivec4 size, float mu, float mu_s, float nu,
     for (int b = 0; b < 2; ++b) {
       int k = 1 + 2 * a + b;
       // A texel holds its value at its nominal nu clamped to what (mu, mu_s) allow.
-      float nominal_nu = 2.0 * (nu_blend.x + float(b)) / float(size.w - 1) - 1.0;
       suns.mu_s[k] = mu_s_blend[a];
-      suns.nu[k] = clamp(nominal_nu, mu * mu_s_blend[a] - spread, mu * mu_s_blend[a] + spread);
+      suns.nu[k] = clamp(GetNominalNuOfSlice(size, nu_blend.x + float(b)),
+                         mu * mu_s_blend[a] - spread, mu * mu_s_blend[a] + spread);
     }
   }
   return true;
 }
 
-// The single scattering of the ray (r, mu) for each sun of `suns`, without phase, marched in
-// SINGLE_SCATTERING_CORRECTION_STEPS steps spaced for the query's sun (GetStepSpacingExponent)
-// with ExponentialStepIntegral.
+// The single scattering of the ray (r, mu) for the suns of `suns` from `first_sun` on (1: the
+// nodes only), without phase, marched in `steps` steps spaced for the query's sun
+// (GetStepSpacingExponent) with ExponentialStepIntegral.
 void MarchSingleScatteringSuns(sampler2D transmittance_texture, float r, float mu,
-                               SingleScatteringSuns suns,
+                               SingleScatteringSuns suns, int first_sun, int steps,
                                out vec3 rayleigh[SINGLE_SCATTERING_SUNS],
                                out vec3 mie[SINGLE_SCATTERING_SUNS]) {
   bool ray_r_mu_intersects_ground = RayIntersectsGround(r, mu);
@@ -111,15 +116,14 @@ void MarchSingleScatteringSuns(sampler2D transmittance_texture, float r, float m
     mie[k] = vec3(0.0);
   }
   float d_previous = 0.0;
-  for (int i = 0; i <= SINGLE_SCATTERING_CORRECTION_STEPS; ++i) {
-    float d =
-        GetStepDistance(ray_length, i, SINGLE_SCATTERING_CORRECTION_STEPS, spacing_exponent);
+  for (int i = 0; i <= steps; ++i) {
+    float d = GetStepDistance(ray_length, i, steps, spacing_exponent);
     float dx = d - d_previous;
     d_previous = d;
     float r_d = RadiusAtDistance(r, mu, d);
     vec3 view_transmittance = GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
                                                          ray_r_mu_intersects_ground);
-    for (int k = 0; k < SINGLE_SCATTERING_SUNS; ++k) {
+    for (int k = first_sun; k < SINGLE_SCATTERING_SUNS; ++k) {
       vec3 rayleigh_i, mie_i;
       ComputeSingleScatteringIntegrandAt(transmittance_texture, r_d,
                                          SunCosineAlongRay(r, suns.mu_s[k], suns.nu[k], d, r_d),
@@ -148,15 +152,29 @@ vec3 GetSingleScatteringDifference(SingleScatteringSuns suns,
   return single[0] - mix(lower, upper, suns.mu_s_weight);
 }
 
-// Multiple scattering of a low sun, blended exponentially in mu_s. With the sun near or below
-// the horizon the sky's orders >= 2 come more and more from the sunlit air far above and away,
-// and fall roughly exponentially as the sun goes down (as J_ms does, GetDensityBlended): looking
-// 2 degrees above the horizon away from a sun at zenith 92 degrees, the reference's orders <= 2
-// fall by 1.75x between the two mu_s texels around it, and the linear blend read them 4% too
-// bright midway (5-6% in all, 2-4% on the texels). The 4D Rayleigh table holds single and
-// multiple scattering together; the multiple part at each mu_s node is the table's value there
-// minus the node's marched single scattering, so this is a term of the same correction: the
-// exponential blend of the two nodes' multiple scattering minus their linear blend.
+// The 4D Rayleigh table holds single scattering plus multiple scattering divided by P_R of the
+// texel's nominal nu (accumulate_multiple_scattering.comp), and the caller multiplies the read by
+// P_R(nu). For the multiple part that restores a linear blend of M / P_R, not of M: multiple
+// scattering is nearly isotropic, so the read followed the curvature of 1 / P_R, 2% low at nu = 0
+// between the slices at nu = -+1/7 (the horizon under a high sun) and 0.8% high at nu = 0.87.
+// The multiple part at each node is the table's value there minus the node's marched single
+// scattering, so the correction can blend it as it should be blended: times P_R of its slice's
+// nominal nu, linearly in nu, divided by P_R(nu); minus the blend the read made.
+//  - Found with a Rayleigh-only atmosphere over a black ground, order 2 alone (`aerial probe
+//    --orders 2 --series-tail off` against `--reference`, checked by an independent quadrature):
+//    on the ground under a sun at the zenith it read 2.9 / 2.5 / 2.1% low looking at the horizon
+//    (nu = 0) and 1.5 / 1.1 / 1.0% low at view zenith 30 degrees; with this term 1.0 / 0.5 / 0.1%
+//    and 2.3 / 1.9 / 1.8%, as the two slices' P_R predict.
+//  - So the correction runs for every sun: with a high sun this term alone.
+//  - The daylight sky 10 km up: at most 1.79% -> 1.09% off, median 0.82% -> 0.65%; on the ground
+//    at most 0.81% -> 0.73%, medians 0.28% -> 0.24% (aerial_bench_sky --grid quick).
+//
+// In mu_s, for a low sun, the blend is exponential. With the sun near or below the horizon the
+// sky's orders >= 2 come more and more from the sunlit air far above and away, and fall roughly
+// exponentially as the sun goes down (as J_ms does, GetDensityBlended): looking 2 degrees above
+// the horizon away from a sun at zenith 92 degrees, the reference's orders <= 2 fall by 1.75x
+// between the two mu_s texels around it, and the linear blend read them 4% too bright midway
+// (5-6% in all, 2-4% on the texels).
 //  - Only between two texels whose upper one has the sun below MULTIPLE_SCATTERING_EXPONENTIAL_MU_S
 //    (sun zenith 84.3 degrees). 0 (the horizon, as for J_ms), 0.1 and 0.2 were measured
 //    (aerial_bench_sky --grid quick): 0.1 took the low-sun sky on the ground from 4.3% to 3.0% in
@@ -168,26 +186,35 @@ vec3 GetMultipleScatteringBlendCorrection(sampler3D rayleigh_texture, float r, f
                                           float mu_s, float nu, SingleScatteringSuns suns,
                                           vec3 rayleigh_single[SINGLE_SCATTERING_SUNS]) {
   ivec4 size = atmosphere.scattering_size;
-  if (suns.mu_s_weight == 0.0 ||
-      !IsMuSTexelBelow(suns.mu_s_texel + 1.0, float(size.z), MULTIPLE_SCATTERING_EXPONENTIAL_MU_S))
-    return vec3(0.0);
   vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, MU_AXIS_RAY_LENGTH, r, mu, mu_s, nu,
                                                    RayIntersectsGround(r, mu));
-  vec2 nu_blend = GetNominalNuBlend(size, uvwz);
-  vec3 multiple[2];
+  float nu_slice = GetNominalNuBlend(size, uvwz).x;
+  float phase0 = RayleighPhaseFunction(GetNominalNuOfSlice(size, nu_slice));
+  float phase1 = RayleighPhaseFunction(GetNominalNuOfSlice(size, nu_slice + 1.0));
+  vec3 multiple[2];  // per mu_s node, blended in nu
+  vec3 read[2];      // the same as the table's read blends it (divided by P_R of each slice)
   for (int a = 0; a < 2; ++a) {
     uvwz.y = (suns.mu_s_texel + float(a) + 0.5) / float(size.z);
-    vec3 table = GetScatteringBlendedExponentialInR(rayleigh_texture, size, false, nu_blend, uvwz);
-    vec3 single = mix(rayleigh_single[1 + 2 * a], rayleigh_single[2 + 2 * a], suns.nu_weight);
-    multiple[a] = table - single;
+    vec3 stored[2];
+    for (int b = 0; b < 2; ++b) {
+      stored[b] = GetScatteringBlendedExponentialInR(rayleigh_texture, size, false,
+                                                     vec2(nu_slice + float(b), 0.0), uvwz) -
+                  rayleigh_single[1 + 2 * a + b];
+    }
+    multiple[a] = mix(stored[0] * phase0, stored[1] * phase1, suns.nu_weight);
+    read[a] = mix(stored[0], stored[1], suns.nu_weight);
   }
-  return MixExponentially(multiple[0], multiple[1], suns.mu_s_weight) -
-         mix(multiple[0], multiple[1], suns.mu_s_weight);
+  bool exponential =
+      suns.mu_s_weight > 0.0 &&
+      IsMuSTexelBelow(suns.mu_s_texel + 1.0, float(size.z), MULTIPLE_SCATTERING_EXPONENTIAL_MU_S);
+  vec3 blended = exponential ? MixExponentially(multiple[0], multiple[1], suns.mu_s_weight)
+                             : mix(multiple[0], multiple[1], suns.mu_s_weight);
+  return blended / RayleighPhaseFunction(nu) - mix(read[0], read[1], suns.mu_s_weight);
 }
 
 // The correction to add to the tables' inscatter of the ray (r, mu) with the sun at (mu_s, nu),
-// without phase: single scattering's, and multiple scattering's for a low sun. Zero where it is
-// not needed.
+// without phase: single scattering's where the sun is low, and multiple scattering's blend. Zero
+// for the 3D tables.
 void GetSkyInscatterCorrection(sampler2D transmittance_texture, sampler3D rayleigh_texture,
                                float r, float mu, float mu_s, float nu, out vec3 rayleigh,
                                out vec3 mie) {
@@ -195,12 +222,18 @@ void GetSkyInscatterCorrection(sampler2D transmittance_texture, sampler3D raylei
   mie = vec3(0.0);
   SingleScatteringSuns suns;
   if (!GetSingleScatteringSuns(atmosphere.scattering_size, mu, mu_s, nu, suns)) return;
+  bool low_sun = suns.mu_s[1] <= SINGLE_SCATTERING_CORRECTION_MU_S;
   vec3 rayleigh_single[SINGLE_SCATTERING_SUNS], mie_single[SINGLE_SCATTERING_SUNS];
-  MarchSingleScatteringSuns(transmittance_texture, r, mu, suns, rayleigh_single, mie_single);
-  rayleigh = GetSingleScatteringDifference(suns, rayleigh_single) +
-             GetMultipleScatteringBlendCorrection(rayleigh_texture, r, mu, mu_s, nu, suns,
-                                                  rayleigh_single);
-  mie = GetSingleScatteringDifference(suns, mie_single);
+  MarchSingleScatteringSuns(
+      transmittance_texture, r, mu, suns, low_sun ? 0 : 1,
+      low_sun ? SINGLE_SCATTERING_CORRECTION_STEPS : MULTIPLE_SCATTERING_BLEND_STEPS,
+      rayleigh_single, mie_single);
+  if (low_sun) {
+    rayleigh = GetSingleScatteringDifference(suns, rayleigh_single);
+    mie = GetSingleScatteringDifference(suns, mie_single);
+  }
+  rayleigh += GetMultipleScatteringBlendCorrection(rayleigh_texture, r, mu, mu_s, nu, suns,
+                                                   rayleigh_single);
 }
 
 // Clamped at zero: in the Earth's shadow the table's value and the correction nearly cancel.

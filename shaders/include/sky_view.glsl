@@ -75,7 +75,7 @@ SkyViewRay GetSkyViewRay(ivec2 texel, ivec2 size) {
   return ray;
 }
 
-// ---- The lattice of the low sun's single scattering correction (sky_view_correction.comp) ----
+// ---- The lattice of the sky inscatter correction (sky_view_correction.comp) ----
 // Nodes every 4 texels in azimuth and 3 in zenith, each half of the zenith axis (above and below
 // the horizon, where the correction jumps with the ray's end) on its own nodes, and the last
 // texel of each axis or half a node too, so that texels only interpolate between nodes.

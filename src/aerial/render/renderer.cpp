@@ -44,7 +44,7 @@ vk::SlotLayout SkySlots(::vk::DescriptorType sky_view_type) {
           {"mie_sky", sky_view_type},          {"background_sky", sky_view_type}};
 }
 
-// The sky-view pass also reads the low sun's correction lattice that the correction pass writes.
+// The sky-view pass also reads the correction lattice that the correction pass writes.
 vk::SlotLayout SkyViewSlots() {
   vk::SlotLayout slots = SkySlots(vk::kStorageImage);
   slots.push_back({"rayleigh_correction", vk::kStorageImage});
@@ -104,7 +104,7 @@ vk::GraphicsPipelineCreateInfo SkyPipeline(AerialMode mode) {
 // The sky-view table's size (Hillaire 2020 uses 192x108): azimuth over [0, pi], zenith split at
 // the horizon (54 rows each side).
 constexpr std::array<int, 2> kSkyViewSize = {192, 108};
-// The lattice of the low sun's correction (sky_view.glsl, GetSkyViewLatticeSize): nodes every 4
+// The lattice of the sky inscatter correction (sky_view.glsl, GetSkyViewLatticeSize): nodes every 4
 // texels in azimuth and 3 in zenith per half, the last texel included.
 constexpr std::array<int, 2> kSkyViewLatticeSize = {(kSkyViewSize[0] - 2) / 4 + 2,
                                                      2 * ((kSkyViewSize[1] / 2 - 2) / 3 + 2)};
@@ -291,8 +291,8 @@ bool Renderer::SkyViewStale(bool exact) {
   return true;
 }
 
-// The low sun's single scattering correction at the sky-view table's lattice nodes
-// (sky_view_correction.comp; with a high sun its invocations return at once). It is recorded
+// The correction of the tables' sky inscatter at the sky-view table's lattice nodes
+// (sky_view_correction.comp; with the 3D tables its invocations return at once). It is recorded
 // before the froxel build and followed by a barrier, so that the froxel build and the sky-view pass
 // that reads it still run side by side.
 void Renderer::RecordSkyViewCorrection(const vk::CommandBuffer& cmd, const vk::Buffer& frame) {

@@ -112,7 +112,7 @@ class Renderer {
   };
   std::optional<SunVisibilityKey> sun_visibility_key_;
   vk::Image sky_rayleigh_, sky_mie_, sky_background_;
-  // The low sun's single scattering correction at the sky-view table's lattice nodes.
+  // The sky inscatter correction at the sky-view table's lattice nodes.
   vk::Image sky_rayleigh_correction_, sky_mie_correction_;
   // (r, mu_s) the sky-view table was made for: it depends on nothing else of the frame.
   std::optional<std::array<float, 2>> sky_view_key_;
