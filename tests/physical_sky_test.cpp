@@ -59,40 +59,40 @@ struct RegionBound {
 
 const RegionBound kBounds[] = {
     {SkyQuantity::kSkyIrradiance, kDay, 0, 9, 0.01, 0, 0.0059, 0.00265},  // max 0.697%: target 1%; median 0.53% MISSED, target 0.4%
-    {SkyQuantity::kSkyRadiance, kDay, 0, 54, 0.01, 0, 0.004, 0},  // max 0.808%: target 1%; median 0.28%: target
+    {SkyQuantity::kSkyRadiance, kDay, 0, 54, 0.01, 0, 0.004, 0},  // max 0.727%: target 1%; median 0.24%: target
     {SkyQuantity::kRadianceToPoint, kDay, 0, 54, 0.01, 0, 0.004, 0},  // max 0.894%: target 1%; median 0.38%: target
     {SkyQuantity::kSkyIrradiance, kDay, 10, 9, 0.015, 0, 0.004, 0},  // max 0.503%: target 1.5%; median 0.24%: target
-    {SkyQuantity::kSkyRadiance, kDay, 10, 90, 0.02, 0.00893, 0.0091, 0.0041},  // max 1.786%: MISSED, target 1.5%; median 0.82% MISSED, target 0.4%
+    {SkyQuantity::kSkyRadiance, kDay, 10, 90, 0.015, 0, 0.0072, 0.00325},  // max 1.088%: target 1.5%; median 0.65% MISSED, target 0.4%
     {SkyQuantity::kRadianceToPoint, kDay, 10, 90, 0.015, 0, 0.004, 0},  // max 1.238%: target 1.5%; median 0.19%: target
     {SkyQuantity::kSkyIrradiance, kDay, 50, 9, 0.015, 0, 0.004, 0},  // max 0.482%: target 1.5%; median 0.34%: target
-    {SkyQuantity::kSkyRadiance, kDay, 50, 90, 0.015, 0, 0.004, 0},  // max 1.464%: target 1.5%; median 0.34%: target
+    {SkyQuantity::kSkyRadiance, kDay, 50, 90, 0.015, 0, 0.004, 0},  // max 0.845%: target 1.5%; median 0.32%: target
     {SkyQuantity::kRadianceToPoint, kDay, 50, 72, 0.015, 0, 0.004, 0},  // max 0.892%: target 1.5%; median 0.23%: target
     {SkyQuantity::kSkyIrradiance, kAfternoon, 0, 3, 0.007, 0.00318, kNone, 0},  // max 0.636%, median 0.64%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 0, 18, 0.0067, 0.00301, kNone, 0},  // max 0.602%, median 0.46%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 0, 18, 0.0065, 0.002949, kNone, 0},  // max 0.590%, median 0.23%: no target, pinned
     {SkyQuantity::kRadianceToPoint, kAfternoon, 0, 18, 0.011, 0.004613, kNone, 0},  // max 0.923%, median 0.46%: no target, pinned
     {SkyQuantity::kSkyIrradiance, kAfternoon, 10, 3, 0.017, 0.00731, kNone, 0},  // max 1.462%, median 1.46%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 30, 0.015, 0.00645, kNone, 0},  // max 1.290%, median 0.69%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 30, 0.015, 0.006452, kNone, 0},  // max 1.290%, median 0.75%: no target, pinned
     {SkyQuantity::kRadianceToPoint, kAfternoon, 10, 30, 0.0096, 0.004345, kNone, 0},  // max 0.869%, median 0.40%: no target, pinned
     {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.012, 0.005322, kNone, 0},  // max 1.064%, median 1.06%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 50, 30, 0.017, 0.007589, kNone, 0},  // max 1.518%, median 0.54%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 50, 30, 0.014, 0.006239, kNone, 0},  // max 1.248%, median 0.54%: no target, pinned
     {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 24, 0.0062, 0.002797, kNone, 0},  // max 0.559%, median 0.18%: no target, pinned
     {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.190%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.03, 0, kNone, 0},  // max 1.977%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 0, 90, 0.03, 0, kNone, 0},  // max 1.886%: target 3%
     {SkyQuantity::kRadianceToPoint, kLowSun, 0, 90, 0.04, 0.017941, kNone, 0},  // max 3.588%: MISSED, target 3%
     {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 1.565%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 10, 150, 0.036, 0.016128, kNone, 0},  // max 3.226%: MISSED, target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 10, 150, 0.037, 0.016443, kNone, 0},  // max 3.289%: MISSED, target 3%
     {SkyQuantity::kRadianceToPoint, kLowSun, 10, 140, 0.042, 0.018755, kNone, 0},  // max 3.751%: MISSED, target 3%
     {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 1.118%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.03, 0, kNone, 0},  // max 2.650%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 50, 150, 0.03, 0, kNone, 0},  // max 2.745%: target 3%
     {SkyQuantity::kRadianceToPoint, kLowSun, 50, 120, 0.03, 0, kNone, 0},  // max 0.258%: target 3%
     {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 2.437%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.08, 0, kNone, 0},  // max 7.954%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 0, 13, 0.093, 0.041857, kNone, 0},  // max 8.371%: MISSED, target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 6.485%: target 8%
     {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 4.294%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.14, 0.059975, kNone, 0},  // max 11.995%: MISSED, target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 10, 23, 0.13, 0.058507, kNone, 0},  // max 11.701%: MISSED, target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 10, 0, kNone, 0, kNone, 0},  // no value above the floor
     {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 0.244%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 3.993%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 50, 13, 0.08, 0, kNone, 0},  // max 4.592%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 50, 0, kNone, 0, kNone, 0},  // no value above the floor
 };
 
