@@ -60,6 +60,7 @@ struct SingleScatteringSuns {
   float mu_s[SINGLE_SCATTERING_SUNS], nu[SINGLE_SCATTERING_SUNS];
   float mu_s_weight, nu_weight;
   float mu_s_texel;  // the lower node's texel index
+  float nu_slice;    // the lower slice's index
 };
 
 // The two mu_s texels that the table's read at mu_s blends: (x, y) their mu_s, (z) the upper
@@ -84,6 +85,7 @@ bool GetSingleScatteringSuns(ivec4 size, float mu, float mu_s, float nu,
   suns.mu_s_weight = mu_s_blend.z;
   suns.nu_weight = nu_blend.y;
   suns.mu_s_texel = mu_s_blend.w;
+  suns.nu_slice = nu_blend.x;
   suns.mu_s[0] = mu_s;
   suns.nu[0] = nu;
   for (int a = 0; a < 2; ++a) {
@@ -92,7 +94,7 @@ bool GetSingleScatteringSuns(ivec4 size, float mu, float mu_s, float nu,
       int k = 1 + 2 * a + b;
       // A texel holds its value at its nominal nu clamped to what (mu, mu_s) allow.
       suns.mu_s[k] = mu_s_blend[a];
-      suns.nu[k] = clamp(GetNominalNuOfSlice(size, nu_blend.x + float(b)),
+      suns.nu[k] = clamp(GetNominalNuOfSlice(size, suns.nu_slice + float(b)),
                          mu * mu_s_blend[a] - spread, mu * mu_s_blend[a] + spread);
     }
   }
@@ -188,9 +190,8 @@ vec3 GetMultipleScatteringBlendCorrection(sampler3D rayleigh_texture, float r, f
   ivec4 size = atmosphere.scattering_size;
   vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, MU_AXIS_RAY_LENGTH, r, mu, mu_s, nu,
                                                    RayIntersectsGround(r, mu));
-  float nu_slice = GetNominalNuBlend(size, uvwz).x;
-  float phase0 = RayleighPhaseFunction(GetNominalNuOfSlice(size, nu_slice));
-  float phase1 = RayleighPhaseFunction(GetNominalNuOfSlice(size, nu_slice + 1.0));
+  float phase0 = RayleighPhaseFunction(GetNominalNuOfSlice(size, suns.nu_slice));
+  float phase1 = RayleighPhaseFunction(GetNominalNuOfSlice(size, suns.nu_slice + 1.0));
   vec3 multiple[2];  // per mu_s node, blended in nu
   vec3 read[2];      // the same as the table's read blends it (divided by P_R of each slice)
   for (int a = 0; a < 2; ++a) {
@@ -198,7 +199,7 @@ vec3 GetMultipleScatteringBlendCorrection(sampler3D rayleigh_texture, float r, f
     vec3 stored[2];
     for (int b = 0; b < 2; ++b) {
       stored[b] = GetScatteringBlendedExponentialInR(rayleigh_texture, size, false,
-                                                     vec2(nu_slice + float(b), 0.0), uvwz) -
+                                                     vec2(suns.nu_slice + float(b), 0.0), uvwz) -
                   rayleigh_single[1 + 2 * a + b];
     }
     multiple[a] = mix(stored[0] * phase0, stored[1] * phase1, suns.nu_weight);
