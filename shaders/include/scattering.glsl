@@ -138,12 +138,10 @@ vec2 GetNominalNuBlend(ivec4 size, vec4 uvwz) {
 // sun is too low by several percent.
 vec2 GetClampedNuBlend(ivec4 size, vec4 uvwz, float mu, float mu_s, float nu) {
   if (size.w == 1) return vec2(0.0);
-  float nu_size = float(size.w);
-  float tex_x = min(floor(uvwz.x * (nu_size - 1.0)), nu_size - 2.0);
+  float tex_x = GetNominalNuBlend(size, uvwz).x;
   float spread = sqrt(max((1.0 - mu * mu) * (1.0 - mu_s * mu_s), 0.0));
-  float nu0 = clamp(2.0 * tex_x / (nu_size - 1.0) - 1.0, mu * mu_s - spread, mu * mu_s + spread);
-  float nu1 =
-      clamp(2.0 * (tex_x + 1.0) / (nu_size - 1.0) - 1.0, mu * mu_s - spread, mu * mu_s + spread);
+  float nu0 = clamp(GetNominalNuOfSlice(size, tex_x), mu * mu_s - spread, mu * mu_s + spread);
+  float nu1 = clamp(GetNominalNuOfSlice(size, tex_x + 1.0), mu * mu_s - spread, mu * mu_s + spread);
   return vec2(tex_x, nu1 > nu0 ? clamp((nu - nu0) / (nu1 - nu0), 0.0, 1.0) : 0.5);
 }
 
