@@ -47,7 +47,7 @@ float ZenithFromUnitRange(bool ground, float t, float theta_h) {
 // from the horizon and as the square root of the angle next to it, a convex curve whose midpoint in
 // theta is too low. Order 2's density 5 km up (Rayleigh, black ground; sun zenith 0-80 degrees,
 // four views; against a fine Gauss-Legendre grid in numpy): the midpoint put it 1.9-3.6% low from
-// below the horizon and 0.1-0.8% low from above, this node -0.1..+0.9% and -0.3..+0.3%.
+// below the horizon and 0.6-0.8% low from above, this node -0.1..+0.9% and -0.3..+0.3%.
 // The mean is taken by Gauss-Legendre in t, where d mu = sin(theta) (d theta / dt) dt is smooth:
 // both mappings are quadratic in the distance u of t from the horizon's end, so d theta ~ u dt.
 float CellNodeZenith(float r, bool ground, float t_a, float t_b, float theta_a, float theta_b,
