@@ -33,13 +33,10 @@ struct TableResolution {
   // segment instead of subtracting two table values (sky_lookup.glsl, GetSkyInscatterToPoint).
   // It is a convolution of the light field with the phase functions, smooth in every axis, so a
   // coarse grid holds it (2.1 MB): see README, "Radiance to a point", for the sizes measured.
-  // Two nu slices read as four did, to 0.01 point in every region, and the two given up pay for
-  // twice the mu_s texels, which the Earth's shadow needs (README, "Accuracy against the physical
-  // sky": J_ms's mu_s texels for its nu slices).
   int multiple_density_r = 16;
   int multiple_density_mu = 64;  // even, split at the horizon like the scattering mu axis
-  int multiple_density_mu_s = 64;
-  int multiple_density_nu = 2;   // 1 in the 3D variant
+  int multiple_density_mu_s = 32;
+  int multiple_density_nu = 4;   // 1 in the 3D variant
 };
 
 // Integration sample counts (Bruneton 2017 uses 500, 50, 32x64 and a 16x32 density grid).

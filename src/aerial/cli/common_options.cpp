@@ -24,7 +24,7 @@ void TableOptions::AddTo(CLI::App& command) {
                      "Scattering table R,MU,MU_S,NU (default 32,128,38,8; NU must be 1 with --lut 3d)")
       ->delimiter(',')->expected(4);
   command.add_option("--multiple-density-size", multiple_density_size,
-                     "Multiple scattering density table R,MU,MU_S,NU (default 16,64,64,2; NU must be 1 "
+                     "Multiple scattering density table R,MU,MU_S,NU (default 16,64,32,4; NU must be 1 "
                      "with --lut 3d)")
       ->delimiter(',')->expected(4);
   command.add_option("--cache-dir", cache_dir, "Table cache directory (default ~/.cache/aerial)");
