@@ -33,12 +33,12 @@ vec3 GetIrradianceIntegrand(sampler2D transmittance_texture, sampler3D single_ra
 // hemisphere with the cosine weight. The sky is symmetric about the vertical plane through the
 // sun, so azimuths cover [0, pi] (midpoint rule) and count twice. The zenith cosine is mapped as
 // mu = (1 + cos psi) / 2, d mu = sin(psi) / 2 d psi, with the midpoint rule in psi over [0, pi]
-// (Fejer's first rule, on the interval [0, 1]): its nodes crowd toward both the zenith and the
-// horizon, where the sky brightens steeply and the midpoint rule in the zenith angle reads high.
-// Order 1 on the ground with the sun at the zenith, 32 zenith nodes, against Gauss-Legendre with
-// 256 nodes in numpy: Rayleigh only, +0.16 / +0.10 / +0.05% (red / green / blue) with even zenith
-// angles, +0.03 / +0.03 / +0.04% with this rule; with Mie's aureole around the zenith too, +0.16 /
-// +0.10 / +0.06% and +0.12 / +0.08 / +0.06%.
+// (the nodes of Fejer's first rule on [0, 1], with the midpoint rule's weights): they crowd toward
+// both the zenith and the horizon, where the sky brightens steeply and the midpoint rule in the
+// zenith angle reads high. Order 1 on the ground with the sun at the zenith, 32 zenith nodes,
+// against Gauss-Legendre with 256 nodes in numpy: Rayleigh only, +0.16 / +0.10 / +0.05% (red /
+// green / blue) with even zenith angles, +0.03 / +0.03 / +0.04% with this rule; with Mie's aureole
+// around the zenith too, +0.16 / +0.10 / +0.06% and +0.12 / +0.08 / +0.06%.
 vec3 IntegrateIrradiance(sampler2D transmittance_texture, sampler3D single_rayleigh_texture,
                          sampler3D single_mie_texture, sampler3D multiple_scattering_texture,
                          float r, float mu_s, int order, bool exact_single, int zenith_samples,
@@ -51,7 +51,8 @@ vec3 IntegrateIrradiance(sampler2D transmittance_texture, sampler3D single_rayle
     float psi = (float(j) + 0.5) * d_psi;
     float mu = 0.5 * (1.0 + cos(psi));
     float sin_theta = sqrt(1.0 - mu * mu);
-    float domega = 2.0 * 0.5 * sin(psi) * d_psi * d_phi;  // twice: the mirrored azimuth
+    // d omega = d mu d phi, counted twice for the mirrored azimuth: 2 (sin(psi) / 2) d psi d phi.
+    float domega = sin(psi) * d_psi * d_phi;
     for (int i = 0; i < azimuth_samples; ++i) {
       float phi = (float(i) + 0.5) * d_phi;
       vec3 omega = vec3(cos(phi) * sin_theta, sin(phi) * sin_theta, mu);
