@@ -127,26 +127,27 @@ float GetRFromUnitRange(float u) {
 }
 
 // ---- Irradiance table: the mu_s axis above, the warped rho/H (above) in r. ----
-// The irradiance table's read coordinate on the mu_s axis. In daylight the sky irradiance is
+// The irradiance table's texture coordinate on the mu_s axis. In daylight the sky irradiance is
 // nearly linear in mu_s (the sunlight reaching the ground, and so the light it reflects into the
 // sky, goes as mu_s T(mu_s) with T close to 1), while the arctangent axis puts its daylight texels
 // far apart (of the default 64, at sun zeniths 0, 43.6 and 56.1 degrees): blending linearly in
 // the axis coordinate, a sun at 30 degrees got 58% of the zenith texel instead of 51%. Measured
 // (aerial_bench_sky), the daylight irradiance on the ground read 0.65 / 0.50 / 0.26% high at
 // median (red / green / blue) and 0.49 / 0.39 / 0.07% with this read. Between texels whose lower
-// sun is above
-// IRRADIANCE_LINEAR_MU_S the coordinate is therefore made linear in mu_s; below it, where the
-// Earth's shadow makes the irradiance anything but linear, it stays the axis coordinate.
+// sun is above IRRADIANCE_LINEAR_MU_S the blend is therefore linear in mu_s; below it, where the
+// Earth's shadow makes the irradiance anything but linear, it stays linear in the axis coordinate.
 const float IRRADIANCE_LINEAR_MU_S = 0.26;  // sun zenith 75 degrees
 
-float GetIrradianceUnitRangeFromMuS(float mu_s) {
-  float x = GetUnitRangeFromMuS(mu_s);
-  float last = float(atmosphere.irradiance_size.x - 1);
-  float lower = min(floor(x * last), last - 1.0);
-  float mu_s_lower = GetMuSFromUnitRange(lower / last);
-  if (mu_s_lower < IRRADIANCE_LINEAR_MU_S) return x;
-  float mu_s_upper = GetMuSFromUnitRange((lower + 1.0) / last);
-  return (lower + clamp((mu_s - mu_s_lower) / (mu_s_upper - mu_s_lower), 0.0, 1.0)) / last;
+float GetIrradianceTextureUFromMuS(float mu_s) {
+  int texels = atmosphere.irradiance_size.x;
+  float u = GetTextureCoordFromUnitRange(GetUnitRangeFromMuS(mu_s), texels);
+  vec2 blend = GetTexelBlend(u, float(texels));
+  float last = float(texels - 1);
+  float mu_s_lower = GetMuSFromUnitRange(blend.x / last);
+  if (mu_s_lower < IRRADIANCE_LINEAR_MU_S) return u;
+  float mu_s_upper = GetMuSFromUnitRange((blend.x + 1.0) / last);
+  float weight = clamp((mu_s - mu_s_lower) / (mu_s_upper - mu_s_lower), 0.0, 1.0);
+  return (blend.x + weight + 0.5) / float(texels);
 }
 
 // Bruneton 2017 maps r linearly; the sky irradiance changes fastest near the ground (Mie's 1.2 km
@@ -157,8 +158,7 @@ float GetIrradianceUnitRangeFromMuS(float mu_s) {
 // apart (and exact with 64 rows).
 vec2 GetIrradianceTextureUvFromRMuS(float r, float mu_s) {
   float x_r = GetUnitRangeFromR(r);
-  float x_mu_s = GetIrradianceUnitRangeFromMuS(mu_s);
-  return vec2(GetTextureCoordFromUnitRange(x_mu_s, atmosphere.irradiance_size.x),
+  return vec2(GetIrradianceTextureUFromMuS(mu_s),
               GetTextureCoordFromUnitRange(x_r, atmosphere.irradiance_size.y));
 }
 
