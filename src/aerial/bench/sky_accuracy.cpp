@@ -114,7 +114,7 @@ SkyGrid SkyGrid::Full() {
 SkyGrid SkyGrid::Quick() {
   return {.altitudes_m = {0.0, 10e3, 50e3},
           .view_zeniths_deg = {0.0, 60.0, 88.0, 92.0, 120.0},
-          .azimuths_deg = {0.0, 180.0},
+          .azimuths_deg = {0.0, 90.0, 180.0},
           .bands = {{"day (sun zenith 0-60)", {0.0, 45.0, 60.0}, 0.0025},
                     {"afternoon (60-85)", {75.0}},
                     {"low sun (85-95)", {85.0, 88.0, 90.0, 92.0, 95.0}},
