@@ -14,7 +14,7 @@ namespace aerial::testing {
 
 vk::Context& SharedContext();
 
-// Default resolutions (256x64, 64x32, R32 MU128 MU_S38 NU8, or NU1 for 3D), float32.
+// Default resolutions (256x64, 64x32, R32 MU128 MU_S36 NU8, or NU1 for 3D), float32.
 const AtmosphereTables& FullTables(int orders = 4, LutVariant variant = LutVariant::k4D);
 // Quarter-size tables for tests that check structure rather than accuracy.
 const AtmosphereTables& SmallTables(LutVariant variant = LutVariant::k4D);

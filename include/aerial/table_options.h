@@ -22,21 +22,23 @@ struct TableResolution {
   int irradiance_r = 32;
   int scattering_r = 32;
   int scattering_mu = 128;  // even: half for rays that hit the ground, half for the others
-  // 38 on the arctangent mapping of mappings.glsl: the texels the low sun and twilight need
+  // 36 on the arctangent mapping of mappings.glsl: the texels the low sun and twilight need
   // (aerial_bench_sky measured 32, 36, 38 and 40 texels, and fewer nu for more mu_s: nu 5 or 6
   // doubled the daylight error, see README). With the multiple density table below, the tables
-  // take 1.25x the memory of Bruneton 2017's 32 (issue 12's budget); 38 instead of 40 pays for
-  // that table and changes no region's error by more than 1.5 points.
-  int scattering_mu_s = 38;
+  // take 1.25x the memory of Bruneton 2017's 32 (issue 12's budget); 36 instead of 40 pays for
+  // that table, and moves no sky region by more than 0.4 points.
+  int scattering_mu_s = 36;
   int scattering_nu = 8;    // 1 in the 3D variant
   // The scattering density of orders >= 2 (J_ms), which render-time marches integrate along a
   // segment instead of subtracting two table values (sky_lookup.glsl, GetSkyInscatterToPoint).
-  // It is a convolution of the light field with the phase functions, smooth in every axis, so a
-  // coarse grid holds it (2.1 MB): see README, "Radiance to a point", for the sizes measured.
+  // It is a convolution of the light field with the phase functions, smooth in r and mu, so a
+  // coarse grid holds it there. In mu_s and nu it takes the density tables' own texels: resampled
+  // to fewer (32 mu_s, 4 nu), the radiance to a point with a low sun was 13% high off the sun's
+  // plane (4.1 MB; see README, "Radiance to a point", for the sizes measured).
   int multiple_density_r = 16;
-  int multiple_density_mu = 64;  // even, split at the horizon like the scattering mu axis
-  int multiple_density_mu_s = 32;
-  int multiple_density_nu = 4;   // 1 in the 3D variant
+  int multiple_density_mu = 56;  // even, split at the horizon like the scattering mu axis
+  int multiple_density_mu_s = 36;
+  int multiple_density_nu = 8;   // 1 in the 3D variant
 };
 
 // Integration sample counts (Bruneton 2017 uses 500, 50, 32x64 and a 16x32 density grid).
@@ -57,7 +59,7 @@ struct SampleCounts {
   // mu resolution; the Rayleigh table receives them resampled at full resolution.
   int density_r = 32;
   int density_mu = 64;
-  int density_mu_s = 38;
+  int density_mu_s = 36;
   int density_nu = 8;
 };
 

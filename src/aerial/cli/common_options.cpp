@@ -21,10 +21,10 @@ void TableOptions::AddTo(CLI::App& command) {
   command.add_option("--irradiance-size", irradiance_size, "Irradiance table MU_S,R (default 64,32)")
       ->delimiter(',')->expected(2);
   command.add_option("--scattering-size", scattering_size,
-                     "Scattering table R,MU,MU_S,NU (default 32,128,38,8; NU must be 1 with --lut 3d)")
+                     "Scattering table R,MU,MU_S,NU (default 32,128,36,8; NU must be 1 with --lut 3d)")
       ->delimiter(',')->expected(4);
   command.add_option("--multiple-density-size", multiple_density_size,
-                     "Multiple scattering density table R,MU,MU_S,NU (default 16,64,32,4; NU must be 1 "
+                     "Multiple scattering density table R,MU,MU_S,NU (default 16,56,36,8; NU must be 1 "
                      "with --lut 3d)")
       ->delimiter(',')->expected(4);
   command.add_option("--cache-dir", cache_dir, "Table cache directory (default ~/.cache/aerial)");

@@ -33,11 +33,11 @@ TEST(MemoryUses, TableMemoryCountsEveryTable) {
   TableBytes t4 = TableMemory(PrecomputeOptions::Default(LutVariant::k4D));
   EXPECT_EQ(t4.transmittance, 256u * 64 * 16);
   EXPECT_EQ(t4.irradiance, 64u * 32 * 16);
-  EXPECT_EQ(t4.scattering, 2u * 8 * 38 * 128 * 32 * 16);
-  EXPECT_EQ(t4.multiple_density, 4u * 32 * 64 * 16 * 16);
+  EXPECT_EQ(t4.scattering, 2u * 8 * 36 * 128 * 32 * 16);
+  EXPECT_EQ(t4.multiple_density, 8u * 36 * 56 * 16 * 16);
   TableBytes t3 = TableMemory(PrecomputeOptions::Default(LutVariant::k3D));
-  EXPECT_EQ(t3.scattering, 3u * 38 * 128 * 32 * 16);
-  EXPECT_EQ(t3.multiple_density, 32u * 64 * 16 * 16);
+  EXPECT_EQ(t3.scattering, 3u * 36 * 128 * 32 * 16);
+  EXPECT_EQ(t3.multiple_density, 36u * 56 * 16 * 16);
 }
 
 // Issue 12's memory budget: the default 4D tables take at most 1.25 times the defaults before it
