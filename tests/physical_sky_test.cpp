@@ -3,7 +3,7 @@
 // radiance, radiance to a point 10 km along the ray and sky irradiance (src/aerial/bench/
 // sky_accuracy.h), over the quick grid. The reference samples take ~41 minutes to compute, so they
 // are stored in tests/data/sky_reference_quick.json, made by
-//   build/tools/aerial_bench_sky --grid quick --paths 65536 \
+//   build/tools/aerial_bench_sky --grid quick --paths 65536
 //       --reference-file tests/data/sky_reference_quick.json
 // and StoredReferenceIsTodaysReference recomputes some of them, so a stale file is noticed.
 #include <gtest/gtest.h>
