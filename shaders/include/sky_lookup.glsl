@@ -198,8 +198,9 @@ vec3 GetMultipleScatteringBlendCorrection(sampler3D rayleigh_texture, float r, f
                                                    RayIntersectsGround(r, mu));
   float phase0 = RayleighPhaseFunction(GetNominalNuOfSlice(size, suns.nu_slice));
   float phase1 = RayleighPhaseFunction(GetNominalNuOfSlice(size, suns.nu_slice + 1.0));
-  bool exponential =
-      suns.mu_s_weight > 0.0 &&
+  // Decided by the upper mu_s texel for both axes, also for a sun on a texel (mu_s weight 0), which
+  // then reads as the limit from above.
+  bool low_sun =
       IsMuSTexelBelow(suns.mu_s_texel + 1.0, float(size.z), MULTIPLE_SCATTERING_EXPONENTIAL_MU_S);
   vec3 multiple[2];  // per mu_s node, blended in nu
   vec3 read[2];      // the same as the table's read blends it (divided by P_R of each slice)
@@ -211,13 +212,13 @@ vec3 GetMultipleScatteringBlendCorrection(sampler3D rayleigh_texture, float r, f
                                                      vec2(suns.nu_slice + float(b), 0.0), uvwz) -
                   rayleigh_single[1 + 2 * a + b];
     }
-    multiple[a] = exponential
+    multiple[a] = low_sun
                       ? MixExponentially(stored[0] * phase0, stored[1] * phase1, suns.nu_weight)
                       : mix(stored[0] * phase0, stored[1] * phase1, suns.nu_weight);
     read[a] = mix(stored[0], stored[1], suns.nu_weight);
   }
-  vec3 blended = exponential ? MixExponentially(multiple[0], multiple[1], suns.mu_s_weight)
-                             : mix(multiple[0], multiple[1], suns.mu_s_weight);
+  vec3 blended = low_sun ? MixExponentially(multiple[0], multiple[1], suns.mu_s_weight)
+                         : mix(multiple[0], multiple[1], suns.mu_s_weight);
   return blended / RayleighPhaseFunction(nu) - mix(read[0], read[1], suns.mu_s_weight);
 }
 
