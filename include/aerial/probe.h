@@ -20,6 +20,8 @@ struct ProbeResult {
   Spectrum sky_radiance, transmittance, sun_irradiance, sky_irradiance, solar_radiance;
   Spectrum radiance_to_point, transmittance_to_point;
   Spectrum rayleigh, mie;  // raw table values without phase, along the whole ray
+  // The reference's Monte Carlo standard errors of the three radiances above (0 for the tables).
+  Spectrum sky_radiance_std_error, sky_irradiance_std_error, radiance_to_point_std_error;
 };
 
 // One result per query, in order. Waits for the device (it is not a per-frame call).

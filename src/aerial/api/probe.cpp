@@ -17,16 +17,21 @@ ProbeResult ProbeReference(const AtmosphereParameters& atmosphere, const RayPara
                                std::optional<double> distance, int orders) {
   reference::Reference model(atmosphere);
   ProbeResult result{};
-  result.sky_radiance = model.ComputeRadiance(ray.r, ray.mu, ray.mu_s, ray.nu, orders).value;
+  reference::Estimate sky = model.ComputeRadiance(ray.r, ray.mu, ray.mu_s, ray.nu, orders);
+  result.sky_radiance = sky.value;
+  result.sky_radiance_std_error = sky.std_error;
   result.transmittance = model.TransmittanceToBoundary(ray.r, ray.mu);
   result.sun_irradiance = model.ComputeDirectIrradiance(ray.r, ray.mu_s);
-  result.sky_irradiance = model.ComputeSkyIrradiance(ray.r, ray.mu_s, orders).value;
+  reference::Estimate irradiance = model.ComputeSkyIrradiance(ray.r, ray.mu_s, orders);
+  result.sky_irradiance = irradiance.value;
+  result.sky_irradiance_std_error = irradiance.std_error;
   double alpha = atmosphere.sun_angular_radius_rad;
   for (int i = 0; i < 3; ++i)
     result.solar_radiance[i] = atmosphere.solar_irradiance[i] / (M_PI * alpha * alpha);
   if (distance) {
-    result.radiance_to_point =
-        model.ComputeRadiance(ray.r, ray.mu, ray.mu_s, ray.nu, orders, *distance).value;
+    reference::Estimate to_point = model.ComputeRadiance(ray.r, ray.mu, ray.mu_s, ray.nu, orders, *distance);
+    result.radiance_to_point = to_point.value;
+    result.radiance_to_point_std_error = to_point.std_error;
     result.transmittance_to_point = model.Transmittance(ray.r, ray.mu, *distance);
   }
   return result;

@@ -67,6 +67,11 @@ void RunProbe(const ProbeOptions& options) {
     json["radiance_to_point"] = ToJson(result.radiance_to_point);
     json["transmittance_to_point"] = ToJson(result.transmittance_to_point);
   }
+  if (options.reference) {  // the Monte Carlo noise of the orders >= 2
+    json["sky_radiance_std_error"] = ToJson(result.sky_radiance_std_error);
+    json["sky_irradiance_std_error"] = ToJson(result.sky_irradiance_std_error);
+    if (options.distance_m) json["radiance_to_point_std_error"] = ToJson(result.radiance_to_point_std_error);
+  }
   std::printf("%s\n", json.dump(2).c_str());
 }
 
