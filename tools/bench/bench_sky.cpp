@@ -24,12 +24,14 @@ struct BenchOptions {
   int paths = 16384;
   std::string reference_file;
   std::string markdown_file;
+  std::string samples_csv_file;
 };
 
 void Bench(const BenchOptions& cli) {
   aerial::AtmosphereParameters atmosphere = cli.tables.LoadAtmosphere();
   aerial::PrecomputeOptions options = cli.tables.MakePrecomputeOptions();
   if (!cli.markdown_file.empty()) aerial::CheckWritable(cli.markdown_file);
+  if (!cli.samples_csv_file.empty()) aerial::CheckWritable(cli.samples_csv_file);
   aerial::bench::SkyReference reference;
   if (!cli.reference_file.empty() && std::filesystem::exists(cli.reference_file)) {
     reference = aerial::bench::ReadSkyReference(cli.reference_file);
@@ -48,7 +50,8 @@ void Bench(const BenchOptions& cli) {
   }
   aerial::Device device(cli.tables.MakeDeviceOptions());
   aerial::Tables tables = aerial::Tables::LoadOrPrecompute(device, atmosphere, options, cli.tables.MakeLoadOptions());
-  auto regions = aerial::bench::CompareSkyWithTables(tables, reference);
+  std::vector<aerial::Spectrum> tables_values;
+  auto regions = aerial::bench::CompareSkyWithTables(tables, reference, &tables_values);
   std::string table = aerial::bench::FormatSkyAccuracy(regions);
   std::fprintf(stderr, "%s\n", aerial::bench::FormatWorstSamples(regions).c_str());
   std::printf("tables: %s\nreference: %d paths per query, %s\n\n%s", options.Describe().c_str(),
@@ -56,6 +59,8 @@ void Bench(const BenchOptions& cli) {
               reference.orders == aerial::reference::kAllOrders ? "all orders" : ("orders 1.." + std::to_string(reference.orders)).c_str(),
               table.c_str());
   if (!cli.markdown_file.empty()) aerial::WriteFileAtomically(cli.markdown_file, table);
+  if (!cli.samples_csv_file.empty())
+    aerial::WriteFileAtomically(cli.samples_csv_file, aerial::bench::FormatSampleErrorsCsv(reference, tables_values));
 }
 
 }  // namespace
@@ -70,5 +75,7 @@ int main(int argc, char** argv) {
   app.add_option("--reference-file", cli.reference_file,
                  "Reference samples: read if the file exists, else computed and written there (JSON)");
   app.add_option("--markdown", cli.markdown_file, "Also write the table to this file");
+  app.add_option("--samples-csv", cli.samples_csv_file,
+                 "Also write every sample's reference and tables values and signed error to this file (CSV)");
   return aerial::bench::ParseAndRun(app, argc, argv, "aerial_bench_sky", [&] { Bench(cli); });
 }

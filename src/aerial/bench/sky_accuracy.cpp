@@ -212,13 +212,22 @@ double RegionAccuracy::Median() const {
 
 double RegionAccuracy::Max() const { return std::max({channels[0].max, channels[1].max, channels[2].max}); }
 
-std::vector<RegionAccuracy> CompareSkyWithTables(const Tables& tables, const SkyReference& reference) {
+std::vector<RegionAccuracy> CompareSkyWithTables(const Tables& tables, const SkyReference& reference,
+                                                 std::vector<Spectrum>* tables_values) {
   const AtmosphereParameters& atmosphere = tables.atmosphere();
   const double distance = reference.point_distance_m;
   std::vector<ProbeQuery> queries;
   for (const SkySample& s : reference.samples)
     queries.push_back({ToRayParameters(s.view, atmosphere), s.quantity == SkyQuantity::kRadianceToPoint ? distance : 0.0});
   std::vector<ProbeResult> results = Probe(tables, queries);
+  if (tables_values) {
+    tables_values->clear();
+    for (size_t i = 0; i < results.size(); ++i) {
+      SkyQuantity quantity = reference.samples[i].quantity;
+      tables_values->push_back({ProbedValue(results[i], quantity, 0), ProbedValue(results[i], quantity, 1),
+                                ProbedValue(results[i], quantity, 2)});
+    }
+  }
 
   std::vector<RegionAccuracy> regions;
   std::vector<std::array<std::vector<double>, 3>> errors;
@@ -277,6 +286,25 @@ std::string FormatWorstSamples(const std::vector<RegionAccuracy>& regions) {
       out << ToString(r.quantity) << ", " << r.band << ", " << r.altitude_m / 1000.0 << " km, " << names[c]
           << ": " << 100.0 * r.channels[c].max << "% at " << r.channels[c].worst << " (reference noise <= "
           << 100.0 * r.channels[c].max_relative_std_error << "%)\n";
+    }
+  }
+  return out.str();
+}
+
+std::string FormatSampleErrorsCsv(const SkyReference& reference, const std::vector<Spectrum>& tables_values) {
+  std::ostringstream out;
+  out << "quantity,band,altitude_m,view_zenith_deg,sun_zenith_deg,azimuth_deg,channel,reference,std_error,"
+         "tables,relative_error\n";
+  const char* channels[] = {"680", "550", "440"};
+  char row[256];
+  for (size_t i = 0; i < reference.samples.size() && i < tables_values.size(); ++i) {
+    const SkySample& s = reference.samples[i];
+    for (int c = 0; c < 3; ++c) {
+      std::snprintf(row, sizeof row, "%s,%s,%g,%g,%g,%g,%s,%.9g,%.9g,%.9g,%.6g\n", ToString(s.quantity).c_str(),
+                    s.band.c_str(), s.view.altitude_m, s.view.view_zenith_deg, s.view.sun_zenith_deg,
+                    s.view.azimuth_deg, channels[c], s.value[c], s.std_error[c], tables_values[i][c],
+                    tables_values[i][c] / s.value[c] - 1.0);
+      out << row;
     }
   }
   return out.str();

@@ -96,11 +96,16 @@ struct RegionAccuracy {
   double Max() const;
 };
 
-std::vector<RegionAccuracy> CompareSkyWithTables(const Tables& tables, const SkyReference& reference);
+// `tables_values`, if given, receives the tables' value of every reference sample, in its order.
+std::vector<RegionAccuracy> CompareSkyWithTables(const Tables& tables, const SkyReference& reference,
+                                                 std::vector<Spectrum>* tables_values = nullptr);
 
 // A Markdown table: one row per quantity, band and altitude; median / max per channel (%).
 std::string FormatSkyAccuracy(const std::vector<RegionAccuracy>& regions);
 // Where each region's largest error is, one line per region and channel.
 std::string FormatWorstSamples(const std::vector<RegionAccuracy>& regions);
+// One CSV row per reference sample and channel: where it is, the reference's value and standard
+// error, the tables' value and the signed relative error (tables / reference - 1).
+std::string FormatSampleErrorsCsv(const SkyReference& reference, const std::vector<Spectrum>& tables_values);
 
 }  // namespace aerial::bench
