@@ -30,6 +30,28 @@ TEST(Cli, ProbePrintsEveryKeyForEachWavelength) {
   }
 }
 
+// The reference also prints its Monte Carlo standard errors (of the orders >= 2): positive, and with
+// its default 131,072 paths at most a few tenths of a percent of the value on this daylight ray
+// (2% is far above any converged estimate and far below a missing 1/sqrt(n)). The tables print none.
+TEST(Cli, ProbeReferencePrintsItsStandardErrors) {
+  CommandRun run = RunAerial(kProbe + " --distance-m 10000 --reference");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  auto json = nlohmann::json::parse(run.out);
+  for (const char* quantity : {"sky_radiance", "sky_irradiance", "radiance_to_point"}) {
+    std::string key = std::string(quantity) + "_std_error";
+    ASSERT_TRUE(json.contains(key)) << key;
+    ASSERT_EQ(json[key].size(), 3u) << key;
+    for (int c = 0; c < 3; ++c) {
+      double error = json[key][c], value = json[quantity][c];
+      EXPECT_GT(error, 0.0) << key << " " << c;
+      EXPECT_LT(error, 0.02 * value) << key << " " << c;
+    }
+  }
+  CommandRun tables = RunAerial(kProbe);
+  ASSERT_EQ(tables.exit_code, 0) << tables.err;
+  EXPECT_FALSE(nlohmann::json::parse(tables.out).contains("sky_radiance_std_error"));
+}
+
 // export-vdb writes a file Debian's python3-openvdb reads, in froxel space and on a world grid.
 TEST(Cli, ExportVdbWritesTheFroxelVolume) {
   std::filesystem::path dir = std::filesystem::temp_directory_path() / ("aerial-cli-vdb-" + std::to_string(::getpid()));
