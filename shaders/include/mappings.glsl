@@ -100,13 +100,18 @@ float GetMuSFromUnitRange(float x) {
 // alone is dense near the ground (texels at 0, 0.06, 0.25, 0.56 km) but 3.4-3.8 km apart above
 // 45 km, where single scattering toward the zenith falls to zero at the top of the atmosphere and
 // is concave in x: looking up from 50 / 55 km with the sun overhead it read 1.5 / 5.4% low, and
-// 0.4% with 64 r texels. W keeps the slope 1 at the ground (texels at 0, 0.07, 0.28, 0.65 km)
-// and has slope 1 + R_WARP at the top: 2.2 km apart there, and 2.1 km instead of 1.5 km apart
+// 0.4% with 64 r texels. W keeps the slope 1 at the ground (texels at 0, 0.06, 0.27, 0.62 km)
+// and has slope 1 + R_WARP at the top: 2.6 km apart there, and 1.9 km instead of 1.5 km apart
 // around 10 km, where the slope is least (1 - R_WARP / 3). R_WARP 0.35, 0.5, 0.75 and 1 were
-// measured (aerial_bench_sky --grid quick); 0.75 took the daylight sky 50 km up from 1.54% to
-// 1.42% at most and its median from 0.41% to 0.34%, the median radiance to a point 10 km up from
-// 0.36% to 0.27%, and made no region worse by more than 0.4 point or past its target.
-const float R_WARP = 0.75;
+// measured (aerial_bench_sky --grid quick). 0.75 took the daylight sky 50 km up from 1.54% to
+// 1.42% at most and its median from 0.41% to 0.34%; since the sky's multiple scattering is blended
+// linearly in mu_s in daylight (GetMultipleScatteringBlendCorrection), 50 km up needs less and
+// 10 km up more: 0.5 instead of 0.75 takes the daylight sky 10 km up from a median of 0.55% to
+// 0.45% (its single scattering looking 30 degrees down read 0.26-0.37% low between r texels 2.1
+// km apart; 0.04-0.17% with 64 texels), the low-sun sky 10 km up 0.41% -> 0.20%, and the daylight
+// sky 50 km up stays at 0.31% (0.35 put it at 0.50%); the low-sun radiance to a point 10 km up
+// goes 2.06% -> 2.78% at most.
+const float R_WARP = 0.5;
 
 float WarpR(float x) {
   return x - R_WARP * x * x * (1.0 - x);
@@ -127,24 +132,26 @@ float GetRFromUnitRange(float u) {
 }
 
 // ---- Irradiance table: the mu_s axis above, the warped rho/H (above) in r. ----
-// The irradiance table's texture coordinate on the mu_s axis. In daylight the sky irradiance is
-// nearly linear in mu_s (the sunlight reaching the ground, and so the light it reflects into the
-// sky, goes as mu_s T(mu_s) with T close to 1), while the arctangent axis puts its daylight texels
-// far apart (of the default 64, at sun zeniths 0, 43.6 and 56.1 degrees): blending linearly in
-// the axis coordinate, a sun at 30 degrees got 58% of the zenith texel instead of 51%. Measured
-// (aerial_bench_sky), the daylight irradiance on the ground read 0.65 / 0.50 / 0.26% high at
-// median (red / green / blue) and 0.49 / 0.39 / 0.07% with this read. Between texels whose lower
-// sun is above IRRADIANCE_LINEAR_MU_S the blend is therefore linear in mu_s; below it, where the
-// Earth's shadow makes the irradiance anything but linear, it stays linear in the axis coordinate.
-const float IRRADIANCE_LINEAR_MU_S = 0.26;  // sun zenith 75 degrees
+// In daylight the sky irradiance is nearly linear in mu_s (the sunlight reaching the ground, and so
+// the light it reflects into the sky, goes as mu_s T(mu_s) with T close to 1), while the
+// arctangent axis puts its daylight texels far apart (of the irradiance table's 64, at sun zeniths
+// 0, 43.6 and 56.1 degrees): blending linearly in the axis coordinate, a sun at 30 degrees got 58%
+// of the zenith texel instead of 51%. Measured (aerial_bench_sky), the daylight irradiance on the
+// ground read 0.65 / 0.50 / 0.26% high at median (red / green / blue) and 0.49 / 0.39 / 0.07% with
+// this read. Between texels whose lower sun is above DAYLIGHT_LINEAR_MU_S the blend is therefore
+// linear in mu_s; below it, where the Earth's shadow makes the irradiance anything but linear, it
+// stays linear in the axis coordinate. The sky's multiple scattering is read the same way: the 3D
+// table directly, the 4D one through its blend correction (GetMultipleScatteringBlendCorrection).
+const float DAYLIGHT_LINEAR_MU_S = 0.26;  // sun zenith 75 degrees
 
-float GetIrradianceTextureUFromMuS(float mu_s) {
-  int texels = atmosphere.irradiance_size.x;
+// The texture coordinate of mu_s on an arctangent axis of `texels` texels, linear in mu_s between
+// two daylight texels.
+float GetMuSTextureCoordLinearInDaylight(float mu_s, int texels) {
   float u = GetTextureCoordFromUnitRange(GetUnitRangeFromMuS(mu_s), texels);
   vec2 blend = GetTexelBlend(u, float(texels));
   float last = float(texels - 1);
   float mu_s_lower = GetMuSFromUnitRange(blend.x / last);
-  if (mu_s_lower < IRRADIANCE_LINEAR_MU_S) return u;
+  if (mu_s_lower < DAYLIGHT_LINEAR_MU_S) return u;
   float mu_s_upper = GetMuSFromUnitRange((blend.x + 1.0) / last);
   float weight = clamp((mu_s - mu_s_lower) / (mu_s_upper - mu_s_lower), 0.0, 1.0);
   return (blend.x + weight + 0.5) / float(texels);
@@ -158,7 +165,7 @@ float GetIrradianceTextureUFromMuS(float mu_s) {
 // apart (and exact with 64 rows).
 vec2 GetIrradianceTextureUvFromRMuS(float r, float mu_s) {
   float x_r = GetUnitRangeFromR(r);
-  return vec2(GetIrradianceTextureUFromMuS(mu_s),
+  return vec2(GetMuSTextureCoordLinearInDaylight(mu_s, atmosphere.irradiance_size.x),
               GetTextureCoordFromUnitRange(x_r, atmosphere.irradiance_size.y));
 }
 

@@ -15,8 +15,14 @@ vec3 GetRayleighScattering(sampler3D rayleigh_texture, sampler3D multiple_textur
   vec3 rayleigh = GetScatteringExponentialInR(rayleigh_texture, atmosphere.scattering_size, r, mu,
                                               mu_s, nu, ray_r_mu_intersects_ground);
   if (TablesDropNu()) {
-    rayleigh += GetScatteringExponentialInR(multiple_texture, atmosphere.scattering_size, r, mu,
-                                            mu_s, nu, ray_r_mu_intersects_ground) /
+    // Linear in mu_s in daylight, as the 4D tables' multiple scattering is blended there
+    // (GetMultipleScatteringBlendCorrection).
+    ivec4 size = atmosphere.scattering_size;
+    vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, MU_AXIS_RAY_LENGTH, r, mu, mu_s, nu,
+                                                     ray_r_mu_intersects_ground);
+    uvwz.y = GetMuSTextureCoordLinearInDaylight(mu_s, size.z);
+    rayleigh += GetScatteringBlendedExponentialInR(multiple_texture, size, false,
+                                                   GetNominalNuBlend(size, uvwz), uvwz) /
                 RayleighPhaseFunction(nu);
   }
   return rayleigh;
@@ -44,14 +50,16 @@ vec3 GetRayleighScattering(sampler3D rayleigh_texture, sampler3D multiple_textur
 //    correction moved no daylight or afternoon region by more than 0.05 points. Above it the march
 //    still runs, for the multiple scattering's blend in nu (GetMultipleScatteringBlendCorrection),
 //    which needs the four nodes' single scattering only to take it out of the table's value and
-//    moves by a fraction (the nodes' P_R ratios minus 1) of any error in it: in
-//    MULTIPLE_SCATTERING_BLEND_STEPS steps. 4, 8, 16 and 32 steps gave the same daylight and
-//    afternoon skies within 0.06 point (aerial_bench_sky --grid quick); with 8 steps and the
-//    query's sun too, the noon frame under a moving sun, which remakes the sky-view lattice, was
-//    10-17 ms slower, with 4 and the nodes only within the run's noise (aerial_bench_render).
+//    moves by the difference between that blend's weights and the read's times any error in it:
+//    in MULTIPLE_SCATTERING_BLEND_STEPS steps, 16 since the daylight blend takes weights of its
+//    own (below; 4 were enough while it took the read's). With 8 steps and the query's sun too,
+//    the noon frame under a moving sun, which remakes the sky-view lattice, was 10-17 ms slower;
+//    16 steps for the nodes only against 4: the sky-view correction pass 0.18 -> 0.22 ms and the
+//    frame under a moving sun 131 -> 137 ms GPU, within the run's noise (aerial_bench_render
+//    --frames 15, min 93 / 100 ms, max 181 / 161 ms).
 const int SINGLE_SCATTERING_CORRECTION_STEPS = 32;
 const float SINGLE_SCATTERING_CORRECTION_MU_S = 0.26;
-const int MULTIPLE_SCATTERING_BLEND_STEPS = 4;
+const int MULTIPLE_SCATTERING_BLEND_STEPS = 16;
 const int SINGLE_SCATTERING_SUNS = 5;  // the query and the blend's four nodes
 
 // The suns marched: the query's (k = 0) and the four texel nodes (k = 1 + 2 a + b: mu_s node a,
@@ -190,6 +198,40 @@ vec3 GetSingleScatteringDifference(SingleScatteringSuns suns,
 // sky 10 and 50 km up 8.2% -> 6.2% and 9.0% -> 6.5% (aerial_bench_sky --grid quick).
 const float MULTIPLE_SCATTERING_EXPONENTIAL_MU_S = 0.1;
 
+//
+// In daylight (the lower mu_s texel above DAYLIGHT_LINEAR_MU_S) the blend is linear in mu_s, and
+// at each mu_s node linear in the nu that its two slices hold.
+//  - mu_s: the arctangent axis has daylight texels only at sun zenith 0, 54.2 and 66.8 degrees, far
+//    from linear in mu_s, and the light the ground sends back into the sky goes as mu_s T(mu_s).
+//    Order 2's ground-reflected part (a Rayleigh-only atmosphere over a ground of albedo 0.3 minus
+//    the same over a black one, `aerial probe --orders 2 --series-tail off`, against a numpy
+//    quadrature of sun -> ground -> air -> camera that the reference matches to 0.35%) read 1-10%
+//    high on the ground between those texels (7% in red at sun zenith 40 degrees) and 7-12% 10
+//    and 40 km up; linearly in mu_s, as the irradiance is read (GetMuSTextureCoordLinearInDaylight),
+//    0.4-1.5% on the ground and 0.7-0.9% 10 km up.
+//  - nu: a slice holds its value at its nominal nu clamped to what (mu, mu_s) allow, and the read
+//    blends it as if it were at the nominal nu. Looking 5 degrees above the horizon 31 degrees
+//    from a sun on a texel (zenith 54.2), nu = 0.86 is midway between the nominal 5/7 and 1, and
+//    the second slice holds nu = 0.86 itself: order 2 over a black ground read 2.7 / 1.8 / 1.6%
+//    low, and +1.0 / +0.4 / -0.0% blended at the nus the slices hold. Not for a low sun, whose
+//    exponential blend in nu was measured with the nominal weights: there this put the low-sun
+//    sky 50 km up at 3.27% instead of 2.72% off in green.
+//  - These weights differ from the read's, so an error in the nodes' marched single scattering
+//    no longer cancels: with 4 steps order 1 alone read up to 2.6% low in blue, with 16 within
+//    0.1% (MULTIPLE_SCATTERING_BLEND_STEPS).
+//  - aerial_bench_sky --grid quick: the daylight sky on the ground 0.90% -> 0.68% at most, median
+//    0.34% -> 0.15%; 50 km up median 0.41% -> 0.30% (at most 1.01% -> 1.19%, in blue). 10 km up the
+//    median went 0.23% -> 0.55%: the ground's excess had hidden a deficit of the atmosphere's own
+//    multiple scattering there (order 2 over a black ground 2.8-3.0% low looking 30 degrees down
+//    with the sun at zenith 45 degrees, 0.7% on the texels; see README).
+
+// The nu weight at mu_s node a: linear between the nus its slices were clamped to.
+float GetNodeNuWeight(SingleScatteringSuns suns, int a, float nu) {
+  float nu0 = suns.nu[1 + 2 * a], nu1 = suns.nu[2 + 2 * a];
+  if (!(nu1 - nu0 > 1e-4)) return suns.nu_weight;  // one nu at this node: any weight
+  return clamp((nu - nu0) / (nu1 - nu0), 0.0, 1.0);
+}
+
 vec3 GetMultipleScatteringBlendCorrection(sampler3D rayleigh_texture, float r, float mu,
                                           float mu_s, float nu, SingleScatteringSuns suns,
                                           vec3 rayleigh_single[SINGLE_SCATTERING_SUNS]) {
@@ -212,13 +254,16 @@ vec3 GetMultipleScatteringBlendCorrection(sampler3D rayleigh_texture, float r, f
                                                      vec2(suns.nu_slice + float(b), 0.0), uvwz) -
                   rayleigh_single[1 + 2 * a + b];
     }
-    multiple[a] = low_sun
-                      ? MixExponentially(stored[0] * phase0, stored[1] * phase1, suns.nu_weight)
-                      : mix(stored[0] * phase0, stored[1] * phase1, suns.nu_weight);
+    float nu_weight = low_sun ? suns.nu_weight : GetNodeNuWeight(suns, a, nu);
+    multiple[a] = low_sun ? MixExponentially(stored[0] * phase0, stored[1] * phase1, nu_weight)
+                          : mix(stored[0] * phase0, stored[1] * phase1, nu_weight);
     read[a] = mix(stored[0], stored[1], suns.nu_weight);
   }
-  vec3 blended = low_sun ? MixExponentially(multiple[0], multiple[1], suns.mu_s_weight)
-                         : mix(multiple[0], multiple[1], suns.mu_s_weight);
+  float mu_s_weight = suns.mu_s[1] >= DAYLIGHT_LINEAR_MU_S
+                          ? clamp((mu_s - suns.mu_s[1]) / (suns.mu_s[3] - suns.mu_s[1]), 0.0, 1.0)
+                          : suns.mu_s_weight;
+  vec3 blended = low_sun ? MixExponentially(multiple[0], multiple[1], mu_s_weight)
+                         : mix(multiple[0], multiple[1], mu_s_weight);
   return blended / RayleighPhaseFunction(nu) - mix(read[0], read[1], suns.mu_s_weight);
 }
 
