@@ -198,17 +198,16 @@ vec3 GetSingleScatteringDifference(SingleScatteringSuns suns,
 // sky 10 and 50 km up 8.2% -> 6.2% and 9.0% -> 6.5% (aerial_bench_sky --grid quick).
 const float MULTIPLE_SCATTERING_EXPONENTIAL_MU_S = 0.1;
 
-//
-// In daylight (the lower mu_s texel above DAYLIGHT_LINEAR_MU_S) the blend is linear in mu_s, and
-// at each mu_s node linear in the nu that its two slices hold.
+// In daylight (the lower mu_s texel above DAYLIGHT_LINEAR_MU_S) the blend below is linear in mu_s,
+// and at each mu_s node linear in the nu that its two slices hold.
 //  - mu_s: the arctangent axis has daylight texels only at sun zenith 0, 54.2 and 66.8 degrees, far
 //    from linear in mu_s, and the light the ground sends back into the sky goes as mu_s T(mu_s).
 //    Order 2's ground-reflected part (a Rayleigh-only atmosphere over a ground of albedo 0.3 minus
 //    the same over a black one, `aerial probe --orders 2 --series-tail off`, against a numpy
 //    quadrature of sun -> ground -> air -> camera that the reference matches to 0.35%) read 1-10%
 //    high on the ground between those texels (7% in red at sun zenith 40 degrees) and 7-12% 10
-//    and 40 km up; linearly in mu_s, as the irradiance is read (GetMuSTextureCoordLinearInDaylight),
-//    0.4-1.5% on the ground and 0.7-0.9% 10 km up.
+//    and 40 km up; linearly in mu_s, as the irradiance is read
+//    (GetMuSTextureCoordLinearInDaylight), 0.4-1.5% on the ground and 0.7-0.9% 10 km up.
 //  - nu: a slice holds its value at its nominal nu clamped to what (mu, mu_s) allow, and the read
 //    blends it as if it were at the nominal nu. Looking 5 degrees above the horizon 31 degrees
 //    from a sun on a texel (zenith 54.2), nu = 0.86 is midway between the nominal 5/7 and 1, and
