@@ -186,5 +186,19 @@ TEST(PhysicalSkyReference, StoredSamplesMeetTheirBandsNoiseGoal) {
   EXPECT_EQ(at_most_paths, 52);
 }
 
+// aerial_bench_sky --samples-csv: a header, then one row per sample and channel ending with the
+// signed relative error tables / reference - 1 (here +10%, 0 and -25%, exact in binary to %.6g).
+TEST(SkySamplesCsv, OneRowPerSampleAndChannelWithTheSignedError) {
+  bench::SkyReference reference;
+  reference.samples.push_back(
+      {SkyQuantity::kSkyRadiance, "day", {0.0, 60.0, 30.0, 90.0}, {2.0, 4.0, 8.0}, {0.1, 0.1, 0.1}, 1024});
+  std::string csv = bench::FormatSampleErrorsCsv(reference, {{2.2, 4.0, 6.0}});
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);
+  EXPECT_EQ(csv.rfind("quantity,band,", 0), 0u) << csv;
+  EXPECT_NE(csv.find("sky radiance,day,0,60,30,90,680,2,0.1,2.2,0.1\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",550,4,0.1,4,0\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",440,8,0.1,6,-0.25\n"), std::string::npos) << csv;
+}
+
 }  // namespace
 }  // namespace aerial::testing
