@@ -41,8 +41,7 @@ TableBytes TableMemory(const PrecomputeOptions& options) {
           .irradiance = uint64_t(r.irradiance_mu_s) * r.irradiance_r * 16,
           .scattering = scattering_tables * Texels(ScatteringExtent(r)) *
                         TexelBytes(ToTexelFormat(ScatteringFormat(options.precision))),
-          .multiple_density = Texels(MultipleDensityExtent(r)) *
-                              TexelBytes(ToTexelFormat(ScatteringFormat(options.precision)))};
+          .multiple_density = Texels(MultipleDensityExtent(r)) * TexelBytes(TexelFormat::kRgba32f)};
 }
 
 AtmosphereTables::AtmosphereTables(const vk::Context& context,
@@ -69,9 +68,10 @@ AtmosphereTables::AtmosphereTables(const vk::Context& context,
                                         : ::vk::Extent3D{1, 1, 1},
                           .volume = true,
                           .format = ScatteringFormat(options.precision)}),
+      // J_ms stays float32 too: its values (radiance per metre, down to 1e-9 at twilight) are
+      // below half floats' normal range, and it is a tenth of the scattering tables' size.
       multiple_density_(context, {.extent = MultipleDensityExtent(options.resolution),
-                                  .volume = true,
-                                  .format = ScatteringFormat(options.precision)}) {
+                                  .volume = true}) {
   uniform_buffer_.Write(std::as_bytes(std::span(&uniforms_, 1)));
   context_.Submit([&](const auto& cmd) {
     for (const vk::Image* image :

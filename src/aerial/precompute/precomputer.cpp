@@ -117,8 +117,6 @@ struct Scratch {
       rayleigh_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.rayleigh().extent()});
       mie_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.mie().extent()});
       multiple_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.multiple().extent(), .volume = true});
-      multiple_density_f32.emplace(
-          c, vk::ImageCreateInfo{.extent = tables.multiple_density().extent(), .volume = true});
     }
   }
 
@@ -127,7 +125,7 @@ struct Scratch {
   std::array<vk::Image, 2> delta_multiple;
   std::array<vk::Image, 2> density;  // J_n, for two consecutive orders (index: order % 2)
   vk::Buffer incident_radiance, directions;
-  std::optional<vk::Image> rayleigh_f32, mie_f32, multiple_f32, multiple_density_f32;
+  std::optional<vk::Image> rayleigh_f32, mie_f32, multiple_f32;
 };
 
 ::vk::Extent3D Extent2D(const vk::Image& image) { return image.extent(); }
@@ -156,14 +154,10 @@ TableBytes PrecomputeScratchMemory(const PrecomputeOptions& options) {
                         4 * uint64_t(density.width) * density.height * density.depth * 16 +  // delta_multiple, density
                         IncidentBytes(options) + DirectionBytes(options);
   // Float32 copies of the half-precision tables (the multiple one has 1 texel in 4D).
-  uint64_t multiple_density = 0;
-  if (options.precision == TablePrecision::kFloat16) {
+  if (options.precision == TablePrecision::kFloat16)
     scattering += scattering_texels * 16 * (options.variant == LutVariant::k3D ? 3 : 2);
-    multiple_density = uint64_t(r.multiple_density_r) * r.multiple_density_mu * r.multiple_density_mu_s *
-                       r.multiple_density_nu * 16;
-  }
   return {.transmittance = 0, .irradiance = 2 * uint64_t(r.irradiance_mu_s) * r.irradiance_r * 16,
-          .scattering = scattering, .multiple_density = multiple_density};
+          .scattering = scattering, .multiple_density = 0};
 }
 
 int PrecomputePassCount(const PrecomputeOptions& options) {
@@ -181,8 +175,7 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   const vk::Image& rayleigh = scratch.rayleigh_f32 ? *scratch.rayleigh_f32 : tables.rayleigh();
   const vk::Image& mie = scratch.mie_f32 ? *scratch.mie_f32 : tables.mie();
   const vk::Image& multiple = scratch.multiple_f32 ? *scratch.multiple_f32 : tables.multiple();
-  const vk::Image& multiple_density =
-      scratch.multiple_density_f32 ? *scratch.multiple_density_f32 : tables.multiple_density();
+  const vk::Image& multiple_density = tables.multiple_density();  // float32 in every precision
   // 4D folds each order into the Rayleigh table; 3D keeps them in their own table.
   const vk::Image& multiple_accumulator =
       tables.options().variant == LutVariant::k4D ? rayleigh : multiple;
@@ -214,7 +207,6 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
       scratch.mie_f32->InitializeLayout(cmd);
       scratch.multiple_f32->InitializeLayout(cmd);
       scratch.multiple_f32->Clear(cmd);
-      scratch.multiple_density_f32->InitializeLayout(cmd);
     }
     multiple_density.Clear(cmd);  // accumulates orders >= 2
     // The irradiance table accumulates indirect orders only; it starts at zero.
@@ -327,7 +319,6 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
       BlitConvert(cmd, *scratch.rayleigh_f32, tables.rayleigh());
       BlitConvert(cmd, *scratch.mie_f32, tables.mie());
       BlitConvert(cmd, *scratch.multiple_f32, tables.multiple());
-      BlitConvert(cmd, *scratch.multiple_density_f32, tables.multiple_density());
       vk::FullBarrier(cmd);
     });
   }
