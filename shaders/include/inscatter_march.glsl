@@ -45,8 +45,9 @@ void SampleInscatterIntegrands(sampler2D transmittance_texture, sampler3D multip
   march.distance = d;
   march.transmittance = GetTransmittanceFromOrigin(transmittance_texture, march.origin, march.r,
                                                    march.mu, d, march.ray_r_mu_intersects_ground);
-  ComputeSingleScatteringIntegrandAt(transmittance_texture, r_d, mu_s_d, march.transmittance,
-                                     march.rayleigh_integrand, march.mie_integrand);
+  ComputeSingleScatteringIntegrandAt(
+      r_d, march.transmittance * GetTransmittanceToSun(transmittance_texture, r_d, mu_s_d),
+      march.rayleigh_integrand, march.mie_integrand);
   march.multiple_integrand =
       march.transmittance * GetMultipleScatteringDensity(multiple_density_texture, r_d, mu_d,
                                                          mu_s_d, march.nu,

@@ -15,8 +15,9 @@ vec3 ComputeDirectIrradiance(sampler2D transmittance_texture, float r, float mu_
 // The radiance of order `order` arriving at (r, mu_s) from direction omega (zenith cosine
 // omega.z), nu = omega . omega_s: the tables' value, or with `exact_single` single scattering
 // integrated along the direction (ComputeSingleScatteringInSteps, 32 steps).
-vec3 GetIrradianceIntegrand(sampler2D transmittance_texture, sampler3D single_rayleigh_texture,
-                            sampler3D single_mie_texture, sampler3D multiple_scattering_texture,
+vec3 GetIrradianceIntegrand(sampler2D transmittance_texture, sampler2D sun_band_texture,
+                            sampler3D single_rayleigh_texture, sampler3D single_mie_texture,
+                            sampler3D multiple_scattering_texture,
                             float r, float mu_s, vec3 omega, float nu, int order,
                             bool exact_single) {
   if (!exact_single)
@@ -24,8 +25,8 @@ vec3 GetIrradianceIntegrand(sampler2D transmittance_texture, sampler3D single_ra
                                 multiple_scattering_texture, r, omega.z, mu_s, nu, false, order);
   vec3 rayleigh;
   vec3 mie;
-  ComputeSingleScatteringInSteps(transmittance_texture, r, omega.z, mu_s, nu, false, 32, rayleigh,
-                                 mie);
+  ComputeSingleScatteringInSteps(transmittance_texture, sun_band_texture, r, omega.z, mu_s, nu,
+                                 false, 32, rayleigh, mie);
   return rayleigh * RayleighPhaseFunction(nu) + mie * MiePhaseFunction(atmosphere.mie_phase_g, nu);
 }
 
@@ -39,8 +40,9 @@ vec3 GetIrradianceIntegrand(sampler2D transmittance_texture, sampler3D single_ra
 // against Gauss-Legendre with 256 nodes in numpy: Rayleigh only, +0.16 / +0.10 / +0.05% (red /
 // green / blue) with even zenith angles, +0.03 / +0.03 / +0.04% with this rule; with Mie's aureole
 // around the zenith too, +0.16 / +0.10 / +0.06% and +0.12 / +0.08 / +0.06%.
-vec3 IntegrateIrradiance(sampler2D transmittance_texture, sampler3D single_rayleigh_texture,
-                         sampler3D single_mie_texture, sampler3D multiple_scattering_texture,
+vec3 IntegrateIrradiance(sampler2D transmittance_texture, sampler2D sun_band_texture,
+                         sampler3D single_rayleigh_texture, sampler3D single_mie_texture,
+                         sampler3D multiple_scattering_texture,
                          float r, float mu_s, int order, bool exact_single, int zenith_samples,
                          int azimuth_samples) {
   float d_psi = PI / float(zenith_samples);
@@ -56,9 +58,10 @@ vec3 IntegrateIrradiance(sampler2D transmittance_texture, sampler3D single_rayle
     for (int i = 0; i < azimuth_samples; ++i) {
       float phi = (float(i) + 0.5) * d_phi;
       vec3 omega = vec3(cos(phi) * sin_theta, sin(phi) * sin_theta, mu);
-      irradiance += GetIrradianceIntegrand(transmittance_texture, single_rayleigh_texture,
-                                           single_mie_texture, multiple_scattering_texture, r,
-                                           mu_s, omega, dot(omega, omega_s), order, exact_single) *
+      irradiance += GetIrradianceIntegrand(transmittance_texture, sun_band_texture,
+                                           single_rayleigh_texture, single_mie_texture,
+                                           multiple_scattering_texture, r, mu_s, omega,
+                                           dot(omega, omega_s), order, exact_single) *
                     mu * domega;
     }
   }
@@ -75,21 +78,23 @@ vec3 IntegrateIrradiance(sampler2D transmittance_texture, sampler3D single_rayle
 // integrates it well. Measured (aerial_bench_sky): low-sun sky irradiance from 3.6-5.3% to
 // 1.9-2.5% at most, twilight on the ground 9.6% to 5.8%; the coarse grid at 8x8 is as accurate as
 // 16x16 or the exact single scattering on the full 32x32 grid, which cost 4.7 s instead of 0.5 s.
-vec3 ComputeIndirectIrradiance(sampler2D transmittance_texture, sampler3D single_rayleigh_texture,
-                               sampler3D single_mie_texture, sampler3D multiple_scattering_texture,
+vec3 ComputeIndirectIrradiance(sampler2D transmittance_texture, sampler2D sun_band_texture,
+                               sampler3D single_rayleigh_texture, sampler3D single_mie_texture,
+                               sampler3D multiple_scattering_texture,
                                float r, float mu_s, int order) {
   int zenith_samples = atmosphere.sample_counts.z;
   int azimuth_samples = atmosphere.sample_counts.w;
-  vec3 irradiance = IntegrateIrradiance(transmittance_texture, single_rayleigh_texture,
-                                        single_mie_texture, multiple_scattering_texture, r, mu_s,
-                                        order, false, zenith_samples, azimuth_samples);
+  vec3 irradiance = IntegrateIrradiance(transmittance_texture, sun_band_texture,
+                                        single_rayleigh_texture, single_mie_texture,
+                                        multiple_scattering_texture, r, mu_s, order, false,
+                                        zenith_samples, azimuth_samples);
   if (order != 1) return irradiance;
   int coarse_zenith = max(zenith_samples / 4, 1);
   int coarse_azimuth = max(azimuth_samples / 4, 1);
-  vec3 exact = IntegrateIrradiance(transmittance_texture, single_rayleigh_texture,
+  vec3 exact = IntegrateIrradiance(transmittance_texture, sun_band_texture, single_rayleigh_texture,
                                    single_mie_texture, multiple_scattering_texture, r, mu_s, 1,
                                    true, coarse_zenith, coarse_azimuth);
-  vec3 table = IntegrateIrradiance(transmittance_texture, single_rayleigh_texture,
+  vec3 table = IntegrateIrradiance(transmittance_texture, sun_band_texture, single_rayleigh_texture,
                                    single_mie_texture, multiple_scattering_texture, r, mu_s, 1,
                                    false, coarse_zenith, coarse_azimuth);
   return max(irradiance + exact - table, vec3(0.0));

@@ -55,36 +55,38 @@ float GetStepDistance(float ray_length, int i, int steps, float spacing_exponent
   return ray_length * pow(float(i) / float(steps), spacing_exponent);
 }
 
-// Integrand of single scattering at radius r_d, where the sun's zenith cosine is mu_s_d, given the
-// transmittance from the camera to there: that transmittance, times sunlight reaching the point,
-// times the density of each species there.
-void ComputeSingleScatteringIntegrandAt(sampler2D transmittance_texture, float r_d, float mu_s_d,
-                                        vec3 view_transmittance, out vec3 rayleigh, out vec3 mie) {
-  vec3 transmittance =
-      view_transmittance * GetTransmittanceToSun(transmittance_texture, r_d, mu_s_d);
+// Integrand of single scattering at radius r_d, given the transmittance of the light's path: from
+// the sun's disc (GetTransmittanceToSun) to r_d, times from there to the camera. That
+// transmittance, times the density of each species there.
+void ComputeSingleScatteringIntegrandAt(float r_d, vec3 transmittance, out vec3 rayleigh,
+                                        out vec3 mie) {
   float altitude = r_d - atmosphere.bottom_radius;
   rayleigh = transmittance * GetProfileDensity(atmosphere.rayleigh_density, altitude);
   mie = transmittance * GetProfileDensity(atmosphere.mie_density, altitude);
 }
 
-// The same at distance d along the ray (r, mu).
-void ComputeSingleScatteringIntegrand(sampler2D transmittance_texture, vec3 origin, float r,
-                                      float mu, float mu_s, float nu, float d,
-                                      bool ray_r_mu_intersects_ground, out vec3 rayleigh,
+// The same at distance d along the ray (r, mu), with the sunlight read from the sun band.
+void ComputeSingleScatteringIntegrand(sampler2D transmittance_texture, sampler2D sun_band_texture,
+                                      vec3 origin, float r, float mu, float mu_s, float nu,
+                                      float d, bool ray_r_mu_intersects_ground, out vec3 rayleigh,
                                       out vec3 mie) {
   float r_d = RadiusAtDistance(r, mu, d);
+  vec3 sunlight = GetTransmittanceToSunFromBand(transmittance_texture, sun_band_texture, r_d,
+                                                SunCosineAlongRay(r, mu_s, nu, d, r_d));
   ComputeSingleScatteringIntegrandAt(
-      transmittance_texture, r_d, SunCosineAlongRay(r, mu_s, nu, d, r_d),
-      GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d, ray_r_mu_intersects_ground),
+      r_d,
+      sunlight * GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
+                                            ray_r_mu_intersects_ground),
       rayleigh, mie);
 }
 
 // Single scattering (Bruneton 2008 eq. 11 without the phase function), integrated over the
 // distance to the nearest boundary in steps spaced by GetStepSpacingExponent, with
 // ExponentialStepIntegral.
-void ComputeSingleScatteringInSteps(sampler2D transmittance_texture, float r, float mu,
-                                     float mu_s, float nu, bool ray_r_mu_intersects_ground,
-                                     int steps, out vec3 rayleigh, out vec3 mie) {
+void ComputeSingleScatteringInSteps(sampler2D transmittance_texture, sampler2D sun_band_texture,
+                                     float r, float mu, float mu_s, float nu,
+                                     bool ray_r_mu_intersects_ground, int steps, out vec3 rayleigh,
+                                     out vec3 mie) {
   float ray_length = DistanceToNearestAtmosphereBoundary(r, mu, ray_r_mu_intersects_ground);
   float spacing_exponent = GetStepSpacingExponent(r, mu_s);
   vec3 origin = GetRayOpticalDepthOrigin(transmittance_texture, r, mu, ray_r_mu_intersects_ground);
@@ -92,15 +94,16 @@ void ComputeSingleScatteringInSteps(sampler2D transmittance_texture, float r, fl
   vec3 mie_sum = vec3(0.0);
   vec3 rayleigh_previous;
   vec3 mie_previous;
-  ComputeSingleScatteringIntegrand(transmittance_texture, origin, r, mu, mu_s, nu, 0.0,
-                                   ray_r_mu_intersects_ground, rayleigh_previous, mie_previous);
+  ComputeSingleScatteringIntegrand(transmittance_texture, sun_band_texture, origin, r, mu, mu_s,
+                                   nu, 0.0, ray_r_mu_intersects_ground, rayleigh_previous,
+                                   mie_previous);
   for (int i = 1; i <= steps; ++i) {
     vec3 rayleigh_i;
     vec3 mie_i;
     float d = GetStepDistance(ray_length, i, steps, spacing_exponent);
     float dx = d - GetStepDistance(ray_length, i - 1, steps, spacing_exponent);
-    ComputeSingleScatteringIntegrand(transmittance_texture, origin, r, mu, mu_s, nu, d,
-                                     ray_r_mu_intersects_ground, rayleigh_i, mie_i);
+    ComputeSingleScatteringIntegrand(transmittance_texture, sun_band_texture, origin, r, mu, mu_s,
+                                     nu, d, ray_r_mu_intersects_ground, rayleigh_i, mie_i);
     rayleigh_sum += ExponentialStepIntegral(rayleigh_previous, rayleigh_i) * dx;
     mie_sum += ExponentialStepIntegral(mie_previous, mie_i) * dx;
     rayleigh_previous = rayleigh_i;
@@ -111,11 +114,12 @@ void ComputeSingleScatteringInSteps(sampler2D transmittance_texture, float r, fl
   mie = mie_sum * sun * atmosphere.mie_scattering.rgb;
 }
 
-void ComputeSingleScattering(sampler2D transmittance_texture, float r, float mu, float mu_s,
-                             float nu, bool ray_r_mu_intersects_ground, out vec3 rayleigh,
-                             out vec3 mie) {
-  ComputeSingleScatteringInSteps(transmittance_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground,
-                                 atmosphere.sample_counts.y, rayleigh, mie);
+void ComputeSingleScattering(sampler2D transmittance_texture, sampler2D sun_band_texture, float r,
+                             float mu, float mu_s, float nu, bool ray_r_mu_intersects_ground,
+                             out vec3 rayleigh, out vec3 mie) {
+  ComputeSingleScatteringInSteps(transmittance_texture, sun_band_texture, r, mu, mu_s, nu,
+                                 ray_r_mu_intersects_ground, atmosphere.sample_counts.y, rayleigh,
+                                 mie);
 }
 
 // Reads of a 4D table packed in 3D (x = nu_index * MU_S + mu_s_index) interpolate linearly in nu

@@ -135,9 +135,10 @@ void MarchSingleScatteringSuns(sampler2D transmittance_texture, float r, float m
                                                          ray_r_mu_intersects_ground);
     for (int k = first_sun; k < SINGLE_SCATTERING_SUNS; ++k) {
       vec3 rayleigh_i, mie_i;
-      ComputeSingleScatteringIntegrandAt(transmittance_texture, r_d,
-                                         SunCosineAlongRay(r, suns.mu_s[k], suns.nu[k], d, r_d),
-                                         view_transmittance, rayleigh_i, mie_i);
+      float mu_s_d = SunCosineAlongRay(r, suns.mu_s[k], suns.nu[k], d, r_d);
+      ComputeSingleScatteringIntegrandAt(
+          r_d, view_transmittance * GetTransmittanceToSun(transmittance_texture, r_d, mu_s_d),
+          rayleigh_i, mie_i);
       if (i > 0) {
         rayleigh[k] += ExponentialStepIntegral(rayleigh_previous[k], rayleigh_i) * dx;
         mie[k] += ExponentialStepIntegral(mie_previous[k], mie_i) * dx;

@@ -102,12 +102,21 @@ vec3 GetTransmittanceAtDiscPoint(sampler2D transmittance_texture, float r, float
   return GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r,
                                                  GetDiscPointCosine(mu_s, sin_s, y));
 }
+// Elevation of the disc centre above the cut-off, in disc radii (to first order in the angle).
+float GetSunElevationInDiscRadii(float mu_s, float cut_off_cosine) {
+  float sin_cut_off = sqrt(max(1.0 - cut_off_cosine * cut_off_cosine, 0.0));
+  return (mu_s - cut_off_cosine) / (sin_cut_off * atmosphere.sun_angular_radius);
+}
+
+// Visible fraction of a uniform disc cut by a straight line x radii below its centre.
+float GetSunDiscVisibleFraction(float x) {
+  return x >= 1.0 ? 1.0 : clamp(0.5 + (x * sqrt(1.0 - x * x) + asin(x)) / PI, 0.0, 1.0);
+}
+
 vec3 GetSunDiscAverage(sampler2D transmittance_texture, float r, float mu_s, float cut_off_cosine,
                        bool cosine_weighted) {
   float alpha = atmosphere.sun_angular_radius;
-  float sin_cut_off = sqrt(max(1.0 - cut_off_cosine * cut_off_cosine, 0.0));
-  // Elevation of the disc centre above the cut-off, in disc radii.
-  float x = (mu_s - cut_off_cosine) / (sin_cut_off * alpha);
+  float x = GetSunElevationInDiscRadii(mu_s, cut_off_cosine);
   if (x <= -1.0) return vec3(0.0);
   if (x * alpha > SUN_DISC_ONE_TAP_ELEVATION)
     return GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, mu_s) *
@@ -121,8 +130,7 @@ vec3 GetSunDiscAverage(sampler2D transmittance_texture, float r, float mu_s, flo
                    GetTransmittanceAtDiscPoint(transmittance_texture, r, mu_s, sin_s, -0.70710678)) +
            0.5 * GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, mu_s);
   }
-  // Visible fraction of a uniform disc cut by a straight line x radii below its centre.
-  float visible = x >= 1.0 ? 1.0 : clamp(0.5 + (x * sqrt(1.0 - x * x) + asin(x)) / PI, 0.0, 1.0);
+  float visible = GetSunDiscVisibleFraction(x);
   float t_h = acos(max(-x, -1.0));
   const vec2 node = vec2(0.3399810436, 0.8611363116);  // Gauss-Legendre, 4 points on [-1, 1]
   const vec2 weight = vec2(0.6521451549, 0.3478548451);
@@ -145,6 +153,51 @@ float GetHorizonCosine(float r) { return -sqrt(SquaredHorizonDistance(r)) / r; }
 // Transmittance of sunlight to radius r, over the part of the disc above the horizon.
 vec3 GetTransmittanceToSun(sampler2D transmittance_texture, float r, float mu_s) {
   return GetSunDiscAverage(transmittance_texture, r, mu_s, GetHorizonCosine(r), false);
+}
+
+// ---- The sun band: GetTransmittanceToSun tabulated for the precomputation. ----
+// The single scattering passes evaluate the disc's average at every step of every ray. Near each
+// point's horizon that is 2 to 4 table reads with trigonometry, and on lavapipe it took 1.7 of the
+// single scattering pass's 2.7 s (the lanes of a SIMD group, neighbouring mu_s texels, take
+// different branches, and each runs them all). It depends on (r, mu_s) alone, so a pass
+// (precompute/sun_band.comp) tabulates it where it differs from the centre's value: x, the
+// centre's elevation above the horizon in disc radii, from -1 to SUN_DISC_ONE_TAP_ELEVATION,
+// uniformly on the u axis; r on the transmittance table's rho/H mapping on the v axis (its rows).
+// The band holds the optical depth of the visible part's average, -ln(average / visible), which
+// is smooth where the visible fraction is not; a read multiplies by the exact visible fraction.
+float GetSunBandMaxElevationInDiscRadii() {
+  return SUN_DISC_ONE_TAP_ELEVATION / atmosphere.sun_angular_radius;
+}
+
+vec2 GetSunBandTextureUv(ivec2 size, float r, float x) {
+  float x_r = sqrt(SquaredHorizonDistance(r)) / HorizonDistanceFromGround();
+  return vec2(GetTextureCoordFromUnitRange((x + 1.0) / (GetSunBandMaxElevationInDiscRadii() + 1.0),
+                                           size.x),
+              GetTextureCoordFromUnitRange(x_r, size.y));
+}
+
+void GetRMuSFromSunBandTextureUv(ivec2 size, vec2 uv, out float r, out float mu_s) {
+  float x_r = GetUnitRangeFromTextureCoord(uv.y, size.y);
+  float rho = HorizonDistanceFromGround() * x_r;
+  r = sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
+  // At x = -1 the visible part is a vanishing sliver whose 4 taps graze the horizon itself; the
+  // first texel is taken half a texel above, where they do not.
+  float x_range = GetSunBandMaxElevationInDiscRadii() + 1.0;
+  float x = max(-1.0 + GetUnitRangeFromTextureCoord(uv.x, size.x) * x_range,
+                -1.0 + 0.5 * x_range / float(size.x - 1));
+  float cut_off = GetHorizonCosine(r);
+  mu_s = cut_off + x * sqrt(1.0 - cut_off * cut_off) * atmosphere.sun_angular_radius;
+}
+
+// GetTransmittanceToSun, read from the sun band where the disc takes more than its centre.
+vec3 GetTransmittanceToSunFromBand(sampler2D transmittance_texture, sampler2D sun_band_texture,
+                                   float r, float mu_s) {
+  float x = GetSunElevationInDiscRadii(mu_s, GetHorizonCosine(r));
+  if (x <= -1.0) return vec3(0.0);
+  if (x > GetSunBandMaxElevationInDiscRadii())
+    return GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, mu_s);
+  vec2 uv = GetSunBandTextureUv(textureSize(sun_band_texture, 0), r, x);
+  return exp(-textureLod(sun_band_texture, uv, 0.0).rgb) * GetSunDiscVisibleFraction(x);
 }
 
 #endif

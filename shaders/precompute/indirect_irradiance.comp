@@ -12,6 +12,7 @@ layout(set = 0, binding = 4) uniform sampler2D previous_delta_irradiance;  // fr
 layout(set = 0, binding = 5) writeonly uniform image2D delta_irradiance_image;
 layout(set = 0, binding = 6, rgba32f) uniform image2D irradiance_accumulator;
 layout(set = 0, binding = 7) uniform sampler2D transmittance_texture;
+layout(set = 0, binding = 8) uniform sampler2D sun_band_texture;
 layout(push_constant) uniform Order {
   int order;  // of the radiance integrated
   int close_series;
@@ -23,9 +24,9 @@ void main() {
   float r;
   float mu_s;
   GetRMuSFromIrradianceTextureUv((vec2(texel) + 0.5) / vec2(atmosphere.irradiance_size.xy), r, mu_s);
-  vec3 irradiance = ComputeIndirectIrradiance(transmittance_texture, single_rayleigh_texture,
-                                              single_mie_texture, multiple_scattering_texture, r,
-                                              mu_s, pass.order);
+  vec3 irradiance = ComputeIndirectIrradiance(transmittance_texture, sun_band_texture,
+                                              single_rayleigh_texture, single_mie_texture,
+                                              multiple_scattering_texture, r, mu_s, pass.order);
   imageStore(delta_irradiance_image, texel, vec4(irradiance, 0.0));
   if (pass.close_series != 0)
     irradiance = SumSeriesFromLastOrder(irradiance, texelFetch(previous_delta_irradiance, texel, 0).rgb);

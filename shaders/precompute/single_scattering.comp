@@ -8,6 +8,7 @@ layout(set = 0, binding = 1) uniform sampler2D transmittance_texture;
 layout(set = 0, binding = 2) writeonly uniform image3D delta_rayleigh_image;
 layout(set = 0, binding = 3) writeonly uniform image3D single_mie_image;
 layout(set = 0, binding = 4) writeonly uniform image3D rayleigh_accumulator;
+layout(set = 0, binding = 5) uniform sampler2D sun_band_texture;
 
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
@@ -18,8 +19,8 @@ void main() {
                                  mu_s, nu, ray_r_mu_intersects_ground);
   vec3 rayleigh;
   vec3 mie;
-  ComputeSingleScattering(transmittance_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground,
-                          rayleigh, mie);
+  ComputeSingleScattering(transmittance_texture, sun_band_texture, r, mu, mu_s, nu,
+                          ray_r_mu_intersects_ground, rayleigh, mie);
   imageStore(delta_rayleigh_image, texel, vec4(rayleigh, 0.0));
   imageStore(single_mie_image, texel, vec4(mie, 0.0));
   imageStore(rayleigh_accumulator, texel, vec4(rayleigh, 0.0));

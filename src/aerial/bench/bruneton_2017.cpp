@@ -8,6 +8,7 @@ std::string Bruneton2017Step(const std::string& pass) {
   std::string kind = PassKind(pass);
   if (kind == "incident radiance") return "scattering density";
   if (kind == "accumulate") return "multiple scattering";
+  if (kind == "sun band") return "single scattering";  // its sunlight, tabulated beforehand
   for (const auto& step : kBruneton2017Steps)
     if (kind == step.name) return kind;
   return "";

@@ -45,13 +45,16 @@ struct Pipelines {
   explicit Pipelines(const vk::Context& c)
       : transmittance(c, "precompute/transmittance.comp",
                       {{"AtmosphereBlock", kUniform}, {"transmittance_image", kStorageImage}}),
+        sun_band(c, "precompute/sun_band.comp",
+                 {{"AtmosphereBlock", kUniform}, {"transmittance_texture", kSampled},
+                  {"sun_band_image", kStorageImage}}),
         direct_irradiance(c, "precompute/direct_irradiance.comp",
                           {{"AtmosphereBlock", kUniform}, {"transmittance_texture", kSampled},
                            {"delta_irradiance_image", kStorageImage}}),
         single_scattering(c, "precompute/single_scattering.comp",
                           {{"AtmosphereBlock", kUniform}, {"transmittance_texture", kSampled},
                            {"delta_rayleigh_image", kStorageImage}, {"single_mie_image", kStorageImage},
-                           {"rayleigh_accumulator", kStorageImage}}),
+                           {"rayleigh_accumulator", kStorageImage}, {"sun_band_texture", kSampled}}),
         incident_radiance(c, "precompute/incident_radiance.comp",
                           {{"AtmosphereBlock", kUniform}, {"transmittance_texture", kSampled},
                            {"single_rayleigh_texture", kSampled}, {"single_mie_texture", kSampled},
@@ -65,7 +68,8 @@ struct Pipelines {
                             {{"AtmosphereBlock", kUniform}, {"single_rayleigh_texture", kSampled},
                              {"single_mie_texture", kSampled}, {"multiple_scattering_texture", kSampled},
                              {"previous_delta_irradiance", kSampled}, {"delta_irradiance_image", kStorageImage},
-                             {"irradiance_accumulator", kStorageImage}, {"transmittance_texture", kSampled}},
+                             {"irradiance_accumulator", kStorageImage}, {"transmittance_texture", kSampled},
+                             {"sun_band_texture", kSampled}},
                             sizeof(SeriesStep)),
         multiple_scattering(c, "precompute/multiple_scattering.comp", MultipleScatteringSlots(), 0,
                             {0}),
@@ -75,7 +79,7 @@ struct Pipelines {
                    {{"AtmosphereBlock", kUniform}, {"order_texture", kSampled},
                     {"previous_order_texture", kSampled}, {"accumulator", kStorageImage}},
                    sizeof(AccumulateStep)) {}
-  vk::ComputePipeline transmittance, direct_irradiance, single_scattering, incident_radiance,
+  vk::ComputePipeline transmittance, sun_band, direct_irradiance, single_scattering, incident_radiance,
       scattering_density, indirect_irradiance, multiple_scattering, multiple_scattering_order2,
       accumulate;
 };
@@ -95,13 +99,21 @@ size_t IncidentBytes(const PrecomputeOptions& o) {
   return DirectionCount(o) * s.density_r * s.density_mu_s * 16;
 }
 size_t DirectionBytes(const PrecomputeOptions& o) { return DirectionCount(o) * o.samples.density_r * 16; }
+// The sun band (transmittance.glsl): 256 elevations over the 10 degrees above each horizon where
+// the disc's average differs from its centre's value (0.04 degrees, 0.15 disc radii, apart), on
+// the transmittance table's rows.
+constexpr uint32_t kSunBandElevations = 256;
+::vk::Extent3D SunBandExtent(const PrecomputeOptions& o) {
+  return {kSunBandElevations, uint32_t(o.resolution.transmittance_r), 1};
+}
 
 // Intermediate tables that only live during the precomputation. The per-order ground irradiance
 // and multiple scattering are kept for two consecutive orders (index: order % 2), so that the last
 // order can be compared with the one before it.
 struct Scratch {
   Scratch(const vk::Context& c, const AtmosphereTables& tables)
-      : delta_irradiance{vk::Image(c, {.extent = tables.irradiance().extent()}),
+      : sun_band(c, {.extent = SunBandExtent(tables.options())}),
+        delta_irradiance{vk::Image(c, {.extent = tables.irradiance().extent()}),
                          vk::Image(c, {.extent = tables.irradiance().extent()})},
         delta_rayleigh(c, {.extent = tables.rayleigh().extent()}),
         delta_multiple{vk::Image(c, {.extent = DensityExtent(tables.options())}),
@@ -120,6 +132,7 @@ struct Scratch {
     }
   }
 
+  vk::Image sun_band;
   std::array<vk::Image, 2> delta_irradiance;
   vk::Image delta_rayleigh;
   std::array<vk::Image, 2> delta_multiple;
@@ -156,14 +169,15 @@ TableBytes PrecomputeScratchMemory(const PrecomputeOptions& options) {
   // Float32 copies of the half-precision tables (the multiple one has 1 texel in 4D).
   if (options.precision == TablePrecision::kFloat16)
     scattering += scattering_texels * 16 * (options.variant == LutVariant::k3D ? 3 : 2);
-  return {.transmittance = 0, .irradiance = 2 * uint64_t(r.irradiance_mu_s) * r.irradiance_r * 16,
+  const ::vk::Extent3D sun_band = SunBandExtent(options);
+  return {.transmittance = uint64_t(sun_band.width) * sun_band.height * 16, .irradiance = 2 * uint64_t(r.irradiance_mu_s) * r.irradiance_r * 16,
           .scattering = scattering, .multiple_density = 0};
 }
 
 int PrecomputePassCount(const PrecomputeOptions& options) {
-  // transmittance, direct irradiance, single scattering, 6 passes per order >= 2, and the ground
-  // irradiance of the last order.
-  return 3 + 6 * (options.orders - 1) + 1;
+  // transmittance, sun band, direct irradiance, single scattering, 6 passes per order >= 2, and
+  // the ground irradiance of the last order.
+  return 4 + 6 * (options.orders - 1) + 1;
 }
 
 std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progress) {
@@ -198,7 +212,7 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   };
 
   context.Submit([&](const auto& cmd) {
-    for (const vk::Image* image : {&scratch.delta_irradiance[0], &scratch.delta_irradiance[1],
+    for (const vk::Image* image : {&scratch.sun_band, &scratch.delta_irradiance[0], &scratch.delta_irradiance[1],
                                    &scratch.delta_rayleigh, &scratch.delta_multiple[0],
                                    &scratch.delta_multiple[1], &scratch.density[0], &scratch.density[1]})
       image->InitializeLayout(cmd);
@@ -220,6 +234,12 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
                                            vk::StorageImageSlot{&tables.transmittance()}},
                                      Extent2D(tables.transmittance()), {8, 8, 1});
   });
+  // Step 1b: the sunlight's transmittance near each radius's horizon, over the sun's disc.
+  run("sun band", [&](const auto& cmd) {
+    pipelines.sun_band.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, tables.Sampled(tables.transmittance()),
+                                      vk::StorageImageSlot{&scratch.sun_band}},
+                                Extent2D(scratch.sun_band), {8, 8, 1});
+  });
   // Step 2: direct irradiance, the ground's order-0 light (delta E_0).
   run("direct irradiance", [&](const auto& cmd) {
     pipelines.direct_irradiance.Dispatch(
@@ -232,7 +252,7 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
     pipelines.single_scattering.Dispatch(
         cmd, {vk::UniformBufferSlot{&uniforms}, tables.Sampled(tables.transmittance()),
               vk::StorageImageSlot{&scratch.delta_rayleigh}, vk::StorageImageSlot{&mie},
-              vk::StorageImageSlot{&rayleigh}},
+              vk::StorageImageSlot{&rayleigh}, tables.Sampled(scratch.sun_band)},
         scattering_threads, {8, 8, 1});
   });
   // The ground irradiance of radiance order n: delta E_n, added to the irradiance table (with the
@@ -247,7 +267,8 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
                 tables.Sampled(scratch.delta_multiple[radiance_order % 2]),
                 tables.Sampled(scratch.delta_irradiance[(radiance_order + 1) % 2]),
                 vk::StorageImageSlot{&scratch.delta_irradiance[radiance_order % 2]},
-                vk::StorageImageSlot{&tables.irradiance()}, tables.Sampled(tables.transmittance())},
+                vk::StorageImageSlot{&tables.irradiance()}, tables.Sampled(tables.transmittance()),
+                tables.Sampled(scratch.sun_band)},
           Extent2D(tables.irradiance()), {8, 8, 1}, &step);
     });
   };
