@@ -83,23 +83,23 @@ const RegionBound kBounds[] = {
     {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.013, 0.005596, kNone, 0},  // max 1.119%, median 1.12%: no target, pinned
     {SkyQuantity::kSkyRadiance, kAfternoon, 50, 45, 0.0064, 0.002901, kNone, 0},  // max 0.580%, median 0.23%: no target, pinned
     {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 36, 0.0025, 0.001117, kNone, 0},  // max 0.223%, median 0.12%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.905%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 0, 135, 0.039, 0.01763, kNone, 0},  // max 3.527%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 135, 0.039, 0.01732, kNone, 0},  // max 3.463%: MISSED, target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 1.605%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 10, 225, 0.055, 0.02495, kNone, 0},  // max 4.990%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 206, 0.03, 0, kNone, 0},  // max 2.781%: target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 1.203%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 50, 225, 0.03, 0, kNone, 0},  // max 2.707%: target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.884%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 0, 135, 0.039, 0.01763, kNone, 0},  // max 3.508%: MISSED, target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 135, 0.039, 0.01732, kNone, 0},  // max 3.472%: MISSED, target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 1.584%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 10, 225, 0.055, 0.02495, kNone, 0},  // max 4.974%: MISSED, target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 206, 0.03, 0, kNone, 0},  // max 2.797%: target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 1.216%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 50, 225, 0.03, 0, kNone, 0},  // max 2.715%: target 3%
     {SkyQuantity::kRadianceToPoint, kLowSun, 50, 180, 0.03, 0, kNone, 0},  // max 0.274%: target 3%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 7.044%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 0, 18, 0.08, 0, kNone, 0},  // max 6.247%: target 8%
-    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 6.260%: target 8%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 4.307%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 10, 29, 0.08, 0, kNone, 0},  // max 6.350%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 7.020%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 0, 18, 0.08, 0, kNone, 0},  // max 6.226%: target 8%
+    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 6.270%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 4.288%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 10, 29, 0.08, 0, kNone, 0},  // max 6.336%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 10, 0, kNone, 0, kNone, 0},  // no value above the floor
-    {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 0.081%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 50, 19, 0.08, 0, kNone, 0},  // max 6.446%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 0.121%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 50, 19, 0.08, 0, kNone, 0},  // max 6.296%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 50, 0, kNone, 0, kNone, 0},  // no value above the floor
 };
 
