@@ -102,6 +102,7 @@ vec3 GetTransmittanceAtDiscPoint(sampler2D transmittance_texture, float r, float
   return GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r,
                                                  GetDiscPointCosine(mu_s, sin_s, y));
 }
+
 // Elevation of the disc centre above the cut-off, in disc radii (to first order in the angle).
 float GetSunElevationInDiscRadii(float mu_s, float cut_off_cosine) {
   float sin_cut_off = sqrt(max(1.0 - cut_off_cosine * cut_off_cosine, 0.0));
@@ -161,8 +162,9 @@ vec3 GetTransmittanceToSun(sampler2D transmittance_texture, float r, float mu_s)
 // single scattering pass's 2.7 s (the lanes of a SIMD group, neighbouring mu_s texels, take
 // different branches, and each runs them all). It depends on (r, mu_s) alone, so a pass
 // (precompute/sun_band.comp) tabulates it where it differs from the centre's value: x, the
-// centre's elevation above the horizon in disc radii, from -1 to SUN_DISC_ONE_TAP_ELEVATION,
-// uniformly on the u axis; r on the transmittance table's rho/H mapping on the v axis (its rows).
+// centre's elevation above the horizon in disc radii, from -1 to SUN_DISC_ONE_TAP_ELEVATION (37.4
+// radii), uniformly on the u axis; r on the transmittance table's rho/H mapping on the v axis (its
+// rows).
 // The band holds the optical depth of the visible part's average, -ln(average / visible), which
 // is smooth where the visible fraction is not; a read multiplies by the exact visible fraction.
 float GetSunBandMaxElevationInDiscRadii() {
