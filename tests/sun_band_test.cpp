@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "aerial/precompute/atmosphere_tables.h"
+#include "aerial/precompute/precomputer.h"
 #include "aerial/reference/reference.h"
 #include "aerial/reference/solar_disc.h"
 #include "aerial/vk/compute_pipeline.h"
@@ -25,12 +25,12 @@ struct SunTransmittances {
   Spectrum band, direct;
 };
 
-// The band as the precomputation builds it (precompute/sun_band.comp, 256 elevations on the
-// transmittance table's rows), and each query read from it and computed over the disc directly.
+// The band as the precomputation builds it (precompute/sun_band.comp, SunBandExtent), and each
+// query read from it and computed over the disc directly.
 std::vector<SunTransmittances> ReadSunBand(const AtmosphereTables& tables,
                                            const std::vector<std::array<float, 2>>& r_mu_s) {
   const vk::Context& context = tables.context();
-  vk::Image band(context, {.extent = {256, tables.transmittance().extent().height, 1}});
+  vk::Image band(context, {.extent = SunBandExtent(tables.options())});
   vk::Buffer queries(context, {.size = r_mu_s.size() * 8,
                                .usage = ::vk::BufferUsageFlagBits::eStorageBuffer,
                                .host_visible = true});

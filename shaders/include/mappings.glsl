@@ -40,6 +40,16 @@ float HorizonDistanceFromGround() {
 }
 
 // ---- Transmittance table: x = d/d_max mapping of mu, y = rho/H mapping of r. ----
+// Its r axis, rho/H in [0, 1] (rho the distance to the horizon, H its value at the top); the
+// scattering and irradiance tables warp it (GetUnitRangeFromR below).
+float GetTransmittanceUnitRangeFromR(float r) {
+  return sqrt(SquaredHorizonDistance(r)) / HorizonDistanceFromGround();
+}
+float GetRFromTransmittanceUnitRange(float x_r) {
+  float rho = HorizonDistanceFromGround() * x_r;
+  return sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
+}
+
 vec2 GetTransmittanceTextureUvFromRMu(float r, float mu) {
   float H = HorizonDistanceFromGround();
   float rho = sqrt(SquaredHorizonDistance(r));
@@ -47,9 +57,9 @@ vec2 GetTransmittanceTextureUvFromRMu(float r, float mu) {
   float d_min = atmosphere.top_radius - r;
   float d_max = rho + H;
   float x_mu = (d - d_min) / (d_max - d_min);
-  float x_r = rho / H;
   return vec2(GetTextureCoordFromUnitRange(x_mu, atmosphere.transmittance_size.x),
-              GetTextureCoordFromUnitRange(x_r, atmosphere.transmittance_size.y));
+              GetTextureCoordFromUnitRange(GetTransmittanceUnitRangeFromR(r),
+                                           atmosphere.transmittance_size.y));
 }
 
 void GetRMuFromTransmittanceTextureUv(vec2 uv, out float r, out float mu) {
@@ -57,7 +67,7 @@ void GetRMuFromTransmittanceTextureUv(vec2 uv, out float r, out float mu) {
   float x_r = GetUnitRangeFromTextureCoord(uv.y, atmosphere.transmittance_size.y);
   float H = HorizonDistanceFromGround();
   float rho = H * x_r;
-  r = sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
+  r = GetRFromTransmittanceUnitRange(x_r);
   float d_min = atmosphere.top_radius - r;
   float d_max = rho + H;
   float d = d_min + x_mu * (d_max - d_min);
@@ -117,9 +127,7 @@ float WarpR(float x) {
   return x - R_WARP * x * x * (1.0 - x);
 }
 
-float GetUnitRangeFromR(float r) {
-  return WarpR(sqrt(SquaredHorizonDistance(r)) / HorizonDistanceFromGround());
-}
+float GetUnitRangeFromR(float r) { return WarpR(GetTransmittanceUnitRangeFromR(r)); }
 
 float GetRFromUnitRange(float u) {
   // W' lies in [1 - R_WARP / 3, 1 + R_WARP]: Newton's method from x = u converges in a few steps.
@@ -127,8 +135,7 @@ float GetRFromUnitRange(float u) {
   for (int i = 0; i < 6; ++i) {
     x -= (WarpR(x) - u) / (1.0 - R_WARP * (2.0 * x - 3.0 * x * x));
   }
-  float rho = HorizonDistanceFromGround() * x;
-  return sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
+  return GetRFromTransmittanceUnitRange(x);
 }
 
 // ---- Irradiance table: the mu_s axis above, the warped rho/H (above) in r. ----

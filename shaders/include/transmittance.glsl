@@ -172,16 +172,13 @@ float GetSunBandMaxElevationInDiscRadii() {
 }
 
 vec2 GetSunBandTextureUv(ivec2 size, float r, float x) {
-  float x_r = sqrt(SquaredHorizonDistance(r)) / HorizonDistanceFromGround();
   return vec2(GetTextureCoordFromUnitRange((x + 1.0) / (GetSunBandMaxElevationInDiscRadii() + 1.0),
                                            size.x),
-              GetTextureCoordFromUnitRange(x_r, size.y));
+              GetTextureCoordFromUnitRange(GetTransmittanceUnitRangeFromR(r), size.y));
 }
 
 void GetRMuSFromSunBandTextureUv(ivec2 size, vec2 uv, out float r, out float mu_s) {
-  float x_r = GetUnitRangeFromTextureCoord(uv.y, size.y);
-  float rho = HorizonDistanceFromGround() * x_r;
-  r = sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
+  r = GetRFromTransmittanceUnitRange(GetUnitRangeFromTextureCoord(uv.y, size.y));
   // At x = -1 the visible part is a vanishing sliver whose 4 taps graze the horizon itself; the
   // first texel is taken half a texel above, where they do not.
   float x_range = GetSunBandMaxElevationInDiscRadii() + 1.0;

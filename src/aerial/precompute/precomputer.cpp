@@ -99,13 +99,6 @@ size_t IncidentBytes(const PrecomputeOptions& o) {
   return DirectionCount(o) * s.density_r * s.density_mu_s * 16;
 }
 size_t DirectionBytes(const PrecomputeOptions& o) { return DirectionCount(o) * o.samples.density_r * 16; }
-// The sun band (transmittance.glsl): 256 elevations over the 10 degrees above each horizon where
-// the disc's average differs from its centre's value (0.04 degrees, 0.15 disc radii, apart), on
-// the transmittance table's rows.
-constexpr uint32_t kSunBandElevations = 256;
-::vk::Extent3D SunBandExtent(const PrecomputeOptions& o) {
-  return {kSunBandElevations, uint32_t(o.resolution.transmittance_r), 1};
-}
 
 // Intermediate tables that only live during the precomputation. The per-order ground irradiance
 // and multiple scattering are kept for two consecutive orders (index: order % 2), so that the last
@@ -172,6 +165,10 @@ TableBytes PrecomputeScratchMemory(const PrecomputeOptions& options) {
   const ::vk::Extent3D sun_band = SunBandExtent(options);
   return {.transmittance = uint64_t(sun_band.width) * sun_band.height * 16, .irradiance = 2 * uint64_t(r.irradiance_mu_s) * r.irradiance_r * 16,
           .scattering = scattering, .multiple_density = 0};
+}
+
+::vk::Extent3D SunBandExtent(const PrecomputeOptions& options) {
+  return {256, uint32_t(options.resolution.transmittance_r), 1};
 }
 
 int PrecomputePassCount(const PrecomputeOptions& options) {

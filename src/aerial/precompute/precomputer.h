@@ -17,4 +17,9 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
 // Number of passes Precompute runs for these options (progress bars size themselves with it).
 int PrecomputePassCount(const PrecomputeOptions& options);
 
+// The sun band's size (transmittance.glsl): 256 elevations over the 10 degrees above each horizon
+// where the disc's average differs from its centre's value (0.04 degrees, 0.15 disc radii,
+// apart), on the transmittance table's rows. A scratch table of the precomputation.
+::vk::Extent3D SunBandExtent(const PrecomputeOptions& options);
+
 }  // namespace aerial
