@@ -105,8 +105,8 @@ TEST_F(SunBand, ReadsTheDiscAverageBetweenItsTexels) {
   EXPECT_TRUE(ComparedExactly(direct, band.samples()));
   // What the band adds: the interpolation, between texels 0.15 disc radii apart, of an optical
   // depth that is smooth except where the direct average switches from 4 taps on a cut disc to 3
-  // on a whole one (x = 1, a step of up to 0.3%). 0.5%: a tenth of the low sun's 3% target on
-  // the sky (the sunlight enters single scattering linearly) and twice the step.
+  // on a whole one (x = 1; the largest difference, 0.32%, is next to it, at x = 0.9). 0.5%: a
+  // sixth of the low sun's 3% target on the sky, into which the sunlight enters linearly.
   EXPECT_LT(band_vs_direct.value(), 5e-3) << band_vs_direct.Summary();
   // Against the exact disc: the direct average is off by up to 1.2% where the disc's lower edge
   // is on the horizon seen from 50 km (its 4 taps sample a transmittance that varies a
