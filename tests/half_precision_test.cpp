@@ -3,6 +3,9 @@
 // range, stays float32 (atmosphere_tables.cpp).
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <vector>
+
 #include "aerial/precompute/precomputer.h"
 #include "aerial/probe/table_probe.h"
 #include "comparison.h"

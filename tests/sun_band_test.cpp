@@ -3,9 +3,12 @@
 // average (include/aerial/reference/solar_disc.h), at elevations between its texels.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <string>
+#include <vector>
 
 #include "aerial/precompute/precomputer.h"
 #include "aerial/reference/reference.h"

@@ -163,7 +163,8 @@ TableBytes PrecomputeScratchMemory(const PrecomputeOptions& options) {
   if (options.precision == TablePrecision::kFloat16)
     scattering += scattering_texels * 16 * (options.variant == LutVariant::k3D ? 3 : 2);
   const ::vk::Extent3D sun_band = SunBandExtent(options);
-  return {.transmittance = uint64_t(sun_band.width) * sun_band.height * 16, .irradiance = 2 * uint64_t(r.irradiance_mu_s) * r.irradiance_r * 16,
+  return {.transmittance = uint64_t(sun_band.width) * sun_band.height * 16,
+          .irradiance = 2 * uint64_t(r.irradiance_mu_s) * r.irradiance_r * 16,
           .scattering = scattering, .multiple_density = 0};
 }
 
@@ -209,9 +210,10 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   };
 
   context.Submit([&](const auto& cmd) {
-    for (const vk::Image* image : {&scratch.sun_band, &scratch.delta_irradiance[0], &scratch.delta_irradiance[1],
-                                   &scratch.delta_rayleigh, &scratch.delta_multiple[0],
-                                   &scratch.delta_multiple[1], &scratch.density[0], &scratch.density[1]})
+    for (const vk::Image* image : {&scratch.sun_band, &scratch.delta_irradiance[0],
+                                   &scratch.delta_irradiance[1], &scratch.delta_rayleigh,
+                                   &scratch.delta_multiple[0], &scratch.delta_multiple[1],
+                                   &scratch.density[0], &scratch.density[1]})
       image->InitializeLayout(cmd);
     if (scratch.rayleigh_f32) {
       scratch.rayleigh_f32->InitializeLayout(cmd);
@@ -233,8 +235,9 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   });
   // Step 1b: the sunlight's transmittance near each radius's horizon, over the sun's disc.
   run("sun band", [&](const auto& cmd) {
-    pipelines.sun_band.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, tables.Sampled(tables.transmittance()),
-                                      vk::StorageImageSlot{&scratch.sun_band}},
+    pipelines.sun_band.Dispatch(cmd,
+                                {vk::UniformBufferSlot{&uniforms}, tables.Sampled(tables.transmittance()),
+                                 vk::StorageImageSlot{&scratch.sun_band}},
                                 Extent2D(scratch.sun_band), {8, 8, 1});
   });
   // Step 2: direct irradiance, the ground's order-0 light (delta E_0).
