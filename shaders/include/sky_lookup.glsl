@@ -89,7 +89,7 @@ bool GetSingleScatteringSuns(ivec4 size, float mu, float mu_s, float nu,
                              out SingleScatteringSuns suns) {
   if (!SkyInscatterCorrectionApplies(size)) return false;
   vec4 mu_s_blend = GetScatteringMuSBlend(size, mu_s);
-  vec2 nu_blend = GetNominalNuBlend(size, vec4((nu + 1.0) / 2.0, 0.0, 0.0, 0.0));
+  vec2 nu_blend = GetNominalNuBlend(size, vec4(GetUnitRangeFromNu(nu), 0.0, 0.0, 0.0));
   suns.mu_s_weight = mu_s_blend.z;
   suns.nu_weight = nu_blend.y;
   suns.mu_s_texel = mu_s_blend.w;

@@ -1,6 +1,7 @@
 #include "aerial/cli/common_options.h"
 
 #include "aerial/atmosphere.h"
+#include "aerial/error.h"
 
 namespace aerial::cli {
 
@@ -14,17 +15,21 @@ void TableOptions::AddTo(CLI::App& command) {
                      "After the last order, add the orders beyond it as a geometric series: on (default; "
                      "the whole series) or off (exactly orders 1..N)")
       ->check(CLI::IsMember({"on", "off"}));
-  command.add_flag("--half", half_precision, "Store the scattering tables as 16-bit floats");
+  command.add_option("--precision", precision,
+                     "Scattering tables' floats: float16 or float32 (default: float16 for the 4D "
+                     "tables, float32 for the 3D and the small ones)")
+      ->check(CLI::IsMember({"float16", "float32"}));
+  command.add_flag("--half", half_precision, "Store the scattering tables as 16-bit floats (--precision float16)");
   command.add_flag("--small-tables", small_tables, "Quarter-resolution tables (tests, quick looks)");
   command.add_option("--transmittance-size", transmittance_size, "Transmittance table MU,R (default 256,64)")
       ->delimiter(',')->expected(2);
   command.add_option("--irradiance-size", irradiance_size, "Irradiance table MU_S,R (default 64,32)")
       ->delimiter(',')->expected(2);
   command.add_option("--scattering-size", scattering_size,
-                     "Scattering table R,MU,MU_S,NU (default 32,128,36,8; NU must be 1 with --lut 3d)")
+                     "Scattering table R,MU,MU_S,NU (default 32,128,36,9; NU must be 1 with --lut 3d)")
       ->delimiter(',')->expected(4);
   command.add_option("--multiple-density-size", multiple_density_size,
-                     "Multiple scattering density table R,MU,MU_S,NU (default 16,56,36,8; NU must be 1 "
+                     "Multiple scattering density table R,MU,MU_S,NU (default 16,56,36,9; NU must be 1 "
                      "with --lut 3d)")
       ->delimiter(',')->expected(4);
   command.add_option("--cache-dir", cache_dir, "Table cache directory (default ~/.cache/aerial)");
@@ -66,7 +71,10 @@ PrecomputeOptions TableOptions::MakePrecomputeOptions() const {
   }
   options.orders = orders;
   options.close_series = series_tail == "on";
-  options.precision = half_precision ? TablePrecision::kFloat16 : TablePrecision::kFloat32;
+  if (half_precision && precision == "float32")
+    throw Error("--half", "with --precision float32", "one precision: --half means --precision float16");
+  if (half_precision) options.precision = TablePrecision::kFloat16;
+  if (!precision.empty()) options.precision = ParseTablePrecision(precision, "--precision");
   options.Validate();
   return options;
 }

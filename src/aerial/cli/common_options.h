@@ -22,6 +22,7 @@ struct TableOptions {
   int orders = 4;
   std::string series_tail = "on";
   bool half_precision = false;
+  std::string precision;  // empty: the variant's default
   bool small_tables = false;
   std::vector<int> transmittance_size;  // mu, r
   std::vector<int> irradiance_size;     // mu_s, r

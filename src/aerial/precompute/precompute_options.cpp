@@ -17,6 +17,16 @@ LutVariant ParseLutVariant(const std::string& text, const std::string& field) {
   throw Error(field, text, "4d or 3d");
 }
 
+std::string ToString(TablePrecision precision) {
+  return precision == TablePrecision::kFloat32 ? "float32" : "float16";
+}
+
+TablePrecision ParseTablePrecision(const std::string& text, const std::string& field) {
+  if (text == "float32") return TablePrecision::kFloat32;
+  if (text == "float16") return TablePrecision::kFloat16;
+  throw Error(field, text, "float16 or float32");
+}
+
 PrecomputeOptions PrecomputeOptions::Default(LutVariant variant) {
   PrecomputeOptions options;
   options.variant = variant;
@@ -24,6 +34,7 @@ PrecomputeOptions PrecomputeOptions::Default(LutVariant variant) {
     options.resolution.scattering_nu = 1;
     options.resolution.multiple_density_nu = 1;
     options.samples.density_nu = 1;
+    options.precision = TablePrecision::kFloat32;
   }
   return options;
 }
@@ -31,6 +42,7 @@ PrecomputeOptions PrecomputeOptions::Default(LutVariant variant) {
 PrecomputeOptions PrecomputeOptions::Small(LutVariant variant) {
   PrecomputeOptions options;
   options.variant = variant;
+  options.precision = TablePrecision::kFloat32;
   options.resolution = {.transmittance_mu = 128, .transmittance_r = 32, .irradiance_mu_s = 32,
                         .irradiance_r = 8, .scattering_r = 16, .scattering_mu = 64,
                         .scattering_mu_s = 16, .scattering_nu = variant == LutVariant::k4D ? 8 : 1,
@@ -171,7 +183,7 @@ uint64_t PrecomputeOptions::Hash() const {
 
 std::string PrecomputeOptions::Describe() const {
   const TableResolution& r = resolution;
-  return ToString(variant) + (precision == TablePrecision::kFloat32 ? " float32" : " float16") +
+  return ToString(variant) + " " + ToString(precision) +
          ", " + std::to_string(orders) + " orders" + (ClosesSeries() ? " + series tail" : "") +
          ", transmittance " +
          std::to_string(r.transmittance_mu) + "x" + std::to_string(r.transmittance_r) +
