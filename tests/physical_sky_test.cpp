@@ -43,7 +43,7 @@ const char* kTwilight = "twilight (95-108)";
 // orders + the series' tail, the density grid's zenith cells quadratic toward the horizon above and
 // below it, the ground irradiance of order 1 corrected by single scattering integrated along an 8x8
 // grid, the irradiance read exponentially in r), radiance to a point marched with the multiple
-// density table R16 MU56 MU_S36 NU8, the sky's single scattering corrected where the sun is low and
+// density table R16 MU56 MU_S36 NU9, 9 nu slices (one on nu = 0) in 16-bit floats, the sky's single scattering corrected where the sun is low and
 // its multiple scattering blended exponentially in mu_s and nu (GetSkyInscatterCorrection,
 // sky_lookup.glsl), single scattering marched with steps that follow a sun on the horizon
 // (GetStepSpacingExponent, scattering.glsl), the scattering density tables' mu axis on the view
@@ -65,41 +65,41 @@ struct RegionBound {
 };
 
 const RegionBound kBounds[] = {
-    {SkyQuantity::kSkyIrradiance, kDay, 0, 9, 0.01, 0, 0.0046, 0.002077},  // max 0.527%: target 1%; median 0.42% MISSED, target 0.4%
-    {SkyQuantity::kSkyRadiance, kDay, 0, 81, 0.01, 0, 0.004, 0},  // max 0.675%: target 1%; median 0.13%: target
-    {SkyQuantity::kRadianceToPoint, kDay, 0, 81, 0.01, 0, 0.004, 0},  // max 0.795%: target 1%; median 0.19%: target
-    {SkyQuantity::kSkyIrradiance, kDay, 10, 9, 0.015, 0, 0.004, 0},  // max 0.418%: target 1.5%; median 0.14%: target
-    {SkyQuantity::kSkyRadiance, kDay, 10, 135, 0.015, 0, 0.005, 0.002267},  // max 1.230%: target 1.5%; median 0.45% MISSED, target 0.4%
-    {SkyQuantity::kRadianceToPoint, kDay, 10, 135, 0.015, 0, 0.004, 0},  // max 0.683%: target 1.5%; median 0.23%: target
-    {SkyQuantity::kSkyIrradiance, kDay, 50, 9, 0.015, 0, 0.004, 0},  // max 0.436%: target 1.5%; median 0.18%: target
-    {SkyQuantity::kSkyRadiance, kDay, 50, 135, 0.015, 0, 0.004, 0},  // max 1.220%: target 1.5%; median 0.31%: target
-    {SkyQuantity::kRadianceToPoint, kDay, 50, 108, 0.015, 0, 0.004, 0},  // max 0.809%: target 1.5%; median 0.26%: target
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 0, 3, 0.0056, 0.002542, kNone, 0},  // max 0.508%, median 0.51%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 0, 27, 0.0044, 0.001982, kNone, 0},  // max 0.396%, median 0.23%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 0, 27, 0.006, 0.002694, kNone, 0},  // max 0.539%, median 0.20%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 10, 3, 0.0047, 0.002092, kNone, 0},  // max 0.418%, median 0.42%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 45, 0.0054, 0.002421, kNone, 0},  // max 0.484%, median 0.16%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 10, 45, 0.0061, 0.002728, kNone, 0},  // max 0.546%, median 0.21%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.013, 0.005596, kNone, 0},  // max 1.119%, median 1.12%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 50, 45, 0.0064, 0.002901, kNone, 0},  // max 0.580%, median 0.23%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 36, 0.0025, 0.001117, kNone, 0},  // max 0.223%, median 0.12%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.884%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 0, 135, 0.039, 0.01763, kNone, 0},  // max 3.508%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 135, 0.039, 0.01732, kNone, 0},  // max 3.472%: MISSED, target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 1.584%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 10, 225, 0.055, 0.02495, kNone, 0},  // max 4.974%: MISSED, target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 206, 0.03, 0, kNone, 0},  // max 2.797%: target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 1.216%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 50, 225, 0.03, 0, kNone, 0},  // max 2.715%: target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 50, 180, 0.03, 0, kNone, 0},  // max 0.274%: target 3%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 7.020%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 0, 18, 0.08, 0, kNone, 0},  // max 6.226%: target 8%
-    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 6.270%: target 8%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 4.288%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 10, 29, 0.08, 0, kNone, 0},  // max 6.336%: target 8%
+    {SkyQuantity::kSkyIrradiance, kDay, 0, 9, 0.01, 0, 0.0046, 0.002077},  // max 0.519%: target 1%; median 0.42% MISSED, target 0.4%
+    {SkyQuantity::kSkyRadiance, kDay, 0, 81, 0.01, 0, 0.004, 0},  // max 0.686%: target 1%; median 0.18%: target
+    {SkyQuantity::kRadianceToPoint, kDay, 0, 81, 0.01, 0, 0.004, 0},  // max 0.946%: target 1%; median 0.19%: target
+    {SkyQuantity::kSkyIrradiance, kDay, 10, 9, 0.015, 0, 0.004, 0},  // max 0.416%: target 1.5%; median 0.14%: target
+    {SkyQuantity::kSkyRadiance, kDay, 10, 135, 0.015, 0, 0.0053, 0.002404},  // max 1.256%: target 1.5%; median 0.48% MISSED, target 0.4%
+    {SkyQuantity::kRadianceToPoint, kDay, 10, 135, 0.015, 0, 0.004, 0},  // max 0.625%: target 1.5%; median 0.23%: target
+    {SkyQuantity::kSkyIrradiance, kDay, 50, 9, 0.015, 0, 0.004, 0},  // max 0.440%: target 1.5%; median 0.18%: target
+    {SkyQuantity::kSkyRadiance, kDay, 50, 135, 0.015, 0, 0.004, 0},  // max 1.269%: target 1.5%; median 0.35%: target
+    {SkyQuantity::kRadianceToPoint, kDay, 50, 108, 0.015, 0, 0.004, 0},  // max 0.808%: target 1.5%; median 0.26%: target
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 0, 3, 0.0055, 0.002477, kNone, 0},  // max 0.495%, median 0.50%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 0, 27, 0.0038, 0.001727, kNone, 0},  // max 0.345%, median 0.23%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 0, 27, 0.0078, 0.003516, kNone, 0},  // max 0.703%, median 0.20%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 10, 3, 0.0047, 0.00211, kNone, 0},  // max 0.422%, median 0.42%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 45, 0.0064, 0.002877, kNone, 0},  // max 0.575%, median 0.19%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 10, 45, 0.0066, 0.002975, kNone, 0},  // max 0.595%, median 0.18%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.013, 0.005618, kNone, 0},  // max 1.124%, median 1.12%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 50, 45, 0.0066, 0.002969, kNone, 0},  // max 0.594%, median 0.22%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 36, 0.0025, 0.001121, kNone, 0},  // max 0.224%, median 0.12%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.773%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 0, 135, 0.03, 0, kNone, 0},  // max 2.494%: target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 135, 0.039, 0.01743, kNone, 0},  // max 3.486%: MISSED, target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 1.539%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 10, 225, 0.03, 0, kNone, 0},  // max 2.253%: target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 206, 0.03, 0, kNone, 0},  // max 2.899%: target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 1.219%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 50, 225, 0.03, 0, kNone, 0},  // max 2.718%: target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 50, 180, 0.03, 0, kNone, 0},  // max 0.272%: target 3%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 6.671%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 0, 18, 0.08, 0, kNone, 0},  // max 4.182%: target 8%
+    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 6.388%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 4.195%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 10, 29, 0.08, 0, kNone, 0},  // max 3.824%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 10, 0, kNone, 0, kNone, 0},  // no value above the floor
-    {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 0.121%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 50, 19, 0.08, 0, kNone, 0},  // max 6.296%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 0.120%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 50, 19, 0.08, 0, kNone, 0},  // max 3.067%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 50, 0, kNone, 0, kNone, 0},  // no value above the floor
 };
 

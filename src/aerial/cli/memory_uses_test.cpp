@@ -27,14 +27,18 @@ TEST(MemoryUses, RenderScaleShrinksTheTargetsNotTheOutput) {
   EXPECT_EQ(a.readback - b.readback, (1'000'000 - 250'000) * 32u);
 }
 
-// What the tables take is what AtmosphereTables allocates: 2 scattering tables in 4D, 3 in 3D,
-// and the multiple density table.
+// What the tables take is what AtmosphereTables allocates: 2 scattering tables in 4D (Rayleigh in
+// the tables' precision, half floats by default, and Mie in float32), 3 in 3D (float32 by
+// default), and the multiple density table (float32).
 TEST(MemoryUses, TableMemoryCountsEveryTable) {
   TableBytes t4 = TableMemory(PrecomputeOptions::Default(LutVariant::k4D));
   EXPECT_EQ(t4.transmittance, 256u * 64 * 16);
   EXPECT_EQ(t4.irradiance, 64u * 32 * 16);
-  EXPECT_EQ(t4.scattering, 2u * 8 * 36 * 128 * 32 * 16);
-  EXPECT_EQ(t4.multiple_density, 8u * 36 * 56 * 16 * 16);
+  EXPECT_EQ(t4.scattering, 9u * 36 * 128 * 32 * (8 + 16));
+  EXPECT_EQ(t4.multiple_density, 9u * 36 * 56 * 16 * 16);
+  PrecomputeOptions float32 = PrecomputeOptions::Default(LutVariant::k4D);
+  float32.precision = TablePrecision::kFloat32;
+  EXPECT_EQ(TableMemory(float32).scattering, 2u * 9 * 36 * 128 * 32 * 16);
   TableBytes t3 = TableMemory(PrecomputeOptions::Default(LutVariant::k3D));
   EXPECT_EQ(t3.scattering, 3u * 36 * 128 * 32 * 16);
   EXPECT_EQ(t3.multiple_density, 36u * 56 * 16 * 16);
@@ -42,12 +46,13 @@ TEST(MemoryUses, TableMemoryCountsEveryTable) {
 
 // Issue 12's memory budget: the default 4D tables take at most 1.25 times the defaults before it
 // (transmittance 256x64, irradiance 64x32, scattering R32 MU128 MU_S32 NU8, Bruneton 2017's
-// scattering resolution).
+// scattering resolution). They take 1.09 times: the next odd nu count, 11, would take 1.33 times
+// (README, "Nine nu slices in half floats"), so the rest of the budget is left over.
 TEST(MemoryUses, DefaultTablesWithinTheLowSunMemoryBudget) {
   const uint64_t before = 256u * 64 * 16 + 64u * 32 * 16 + 2u * 8 * 32 * 128 * 32 * 16;
   uint64_t now = TableMemory(PrecomputeOptions::Default(LutVariant::k4D)).total();
   EXPECT_LE(double(now), 1.25 * double(before));
-  EXPECT_GT(double(now), 1.2 * double(before));  // the budget is spent, not left over
+  EXPECT_GT(double(now), 1.05 * double(before));
 }
 
 }  // namespace

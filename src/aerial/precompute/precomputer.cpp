@@ -120,7 +120,6 @@ struct Scratch {
     // Half-precision tables are accumulated in float32 and converted once at the end.
     if (tables.rayleigh().format() != ::vk::Format::eR32G32B32A32Sfloat) {
       rayleigh_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.rayleigh().extent()});
-      mie_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.mie().extent()});
       multiple_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.multiple().extent(), .volume = true});
     }
   }
@@ -131,7 +130,7 @@ struct Scratch {
   std::array<vk::Image, 2> delta_multiple;
   std::array<vk::Image, 2> density;  // J_n, for two consecutive orders (index: order % 2)
   vk::Buffer incident_radiance, directions;
-  std::optional<vk::Image> rayleigh_f32, mie_f32, multiple_f32;
+  std::optional<vk::Image> rayleigh_f32, multiple_f32;
 };
 
 ::vk::Extent3D Extent2D(const vk::Image& image) { return image.extent(); }
@@ -159,9 +158,9 @@ TableBytes PrecomputeScratchMemory(const PrecomputeOptions& options) {
   uint64_t scattering = scattering_texels * 16 +                                          // delta_rayleigh
                         4 * uint64_t(density.width) * density.height * density.depth * 16 +  // delta_multiple, density
                         IncidentBytes(options) + DirectionBytes(options);
-  // Float32 copies of the half-precision tables (the multiple one has 1 texel in 4D).
+  // Float32 copies of the half-precision tables: Rayleigh, and the 3D variant's multiple one.
   if (options.precision == TablePrecision::kFloat16)
-    scattering += scattering_texels * 16 * (options.variant == LutVariant::k3D ? 3 : 2);
+    scattering += scattering_texels * 16 * (options.variant == LutVariant::k3D ? 2 : 1);
   const ::vk::Extent3D sun_band = SunBandExtent(options);
   return {.transmittance = uint64_t(sun_band.width) * sun_band.height * 16,
           .irradiance = 2 * uint64_t(r.irradiance_mu_s) * r.irradiance_r * 16,
@@ -185,7 +184,7 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   vk::GpuTimer timer(context);
   std::vector<vk::PassTime> times;
   const vk::Image& rayleigh = scratch.rayleigh_f32 ? *scratch.rayleigh_f32 : tables.rayleigh();
-  const vk::Image& mie = scratch.mie_f32 ? *scratch.mie_f32 : tables.mie();
+  const vk::Image& mie = tables.mie();  // float32 in every precision
   const vk::Image& multiple = scratch.multiple_f32 ? *scratch.multiple_f32 : tables.multiple();
   const vk::Image& multiple_density = tables.multiple_density();  // float32 in every precision
   // 4D folds each order into the Rayleigh table; 3D keeps them in their own table.
@@ -217,7 +216,6 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
       image->InitializeLayout(cmd);
     if (scratch.rayleigh_f32) {
       scratch.rayleigh_f32->InitializeLayout(cmd);
-      scratch.mie_f32->InitializeLayout(cmd);
       scratch.multiple_f32->InitializeLayout(cmd);
       scratch.multiple_f32->Clear(cmd);
     }
@@ -338,7 +336,6 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   if (scratch.rayleigh_f32) {
     context.Submit([&](const auto& cmd) {
       BlitConvert(cmd, *scratch.rayleigh_f32, tables.rayleigh());
-      BlitConvert(cmd, *scratch.mie_f32, tables.mie());
       BlitConvert(cmd, *scratch.multiple_f32, tables.multiple());
       vk::FullBarrier(cmd);
     });
