@@ -46,6 +46,7 @@ constexpr double kFrameGoalMs = 25.0;
 struct BenchOptions {
   int width = 1280, height = 720, frames = 9, warmup = 2;
   std::string lut = "4d", froxels = "32x32x32", preset = "noon", json_file;
+  std::string precision;  // empty: the variant's default
   double terrain_error_px = aerial::kDefaultTerrainErrorPx;
 };
 
@@ -74,6 +75,7 @@ void Bench(const BenchOptions& cli) {
   base.Validate();
   aerial::PrecomputeOptions precompute =
       aerial::PrecomputeOptions::Default(aerial::ParseLutVariant(cli.lut, "--lut"));
+  if (!cli.precision.empty()) precompute.precision = aerial::ParseTablePrecision(cli.precision, "--precision");
   if (!cli.json_file.empty()) aerial::CheckWritable(cli.json_file);
 
   aerial::AtmosphereParameters atmosphere = aerial::AtmosphereParameters::Earth();
@@ -215,6 +217,9 @@ int main(int argc, char** argv) {
   app.add_option("--frames", cli.frames, "Measured frames per configuration")->check(CLI::Range(1, 10000));
   app.add_option("--warmup", cli.warmup, "Unmeasured frames per configuration first")->check(CLI::Range(0, 1000));
   app.add_option("--lut", cli.lut, "Scattering table variant")->check(CLI::IsMember({"4d", "3d"}));
+  app.add_option("--precision", cli.precision,
+                 "Scattering tables' floats: float16 or float32 (default: the variant's)")
+      ->check(CLI::IsMember({"float16", "float32"}));
   app.add_option("--froxels", cli.froxels, "Froxel grid WxHxD");
   app.add_option("--preset", cli.preset, "Built-in scene")->check(CLI::IsMember(aerial::PresetNames()));
   app.add_option("--terrain-error-px", cli.terrain_error_px, "Terrain level of detail's error bound (px)");

@@ -35,7 +35,8 @@ nlohmann::json SeriesJson(const std::vector<Series>& series) {
 
 std::optional<Speedup> CompareWithBruneton2017(const BenchResult& result) {
   // Describe() lists variant, precision, orders and every table size: equal to the defaults means
-  // the same tables as Bruneton's measurement (4D, float32, 4 orders, the field's sizes).
+  // the tables this comparison stands for (4D, 4 orders, the default sizes and precision; Bruneton
+  // 2017 computes 32x128x32x8 in float32).
   if (result.options.Describe() != PrecomputeOptions{}.Describe()) return std::nullopt;
   Speedup speedup{.total = kBruneton2017TotalSeconds * 1000.0 /
                            Summarize(GpuTotals(result.runs)).median};
@@ -70,7 +71,7 @@ void PrintReport(const BenchResult& r, std::FILE* out) {
   std::optional<Speedup> speedup = CompareWithBruneton2017(r);
   if (!speedup) {
     std::fprintf(out, "speed-up vs Bruneton 2017: not shown; it applies only to the default tables "
-                      "(4d float32, 4 orders, default sizes)\n");
+                      "(4d, 4 orders, default sizes and precision)\n");
     return;
   }
   std::fprintf(out, "speed-up vs Bruneton 2017: %.1fx (total), per kind:", speedup->total);

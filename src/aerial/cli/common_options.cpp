@@ -72,7 +72,7 @@ PrecomputeOptions TableOptions::MakePrecomputeOptions() const {
   options.orders = orders;
   options.close_series = series_tail == "on";
   if (half_precision && precision == "float32")
-    throw Error("--half", "with --precision float32", "one precision: --half means --precision float16");
+    throw Error("--precision", "float32 with --half", "float16 with --half (--half means float16), or no --half");
   if (half_precision) options.precision = TablePrecision::kFloat16;
   if (!precision.empty()) options.precision = ParseTablePrecision(precision, "--precision");
   options.Validate();
