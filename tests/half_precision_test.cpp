@@ -1,6 +1,6 @@
-// Half-precision tables (--half) read like the float32 ones: the scattering tables store 16-bit
-// floats, while the multiple density table J_ms, whose values lie below the half floats' normal
-// range, stays float32 (atmosphere_tables.cpp).
+// Half-precision tables (--precision float16, the 4D default) read like the float32 ones: the
+// Rayleigh table stores 16-bit floats, while Mie's single scattering and the multiple density table
+// J_ms, whose values fall below half floats' normal range, stay float32 (atmosphere_tables.cpp).
 #include <gtest/gtest.h>
 
 #include <cstdio>

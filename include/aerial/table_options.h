@@ -35,8 +35,8 @@ struct TableResolution {
   // 9 slices, in 16-bit floats (PrecomputeOptions::precision). An odd count puts a slice on
   // nu = 0, where the Earth's shadow changes fastest for a low sun (mappings.glsl,
   // GetNuFromUnitRange): with 8 slices in float32 the low-sun sky was 3.5 / 5.0% off on the ground
-  // and 10 km up (target 3%), with 9 in half floats 2.5 / 2.3%, in 26 MB instead of 42.2, for
-  // 1.1x the precompute time (aerial_bench_sky --grid quick; README, "Nine nu slices").
+  // and 10 km up (target 3%), with 9 in half floats 2.5 / 2.3%, in 36.8 MB instead of 42.2, for
+  // 1.12x the precompute time (aerial_bench_sky --grid quick; README, "Nine nu slices").
   int scattering_nu = 9;    // 1 in the 3D variant
   // The scattering density of orders >= 2 (J_ms), which render-time marches integrate along a
   // segment instead of subtracting two table values (sky_lookup.glsl, GetSkyInscatterToPoint).
@@ -78,9 +78,10 @@ inline constexpr int kTableLayout = 14;
 
 struct PrecomputeOptions {
   LutVariant variant = LutVariant::k4D;
-  // The 4D tables in 16-bit floats: the default's 9 nu slices fit the memory budget that way (in
-  // float32 they would take 47 MB), and half floats cost at most 0.05 points of error anywhere
-  // against float32 (README; J_ms stays float32). The 3D and the small tables: float32.
+  // The 4D Rayleigh table in 16-bit floats: the default's 9 nu slices fit the memory budget that
+  // way (in float32 they would take 47.5 MB), and half floats cost at most 0.05 points of error
+  // anywhere against float32 (README; Mie and J_ms stay float32). The 3D and the small tables:
+  // float32.
   TablePrecision precision = TablePrecision::kFloat16;
   int orders = 4;
   // After the last order, add the orders beyond it as a geometric series per texel (the tables then
