@@ -78,10 +78,11 @@ struct Pipelines {
         accumulate(c, "precompute/accumulate_multiple_scattering.comp",
                    {{"AtmosphereBlock", kUniform}, {"order_texture", kSampled},
                     {"previous_order_texture", kSampled}, {"accumulator", kStorageImage}},
-                   sizeof(AccumulateStep)) {}
+                   sizeof(AccumulateStep)),
+        round_to_half(c, "precompute/round_to_half.comp", {{"table", kStorageImage}}) {}
   vk::ComputePipeline transmittance, sun_band, direct_irradiance, single_scattering, incident_radiance,
       scattering_density, indirect_irradiance, multiple_scattering, multiple_scattering_order2,
-      accumulate;
+      accumulate, round_to_half;
 };
 
 // The sizes of the intermediate tables, from the options alone (so that their memory can be
@@ -335,6 +336,9 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   add_ground_irradiance(orders);
   if (scratch.rayleigh_f32) {
     context.Submit([&](const auto& cmd) {
+      for (const vk::Image* table : {&*scratch.rayleigh_f32, &*scratch.multiple_f32})
+        pipelines.round_to_half.Dispatch(cmd, {vk::StorageImageSlot{table}}, table->extent(), {8, 8, 1});
+      vk::FullBarrier(cmd);
       BlitConvert(cmd, *scratch.rayleigh_f32, tables.rayleigh());
       BlitConvert(cmd, *scratch.multiple_f32, tables.multiple());
       vk::FullBarrier(cmd);
