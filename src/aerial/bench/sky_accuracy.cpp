@@ -22,7 +22,7 @@ struct Query {
   SkyQuantity quantity;
   std::string band;
   ViewAngles view;
-  double noise_goal;  // the band's
+  double noise_goal;  // NoiseGoal(band, quantity)
 };
 
 std::vector<Query> Queries(const AtmosphereParameters& atmosphere, const SkyGrid& grid) {
@@ -32,15 +32,18 @@ std::vector<Query> Queries(const AtmosphereParameters& atmosphere, const SkyGrid
     for (double altitude : grid.altitudes_m) {
       for (double sun : band.sun_zeniths_deg) {
         queries.push_back(
-            {SkyQuantity::kSkyIrradiance, band.name, {altitude, 0.0, sun, 0.0}, band.noise_goal});
+            {SkyQuantity::kSkyIrradiance, band.name, {altitude, 0.0, sun, 0.0},
+             NoiseGoal(band, SkyQuantity::kSkyIrradiance)});
         for (double view_zenith : grid.view_zeniths_deg) {
           for (double azimuth : grid.azimuths_deg) {
             ViewAngles view{altitude, view_zenith, sun, azimuth};
-            queries.push_back({SkyQuantity::kSkyRadiance, band.name, view, band.noise_goal});
+            queries.push_back(
+                {SkyQuantity::kSkyRadiance, band.name, view, NoiseGoal(band, SkyQuantity::kSkyRadiance)});
             // A point 10 km along the ray, where the ray is that long.
             RayParameters ray = ToRayParameters(view, atmosphere);
             if (model.DistanceToBoundary(ray.r, ray.mu) > grid.point_distance_m)
-              queries.push_back({SkyQuantity::kRadianceToPoint, band.name, view, band.noise_goal});
+              queries.push_back({SkyQuantity::kRadianceToPoint, band.name, view,
+                                 NoiseGoal(band, SkyQuantity::kRadianceToPoint)});
           }
         }
       }
@@ -99,6 +102,11 @@ std::string ToString(SkyQuantity quantity) {
     case SkyQuantity::kSkyIrradiance: return "sky irradiance";
   }
   return "?";
+}
+
+double NoiseGoal(const SunBand& band, SkyQuantity quantity) {
+  return quantity == SkyQuantity::kSkyIrradiance ? std::min(band.noise_goal, kIrradianceNoiseGoal)
+                                                 : band.noise_goal;
 }
 
 SkyGrid SkyGrid::Full() {
