@@ -2,10 +2,11 @@
 #extension GL_GOOGLE_include_directive : require
 // Sky-view correction pass, before the sky-view pass: the correction of the tables'
 // inscatter (GetSkyInscatterCorrection, sky_lookup.glsl) at the lattice nodes of the sky-view
-// table (sky_view.glsl), which sky_view.comp interpolates. It marches five suns along each ray: at
-// every texel of the table it cost 78 ms per rebuild at sunset on lavapipe, at the 1,862 nodes
-// 14 ms with 16 steps per ray (aerial_bench_render --preset sunset); with 32 the moving-sun frame,
-// which rebuilds it each frame, moved within its run-to-run noise (54-62 ms GPU without shadows).
+// table (sky_view.glsl), which sky_view.comp interpolates. It marches five suns along each ray
+// (seven in daylight): at every texel of the table it cost 78 ms per rebuild at sunset on lavapipe,
+// at the 1,862 nodes 14 ms with 16 steps per ray (aerial_bench_render --preset sunset); with 32
+// the moving-sun frame, which rebuilds it each frame, moved within its run-to-run noise (54-62 ms
+// GPU without shadows).
 // The correction changes slowly over the table except across the horizon row, which no lattice
 // cell spans. Since the correction also re-blends the multiple scattering in nu, it runs for a high
 // sun too (the 3D tables need none: every node returns at once); the frame under a moving sun at
