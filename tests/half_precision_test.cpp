@@ -46,11 +46,14 @@ TEST_F(HalfPrecision, SkyAndRadianceToPointReadLikeFloat32Tables) {
   // samples) fails.
   EXPECT_TRUE(ComparedAtLeast(sky, 60));
   EXPECT_TRUE(ComparedAtLeast(to_point, 54));
-  // A half float rounds to 2^-11 = 0.05%, and a sky read blends up to 16 texels and corrections
-  // taken from them; 0.5% is ten roundings (measured: 0.21%). The radiance to a point integrates
-  // J_ms, float32 in both, and reads no half table (measured: equal); before J_ms stayed float32
-  // it underflowed and the radiance to a point was 100% off.
-  EXPECT_LT(sky.value(), 5e-3) << sky.Summary();
+  // Rounded to the nearest (round_to_half.comp), a texel is within 2^-12 = 0.024% of its float32
+  // value, and a sky read blends texels with weights that sum to one; the corrections taken from
+  // them subtract marched values where the two nearly cancel, which can raise that a few times:
+  // 0.1%. Measured: 0.035%. Rounded toward zero, as lavapipe's blit does without that pass, every
+  // texel loses up to 0.05% in the same direction: measured 0.198%, which fails here. The radiance
+  // to a point integrates J_ms, float32 in both, and reads no half table (measured: equal); before
+  // J_ms stayed float32 it underflowed and the radiance to a point was 100% off.
+  EXPECT_LT(sky.value(), 1e-3) << sky.Summary();
   EXPECT_LT(to_point.value(), 5e-3) << to_point.Summary();
 }
 

@@ -173,9 +173,9 @@ TableBytes PrecomputeScratchMemory(const PrecomputeOptions& options) {
 }
 
 int PrecomputePassCount(const PrecomputeOptions& options) {
-  // transmittance, sun band, direct irradiance, single scattering, 6 passes per order >= 2, and
-  // the ground irradiance of the last order.
-  return 4 + 6 * (options.orders - 1) + 1;
+  // transmittance, sun band, direct irradiance, single scattering, 6 passes per order >= 2, the
+  // ground irradiance of the last order, and for half floats the conversion.
+  return 4 + 6 * (options.orders - 1) + 1 + (options.precision == TablePrecision::kFloat16 ? 1 : 0);
 }
 
 std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progress) {
@@ -334,14 +334,14 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
   // Step 5: the ground irradiance of the last order, so that the irradiance table holds the same
   // orders as the radiance (Bruneton 2008's Algorithm 4.1 stops at N-1).
   add_ground_irradiance(orders);
+  // Step 6, for half floats: each float32 texel rounded to the nearest half, then converted.
   if (scratch.rayleigh_f32) {
-    context.Submit([&](const auto& cmd) {
+    run("half floats", [&](const auto& cmd) {
       for (const vk::Image* table : {&*scratch.rayleigh_f32, &*scratch.multiple_f32})
         pipelines.round_to_half.Dispatch(cmd, {vk::StorageImageSlot{table}}, table->extent(), {8, 8, 1});
       vk::FullBarrier(cmd);
       BlitConvert(cmd, *scratch.rayleigh_f32, tables.rayleigh());
       BlitConvert(cmd, *scratch.multiple_f32, tables.multiple());
-      vk::FullBarrier(cmd);
     });
   }
   if (progress) progress->Finish();
