@@ -207,8 +207,9 @@ vec3 GetSingleScatteringDifference(SingleScatteringSuns suns,
 // sky 10 and 50 km up 8.2% -> 6.2% and 9.0% -> 6.5% (aerial_bench_sky --grid quick).
 const float MULTIPLE_SCATTERING_EXPONENTIAL_MU_S = 0.1;
 
-// In daylight (the lower mu_s texel above DAYLIGHT_LINEAR_MU_S) the blend below is quadratic in
-// mu_s over three texels, and at each mu_s node linear in the nu that its two slices hold.
+// In daylight (the lower mu_s texel above DAYLIGHT_LINEAR_MU_S) the blend below is linear in mu_s,
+// quadratic over three texels where the one below the two the read blends is in daylight too
+// (IsDaylightBlend), and at each mu_s node linear in the nu that its two slices hold.
 //  - mu_s: the arctangent axis has daylight texels only at sun zenith 0, 54.2 and 66.8 degrees, far
 //    from linear in mu_s, and the light the ground sends back into the sky goes as mu_s T(mu_s).
 //    Order 2's ground-reflected part (a Rayleigh-only atmosphere over a ground of albedo 0.3 minus
@@ -243,9 +244,12 @@ const float MULTIPLE_SCATTERING_EXPONENTIAL_MU_S = 0.1;
 //    with the sun at zenith 45 degrees, 0.7% on the texels; see README).
 
 // Whether the multiple scattering is blended in mu_s by the daylight rule (quadratic over three
-// nodes, above) rather than the read's two.
+// nodes, above) rather than the read's two: where all three nodes have the sun above
+// DAYLIGHT_LINEAR_MU_S, in the smooth part of the curve. The quarter-resolution tables' 16 texels
+// put the third node at sun zenith 80 degrees for every sun above 69.5: a quadratic through it
+// took their afternoon sky 2.5% RMSE from the 3D tables' (BenchQuick's bound: 1%).
 bool IsDaylightBlend(SingleScatteringSuns suns) {
-  return suns.mu_s[1] >= DAYLIGHT_LINEAR_MU_S && suns.mu_s_texel >= 1.0;
+  return suns.mu_s[5] >= DAYLIGHT_LINEAR_MU_S;
 }
 
 // Lagrange's quadratic through (x[a], y[a]), a = 0, 1, 2, at x.
@@ -291,13 +295,17 @@ vec3 GetMultipleScatteringBlendCorrection(sampler3D rayleigh_texture, float r, f
                           : mix(stored[0] * phase0, stored[1] * phase1, nu_weight);
     if (a < 2) read[a] = mix(stored[0], stored[1], suns.nu_weight);
   }
+  // Linear in mu_s where the lower node has the sun above DAYLIGHT_LINEAR_MU_S but the third not.
+  float mu_s_weight = suns.mu_s[1] >= DAYLIGHT_LINEAR_MU_S
+                          ? clamp((mu_s - suns.mu_s[1]) / (suns.mu_s[3] - suns.mu_s[1]), 0.0, 1.0)
+                          : suns.mu_s_weight;
   vec3 blended;
   if (daylight) {
     blended = InterpolateQuadratic(suns.mu_s[1], suns.mu_s[3], suns.mu_s[5], multiple[0],
                                    multiple[1], multiple[2], clamp(mu_s, suns.mu_s[1], suns.mu_s[3]));
   } else {
-    blended = low_sun ? MixExponentially(multiple[0], multiple[1], suns.mu_s_weight)
-                      : mix(multiple[0], multiple[1], suns.mu_s_weight);
+    blended = low_sun ? MixExponentially(multiple[0], multiple[1], mu_s_weight)
+                      : mix(multiple[0], multiple[1], mu_s_weight);
   }
   return blended / RayleighPhaseFunction(nu) - mix(read[0], read[1], suns.mu_s_weight);
 }
