@@ -50,10 +50,10 @@ vec3 GetRayleighScattering(sampler3D rayleigh_texture, sampler3D multiple_textur
 //    correction moved no daylight or afternoon region by more than 0.05 points. Above it the march
 //    still runs, for the multiple scattering's blend in nu (GetMultipleScatteringBlendCorrection),
 //    which needs the nodes' single scattering (six in daylight, for its quadratic blend in mu_s)
-//    only to take it out of the table's value and
-//    moves by the difference between that blend's weights and the read's times any error in it:
-//    in MULTIPLE_SCATTERING_BLEND_STEPS steps, 16 since the daylight blend takes weights of its
-//    own (below; 4 were enough while it took the read's). With 8 steps and the query's sun too,
+//    only to take it out of the table's value and moves by the difference between that blend's
+//    weights and the read's times any error in it: in MULTIPLE_SCATTERING_BLEND_STEPS steps, 16
+//    since the daylight blend takes weights of its own (below; 4 were enough while it took the
+//    read's). With 8 steps and the query's sun too,
 //    the noon frame under a moving sun, which remakes the sky-view lattice, was 10-17 ms slower;
 //    16 steps for the nodes only against 4: the sky-view correction pass 0.18 -> 0.22 ms and the
 //    frame under a moving sun 131 -> 137 ms GPU, within the run's noise (aerial_bench_render
@@ -74,12 +74,13 @@ struct SingleScatteringSuns {
   float nu_slice;    // the lower slice's index
 };
 
-// The two mu_s texels that the table's read at mu_s blends: (x, y) their mu_s, (z) the upper
-// one's weight, (w) the lower one's texel index.
+// The mu_s that the scattering tables' mu_s texel `texel` holds.
 float GetMuSOfScatteringTexel(ivec4 size, float texel) {
   return GetMuSFromScatteringUMuS(size, (texel + 0.5) / float(size.z));
 }
 
+// The two mu_s texels that the table's read at mu_s blends: (x, y) their mu_s, (z) the upper
+// one's weight, (w) the lower one's texel index.
 vec4 GetScatteringMuSBlend(ivec4 size, float mu_s) {
   vec2 blend = GetTexelBlend(GetScatteringUMuS(size, mu_s), float(size.z));
   return vec4(GetMuSOfScatteringTexel(size, blend.x), GetMuSOfScatteringTexel(size, blend.x + 1.0),
