@@ -148,7 +148,8 @@ float GetRFromUnitRange(float u) {
 // this read. Between texels whose lower sun is above DAYLIGHT_LINEAR_MU_S the blend is therefore
 // linear in mu_s; below it, where the Earth's shadow makes the irradiance anything but linear, it
 // stays linear in the axis coordinate. The sky's multiple scattering is read the same way: the 3D
-// table directly, the 4D one through its blend correction (GetMultipleScatteringBlendCorrection).
+// table directly, the 4D one through its blend correction (GetMultipleScatteringBlendCorrection),
+// which goes on to a quadratic in mu_s where three daylight texels allow it.
 const float DAYLIGHT_LINEAR_MU_S = 0.26;  // sun zenith 75 degrees
 
 // The texture coordinate of mu_s on an arctangent axis of `texels` texels, linear in mu_s between
