@@ -7,8 +7,8 @@
 // the sun's whole disc. Issue 12's targets are stated in these terms.
 //
 // The reference's noise is held at each quantity's noise goal (NoiseGoal) where 16x the base path
-// count allows. The reference is the slow part (~0.1 s per query), so it is computed once per grid and kept in
-// a JSON file that later runs against other tables reuse.
+// count allows. The reference is the slow part (~0.1 s per query), so it is computed once per grid
+// and kept in a JSON file that later runs against other tables reuse.
 #include <array>
 #include <filesystem>
 #include <functional>
@@ -36,11 +36,12 @@ struct SunBand {
 };
 
 // The sky irradiance's noise goal in every band: a quarter of issue 12's 0.4% median target. A
-// region holds one irradiance per sun angle (3 in the quick grid's daylight), so its median is one sample's error,
-// and at the band's 0.25% the noise alone moved it by as much as the distance to the target: the
-// daylight irradiance on the ground read 0.42% at the median against 65,536 paths (standard error
-// 0.21%) and 0.35% against 4,194,304 (0.026%). Irradiance queries are cheap (~0.5 s per 65,536
-// paths), so 16 times the paths for all 39 of the quick grid cost ~5 minutes.
+// region holds one irradiance per sun angle (3 in the quick grid's daylight), so its median is one
+// sample's error, and at the band's 0.25% the noise alone moved it by as much as the distance to
+// the target: the daylight irradiance on the ground read 0.42% at the median against 65,536 paths
+// (standard error 0.21%) and 0.35% against 4,194,304 (0.026%). Irradiance queries are cheap
+// (~0.5 s per 65,536 paths in daylight, more for a low sun): 16 times the paths for the quick
+// grid's 39 took 7.5 minutes.
 inline constexpr double kIrradianceNoiseGoal = 0.001;
 // The noise goal of one quantity in one band.
 double NoiseGoal(const SunBand& band, SkyQuantity quantity);
