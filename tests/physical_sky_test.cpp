@@ -56,7 +56,7 @@ const char* kTwilight = "twilight (95-108)";
 // in daylight quadratically in mu_s over three texels and at the nus its slices hold
 // (GetMultipleScatteringBlendCorrection),
 // the r axis warped by R_WARP 0.5. Against the stored reference of 65,536 paths per sample (up to
-// 16 times more where noisy, and for every irradiance above the floor), in the sun's vertical plane
+// 64 times more where noisy, and for every irradiance above the floor), in the sun's vertical plane
 // and across it (azimuth 90).
 struct RegionBound {
   SkyQuantity quantity;
@@ -85,23 +85,23 @@ const RegionBound kBounds[] = {
     {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.0067, 0.003025, kNone, 0},  // max 0.605%, median 0.61%: no target, pinned
     {SkyQuantity::kSkyRadiance, kAfternoon, 50, 45, 0.0063, 0.00285, kNone, 0},  // max 0.570%, median 0.22%: no target, pinned
     {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 36, 0.0025, 0.001121, kNone, 0},  // max 0.224%, median 0.12%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.579%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 0, 135, 0.03, 0, kNone, 0},  // max 2.494%: target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 135, 0.039, 0.01743, kNone, 0},  // max 3.486%: MISSED, target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 0.987%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 10, 225, 0.03, 0, kNone, 0},  // max 2.292%: target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 206, 0.03, 0, kNone, 0},  // max 2.899%: target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.272%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 0, 135, 0.03, 0, kNone, 0},  // max 2.827%: target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 135, 0.044, 0.01971, kNone, 0},  // max 3.942%: MISSED, target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 0.806%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 10, 225, 0.03, 0, kNone, 0},  // max 2.520%: target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 206, 0.03, 0, kNone, 0},  // max 2.295%: target 3%
     {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 0.966%: target 3%
     {SkyQuantity::kSkyRadiance, kLowSun, 50, 225, 0.03, 0, kNone, 0},  // max 2.674%: target 3%
     {SkyQuantity::kRadianceToPoint, kLowSun, 50, 180, 0.03, 0, kNone, 0},  // max 0.272%: target 3%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 6.671%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 0, 18, 0.08, 0, kNone, 0},  // max 4.182%: target 8%
-    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 6.388%: target 8%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 4.195%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 5.639%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 0, 18, 0.08, 0, kNone, 0},  // max 7.180%: target 8%
+    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 6.071%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 3.916%: target 8%
     {SkyQuantity::kSkyRadiance, kTwilight, 10, 29, 0.08, 0, kNone, 0},  // max 3.781%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 10, 0, kNone, 0, kNone, 0},  // no value above the floor
     {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 0.094%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 50, 19, 0.08, 0, kNone, 0},  // max 2.992%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 50, 19, 0.08, 0, kNone, 0},  // max 3.738%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 50, 0, kNone, 0, kNone, 0},  // no value above the floor
 };
 
@@ -161,8 +161,8 @@ TEST(PhysicalSkyReference, StoredReferenceIsTodaysReference) {
   EXPECT_EQ(checked, 21);
 }
 
-// Every stored sample met its noise goal (bench::NoiseGoal: a quarter of the 1% target for daylight
-// radiances, of the 0.4% median target for every irradiance), or took the most paths the reference
+// Every stored sample met its noise goal (bench::NoiseGoal: a quarter of the target for daylight
+// and low-sun radiances, of the 0.4% median target for every irradiance), or took the most paths the reference
 // allows: each compared value (those above the floor) counts.
 TEST(PhysicalSkyReference, StoredSamplesMeetTheirBandsNoiseGoal) {
   bench::SkyReference reference = bench::ReadSkyReference(kReferenceFile);
@@ -186,10 +186,10 @@ TEST(PhysicalSkyReference, StoredSamplesMeetTheirBandsNoiseGoal) {
     }
   }
   EXPECT_EQ(checked, 1092);
-  // 33 low-sun and 17 twilight radiances, and the 30 irradiances above the floor, whose goal of
-  // 0.1% (kIrradianceNoiseGoal) 16 times the paths do not quite reach (~0.06%); README, "Accuracy
-  // against the physical sky".
-  EXPECT_EQ(at_most_paths, 80);
+  // 24 low-sun radiances (which meet the low sun's 0.75% there: at most 0.74%), 14 twilight ones,
+  // and 6 low-sun and twilight irradiances, at most 0.78% against their 0.1% (kIrradianceNoiseGoal);
+  // README, "Accuracy against the physical sky".
+  EXPECT_EQ(at_most_paths, 44);
 }
 
 // aerial_bench_sky --samples-csv: a header, then one row per sample and channel ending with the
