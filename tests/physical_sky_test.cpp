@@ -43,7 +43,8 @@ const char* kTwilight = "twilight (95-108)";
 // orders + the series' tail, the density grid's zenith cells quadratic toward the horizon above and
 // below it, the ground irradiance of order 1 corrected by single scattering integrated along an 8x8
 // grid, the irradiance read exponentially in r), radiance to a point marched with the multiple
-// density table R16 MU56 MU_S36 NU9, 9 nu slices (one on nu = 0) in 16-bit floats rounded to the
+// density table R32 MU56 MU_S36 NU9 (the density tables' r texels), every density read linearly
+// in mu_s between daylight texels (GetDensityTextureUvwz), 9 nu slices (one on nu = 0) in 16-bit floats rounded to the
 // nearest (round_to_half.comp), the sky's single scattering corrected where the sun is low and its
 // multiple scattering blended exponentially in mu_s and nu (GetSkyInscatterCorrection,
 // sky_lookup.glsl), single scattering marched with steps that follow a sun on the horizon
@@ -67,36 +68,36 @@ struct RegionBound {
 };
 
 const RegionBound kBounds[] = {
-    {SkyQuantity::kSkyIrradiance, kDay, 0, 9, 0.01, 0, 0.004, 0},  // max 0.686%: target 1%; median 0.39%: target
-    {SkyQuantity::kSkyRadiance, kDay, 0, 81, 0.01, 0, 0.004, 0},  // max 0.460%: target 1%; median 0.30%: target
-    {SkyQuantity::kRadianceToPoint, kDay, 0, 81, 0.01, 0, 0.004, 0},  // max 0.946%: target 1%; median 0.19%: target
-    {SkyQuantity::kSkyIrradiance, kDay, 10, 9, 0.015, 0, 0.004, 0},  // max 0.446%: target 1.5%; median 0.09%: target
-    {SkyQuantity::kSkyRadiance, kDay, 10, 135, 0.015, 0, 0.004, 0},  // max 0.666%: target 1.5%; median 0.23%: target
-    {SkyQuantity::kRadianceToPoint, kDay, 10, 135, 0.015, 0, 0.004, 0},  // max 0.625%: target 1.5%; median 0.23%: target
-    {SkyQuantity::kSkyIrradiance, kDay, 50, 9, 0.015, 0, 0.004, 0},  // max 0.360%: target 1.5%; median 0.21%: target
-    {SkyQuantity::kSkyRadiance, kDay, 50, 135, 0.015, 0, 0.004, 0},  // max 0.669%: target 1.5%; median 0.27%: target
-    {SkyQuantity::kRadianceToPoint, kDay, 50, 108, 0.015, 0, 0.004, 0},  // max 0.808%: target 1.5%; median 0.26%: target
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 0, 3, 0.0031, 0.001379, kNone, 0},  // max 0.276%, median 0.28%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kDay, 0, 9, 0.01, 0, 0.004, 0},  // max 0.680%: target 1%; median 0.39%: target
+    {SkyQuantity::kSkyRadiance, kDay, 0, 81, 0.01, 0, 0.004, 0},  // max 0.460%: target 1%; median 0.27%: target
+    {SkyQuantity::kRadianceToPoint, kDay, 0, 81, 0.012, 0.005122, 0.004, 0},  // max 1.024%: MISSED, target 1%; median 0.34%: target
+    {SkyQuantity::kSkyIrradiance, kDay, 10, 9, 0.015, 0, 0.004, 0},  // max 0.439%: target 1.5%; median 0.09%: target
+    {SkyQuantity::kSkyRadiance, kDay, 10, 135, 0.015, 0, 0.004, 0},  // max 0.619%: target 1.5%; median 0.23%: target
+    {SkyQuantity::kRadianceToPoint, kDay, 10, 135, 0.015, 0, 0.004, 0},  // max 0.830%: target 1.5%; median 0.18%: target
+    {SkyQuantity::kSkyIrradiance, kDay, 50, 9, 0.015, 0, 0.004, 0},  // max 0.385%: target 1.5%; median 0.21%: target
+    {SkyQuantity::kSkyRadiance, kDay, 50, 135, 0.015, 0, 0.004, 0},  // max 0.642%: target 1.5%; median 0.23%: target
+    {SkyQuantity::kRadianceToPoint, kDay, 50, 108, 0.015, 0, 0.004, 0},  // max 0.663%: target 1.5%; median 0.20%: target
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 0, 3, 0.0031, 0.001364, kNone, 0},  // max 0.273%, median 0.27%: no target, pinned
     {SkyQuantity::kSkyRadiance, kAfternoon, 0, 27, 0.0045, 0.002, kNone, 0},  // max 0.400%, median 0.25%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 0, 27, 0.0078, 0.003516, kNone, 0},  // max 0.703%, median 0.20%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 10, 3, 0.00095, 0.0004276, kNone, 0},  // max 0.086%, median 0.09%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 45, 0.0061, 0.002771, kNone, 0},  // max 0.554%, median 0.12%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 10, 45, 0.0066, 0.002975, kNone, 0},  // max 0.595%, median 0.18%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.0067, 0.003025, kNone, 0},  // max 0.605%, median 0.61%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 50, 45, 0.0063, 0.00285, kNone, 0},  // max 0.570%, median 0.22%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 36, 0.0025, 0.001121, kNone, 0},  // max 0.224%, median 0.12%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 0, 27, 0.0055, 0.002489, kNone, 0},  // max 0.498%, median 0.32%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 10, 3, 0.00099, 0.0004456, kNone, 0},  // max 0.089%, median 0.09%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 45, 0.0061, 0.002771, kNone, 0},  // max 0.554%, median 0.18%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 10, 45, 0.0031, 0.001395, kNone, 0},  // max 0.279%, median 0.12%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.0068, 0.003084, kNone, 0},  // max 0.617%, median 0.62%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 50, 45, 0.0063, 0.00285, kNone, 0},  // max 0.570%, median 0.23%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 36, 0.004, 0.001802, kNone, 0},  // max 0.360%, median 0.10%: no target, pinned
     {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.272%: target 3%
     {SkyQuantity::kSkyRadiance, kLowSun, 0, 135, 0.03, 0, kNone, 0},  // max 2.827%: target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 135, 0.044, 0.01971, kNone, 0},  // max 3.942%: MISSED, target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 135, 0.03, 0, kNone, 0},  // max 2.450%: target 3%
     {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 0.806%: target 3%
     {SkyQuantity::kSkyRadiance, kLowSun, 10, 225, 0.03, 0, kNone, 0},  // max 2.520%: target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 206, 0.03, 0, kNone, 0},  // max 2.295%: target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 206, 0.03, 0, kNone, 0},  // max 1.820%: target 3%
     {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 0.966%: target 3%
     {SkyQuantity::kSkyRadiance, kLowSun, 50, 225, 0.03, 0, kNone, 0},  // max 2.674%: target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 50, 180, 0.03, 0, kNone, 0},  // max 0.272%: target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 50, 180, 0.03, 0, kNone, 0},  // max 0.269%: target 3%
     {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 5.639%: target 8%
     {SkyQuantity::kSkyRadiance, kTwilight, 0, 18, 0.08, 0, kNone, 0},  // max 7.180%: target 8%
-    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 6.071%: target 8%
+    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 4.569%: target 8%
     {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 3.916%: target 8%
     {SkyQuantity::kSkyRadiance, kTwilight, 10, 29, 0.08, 0, kNone, 0},  // max 3.781%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 10, 0, kNone, 0, kNone, 0},  // no value above the floor

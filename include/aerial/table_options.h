@@ -43,8 +43,11 @@ struct TableResolution {
   // It is a convolution of the light field with the phase functions, smooth in r and mu, so a
   // coarse grid holds it there. In mu_s and nu it takes the density tables' own texels: resampled
   // to fewer (32 mu_s, 4 nu), the radiance to a point with a low sun was 13% high off the sun's
-  // plane (4.1 MB; see README, "Radiance to a point", for the sizes measured).
-  int multiple_density_r = 16;
+  // plane (4.1 MB; see README, "Radiance to a point", for the sizes measured). In r too: with 16
+  // r texels, each per-order density resampled linearly from the density tables' 32 and read
+  // exponentially again, the low-sun radiance to a point on the ground read 3.9% low (red, 2
+  // degrees up toward a sun at zenith 95); with their 32, 2.5% (aerial_bench_sky --grid quick).
+  int multiple_density_r = 32;
   int multiple_density_mu = 56;  // even, split at the horizon like the scattering mu axis
   int multiple_density_mu_s = 36;
   int multiple_density_nu = 9;   // 1 in the 3D variant
@@ -74,7 +77,7 @@ struct SampleCounts {
 
 // What the tables' texels mean (their coordinate mappings, the orders the irradiance holds):
 // part of the cache key, raised whenever a change makes tables computed before it wrong.
-inline constexpr int kTableLayout = 15;
+inline constexpr int kTableLayout = 16;
 
 struct PrecomputeOptions {
   LutVariant variant = LutVariant::k4D;

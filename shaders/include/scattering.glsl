@@ -206,12 +206,35 @@ vec3 GetTableBlended(sampler3D scattering_texture, ivec4 size, bool density, vec
                  : GetScatteringBlended(scattering_texture, size, nu_blend, uvw);
 }
 
-vec3 GetScatteringClampedNu(sampler3D scattering_texture, ivec4 size, int mu_axis, bool density,
-                            float r, float mu, float mu_s, float nu,
-                            bool ray_r_mu_intersects_ground) {
+// The table coordinates of a density read (J_n, J_ms): linear in mu_s between two daylight texels
+// (GetMuSTextureCoordLinearInDaylight), as the sky irradiance. The density's light reflected by
+// the ground goes as mu_s T(mu_s), and the arctangent axis puts the daylight texels at sun zeniths
+// 0, 54.2 and 66.8 degrees: blended in the axis coordinate, order 2's ground-reflected part of the
+// radiance to a point on the ground read 7% high at sun zenith 45 (0.3% at 10 and 2% at 75).
+vec4 GetDensityTextureUvwz(ivec4 size, int mu_axis, float r, float mu, float mu_s, float nu,
+                           bool ray_r_mu_intersects_ground) {
   vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, mu_axis, r, mu, mu_s, nu,
                                                    ray_r_mu_intersects_ground);
-  return GetTableBlended(scattering_texture, size, density,
+  uvwz.y = GetMuSTextureCoordLinearInDaylight(mu_s, size.z);
+  return uvwz;
+}
+
+// A radiance table of one order (linear in the axis coordinates) at the clamped nu.
+vec3 GetScatteringClampedNu(sampler3D scattering_texture, ivec4 size, int mu_axis, float r,
+                            float mu, float mu_s, float nu, bool ray_r_mu_intersects_ground) {
+  vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, mu_axis, r, mu, mu_s, nu,
+                                                   ray_r_mu_intersects_ground);
+  return GetScatteringBlended(scattering_texture, size, GetClampedNuBlend(size, uvwz, mu, mu_s, nu),
+                              uvwz.yzw);
+}
+
+// A density table of one order (on the view zenith mu axis) at the clamped nu, exponential in mu_s
+// in the Earth's shadow if asked (GetDensityBlended).
+vec3 GetDensityClampedNu(sampler3D density_texture, ivec4 size, bool exponential_in_shadow,
+                         float r, float mu, float mu_s, float nu, bool ray_r_mu_intersects_ground) {
+  vec4 uvwz = GetDensityTextureUvwz(size, MU_AXIS_VIEW_ZENITH, r, mu, mu_s, nu,
+                                    ray_r_mu_intersects_ground);
+  return GetTableBlended(density_texture, size, exponential_in_shadow,
                          GetClampedNuBlend(size, uvwz, mu, mu_s, nu), uvwz.yzw);
 }
 
@@ -248,8 +271,8 @@ vec3 GetScatteringExponentialInR(sampler3D scattering_texture, ivec4 size, float
 vec3 GetMultipleScatteringDensity(sampler3D multiple_density_texture, float r, float mu,
                                   float mu_s, float nu, bool ray_r_mu_intersects_ground) {
   ivec4 size = atmosphere.multiple_density_size;
-  vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, MU_AXIS_VIEW_ZENITH, r, mu, mu_s, nu,
-                                                   ray_r_mu_intersects_ground);
+  vec4 uvwz = GetDensityTextureUvwz(size, MU_AXIS_VIEW_ZENITH, r, mu, mu_s, nu,
+                                    ray_r_mu_intersects_ground);
   return GetScatteringBlendedExponentialInR(multiple_density_texture, size, true,
                                             GetClampedNuBlend(size, uvwz, mu, mu_s, nu), uvwz);
 }
@@ -268,8 +291,7 @@ vec3 GetScatteringOfOrder(sampler3D single_rayleigh_texture, sampler3D single_mi
     return rayleigh * RayleighPhaseFunction(nu) + mie * MiePhaseFunction(atmosphere.mie_phase_g, nu);
   }
   return GetScatteringClampedNu(multiple_scattering_texture, atmosphere.density_size,
-                                MU_AXIS_RAY_LENGTH, false, r, mu, mu_s, nu,
-                                ray_r_mu_intersects_ground);
+                                MU_AXIS_RAY_LENGTH, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
 }
 
 // Multiple scattering of order n (Bruneton 2008 eq. 12 integrated along the ray): the scattering
@@ -282,9 +304,8 @@ vec3 MultipleScatteringIntegrand(sampler2D transmittance_texture,
   float r_d = RadiusAtDistance(r, mu, d);
   float mu_d = MuAtDistance(r, mu, d, r_d);
   float mu_s_d = SunCosineAlongRay(r, mu_s, nu, d, r_d);
-  return GetScatteringClampedNu(scattering_density_texture, atmosphere.density_size,
-                                MU_AXIS_VIEW_ZENITH, density_blended, r_d, mu_d, mu_s_d, nu,
-                                ray_r_mu_intersects_ground) *
+  return GetDensityClampedNu(scattering_density_texture, atmosphere.density_size, density_blended,
+                             r_d, mu_d, mu_s_d, nu, ray_r_mu_intersects_ground) *
          GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
                                     ray_r_mu_intersects_ground);
 }
