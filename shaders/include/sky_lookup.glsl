@@ -53,11 +53,11 @@ vec3 GetRayleighScattering(sampler3D rayleigh_texture, sampler3D multiple_textur
 //    only to take it out of the table's value and moves by the difference between that blend's
 //    weights and the read's times any error in it: in MULTIPLE_SCATTERING_BLEND_STEPS steps, 16
 //    since the daylight blend takes weights of its own (below; 4 were enough while it took the
-//    read's). With 8 steps and the query's sun too,
-//    the noon frame under a moving sun, which remakes the sky-view lattice, was 10-17 ms slower;
-//    16 steps for the nodes only against 4: the sky-view correction pass 0.18 -> 0.22 ms and the
-//    frame under a moving sun 131 -> 137 ms GPU, within the run's noise (aerial_bench_render
-//    --frames 15, min 93 / 100 ms, max 181 / 161 ms).
+//    read's). With 8 steps and the query's sun too, the noon frame under a moving sun, which
+//    remakes the sky-view lattice, was 10-17 ms slower; 16 steps for the nodes only against 4:
+//    the sky-view correction pass 0.18 -> 0.22 ms and the frame under a moving sun 131 -> 137 ms
+//    GPU, within the run's noise (aerial_bench_render --frames 15, min 93 / 100 ms, max 181 /
+//    161 ms).
 const int SINGLE_SCATTERING_CORRECTION_STEPS = 32;
 const float SINGLE_SCATTERING_CORRECTION_MU_S = 0.26;
 const int MULTIPLE_SCATTERING_BLEND_STEPS = 16;
