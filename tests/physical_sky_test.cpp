@@ -44,8 +44,9 @@ const char* kTwilight = "twilight (95-108)";
 // below it, the ground irradiance of order 1 corrected by single scattering integrated along an 8x8
 // grid, the irradiance read exponentially in r), radiance to a point marched with the multiple
 // density table R32 MU56 MU_S36 NU9 (the density tables' r texels), every density read linearly
-// in mu_s between daylight texels (GetDensityTextureUvwz), 9 nu slices (one on nu = 0) in 16-bit floats rounded to the
-// nearest (round_to_half.comp), the sky's single scattering corrected where the sun is low and its
+// in mu_s between daylight texels (GetDensityTextureUvwz), the density tables' fourth axis the
+// view-sun azimuth (GetUnitRangeFromViewSunAzimuth), 9 nu slices (one on nu = 0) in 16-bit floats
+// rounded to the nearest (round_to_half.comp), the sky's single scattering corrected where the sun is low and its
 // multiple scattering blended exponentially in mu_s and nu (GetSkyInscatterCorrection,
 // sky_lookup.glsl), single scattering marched with steps that follow a sun on the horizon
 // (GetStepSpacingExponent, scattering.glsl), the scattering density tables' mu axis on the view
@@ -68,41 +69,41 @@ struct RegionBound {
 };
 
 const RegionBound kBounds[] = {
-    {SkyQuantity::kSkyIrradiance, kDay, 0, 9, 0.01, 0, 0.004, 0},  // max 0.680%: target 1%; median 0.39%: target
-    {SkyQuantity::kSkyRadiance, kDay, 0, 81, 0.01, 0, 0.004, 0},  // max 0.460%: target 1%; median 0.27%: target
-    {SkyQuantity::kRadianceToPoint, kDay, 0, 81, 0.012, 0.005122, 0.004, 0},  // max 1.024%: MISSED, target 1%; median 0.34%: target
-    {SkyQuantity::kSkyIrradiance, kDay, 10, 9, 0.015, 0, 0.004, 0},  // max 0.439%: target 1.5%; median 0.09%: target
-    {SkyQuantity::kSkyRadiance, kDay, 10, 135, 0.015, 0, 0.004, 0},  // max 0.619%: target 1.5%; median 0.23%: target
-    {SkyQuantity::kRadianceToPoint, kDay, 10, 135, 0.015, 0, 0.004, 0},  // max 0.830%: target 1.5%; median 0.18%: target
-    {SkyQuantity::kSkyIrradiance, kDay, 50, 9, 0.015, 0, 0.004, 0},  // max 0.385%: target 1.5%; median 0.21%: target
-    {SkyQuantity::kSkyRadiance, kDay, 50, 135, 0.015, 0, 0.004, 0},  // max 0.642%: target 1.5%; median 0.23%: target
-    {SkyQuantity::kRadianceToPoint, kDay, 50, 108, 0.015, 0, 0.004, 0},  // max 0.663%: target 1.5%; median 0.20%: target
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 0, 3, 0.0031, 0.001364, kNone, 0},  // max 0.273%, median 0.27%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kDay, 0, 9, 0.01, 0, 0.004, 0},  // max 0.686%: target 1%; median 0.39%: target
+    {SkyQuantity::kSkyRadiance, kDay, 0, 81, 0.01, 0, 0.004, 0},  // max 0.460%: target 1%; median 0.26%: target
+    {SkyQuantity::kRadianceToPoint, kDay, 0, 81, 0.01, 0, 0.004, 0},  // max 0.676%: target 1%; median 0.40%: target
+    {SkyQuantity::kSkyIrradiance, kDay, 10, 9, 0.015, 0, 0.004, 0},  // max 0.441%: target 1.5%; median 0.09%: target
+    {SkyQuantity::kSkyRadiance, kDay, 10, 135, 0.015, 0, 0.004, 0},  // max 0.679%: target 1.5%; median 0.23%: target
+    {SkyQuantity::kRadianceToPoint, kDay, 10, 135, 0.015, 0, 0.004, 0},  // max 0.835%: target 1.5%; median 0.17%: target
+    {SkyQuantity::kSkyIrradiance, kDay, 50, 9, 0.015, 0, 0.004, 0},  // max 0.377%: target 1.5%; median 0.21%: target
+    {SkyQuantity::kSkyRadiance, kDay, 50, 135, 0.015, 0, 0.004, 0},  // max 0.640%: target 1.5%; median 0.23%: target
+    {SkyQuantity::kRadianceToPoint, kDay, 50, 108, 0.015, 0, 0.004, 0},  // max 0.665%: target 1.5%; median 0.20%: target
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 0, 3, 0.0032, 0.001427, kNone, 0},  // max 0.285%, median 0.29%: no target, pinned
     {SkyQuantity::kSkyRadiance, kAfternoon, 0, 27, 0.0045, 0.002, kNone, 0},  // max 0.400%, median 0.25%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 0, 27, 0.0055, 0.002489, kNone, 0},  // max 0.498%, median 0.32%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 10, 3, 0.00099, 0.0004456, kNone, 0},  // max 0.089%, median 0.09%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 45, 0.0061, 0.002771, kNone, 0},  // max 0.554%, median 0.18%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 10, 45, 0.0031, 0.001395, kNone, 0},  // max 0.279%, median 0.12%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.0068, 0.003084, kNone, 0},  // max 0.617%, median 0.62%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 0, 27, 0.0055, 0.002485, kNone, 0},  // max 0.497%, median 0.29%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 10, 3, 0.00093, 0.0004201, kNone, 0},  // max 0.084%, median 0.08%: no target, pinned
+    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 45, 0.0058, 0.002602, kNone, 0},  // max 0.520%, median 0.15%: no target, pinned
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 10, 45, 0.0031, 0.001392, kNone, 0},  // max 0.278%, median 0.11%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.0068, 0.003054, kNone, 0},  // max 0.611%, median 0.61%: no target, pinned
     {SkyQuantity::kSkyRadiance, kAfternoon, 50, 45, 0.0063, 0.00285, kNone, 0},  // max 0.570%, median 0.23%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 36, 0.004, 0.001802, kNone, 0},  // max 0.360%, median 0.10%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.272%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 0, 135, 0.03, 0, kNone, 0},  // max 2.827%: target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 135, 0.03, 0, kNone, 0},  // max 2.450%: target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 0.806%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 10, 225, 0.03, 0, kNone, 0},  // max 2.520%: target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 206, 0.03, 0, kNone, 0},  // max 1.820%: target 3%
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 36, 0.004, 0.001799, kNone, 0},  // max 0.360%, median 0.12%: no target, pinned
+    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.313%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 0, 135, 0.03, 0, kNone, 0},  // max 2.881%: target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 135, 0.03, 0, kNone, 0},  // max 2.446%: target 3%
+    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 0.819%: target 3%
+    {SkyQuantity::kSkyRadiance, kLowSun, 10, 225, 0.03, 0, kNone, 0},  // max 2.345%: target 3%
+    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 206, 0.03, 0, kNone, 0},  // max 1.813%: target 3%
     {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 0.966%: target 3%
     {SkyQuantity::kSkyRadiance, kLowSun, 50, 225, 0.03, 0, kNone, 0},  // max 2.674%: target 3%
     {SkyQuantity::kRadianceToPoint, kLowSun, 50, 180, 0.03, 0, kNone, 0},  // max 0.269%: target 3%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 5.639%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 0, 18, 0.08, 0, kNone, 0},  // max 7.180%: target 8%
-    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 4.569%: target 8%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 3.916%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 10, 29, 0.08, 0, kNone, 0},  // max 3.781%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 5.784%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 0, 18, 0.08, 0, kNone, 0},  // max 7.355%: target 8%
+    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 4.560%: target 8%
+    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 4.014%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 10, 29, 0.08, 0, kNone, 0},  // max 3.779%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 10, 0, kNone, 0, kNone, 0},  // no value above the floor
     {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 0.094%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 50, 19, 0.08, 0, kNone, 0},  // max 3.738%: target 8%
+    {SkyQuantity::kSkyRadiance, kTwilight, 50, 19, 0.08, 0, kNone, 0},  // max 3.654%: target 8%
     {SkyQuantity::kRadianceToPoint, kTwilight, 50, 0, kNone, 0, kNone, 0},  // no value above the floor
 };
 

@@ -145,11 +145,11 @@ TEST_F(TablesVsReference, DirectSunIrradianceFollowsTheDiscThroughSunset) {
 // Radiance and transmittance to a point at a known distance (the aerial perspective of an object):
 // the segment marched with the multiple density table (inscatter_march.glsl) against the reference
 // with all orders, in daylight (sun zenith <= 60) at 5 to 30 km, cameras on the ground and 1 km up.
-// Issue 12's target there is 1%; measured 1.95% (red, 1 km up, horizontal, 20 km: the multiple
-// scattering density table J_ms is ~1.7% high there since the density grid's cells below the
-// horizon follow it; the ground view at zenith 80 that was worst before, 1.68% low in blue, is now
-// 1.0% low), so the bound is the measure plus 10%, [0.97%, 2.2%], two-sided so that an improvement
-// is noticed. Transmittance: 0.1%.
+// Issue 12's target there is 1%; measured 1.09% (blue, on the ground looking 10 degrees up, 5 km,
+// sun at zenith 20; 1.35% before the density tables' azimuth axis, GetUnitRangeFromViewSunAzimuth),
+// so the bound is the measure plus 10%, [0.55%, 1.2%], two-sided so that an improvement is noticed.
+// The quick grid's daylight radiance to a point (physical_sky_test.cpp, a reference of 65,536 paths
+// and more) meets the target; these 16,384 paths per view are a spot check. Transmittance: 0.1%.
 TEST_F(TablesVsReference, RadianceToPointWithinBounds) {
   std::vector<ViewAngles> views = {{0.0, 60.0, 30.0, 0.0}, {0.0, 85.0, 60.0, 180.0},
                                    {1e3, 90.0, 45.0, 90.0}, {0.0, 80.0, 20.0, 0.0}};
@@ -172,8 +172,8 @@ TEST_F(TablesVsReference, RadianceToPointWithinBounds) {
   EXPECT_TRUE(ComparedExactly(transmittance, 4 * 3));
   std::printf("radiance to point: %s\ntransmittance to point: %s\n", radiance.Summary().c_str(),
               transmittance.Summary().c_str());
-  EXPECT_LT(radiance.value(), 2.2e-2) << radiance.Summary();
-  EXPECT_GT(radiance.value(), 0.97e-2) << "better than recorded: " << radiance.Summary();
+  EXPECT_LT(radiance.value(), 1.2e-2) << radiance.Summary();
+  EXPECT_GT(radiance.value(), 0.55e-2) << "better than recorded: " << radiance.Summary();
   EXPECT_LT(transmittance.value(), 1e-3) << transmittance.Summary();
 }
 

@@ -77,7 +77,7 @@ struct SampleCounts {
 
 // What the tables' texels mean (their coordinate mappings, the orders the irradiance holds):
 // part of the cache key, raised whenever a change makes tables computed before it wrong.
-inline constexpr int kTableLayout = 16;
+inline constexpr int kTableLayout = 17;
 
 struct PrecomputeOptions {
   LutVariant variant = LutVariant::k4D;

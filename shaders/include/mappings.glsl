@@ -221,7 +221,8 @@ float GetRFromScatteringUR(ivec4 size, float u_r) {
 //    (109 degrees 3 km up), and every downward texel of the ground slice at the nadir. Looking
 //    down from 3 km (view zenith 120, sun at the zenith, Rayleigh only, ground albedo 0), the
 //    order-2 density was 8.5 / 7.1 / 5.3% low that way, 2.8 / 2.2 / 1.8% on this axis (`aerial
-//    probe --orders 2 --series-tail off --distance-m 10` against `--reference`).
+//    probe --orders 2 --series-tail off --distance-m 10` against `--reference`). These tables'
+//    fourth axis is the view-sun azimuth (GetUnitRangeFromViewSunAzimuth), not nu.
 const int MU_AXIS_RAY_LENGTH = 0;
 const int MU_AXIS_VIEW_ZENITH = 1;
 
@@ -276,13 +277,37 @@ float GetUnitRangeFromNu(float nu) { return 0.5 * nu + 0.5; }
 
 float GetNuFromUnitRange(float u) { return 2.0 * u - 1.0; }
 
+// The density tables' fourth axis (J_n of each order, J_ms): the cosine of the azimuth phi between
+// the view and the sun, uniform over [-1, 1] and reversed (u = 0 at phi = 0), i.e. nu rescaled to
+// the range [mu mu_s - s, mu mu_s + s] (s = sin theta sin theta_s) that (mu, mu_s) allow. On the nu
+// axis a texel outside that range holds the value at the clamped nu, and the range closes on
+// nu = mu as the sun nears the zenith: a sun at 45 degrees and a view 2 degrees up toward it
+// (nu = 0.73) were blended with the zenith texel, which held the density at nu = 0.035 in every
+// slice, and order 2's density from the air read 8.5 / 6.4 / 4.9% low there (`aerial probe
+// --orders 2 --series-tail off` against `--reference`). Every (mu, mu_s, phi) is a geometry, and at fixed phi the
+// density goes continuously to its zenith value as the sun rises. Measured (aerial_bench_sky
+// --grid quick): the daylight radiance to a point on the ground 1.02% -> 0.68% at most; the
+// low-sun sky 10 km up 2.52% -> 2.35%. Uniform in phi itself did as well in daylight but read the
+// low-sun sky 10 km up at 2.61%, and costs an acos per read.
+float GetUnitRangeFromViewSunAzimuth(float mu, float mu_s, float nu) {
+  float spread = sqrt(max((1.0 - mu * mu) * (1.0 - mu_s * mu_s), 0.0));
+  return spread > 0.0 ? 0.5 - 0.5 * clamp((nu - mu * mu_s) / spread, -1.0, 1.0) : 0.5;
+}
+
+float GetNuFromViewSunAzimuthUnitRange(float mu, float mu_s, float u) {
+  float spread = sqrt(max((1.0 - mu * mu) * (1.0 - mu_s * mu_s), 0.0));
+  return ClampCosine(mu * mu_s + spread * (1.0 - 2.0 * u));
+}
+
 vec4 GetScatteringTextureUvwzFromRMuMuSNu(ivec4 size, int mu_axis, float r, float mu, float mu_s,
                                           float nu, bool ray_r_mu_intersects_ground) {
   int half_mu = size.y / 2;
   float u_half = GetTextureCoordFromUnitRange(
       GetUnitRangeFromMuInHalf(mu_axis, r, mu, ray_r_mu_intersects_ground), half_mu);
   float u_mu = ray_r_mu_intersects_ground ? 0.5 - 0.5 * u_half : 0.5 + 0.5 * u_half;
-  return vec4(GetUnitRangeFromNu(nu), GetScatteringUMuS(size, mu_s), u_mu, GetScatteringUR(size, r));
+  float u_nu = mu_axis == MU_AXIS_VIEW_ZENITH ? GetUnitRangeFromViewSunAzimuth(mu, mu_s, nu)
+                                             : GetUnitRangeFromNu(nu);
+  return vec4(u_nu, GetScatteringUMuS(size, mu_s), u_mu, GetScatteringUR(size, r));
 }
 
 void GetRMuMuSNuFromScatteringTextureUvwz(ivec4 size, int mu_axis, vec4 uvwz, out float r,
@@ -295,7 +320,8 @@ void GetRMuMuSNuFromScatteringTextureUvwz(ivec4 size, int mu_axis, vec4 uvwz, ou
   mu = GetMuFromUnitRangeInHalf(mu_axis, r, GetUnitRangeFromTextureCoord(u_half, half_mu),
                                 ray_r_mu_intersects_ground);
   mu_s = GetMuSFromScatteringUMuS(size, uvwz.y);
-  nu = ClampCosine(GetNuFromUnitRange(uvwz.x));
+  nu = mu_axis == MU_AXIS_VIEW_ZENITH ? GetNuFromViewSunAzimuthUnitRange(mu, mu_s, uvwz.x)
+                                      : ClampCosine(GetNuFromUnitRange(uvwz.x));
 }
 
 bool IsScatteringTexel(ivec4 size, ivec3 texel) {
@@ -314,8 +340,9 @@ float GetScatteringTexelNominalNu(ivec4 size, ivec3 texel) {
 }
 
 // The texel (x, y, z) of the 3D image that packs the 4D table: x = nu_index * MU_S + mu_s_index.
-// nu samples span [-1, 1] exactly (nu_size texels, end points included); the other axes use texel
-// centers. nu is then clamped to the values that (mu, mu_s) allow.
+// The fourth axis's samples span it exactly (nu_size texels, end points included); the other axes
+// use texel centers. On the radiance tables' nu axis, nu is then clamped to the values that
+// (mu, mu_s) allow.
 void GetRMuMuSNuFromScatteringTexel(ivec4 size, int mu_axis, ivec3 texel, out float r,
                                     out float mu, out float mu_s, out float nu,
                                     out bool ray_r_mu_intersects_ground) {
@@ -328,9 +355,14 @@ void GetRMuMuSNuFromScatteringTexel(ivec4 size, int mu_axis, ivec3 texel, out fl
                    (float(texel.y) + 0.5) / float(size.y), (float(texel.z) + 0.5) / float(size.x));
   GetRMuMuSNuFromScatteringTextureUvwz(size, mu_axis, uvwz, r, mu, mu_s, nu,
                                        ray_r_mu_intersects_ground);
-  float spread = sqrt((1.0 - mu * mu) * (1.0 - mu_s * mu_s));
-  // A 3D table has no nu: its texels stand for every azimuth; mu mu_s is the azimuthal mean.
-  nu = nu_size > 1 ? clamp(nu, mu * mu_s - spread, mu * mu_s + spread) : mu * mu_s;
+  // A 3D table has no nu: its texels stand for every azimuth; mu mu_s is the azimuthal mean. The
+  // density tables' azimuth axis only holds allowed nus.
+  if (nu_size == 1) {
+    nu = mu * mu_s;
+  } else if (mu_axis == MU_AXIS_RAY_LENGTH) {
+    float spread = sqrt((1.0 - mu * mu) * (1.0 - mu_s * mu_s));
+    nu = clamp(nu, mu * mu_s - spread, mu * mu_s + spread);
+  }
 }
 
 #endif

@@ -133,9 +133,9 @@ vec2 GetNominalNuBlend(ivec4 size, vec4 uvwz) {
   return vec2(tex_x, tex_coord_x - tex_x);
 }
 
-// The blend for the precomputation's per-order tables (scattering density, multiple scattering)
-// and the multiple density table, which hold values at each texel's clamped nu
-// (GetRMuMuSNuFromScatteringTexel). Near the end of the allowed nu range the outer of the two nu
+// The blend for the precomputation's per-order multiple scattering tables, which hold values at
+// each texel's clamped nu (GetRMuMuSNuFromScatteringTexel; the density tables have an azimuth axis
+// instead, GetUnitRangeFromViewSunAzimuth). Near the end of the allowed nu range the outer of the two nu
 // slices holds the value at the range's end, not at its place on the axis; the weight between the
 // slices is taken between where their values really are. Without this, the forward Mie peak of the
 // density is smeared toward the middle of the range and the multiple scattering seen toward the
@@ -228,14 +228,14 @@ vec3 GetScatteringClampedNu(sampler3D scattering_texture, ivec4 size, int mu_axi
                               uvwz.yzw);
 }
 
-// A density table of one order (on the view zenith mu axis) at the clamped nu, exponential in mu_s
-// in the Earth's shadow if asked (GetDensityBlended).
-vec3 GetDensityClampedNu(sampler3D density_texture, ivec4 size, bool exponential_in_shadow,
+// A density table of one order (on the view zenith mu axis and the azimuth axis), exponential in
+// mu_s in the Earth's shadow if asked (GetDensityBlended).
+vec3 GetDensityOfOrder(sampler3D density_texture, ivec4 size, bool exponential_in_shadow,
                          float r, float mu, float mu_s, float nu, bool ray_r_mu_intersects_ground) {
   vec4 uvwz = GetDensityTextureUvwz(size, MU_AXIS_VIEW_ZENITH, r, mu, mu_s, nu,
                                     ray_r_mu_intersects_ground);
   return GetTableBlended(density_texture, size, exponential_in_shadow,
-                         GetClampedNuBlend(size, uvwz, mu, mu_s, nu), uvwz.yzw);
+                         GetNominalNuBlend(size, uvwz), uvwz.yzw);
 }
 
 // Interpolates exponentially between the two nearest r slices instead of linearly. Scattering
@@ -266,15 +266,15 @@ vec3 GetScatteringExponentialInR(sampler3D scattering_texture, ivec4 size, float
                                             GetNominalNuBlend(size, uvwz), uvwz);
 }
 
-// The render-time read of the multiple density table J_ms (the view zenith mu axis, clamped nu,
-// exponential in r: the density follows the air's density).
+// The render-time read of the multiple density table J_ms (the view zenith mu axis, the azimuth
+// axis, exponential in r: the density follows the air's density).
 vec3 GetMultipleScatteringDensity(sampler3D multiple_density_texture, float r, float mu,
                                   float mu_s, float nu, bool ray_r_mu_intersects_ground) {
   ivec4 size = atmosphere.multiple_density_size;
   vec4 uvwz = GetDensityTextureUvwz(size, MU_AXIS_VIEW_ZENITH, r, mu, mu_s, nu,
                                     ray_r_mu_intersects_ground);
   return GetScatteringBlendedExponentialInR(multiple_density_texture, size, true,
-                                            GetClampedNuBlend(size, uvwz, mu, mu_s, nu), uvwz);
+                                            GetNominalNuBlend(size, uvwz), uvwz);
 }
 
 // Radiance of scattering order `order` arriving along (r, mu) with the sun at (mu_s, nu): order 1
@@ -304,7 +304,7 @@ vec3 MultipleScatteringIntegrand(sampler2D transmittance_texture,
   float r_d = RadiusAtDistance(r, mu, d);
   float mu_d = MuAtDistance(r, mu, d, r_d);
   float mu_s_d = SunCosineAlongRay(r, mu_s, nu, d, r_d);
-  return GetDensityClampedNu(scattering_density_texture, atmosphere.density_size, density_blended,
+  return GetDensityOfOrder(scattering_density_texture, atmosphere.density_size, density_blended,
                              r_d, mu_d, mu_s_d, nu, ray_r_mu_intersects_ground) *
          GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
                                     ray_r_mu_intersects_ground);

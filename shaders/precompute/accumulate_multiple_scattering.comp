@@ -36,8 +36,8 @@ layout(push_constant) uniform Step {
 vec3 ReadOrder(sampler3D order_texture, float r, float mu, float mu_s, float nu,
                bool ray_r_mu_intersects_ground) {
   if (pass.mu_axis == MU_AXIS_VIEW_ZENITH) {
-    return GetDensityClampedNu(order_texture, atmosphere.density_size, true, r, mu, mu_s, nu,
-                               ray_r_mu_intersects_ground);
+    return GetDensityOfOrder(order_texture, atmosphere.density_size, true, r, mu, mu_s, nu,
+                             ray_r_mu_intersects_ground);
   }
   return GetScatteringClampedNu(order_texture, atmosphere.density_size, pass.mu_axis, r, mu, mu_s,
                                 nu, ray_r_mu_intersects_ground);

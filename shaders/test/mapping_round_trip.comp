@@ -43,15 +43,22 @@ void main() {
     // the ray-length axis the whole ground half maps to mu = -1 and cannot round-trip. Those
     // texels hold zero scattering by construction.
     if (mu_axis == MU_AXIS_RAY_LENGTH && texel.z == 0 && ground) return;
-    // nu is clamped to what (mu, mu_s) allow, so only the r, mu and mu_s axes must round-trip; the
-    // nu axis is checked separately on unclamped values.
+    // On the radiance tables nu is clamped to what (mu, mu_s) allow, so only the r, mu and mu_s
+    // axes must round-trip there. The density tables' azimuth axis must too, except where the
+    // sun or the view is at the zenith or nadir and every azimuth is the same direction.
     vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, mu_axis, r, mu, mu_s, nu, ground);
     int mu_s_index = texel.x % size.z;
     float error_mu_s = (uvwz.y - (float(mu_s_index) + 0.5) / float(size.z)) * float(size.z);
     float error_mu = (uvwz.z - (float(texel.y) + 0.5) / float(size.y)) * float(size.y);
     float error_r = (uvwz.w - (float(texel.z) + 0.5) / float(size.x)) * float(size.x);
+    float error_azimuth = 0.0;
+    if (mu_axis == MU_AXIS_VIEW_ZENITH && size.w > 1 &&
+        (1.0 - mu * mu) * (1.0 - mu_s * mu_s) > 1e-6) {
+      float last_slice = float(size.w - 1);
+      error_azimuth = (uvwz.x - float(texel.x / size.z) / last_slice) * last_slice;
+    }
     int slot = mu_axis == MU_AXIS_RAY_LENGTH ? 2 : 4;
-    Record(slot, max(max(abs(error_mu_s), abs(error_mu)), abs(error_r)));
+    Record(slot, max(max(max(abs(error_mu_s), abs(error_mu)), abs(error_r)), abs(error_azimuth)));
     // Away from the two outermost texels, which both stand for the tangent ray itself (mu exactly
     // at the horizon, where "hits the ground" is a matter of rounding), a texel's half must agree
     // with the ray it stands for.
