@@ -284,11 +284,11 @@ float GetNuFromUnitRange(float u) { return 2.0 * u - 1.0; }
 // nu = mu as the sun nears the zenith: a sun at 45 degrees and a view 2 degrees up toward it
 // (nu = 0.73) were blended with the zenith texel, which held the density at nu = 0.035 in every
 // slice, and order 2's density from the air read 8.5 / 6.4 / 4.9% low there (`aerial probe
-// --orders 2 --series-tail off` against `--reference`). Every (mu, mu_s, phi) is a geometry, and at fixed phi the
-// density goes continuously to its zenith value as the sun rises. Measured (aerial_bench_sky
-// --grid quick): the daylight radiance to a point on the ground 1.02% -> 0.68% at most; the
-// low-sun sky 10 km up 2.52% -> 2.35%. Uniform in phi itself did as well in daylight but read the
-// low-sun sky 10 km up at 2.61%, and costs an acos per read.
+// --orders 2 --series-tail off` against `--reference`). Every (mu, mu_s, phi) is a geometry, and
+// at fixed phi the density goes continuously to its zenith value as the sun rises. Measured
+// (aerial_bench_sky --grid quick): the daylight radiance to a point on the ground 1.02% -> 0.68%
+// at most; the low-sun sky 10 km up 2.52% -> 2.35%. Uniform in phi itself did as well in daylight
+// but read the low-sun sky 10 km up at 2.61%, and costs an acos per read.
 float GetUnitRangeFromViewSunAzimuth(float mu, float mu_s, float nu) {
   float spread = sqrt(max((1.0 - mu * mu) * (1.0 - mu_s * mu_s), 0.0));
   return spread > 0.0 ? 0.5 - 0.5 * clamp((nu - mu * mu_s) / spread, -1.0, 1.0) : 0.5;

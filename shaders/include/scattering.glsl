@@ -134,11 +134,11 @@ vec2 GetNominalNuBlend(ivec4 size, vec4 uvwz) {
 }
 
 // The blend for the precomputation's per-order multiple scattering tables, which hold values at
-// each texel's clamped nu (GetRMuMuSNuFromScatteringTexel; the density tables have an azimuth axis
-// instead, GetUnitRangeFromViewSunAzimuth). Near the end of the allowed nu range the outer of the two nu
-// slices holds the value at the range's end, not at its place on the axis; the weight between the
-// slices is taken between where their values really are. Without this, the forward Mie peak of the
-// density is smeared toward the middle of the range and the multiple scattering seen toward the
+// each texel's clamped nu (GetRMuMuSNuFromScatteringTexel; the density tables have an azimuth
+// axis instead, GetUnitRangeFromViewSunAzimuth). Near the end of the allowed nu range the outer of
+// the two nu slices holds the value at the range's end, not at its place on the axis; the weight
+// between the slices is taken between where their values really are. Without this, the forward
+// Mie peak is smeared toward the middle of the range and the multiple scattering seen toward the
 // sun is too low by several percent.
 vec2 GetClampedNuBlend(ivec4 size, vec4 uvwz, float mu, float mu_s, float nu) {
   if (size.w == 1) return vec2(0.0);
@@ -230,8 +230,8 @@ vec3 GetScatteringClampedNu(sampler3D scattering_texture, ivec4 size, int mu_axi
 
 // A density table of one order (on the view zenith mu axis and the azimuth axis), exponential in
 // mu_s in the Earth's shadow if asked (GetDensityBlended).
-vec3 GetDensityOfOrder(sampler3D density_texture, ivec4 size, bool exponential_in_shadow,
-                         float r, float mu, float mu_s, float nu, bool ray_r_mu_intersects_ground) {
+vec3 GetDensityOfOrder(sampler3D density_texture, ivec4 size, bool exponential_in_shadow, float r,
+                       float mu, float mu_s, float nu, bool ray_r_mu_intersects_ground) {
   vec4 uvwz = GetDensityTextureUvwz(size, MU_AXIS_VIEW_ZENITH, r, mu, mu_s, nu,
                                     ray_r_mu_intersects_ground);
   return GetTableBlended(density_texture, size, exponential_in_shadow,
@@ -305,7 +305,7 @@ vec3 MultipleScatteringIntegrand(sampler2D transmittance_texture,
   float mu_d = MuAtDistance(r, mu, d, r_d);
   float mu_s_d = SunCosineAlongRay(r, mu_s, nu, d, r_d);
   return GetDensityOfOrder(scattering_density_texture, atmosphere.density_size, density_blended,
-                             r_d, mu_d, mu_s_d, nu, ray_r_mu_intersects_ground) *
+                           r_d, mu_d, mu_s_d, nu, ray_r_mu_intersects_ground) *
          GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
                                     ray_r_mu_intersects_ground);
 }
