@@ -143,7 +143,7 @@ vec2 GetNominalNuBlend(ivec4 size, vec4 uvwz) {
 vec2 GetClampedNuBlend(ivec4 size, vec4 uvwz, float mu, float mu_s, float nu) {
   if (size.w == 1) return vec2(0.0);
   float tex_x = GetNominalNuBlend(size, uvwz).x;
-  float spread = sqrt(max((1.0 - mu * mu) * (1.0 - mu_s * mu_s), 0.0));
+  float spread = GetNuSpread(mu, mu_s);
   float nu0 = clamp(GetNominalNuOfSlice(size, tex_x), mu * mu_s - spread, mu * mu_s + spread);
   float nu1 = clamp(GetNominalNuOfSlice(size, tex_x + 1.0), mu * mu_s - spread, mu * mu_s + spread);
   return vec2(tex_x, nu1 > nu0 ? clamp((nu - nu0) / (nu1 - nu0), 0.0, 1.0) : 0.5);
@@ -210,10 +210,11 @@ vec3 GetTableBlended(sampler3D scattering_texture, ivec4 size, bool density, vec
 // (GetMuSTextureCoordLinearInDaylight), as the sky irradiance. The density's light reflected by
 // the ground goes as mu_s T(mu_s), and the arctangent axis puts the daylight texels at sun zeniths
 // 0, 54.2 and 66.8 degrees: blended in the axis coordinate, order 2's ground-reflected part of the
-// radiance to a point on the ground read 7% high at sun zenith 45 (0.3% at 10 and 2% at 75).
-vec4 GetDensityTextureUvwz(ivec4 size, int mu_axis, float r, float mu, float mu_s, float nu,
+// radiance to a point on the ground read 7% high at sun zenith 45 (0.3% at 10 and 2% at 75). The
+// density tables' mu axis is the view zenith angle (MU_AXIS_VIEW_ZENITH).
+vec4 GetDensityTextureUvwz(ivec4 size, float r, float mu, float mu_s, float nu,
                            bool ray_r_mu_intersects_ground) {
-  vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, mu_axis, r, mu, mu_s, nu,
+  vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, MU_AXIS_VIEW_ZENITH, r, mu, mu_s, nu,
                                                    ray_r_mu_intersects_ground);
   uvwz.y = GetMuSTextureCoordLinearInDaylight(mu_s, size.z);
   return uvwz;
@@ -232,8 +233,7 @@ vec3 GetScatteringClampedNu(sampler3D scattering_texture, ivec4 size, int mu_axi
 // mu_s in the Earth's shadow if asked (GetDensityBlended).
 vec3 GetDensityOfOrder(sampler3D density_texture, ivec4 size, bool exponential_in_shadow, float r,
                        float mu, float mu_s, float nu, bool ray_r_mu_intersects_ground) {
-  vec4 uvwz = GetDensityTextureUvwz(size, MU_AXIS_VIEW_ZENITH, r, mu, mu_s, nu,
-                                    ray_r_mu_intersects_ground);
+  vec4 uvwz = GetDensityTextureUvwz(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
   return GetTableBlended(density_texture, size, exponential_in_shadow,
                          GetNominalNuBlend(size, uvwz), uvwz.yzw);
 }
@@ -271,8 +271,7 @@ vec3 GetScatteringExponentialInR(sampler3D scattering_texture, ivec4 size, float
 vec3 GetMultipleScatteringDensity(sampler3D multiple_density_texture, float r, float mu,
                                   float mu_s, float nu, bool ray_r_mu_intersects_ground) {
   ivec4 size = atmosphere.multiple_density_size;
-  vec4 uvwz = GetDensityTextureUvwz(size, MU_AXIS_VIEW_ZENITH, r, mu, mu_s, nu,
-                                    ray_r_mu_intersects_ground);
+  vec4 uvwz = GetDensityTextureUvwz(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
   return GetScatteringBlendedExponentialInR(multiple_density_texture, size, true,
                                             GetNominalNuBlend(size, uvwz), uvwz);
 }
