@@ -92,6 +92,7 @@ std::map<std::string, long> CppOffsets() {
   AERIAL_MEMBER(ShadowBlock, ShadowUniforms, cascade_origin);
   AERIAL_MEMBER(ShadowBlock, ShadowUniforms, cascade_scale);
   AERIAL_MEMBER(ShadowBlock, ShadowUniforms, cascades);
+  AERIAL_MEMBER(ShadowBlock, ShadowUniforms, casters);
 #undef AERIAL_MEMBER
   // The density profiles: GLSL's DensityProfile { DensityProfileLayer layers[2]; }.
   const std::pair<const char*, size_t> profiles[] = {

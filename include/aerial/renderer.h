@@ -82,7 +82,8 @@ struct FrameInfo {
   int built = 0;     // terrain chunks built for this frame
   bool sky_view_updated = false;  // the sky-view table was remade (the camera's r or mu_s moved)
   bool froxels_updated = false;   // the froxel volume was rebuilt (the camera or the sun moved)
-  bool shadow_map_updated = false;  // the shadow map was redrawn (shadow_map.h)
+  bool shadow_map_updated = false;  // the shadow map was redrawn (shadow_map.h), in part or whole
+  int shadow_tiles_redrawn = 0;     // of its kShadowCascades tiles, one per cascade
   // The opaque pass read the sun visibility that an earlier frame of the same view looked up
   // (opaque_fragment.glsl) instead of looking it up.
   bool sun_visibility_cached = false;

@@ -29,7 +29,8 @@ float StepSunVisibility(vec3 ray, float from, float to) {
   float visible = 0.0;
   for (int i = 0; i < VISIBILITY_SAMPLES; ++i) {
     float t = (float(i) + 0.5) / float(VISIBILITY_SAMPLES);
-    visible += SunVisibilityInAir(ray * mix(from, to, t));
+    vec3 relative = ray * mix(from, to, t);
+    visible += SunVisibilityInAir(relative, frame.camera_planet_position.xyz + relative);
   }
   return visible / float(VISIBILITY_SAMPLES);
 }

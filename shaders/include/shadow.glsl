@@ -8,7 +8,7 @@
 //   #define SHADOW_BINDING 8
 //   #include "shadow.glsl"
 //   float v = SunVisibility(relative_position, normal);  // on a surface
-//   float a = SunVisibilityInAir(relative_position);     // a point in the air
+//   float a = SunVisibilityInAir(relative_position, planet_position);  // a point in the air
 // Positions are camera-relative world vectors, as everywhere in the frame's shaders (frame.glsl).
 #ifndef AERIAL_SHADOW_GLSL
 #define AERIAL_SHADOW_GLSL
@@ -36,6 +36,7 @@ layout(std140, set = 0, binding = SHADOW_BINDING) uniform ShadowBlock {
   vec4 cascade_origin[kShadowCascades];    // xy: the tile's centre; w: the light coordinate of depth 0
   vec4 cascade_scale[kShadowCascades];     // x: tile units per m; y: depth per m; z: texel (m)
   ivec4 cascades;  // x: cascades in use (0: shadows off)
+  vec4 casters;    // x: the largest distance of any caster from the planet's centre (m)
 } shadow;
 layout(set = 0, binding = SHADOW_BINDING + 1) uniform sampler2DShadow shadow_map;
 
@@ -89,10 +90,19 @@ float SunVisibilityOffset(vec3 relative_position, vec3 light_direction) {
   return texture(shadow_map, vec3(atlas, p.z));
 }
 
-// The sun's visibility in [0, 1] at a point in the air (the froxels' ray march): beyond the last
-// cascade (100 km of view depth) or with shadows off, 1.
-float SunVisibilityInAir(vec3 relative_position) {
-  if (kSunShadows == 0) return 1.0;
+// Whether a point, given relative to the planet's centre, is farther from it than every caster
+// with the sun above its horizon: along the ray toward the sun the distance to the centre only
+// grows there (r(t)^2 = r^2 + 2 t r mu_s + t^2), so no caster can lie on it.
+bool AboveEveryCaster(vec3 planet_position) {
+  return dot(planet_position, planet_position) > shadow.casters.x * shadow.casters.x &&
+         dot(planet_position, shadow.light_axes[2].xyz) >= 0.0;
+}
+
+// The sun's visibility in [0, 1] at a point in the air (the froxels' ray march), given relative
+// to the camera and to the planet's centre: 1 beyond the last cascade (100 km of view depth),
+// above every caster, or with shadows off; those three read no shadow map.
+float SunVisibilityInAir(vec3 relative_position, vec3 planet_position) {
+  if (kSunShadows == 0 || AboveEveryCaster(planet_position)) return 1.0;
   return SunVisibilityOffset(relative_position, vec3(0.0, 0.0, 1.0));
 }
 

@@ -29,7 +29,10 @@ struct alignas(16) ShadowUniforms {
   // z the texel's world size (m); w unused.
   std::array<std::array<float, 4>, kShadowCascades> cascade_scale;
   std::array<int, 4> cascades;  // x: cascades in use (0: no shadows)
+  // x: the largest distance of any caster from the planet's centre (m); yzw unused. A point
+  // farther out with the sun above its horizon sees the sun past every caster.
+  std::array<float, 4> casters;
 };
-static_assert(sizeof(ShadowUniforms) == (3 + 2 + 2 * kShadowCascades + 1) * 16);
+static_assert(sizeof(ShadowUniforms) == (3 + 2 + 2 * kShadowCascades + 2) * 16);
 
 }  // namespace aerial

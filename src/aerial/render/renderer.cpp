@@ -142,14 +142,20 @@ std::vector<Mesh> ReferenceTerrain(const Scene& scene, const RenderOptions& opti
 }
 
 // Everything that casts a shadow, around the scene's origin: the terrain (to kTerrainRadiusM,
-// with mountains up to 3.5 km and the sphere's 0.8 km drop at its edge well inside 10 km more)
-// and the opaque meshes.
-CasterBounds SceneCasterBounds(const Scene& scene) {
-  double radius = scene.terrain ? kTerrainRadiusM + 10e3 : 0.0;
+// with mountains up to kTerrainMaxHeightM and the sphere's 0.8 km drop at its edge well inside
+// 10 km more) and the opaque meshes; and the casters' top, as a distance from the planet's centre
+// (0, 0, -R).
+CasterBounds SceneCasterBounds(const Scene& scene, double R) {
+  CasterBounds bounds{.center = glm::dvec3(0.0), .radius_m = scene.terrain ? kTerrainRadiusM + 10e3 : 0.0,
+                      .top_radius_m = R + (scene.terrain ? kTerrainMaxHeightM : 0.0)};
+  const glm::dvec3 planet_center(0.0, 0.0, -R);
   for (const Mesh& mesh : scene.meshes)
     if (!mesh.transparent)
-      for (const Vertex& v : mesh.vertices) radius = std::max(radius, double(glm::length(v.position)));
-  return {glm::dvec3(0.0), radius};
+      for (const Vertex& v : mesh.vertices) {
+        bounds.radius_m = std::max(bounds.radius_m, double(glm::length(v.position)));
+        bounds.top_radius_m = std::max(bounds.top_radius_m, glm::length(glm::dvec3(v.position) - planet_center));
+      }
+  return bounds;
 }
 
 std::unique_ptr<TerrainChunkCache> TerrainCache(const vk::Context& context, const Scene& scene,
@@ -207,7 +213,7 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       sky_rayleigh_correction_(tables.context(), SkyViewLatticeImage()),
       sky_mie_correction_(tables.context(), SkyViewLatticeImage()),
       shadow_map_(tables.context(), options.shadows),
-      casters_(SceneCasterBounds(scene)),
+      casters_(SceneCasterBounds(scene, tables.atmosphere().bottom_radius_m)),
       sky_view_correction_(tables.context(), "frame/sky_view_correction.comp", SkyViewCorrectionSlots(),
                            sizeof(kSkyViewSize)),
       sky_view_(tables.context(), "frame/sky_view.comp", SkyViewSlots(), sizeof(kSkyViewSize)),
@@ -319,35 +325,58 @@ void Renderer::RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& fra
                      kSkyViewSize.data());
 }
 
-// The cascades are fitted to every frame's camera (cheap), but the shadow map is redrawn only when
-// what it shows changed: a cascade's projection (the sun moved, or the camera moved by more than
-// the snapping lets pass: shadow_cascades.h) or the terrain chunks it draws (the camera's level
-// of detail changed, or chunks deferred for the build budget arrived). The scene's meshes are
-// fixed for the renderer's life.
+// A tile draws the terrain coarsened to this fraction of its texel (shadow_terrain.h,
+// CoarsenCasters): the casters then lie within half a texel of the receivers, inside the lookup's
+// normal offset (1.5 texels, shadow.glsl) less what a 45-degree slope needs of it (1 texel).
+constexpr double kCasterToleranceTexels = 0.25;
+
+// The cascades are fitted to every frame's camera (cheap), keeping the windows the shadow map holds
+// while their slices fit (shadow_cascades.h), and a tile of the shadow map is redrawn only when
+// what it shows changed: its window, the sun, or its terrain casters as its texels resolve them
+// (the camera's level of detail changed, or chunks deferred for the build budget arrived). The
+// scene's meshes are fixed for the renderer's life.
 void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene) {
   glm::dvec3 sun = scene.sun.Direction();
-  shadow_cascades_ = FitShadowCascades({.camera = scene.camera,
-                                        .aspect = double(options_.render_width()) / options_.render_height(),
-                                        .sun = sun,
-                                        .tile_texels = kShadowTileTexels,
-                                        .casters = casters_});
+  const CascadeFitInput fit{.camera = scene.camera,
+                            .aspect = double(options_.render_width()) / options_.render_height(),
+                            .sun = sun,
+                            .tile_texels = kShadowTileTexels,
+                            .casters = casters_};
+  HeldCascades held;
+  if (shadow_key_)
+    for (int i = 0; i < kShadowCascades; ++i) held[i] = shadow_key_->cascades[i];
+  shadow_cascades_ = FitShadowCascades(fit, held);
   if (!options_.shadows) return;
-  ShadowKey key;
-  for (int i = 0; i < kShadowCascades; ++i) key.clip_from_world[i] = shadow_cascades_[i].clip_from_world;
+  auto window_moved = [&](int i) {
+    return !shadow_key_ || shadow_key_->cascades[i].clip_from_world != shadow_cascades_[i].clip_from_world;
+  };
+  ShadowTerrain chunks;
   if (terrain_ && options_.passes.terrain) {
     if (still_view_ && shadow_selection_whole_ && shadow_key_) {
-      key.chunks = shadow_key_->chunks;
+      chunks = shadow_key_->selected;
     } else {
       int deferred = 0;
-      key.chunks = SelectShadowTerrain(FrameLodView(scene), shadow_cascades_, MakeLightBasis(sun), *terrain_, deferred);
+      chunks = SelectShadowTerrain(FrameLodView(scene), shadow_cascades_, MakeLightBasis(sun), *terrain_, deferred);
       shadow_selection_whole_ = deferred == 0;
     }
   }
-  if (shadow_key_ && shadow_key_->clip_from_world == key.clip_from_world && shadow_key_->chunks == key.chunks)
-    return;
-  shadow_map_.Record(cmd, shadow_cascades_, scene.camera.position, geometry_, terrain_.get(), key.chunks);
-  vk::FullBarrier(cmd);  // the froxel pass and the surfaces read it
+  ShadowKey key = shadow_key_.value_or(ShadowKey{});
+  std::array<bool, kShadowCascades> redraw{};
+  for (int i = 0; i < kShadowCascades; ++i) {
+    std::vector<terrain::SelectedChunk> casters;
+    if (terrain_) casters = CoarsenCasters(chunks[i], kCasterToleranceTexels * shadow_cascades_[i].texel_m, *terrain_);
+    redraw[i] = window_moved(i) || casters != key.casters[i];
+    key.cascades[i] = shadow_cascades_[i];
+    if (!redraw[i]) continue;
+    key.casters[i] = std::move(casters);
+    ++frame_info_.shadow_tiles_redrawn;
+  }
+  key.selected = std::move(chunks);
   shadow_key_ = std::move(key);
+  if (frame_info_.shadow_tiles_redrawn == 0) return;
+  shadow_map_.Record(cmd, shadow_cascades_, redraw, scene.camera.position, geometry_, terrain_.get(),
+                     shadow_key_->casters);
+  vk::FullBarrier(cmd);  // the froxel pass and the surfaces read it
   frame_info_.shadow_map_updated = true;
 }
 
@@ -438,7 +467,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   RecordShadowMap(cmd, scene);
   timer.End(cmd);
   ShadowUniforms shadow =
-      MakeShadowUniforms(shadow_cascades_, scene.sun.Direction(), scene.camera, options_.shadows);
+      MakeShadowUniforms(shadow_cascades_, scene.sun.Direction(), scene.camera, casters_, options_.shadows);
   shadow_buffers_[slot].Write(std::as_bytes(std::span(&shadow, 1)));
   if (options_.mode == AerialMode::kFroxel) {
     bool sky_view_stale = SkyViewStale(complete);

@@ -121,10 +121,11 @@ class Renderer {
   std::vector<vk::Buffer> shadow_buffers_;
   CasterBounds casters_;
   ShadowCascades shadow_cascades_{};  // of the last frame
-  // What the shadow map shows: the cascades' projections and the terrain chunks drawn in them.
+  // What the shadow map's tiles show: the cascades' windows and the terrain chunks drawn in them
+  // (CoarsenCasters); and the last selection they were coarsened from.
   struct ShadowKey {
-    std::array<glm::dmat4, kShadowCascades> clip_from_world;
-    ShadowTerrain chunks;
+    ShadowCascades cascades;
+    ShadowTerrain casters, selected;
   };
   std::optional<ShadowKey> shadow_key_;
   // The view did not move since the last frame, whose shadow terrain selection lacked no chunk:

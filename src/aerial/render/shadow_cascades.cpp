@@ -44,27 +44,71 @@ double ShadowSplitM(const Camera& camera, int i) {
   return kFirstShadowSplitM * std::pow(kShadowFarM / kFirstShadowSplitM, double(i - 1) / (kShadowCascades - 1));
 }
 
-ShadowCascades FitShadowCascades(const CascadeFitInput& in) {
+namespace {
+
+// The bounding rectangle, in light coordinates across, of the slice [n, f] of view depth.
+struct Rectangle {
+  glm::dvec2 min, max;
+  bool Holds(const Rectangle& r) const {
+    return glm::all(glm::lessThanEqual(min, r.min)) && glm::all(glm::lessThanEqual(r.max, max));
+  }
+};
+Rectangle SliceFootprint(const Camera& camera, double n, double f, double tan_x, double tan_y, const LightBasis& b) {
+  Rectangle r{glm::dvec2(INFINITY), glm::dvec2(-INFINITY)};
+  for (double depth : {n, f})
+    for (double sx : {-1.0, 1.0})
+      for (double sy : {-1.0, 1.0}) {
+        glm::dvec3 p =
+            camera.position + depth * (Forward(camera) + sx * tan_x * Right(camera) + sy * tan_y * Up(camera));
+        glm::dvec2 light(glm::dot(p, b.right), glm::dot(p, b.up));
+        r.min = glm::min(r.min, light);
+        r.max = glm::max(r.max, light);
+      }
+  return r;
+}
+
+}  // namespace
+
+ShadowCascades FitShadowCascades(const CascadeFitInput& in, const HeldCascades& held) {
   const LightBasis b = MakeLightBasis(in.sun);
   const glm::dvec3 forward = Forward(in.camera);
-  const double tan_y = std::tan(in.camera.vertical_fov_deg * std::numbers::pi / 360.0);
+  const double tan_y = std::tan(in.camera.vertical_fov_deg * std::numbers::pi / 360.0), tan_x = tan_y * in.aspect;
   const double casters_top = glm::dot(in.casters.center, b.toward_sun) + in.casters.radius_m;
   ShadowCascades cascades;
   for (int i = 0; i < kShadowCascades; ++i) {
-    ShadowCascade& c = cascades[i];
-    c.near_m = ShadowSplitM(in.camera, i);
-    c.far_m = ShadowSplitM(in.camera, i + 1);
-    SliceSphere sphere = BoundSlice(c.near_m, c.far_m, tan_y * in.aspect, tan_y);
-    // The tile is widened by kShadowMarginTexels on every side, and half a texel more for the
-    // snapping below, so that a lookup anywhere in the slice stays inside the tile with its filter
-    // and offset.
-    c.radius_m = sphere.radius * in.tile_texels / (in.tile_texels - 2.0 * (kShadowMarginTexels + 0.5));
-    c.texel_m = 2.0 * c.radius_m / in.tile_texels;
+    const double near_m = ShadowSplitM(in.camera, i), far_m = ShadowSplitM(in.camera, i + 1);
+    SliceSphere sphere = BoundSlice(near_m, far_m, tan_x, tan_y);
     glm::dvec3 center = in.camera.position + forward * sphere.center_depth;
     glm::dvec3 light(glm::dot(center, b.right), glm::dot(center, b.up), glm::dot(center, b.toward_sun));
+    const Rectangle footprint = SliceFootprint(in.camera, near_m, far_m, tan_x, tan_y, b);
+    const double slack_m = kShadowWindowSlack[i] * sphere.radius;
+    if (const std::optional<ShadowCascade>& h = held[i];
+        h && h->toward_sun == b.toward_sun && h->slice_radius_m == sphere.radius &&
+        h->casters_top_m == casters_top && h->near_m == near_m && h->far_m == far_m &&
+        Rectangle{h->casters_min, h->casters_max}.Holds(footprint)) {
+      glm::dvec3 offset = glm::abs(light - h->center_light);
+      double drift = std::max({offset.x, offset.y, offset.z}) / slack_m;
+      if (drift <= 1.0) {
+        cascades[i] = *h;
+        cascades[i].drift = drift;
+        continue;
+      }
+    }
+    ShadowCascade& c = cascades[i];
+    c.near_m = near_m;
+    c.far_m = far_m;
+    c.toward_sun = b.toward_sun;
+    c.slice_radius_m = sphere.radius;
+    c.casters_top_m = casters_top;
+    // The window holds the sphere widened by the slack. The tile is widened by
+    // kShadowMarginTexels on every side, and half a texel more for the snapping below, so that a
+    // lookup anywhere in the slice stays inside the tile with its filter and offset.
+    const double window_m = sphere.radius + slack_m;
+    c.radius_m = window_m * in.tile_texels / (in.tile_texels - 2.0 * (kShadowMarginTexels + 0.5));
+    c.texel_m = 2.0 * c.radius_m / in.tile_texels;
     c.center_light = glm::round(light / c.texel_m) * c.texel_m;
-    c.depth_min_m = c.center_light.z - c.radius_m;
-    c.depth_max_m = std::max(c.center_light.z + c.radius_m, casters_top);
+    c.depth_min_m = c.center_light.z - window_m;
+    c.depth_max_m = std::max(c.center_light.z + window_m, casters_top);
     // Rows: x = (right . p - centre.x) / radius, y likewise, depth = (sun . p - min) / (max - min).
     double depth_range = c.depth_max_m - c.depth_min_m;
     glm::dmat4 m(0.0);
@@ -76,8 +120,11 @@ ShadowCascades FitShadowCascades(const CascadeFitInput& in) {
     m[3] = glm::dvec4(-c.center_light.x / c.radius_m, -c.center_light.y / c.radius_m,
                       -c.depth_min_m / depth_range, 1.0);
     c.clip_from_world = m;
+    // The casters' rectangle: the footprint widened by the slack, within the window's square.
     glm::dvec2 xy(c.center_light);
-    c.planes = BoxPlanes(b, xy - c.radius_m, xy + c.radius_m, c.depth_min_m);
+    c.casters_min = glm::max(footprint.min - slack_m, xy - c.radius_m);
+    c.casters_max = glm::min(footprint.max + slack_m, xy + c.radius_m);
+    c.planes = BoxPlanes(b, c.casters_min, c.casters_max, c.depth_min_m);
   }
   return cascades;
 }

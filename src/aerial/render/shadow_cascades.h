@@ -13,8 +13,16 @@
 // does: the shadow's edges do not crawl or shimmer as it moves and turns, and a small move leaves
 // the fit, and so the cached shadow map (shadow_map.h), unchanged.
 //
+// Each cascade's window is also wider than its slice by kShadowWindowSlack, and a window the
+// shadow map already holds is kept for as long as its slice still fits inside it (the "held"
+// cascades of FitShadowCascades): a camera that moves or turns by less than the slack keeps every
+// tile of the shadow map, and a tile is redrawn only when its own slice leaves it (the pattern of
+// "scrolling" or "cached" cascades in game engines, e.g. Unreal's virtual shadow map page cache,
+// here one window per cascade). Each kept window keeps its texel grid: no shimmer either way.
+//
 // Pure CPU math in double precision, in the scene frame (scene.h); shadow_cascades_test checks it.
 #include <array>
+#include <optional>
 
 #include <glm/glm.hpp>
 
@@ -40,7 +48,18 @@ inline constexpr double kShadowFarM = 100e3;
 struct CasterBounds {
   glm::dvec3 center{0.0};
   double radius_m = 0.0;
+  // The largest distance of a caster from the planet's centre: the air above it is in the sun
+  // wherever the sun is above the local horizon (shadow.glsl, SunVisibilityInAir).
+  double top_radius_m = 0.0;
 };
+
+// How much wider than its slice's bounding sphere a cascade's window is, as a fraction of the
+// sphere's radius: the slice may drift this far (along any light axis) before the window must
+// move. 0.25 coarsens the texels by 25% (the first cascade's from 11 to 14 cm) and keeps the
+// first cascade's window through 14 m of camera travel. The last cascade's window is over 200 km
+// wide and the terrain it draws grows with its area, so it gets 0.1: 9.5 km of travel, or about 4
+// degrees of turn, at 10% coarser texels.
+inline constexpr std::array<double, kShadowCascades> kShadowWindowSlack = {0.25, 0.25, 0.25, 0.1};
 
 struct CascadeFitInput {
   Camera camera;
@@ -69,18 +88,35 @@ struct ShadowCascade {
   // Scene frame -> clip: x and y in [-1, 1] over the depth map, depth in [0, 1], 1 toward the sun
   // (reversed, as the camera's depth: the nearest caster has the largest value).
   glm::dmat4 clip_from_world{1.0};
-  // The box the depth map sees, as LodView planes (terrain/lod_selection.h): a point p is inside
+  // Where the tile's casters are drawn, in light coordinates across (x, y): the slice's own
+  // footprint (its corners' bounding rectangle), widened by the slack and held with the window.
+  // Only a caster on a sun ray through the slice shades it, so the tile needs none outside: for
+  // the last cascade this is about a third of the window's square.
+  glm::dvec2 casters_min{0.0}, casters_max{0.0};
+  // The box of those casters, as LodView planes (terrain/lod_selection.h): a point p is inside
   // when dot(plane.xyz, p) + plane.w >= 0 for the four sides and the far side (away from the sun).
   std::array<glm::dvec4, 5> planes{};
+  // What the window was fitted for: the sun, its slice's bounding sphere radius and the casters'
+  // top along the sun; a held window is kept only for the same three.
+  glm::dvec3 toward_sun{0.0};
+  double slice_radius_m = 0.0;
+  double casters_top_m = 0.0;
+  // How far the slice has drifted inside its window, as a fraction of the slack: 0 just after a
+  // fit, 1 at the window's edge (beyond it the window is fitted anew).
+  double drift = 0.0;
 };
 
 using ShadowCascades = std::array<ShadowCascade, kShadowCascades>;
+// The cascades a shadow map holds, per cascade (nullopt: none, or one to fit anew).
+using HeldCascades = std::array<std::optional<ShadowCascade>, kShadowCascades>;
 
 // The view depth at which slice i begins (i = 0: the camera's near plane; i = kShadowCascades:
 // kShadowFarM).
 double ShadowSplitM(const Camera& camera, int i);
 
-ShadowCascades FitShadowCascades(const CascadeFitInput& input);
+// The cascades for the input's view: each held one where its slice still fits inside its window
+// and its casters' rectangle (its drift updated), a new window around the slice elsewhere.
+ShadowCascades FitShadowCascades(const CascadeFitInput& input, const HeldCascades& held = {});
 
 // The planes of the box around all the cascades (extruded toward the sun like each of them):
 // what the shadow pass must draw.

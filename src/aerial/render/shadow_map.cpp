@@ -44,14 +44,19 @@ ShadowMap::ShadowMap(const vk::Context& context, bool enabled)
 uint64_t ShadowMap::MemoryBytes(bool enabled) { return uint64_t(AtlasTexels(enabled)) * AtlasTexels(enabled) * 4; }
 
 void ShadowMap::Record(const vk::CommandBuffer& cmd, const ShadowCascades& cascades,
-                       const glm::dvec3& camera_position, const SceneGeometry& geometry,
-                       const TerrainChunkCache* terrain, const ShadowTerrain& chunks) const {
-  vk::Rendering rendering(cmd, {.depth = &atlas_, .clear_depth = 0.0f});
+                       const std::array<bool, kShadowCascades>& redraw, const glm::dvec3& camera_position,
+                       const SceneGeometry& geometry, const TerrainChunkCache* terrain,
+                       const ShadowTerrain& chunks) const {
+  // One scope for all tiles (each scope costs a pass over the whole atlas on a CPU rasterizer),
+  // loading the atlas and clearing the redrawn tiles alone.
+  vk::Rendering rendering(cmd, {.depth = &atlas_});
   const ::vk::Extent2D tile{uint32_t(kShadowTileTexels), uint32_t(kShadowTileTexels)};
   for (int i = 0; i < kShadowCascades; ++i) {
-    vk::SetViewport(cmd, tile,
-                    {int32_t(i % kShadowAtlasTilesPerRow) * kShadowTileTexels,
-                     int32_t(i / kShadowAtlasTilesPerRow) * kShadowTileTexels});
+    if (!redraw[i]) continue;
+    ::vk::Offset2D corner{int32_t(i % kShadowAtlasTilesPerRow) * kShadowTileTexels,
+                          int32_t(i / kShadowAtlasTilesPerRow) * kShadowTileTexels};
+    vk::ClearDepth(cmd, {corner, tile}, 0.0f);
+    vk::SetViewport(cmd, tile, corner);
     CascadeConstants constants{
         ToColumnMajorFloats(ClipFromRelative(cascades[i], camera_position)),
         {float(camera_position.x), float(camera_position.y), float(camera_position.z), 0.0f}};

@@ -7,8 +7,10 @@
 // (shadow_uniforms.h).
 //
 // The renderer records it into the frame's command buffer before the froxels and the raster
-// pass, and only when what it shows changed (Renderer's shadow key): the sun, a cascade's fit or
-// the chunks of terrain it draws. A still camera redraws nothing.
+// pass, tile by tile, and only the tiles whose content changed (Renderer's shadow key): the sun,
+// the cascade's window (shadow_cascades.h: kept while its slice fits) or the terrain it draws as
+// the tile resolves it (shadow_terrain.h, CasterKey). A still camera redraws nothing, a moving
+// one a tile now and then.
 #include <cstdint>
 
 #include "aerial/render/scene_geometry.h"
@@ -32,9 +34,10 @@ class ShadowMap {
   // The atlas' bytes (the placeholder's when not enabled).
   static uint64_t MemoryBytes(bool enabled);
 
-  // Draws every cascade's casters: the scene's opaque meshes (both faces: a mesh open to the sun
-  // still shades what is behind it) and the terrain chunks of each cascade.
-  void Record(const vk::CommandBuffer& cmd, const ShadowCascades& cascades,
+  // Clears the tile of each cascade in `redraw` and draws its casters: the scene's opaque meshes
+  // (both faces: a mesh open to the sun still shades what is behind it) and the terrain chunks of
+  // the cascade. Other tiles keep what they hold.
+  void Record(const vk::CommandBuffer& cmd, const ShadowCascades& cascades, const std::array<bool, kShadowCascades>& redraw,
               const glm::dvec3& camera_position, const SceneGeometry& geometry,
               const TerrainChunkCache* terrain, const ShadowTerrain& chunks) const;
 

@@ -1,5 +1,7 @@
 #include "aerial/render/shadow_terrain.h"
 
+#include <algorithm>
+
 namespace aerial {
 
 ShadowTerrain SelectShadowTerrain(const terrain::LodView& frame_view, const ShadowCascades& cascades,
@@ -16,6 +18,27 @@ ShadowTerrain SelectShadowTerrain(const terrain::LodView& frame_view, const Shad
       if (terrain::IntersectsFrustum(view, source.Find(chunk.id)->bounds)) drawn[i].push_back(chunk);
   }
   return drawn;
+}
+
+std::vector<terrain::SelectedChunk> CoarsenCasters(const std::vector<terrain::SelectedChunk>& chunks,
+                                                   double tolerance_m, terrain::ChunkSource& source) {
+  std::vector<terrain::ChunkId> coarse;
+  coarse.reserve(chunks.size());
+  for (const terrain::SelectedChunk& chunk : chunks) {
+    terrain::ChunkId id = chunk.id;
+    // The selection built every ancestor of a drawn chunk before the chunk itself.
+    for (const terrain::ChunkInfo* parent; id.level > 0 && (parent = source.Find(terrain::Parent(id))) &&
+                                           parent->geometric_error_m <= tolerance_m;)
+      id = terrain::Parent(id);
+    coarse.push_back(id);
+  }
+  std::sort(coarse.begin(), coarse.end());
+  coarse.erase(std::unique(coarse.begin(), coarse.end()), coarse.end());
+  std::vector<terrain::SelectedChunk> casters;
+  casters.reserve(coarse.size());
+  for (const terrain::ChunkId& id : coarse) casters.push_back({id});
+  terrain::MarkSkirts(casters);
+  return casters;
 }
 
 }  // namespace aerial

@@ -11,7 +11,7 @@ glm::dmat4 ClipFromRelative(const ShadowCascade& cascade, const glm::dvec3& came
 }
 
 ShadowUniforms MakeShadowUniforms(const ShadowCascades& cascades, const glm::dvec3& sun, const Camera& view,
-                                  bool enabled) {
+                                  const CasterBounds& casters, bool enabled) {
   const LightBasis b = MakeLightBasis(sun);
   const glm::dvec3& camera_position = view.position;
   const glm::dvec3 camera(glm::dot(camera_position, b.right), glm::dot(camera_position, b.up),
@@ -30,6 +30,7 @@ ShadowUniforms MakeShadowUniforms(const ShadowCascades& cascades, const glm::dve
                           0.0f};
   }
   u.cascades = {enabled ? kShadowCascades : 0, 0, 0, 0};
+  u.casters = {float(casters.top_radius_m), 0.0f, 0.0f, 0.0f};
   return u;
 }
 

@@ -8,10 +8,10 @@
 
 namespace aerial {
 
-// The block for the cascades seen from the camera; with enabled = false, cascades.x = 0 (every
-// visibility is 1).
+// The block for the cascades seen from the camera and the casters' top; with enabled = false,
+// cascades.x = 0 (every visibility is 1).
 ShadowUniforms MakeShadowUniforms(const ShadowCascades& cascades, const glm::dvec3& sun, const Camera& camera,
-                                  bool enabled);
+                                  const CasterBounds& casters, bool enabled);
 
 // clip_from_world for camera-relative positions: the cascade's projection after the camera's
 // translation, composed in double precision so that float keeps millimeters near the camera.

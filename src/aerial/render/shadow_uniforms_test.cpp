@@ -17,7 +17,7 @@ TEST(ShadowUniforms, LookupMatchesTheDepthPassProjection) {
   in.sun = DirectionFromZenithAzimuth(75.0, 290.0);
   in.casters = {glm::dvec3(0.0), 110e3};
   ShadowCascades cascades = FitShadowCascades(in);
-  ShadowUniforms u = MakeShadowUniforms(cascades, in.sun, in.camera, true);
+  ShadowUniforms u = MakeShadowUniforms(cascades, in.sun, in.camera, in.casters, true);
   EXPECT_EQ(u.cascades[0], kShadowCascades);
   auto axis = [&](int a) { return glm::dvec3(u.light_axes[a][0], u.light_axes[a][1], u.light_axes[a][2]); };
   for (int i = 0; i < kShadowCascades; ++i) {
@@ -38,7 +38,7 @@ TEST(ShadowUniforms, LookupMatchesTheDepthPassProjection) {
     EXPECT_NEAR(glm::dot(glm::dvec3(u.view_forward[0], u.view_forward[1], u.view_forward[2]), relative),
                 0.5 * (c.near_m + c.far_m), 8.0) << "the view depth that picks the cascade";
   }
-  EXPECT_EQ(MakeShadowUniforms(cascades, in.sun, in.camera, false).cascades[0], 0);
+  EXPECT_EQ(MakeShadowUniforms(cascades, in.sun, in.camera, in.casters, false).cascades[0], 0);
 }
 
 }  // namespace

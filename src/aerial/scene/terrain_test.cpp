@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -47,6 +48,18 @@ TEST(TerrainSurface, SeaLevelPointInvertsSurfacePoint) {
     EXPECT_NEAR(HeightAboveTerrainM(p, kR), 1234.0 - TerrainHeightM(x, y), 1e-6);
     EXPECT_NEAR(HeightAboveTerrainM(TerrainPoint(x, y, kR), kR), 0.0, 1e-6);
   }
+}
+
+// kTerrainMaxHeightM bounds every height (the shadows in the air skip the shadow map above it)
+// and is not loose: the highest of the heights sampled every 200 m (3137 m) lies within 200 m
+// below it.
+TEST(TerrainHeight, MaxHeightBoundsThePeaksClosely) {
+  double highest = 0.0;
+  for (double x = -kTerrainRadiusM; x <= kTerrainRadiusM; x += 200.0)
+    for (double y = -kTerrainRadiusM; y <= kTerrainRadiusM; y += 200.0)
+      if (x * x + y * y <= kTerrainRadiusM * kTerrainRadiusM) highest = std::max(highest, TerrainHeightM(x, y));
+  EXPECT_LE(highest, kTerrainMaxHeightM);
+  EXPECT_GT(highest, kTerrainMaxHeightM - 200.0);
 }
 
 }  // namespace

@@ -12,4 +12,9 @@ std::array<ChunkId, 4> Children(const ChunkId& id) {
   return {ChunkId{l, x, y}, ChunkId{l, x + 1, y}, ChunkId{l, x, y + 1}, ChunkId{l, x + 1, y + 1}};
 }
 
+ChunkId Parent(const ChunkId& id) {
+  if (id.level == 0) return id;
+  return {id.level - 1, id.x / 2, id.y / 2};
+}
+
 }  // namespace aerial::terrain

@@ -32,5 +32,7 @@ struct Footprint {
 Footprint FootprintOf(const ChunkId& id);
 // The four chunks of the next level that tile this one.
 std::array<ChunkId, 4> Children(const ChunkId& id);
+// The chunk of the level above that holds this one (the root's parent is the root).
+ChunkId Parent(const ChunkId& id);
 
 }  // namespace aerial::terrain

@@ -77,8 +77,8 @@ void LeaveOutHidden(const LodView& view, ChunkSource& source, Selection& selecti
   selection.chunks = std::move(drawn);
 }
 
-// A side needs no skirt where the chunk across it is drawn at the same level: both share the
-// side's vertices exactly.
+}  // namespace
+
 void MarkSkirts(std::vector<SelectedChunk>& chunks) {
   std::set<ChunkId> drawn;
   for (const SelectedChunk& chunk : chunks) drawn.insert(chunk.id);
@@ -94,8 +94,6 @@ void MarkSkirts(std::vector<SelectedChunk>& chunks) {
       if (!drawn.count(neighbour)) chunk.skirts |= side;
   }
 }
-
-}  // namespace
 
 LodView MakeLodView(const Camera& camera, double aspect, int height_px, double max_error_px,
                     double planet_radius_m, int min_height_px) {

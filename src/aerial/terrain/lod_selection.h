@@ -82,4 +82,8 @@ struct Selection {
 // source; the root chunk first.
 Selection SelectChunks(const LodView& view, ChunkSource& source);
 
+// Sets each chunk's skirts: a side needs none where the chunk across it is in the list at the same
+// level (both share the side's vertices exactly), and one everywhere else.
+void MarkSkirts(std::vector<SelectedChunk>& chunks);
+
 }  // namespace aerial::terrain

@@ -126,6 +126,12 @@ Rendering::Rendering(const CommandBuffer& cmd, const RenderTargets& targets) : c
 
 Rendering::~Rendering() { cmd_.endRendering(); }
 
+void ClearDepth(const CommandBuffer& cmd, const ::vk::Rect2D& rect, float depth) {
+  cmd.clearAttachments(::vk::ClearAttachment{.aspectMask = ::vk::ImageAspectFlagBits::eDepth,
+                                             .clearValue = {.depthStencil = {depth, 0}}},
+                       ::vk::ClearRect{.rect = rect, .baseArrayLayer = 0, .layerCount = 1});
+}
+
 void SetViewport(const CommandBuffer& cmd, ::vk::Extent2D extent, ::vk::Offset2D offset) {
   cmd.setViewport(0, ::vk::Viewport{.x = float(offset.x), .y = float(offset.y), .width = float(extent.width),
                                     .height = float(extent.height), .minDepth = 0.0f, .maxDepth = 1.0f});

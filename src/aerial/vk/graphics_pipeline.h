@@ -82,6 +82,8 @@ class Rendering {
 
 // The viewport and scissor of a rectangle (by default the whole extent from the origin).
 void SetViewport(const CommandBuffer& cmd, ::vk::Extent2D extent, ::vk::Offset2D offset = {});
+// Inside a Rendering scope: sets the depth target to `depth` within the rectangle alone.
+void ClearDepth(const CommandBuffer& cmd, const ::vk::Rect2D& rect, float depth);
 void SetCullBackFaces(const CommandBuffer& cmd, bool cull_back);
 void BindMesh(const CommandBuffer& cmd, const Buffer& vertices, const Buffer& indices);
 void DrawIndexed(const CommandBuffer& cmd, uint32_t index_count, uint32_t first_index = 0,
