@@ -334,8 +334,9 @@ constexpr double kCasterToleranceTexels = 0.25;
 // while their slices fit (shadow_cascades.h), and a tile of the shadow map is redrawn only when
 // what it shows changed: its window, the sun, or its terrain casters as its texels resolve them
 // (the camera's level of detail changed, or chunks deferred for the build budget arrived). The
-// scene's meshes are fixed for the renderer's life.
-void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene) {
+// scene's meshes are fixed for the renderer's life. An exact frame (Record's `complete`) fits its
+// windows afresh, as a new renderer would.
+void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene, bool exact) {
   glm::dvec3 sun = scene.sun.Direction();
   const CascadeFitInput fit{.camera = scene.camera,
                             .aspect = double(options_.render_width()) / options_.render_height(),
@@ -343,7 +344,7 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene)
                             .tile_texels = kShadowTileTexels,
                             .casters = casters_};
   HeldCascades held;
-  if (shadow_key_)
+  if (shadow_key_ && !exact)
     for (int i = 0; i < kShadowCascades; ++i) held[i] = shadow_key_->cascades[i];
   shadow_cascades_ = FitShadowCascades(fit, held);
   if (!options_.shadows) return;
@@ -464,7 +465,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   vk::FullBarrier(cmd);
   timer.Reset(cmd);
   timer.Begin(cmd, "shadow map");
-  RecordShadowMap(cmd, scene);
+  RecordShadowMap(cmd, scene, complete);
   timer.End(cmd);
   ShadowUniforms shadow =
       MakeShadowUniforms(shadow_cascades_, scene.sun.Direction(), scene.camera, casters_, options_.shadows);

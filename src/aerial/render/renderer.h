@@ -78,7 +78,7 @@ class Renderer {
  private:
   terrain::LodView FrameLodView(const Scene& scene) const;
   void SelectTerrain(const Scene& scene, bool complete);
-  void RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene);
+  void RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene, bool exact);
   // Whether this frame remakes the sky-view table; if so, its key becomes this frame's.
   bool SkyViewStale(bool exact);
   void RecordSkyViewCorrection(const vk::CommandBuffer& cmd, const vk::Buffer& frame);
