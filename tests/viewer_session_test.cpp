@@ -108,5 +108,34 @@ TEST(ViewerSession, ResizesSwitchesAndRecomputesWithoutValidationMessages) {
   EXPECT_EQ(Device::ValidationMessageCount(), messages_before);
 }
 
+// A still view is drawn until its frame left nothing for later (FrameInfo::settled), then only
+// presented again: its frames time the display pass and no pass of the renderer. A change of the
+// view (here the terrain's error bound, applied without a new renderer) draws again.
+TEST(ViewerSession, AStillViewIsPresentedWithoutRedrawing) {
+  XvfbDisplay x;
+  ASSERT_FALSE(x.display().empty()) << x.error();
+  const int messages_before = Device::ValidationMessageCount();
+  {
+    viewer::ViewerOptions options;
+    options.atmosphere = AtmosphereParameters::Earth();
+    options.tables = {{LutVariant::k4D, PrecomputeOptions::Small(LutVariant::k4D)}};
+    options.device = {.validation = true};
+    options.render = {.width = 160, .height = 90};
+    options.scene = BuildPreset("noon", options.atmosphere.bottom_radius_m);
+    viewer::Viewer viewer(options);
+    StepFrames(viewer, kFramesUntilTimed);
+    EXPECT_TRUE(HasPass(viewer, "opaque raster")) << "the first frames draw";
+    EXPECT_LE(StepUntil(viewer, [&] { return !HasPass(viewer, "opaque raster"); }, 20), 20);
+    EXPECT_TRUE(viewer.renderer().frame_info().settled);
+    EXPECT_TRUE(HasPass(viewer, "present"));
+    StepFrames(viewer, kFramesUntilTimed);
+    EXPECT_FALSE(HasPass(viewer, "opaque raster")) << "a still view stays presented";
+    viewer.settings().terrain_error_px = 3.0f;
+    StepFrames(viewer, kFramesUntilTimed);
+    EXPECT_TRUE(HasPass(viewer, "opaque raster")) << "a changed view draws again";
+  }
+  EXPECT_EQ(Device::ValidationMessageCount(), messages_before);
+}
+
 }  // namespace
 }  // namespace aerial::testing

@@ -87,6 +87,9 @@ struct FrameInfo {
   // The opaque pass read the sun visibility that an earlier frame of the same view looked up
   // (opaque_fragment.glsl) instead of looking it up.
   bool sun_visibility_cached = false;
+  // Nothing was left for later (terrain chunks of the frame or of the shadow map deferred for the
+  // build budget): the next frame of the same camera, sun and options is this frame's image.
+  bool settled = false;
 };
 
 // What ReadSurface draws of the lighting: all of it (the sun's part shadowed as in the frame), or

@@ -51,12 +51,14 @@ struct Mesh {
 struct Camera {
   glm::dvec3 position{0, 0, 2};
   double yaw_deg = 0, pitch_deg = 0, vertical_fov_deg = 60, near_m = 0.5;
+  bool operator==(const Camera&) const = default;
 };
 
 struct Sun {
   double zenith_deg = 30, azimuth_deg = 180;
   // Unit vector toward the sun: (sin z sin a, sin z cos a, cos z) for zenith z and azimuth a.
   glm::dvec3 Direction() const;
+  bool operator==(const Sun&) const = default;
 };
 
 struct Scene {

@@ -522,6 +522,8 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
     DrawSkyAndTransparent(cmd, slot, mesh_slots);
   }
   vk::FullBarrier(cmd);
+  const bool shadowed_terrain = options_.shadows && terrain_ && options_.passes.terrain;
+  frame_info_.settled = frame_info_.deferred == 0 && (!shadowed_terrain || shadow_selection_whole_);
   ++frames_recorded_;
   last_slot_ = slot;
 }

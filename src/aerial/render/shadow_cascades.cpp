@@ -107,8 +107,8 @@ ShadowCascades FitShadowCascades(const CascadeFitInput& in, const HeldCascades& 
     c.radius_m = window_m * in.tile_texels / (in.tile_texels - 2.0 * (kShadowMarginTexels + 0.5));
     c.texel_m = 2.0 * c.radius_m / in.tile_texels;
     c.center_light = glm::round(light / c.texel_m) * c.texel_m;
-    c.depth_min_m = c.center_light.z - window_m;
-    c.depth_max_m = std::max(c.center_light.z + window_m, casters_top);
+    c.depth_min_m = c.center_light.z - c.radius_m;
+    c.depth_max_m = std::max(c.center_light.z + c.radius_m, casters_top);
     // Rows: x = (right . p - centre.x) / radius, y likewise, depth = (sun . p - min) / (max - min).
     double depth_range = c.depth_max_m - c.depth_min_m;
     glm::dmat4 m(0.0);

@@ -138,6 +138,18 @@ class Viewer::Impl {
   DisplayPasses display_;
   std::vector<std::unique_ptr<vk::GpuTimer>> timers_;  // the display passes', per slot
   FrameStats stats_;
+  // What the renderer's image shows, when the frame that drew it left nothing for later: a frame of
+  // the same view then only presents it again (the display pass and the panel), as an idle view
+  // in an editor does. A still view on a CPU rasterizer then costs its present, not a frame.
+  struct DrawnView {
+    const SceneRenderer* renderer;
+    Camera camera;
+    Sun sun;
+    double terrain_error_px;
+    bool operator==(const DrawnView&) const = default;
+  };
+  std::optional<DrawnView> settled_view_;
+  std::vector<bool> slot_used_ = std::vector<bool>(kFramesInFlight, false);
   std::string message_;
   int frames_ = 0;
   Clock::time_point last_frame_end_;
@@ -280,6 +292,7 @@ void Viewer::Impl::Act(const PanelEvents& events, const std::vector<int>& keys, 
 void Viewer::Impl::ForgetRecordedFrames() {
   ring_.WaitAll();
   for (auto& renderers : recorded_) renderers.clear();
+  settled_view_.reset();
 }
 
 // The GPU times of the frame the slot held, which has finished (CommandRing::Begin waited for it).
@@ -291,7 +304,7 @@ void Viewer::Impl::CollectFinishedFrame(uint32_t slot) {
       passes.push_back(pass);
     }
   }
-  if (passes.empty()) return;  // nothing recorded in this slot yet
+  if (!slot_used_[slot]) return;  // nothing recorded in this slot yet
   for (const PassTime& pass : timers_[slot]->Collect()) passes.push_back(pass);
   stats_.AddGpuFrame(passes);
   last_passes_ = std::move(passes);
@@ -392,9 +405,15 @@ bool Viewer::Impl::Step() {
   }
   // The last frame of a scripted run is saved: it is completed like `aerial render`'s.
   bool last = options_.frames > 0 && frames_ + 1 == options_.frames;
-  primary->Record(*cmd, options_.scene, slot, last);
-  recorded_[slot].push_back({primary, ""});
-  shown_ = primary;
+  DrawnView view{primary, options_.scene.camera, options_.scene.sun, render.terrain_error_px};
+  if (last || settled_view_ != view) {
+    primary->Record(*cmd, options_.scene, slot, last);
+    recorded_[slot].push_back({primary, ""});
+    shown_ = primary;
+    if (primary->frame_info().settled) settled_view_ = view;
+    else settled_view_.reset();
+  }
+  slot_used_[slot] = true;
   if (other) {
     other->Record(*cmd, options_.scene, slot);
     recorded_[slot].push_back({other, " (" + ToString(other->tables().options().variant) + ")"});
