@@ -41,19 +41,24 @@ bool HasPass(const viewer::Viewer& viewer, const std::string& fragment) {
   return false;
 }
 
+// A 160x90 window on the noon preset with small tables of both variants, validation on.
+viewer::ViewerOptions SmallViewerOptions() {
+  viewer::ViewerOptions options;
+  options.atmosphere = AtmosphereParameters::Earth();
+  options.tables = {{LutVariant::k4D, PrecomputeOptions::Small(LutVariant::k4D)},
+                    {LutVariant::k3D, PrecomputeOptions::Small(LutVariant::k3D)}};
+  options.device = {.validation = true};
+  options.render = {.width = 160, .height = 90};
+  options.scene = BuildPreset("noon", options.atmosphere.bottom_radius_m);
+  return options;
+}
+
 TEST(ViewerSession, ResizesSwitchesAndRecomputesWithoutValidationMessages) {
   XvfbDisplay x;
   ASSERT_FALSE(x.display().empty()) << x.error();
   const int messages_before = Device::ValidationMessageCount();
   {
-    viewer::ViewerOptions options;
-    options.atmosphere = AtmosphereParameters::Earth();
-    options.tables = {{LutVariant::k4D, PrecomputeOptions::Small(LutVariant::k4D)},
-                      {LutVariant::k3D, PrecomputeOptions::Small(LutVariant::k3D)}};
-    options.device = {.validation = true};
-    options.render = {.width = 160, .height = 90};
-    options.scene = BuildPreset("noon", options.atmosphere.bottom_radius_m);
-    viewer::Viewer viewer(options);
+    viewer::Viewer viewer(SmallViewerOptions());
     StepFrames(viewer, kFramesUntilTimed);
     EXPECT_EQ(viewer.renderer().options().width, 160);
     EXPECT_TRUE(HasPass(viewer, "present"));
@@ -116,13 +121,7 @@ TEST(ViewerSession, AStillViewIsPresentedWithoutRedrawing) {
   ASSERT_FALSE(x.display().empty()) << x.error();
   const int messages_before = Device::ValidationMessageCount();
   {
-    viewer::ViewerOptions options;
-    options.atmosphere = AtmosphereParameters::Earth();
-    options.tables = {{LutVariant::k4D, PrecomputeOptions::Small(LutVariant::k4D)}};
-    options.device = {.validation = true};
-    options.render = {.width = 160, .height = 90};
-    options.scene = BuildPreset("noon", options.atmosphere.bottom_radius_m);
-    viewer::Viewer viewer(options);
+    viewer::Viewer viewer(SmallViewerOptions());
     StepFrames(viewer, kFramesUntilTimed);
     EXPECT_TRUE(HasPass(viewer, "opaque raster")) << "the first frames draw";
     EXPECT_LE(StepUntil(viewer, [&] { return !HasPass(viewer, "opaque raster"); }, 20), 20);

@@ -1,5 +1,6 @@
 #include "aerial/render/renderer.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -348,35 +349,34 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
     for (int i = 0; i < kShadowCascades; ++i) held[i] = shadow_key_->cascades[i];
   shadow_cascades_ = FitShadowCascades(fit, held);
   if (!options_.shadows) return;
-  auto window_moved = [&](int i) {
-    return !shadow_key_ || shadow_key_->cascades[i].clip_from_world != shadow_cascades_[i].clip_from_world;
-  };
+  const bool first = !shadow_key_;
+  if (first) shadow_key_.emplace();
+  ShadowKey& key = *shadow_key_;
+  std::array<bool, kShadowCascades> moved{};
+  for (int i = 0; i < kShadowCascades; ++i)
+    moved[i] = first || key.cascades[i].clip_from_world != shadow_cascades_[i].clip_from_world;
+  // A still view whose selection lacked no chunk draws what the map holds.
+  const bool any_moved = std::find(moved.begin(), moved.end(), true) != moved.end();
+  if (still_view_ && shadow_selection_whole_ && !any_moved) return;
   ShadowTerrain chunks;
   if (terrain_ && options_.passes.terrain) {
-    if (still_view_ && shadow_selection_whole_ && shadow_key_) {
-      chunks = shadow_key_->selected;
-    } else {
-      int deferred = 0;
-      chunks = SelectShadowTerrain(FrameLodView(scene), shadow_cascades_, MakeLightBasis(sun), *terrain_, deferred);
-      shadow_selection_whole_ = deferred == 0;
-    }
+    int deferred = 0;
+    chunks = SelectShadowTerrain(FrameLodView(scene), shadow_cascades_, MakeLightBasis(sun), *terrain_, deferred);
+    shadow_selection_whole_ = deferred == 0;
   }
-  ShadowKey key = shadow_key_.value_or(ShadowKey{});
   std::array<bool, kShadowCascades> redraw{};
   for (int i = 0; i < kShadowCascades; ++i) {
     std::vector<terrain::SelectedChunk> casters;
     if (terrain_) casters = CoarsenCasters(chunks[i], kCasterToleranceTexels * shadow_cascades_[i].texel_m, *terrain_);
-    redraw[i] = window_moved(i) || casters != key.casters[i];
+    redraw[i] = moved[i] || casters != key.casters[i];
     key.cascades[i] = shadow_cascades_[i];
     if (!redraw[i]) continue;
     key.casters[i] = std::move(casters);
     ++frame_info_.shadow_tiles_redrawn;
   }
-  key.selected = std::move(chunks);
-  shadow_key_ = std::move(key);
   if (frame_info_.shadow_tiles_redrawn == 0) return;
   shadow_map_.Record(cmd, shadow_cascades_, redraw, scene.camera.position, geometry_, terrain_.get(),
-                     shadow_key_->casters);
+                     key.casters);
   vk::FullBarrier(cmd);  // the froxel pass and the surfaces read it
   frame_info_.shadow_map_updated = true;
 }

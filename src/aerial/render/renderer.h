@@ -122,10 +122,10 @@ class Renderer {
   CasterBounds casters_;
   ShadowCascades shadow_cascades_{};  // of the last frame
   // What the shadow map's tiles show: the cascades' windows and the terrain chunks drawn in them
-  // (CoarsenCasters); and the last selection they were coarsened from.
+  // (CoarsenCasters).
   struct ShadowKey {
     ShadowCascades cascades;
-    ShadowTerrain casters, selected;
+    ShadowTerrain casters;
   };
   std::optional<ShadowKey> shadow_key_;
   // The view did not move since the last frame, whose shadow terrain selection lacked no chunk:

@@ -1,5 +1,7 @@
 #include "aerial/render/shadow_map.h"
 
+#include <algorithm>
+
 #include "aerial/render/shadow_uniforms.h"
 #include "aerial/shader_abi/frame_geometry.h"
 #include "aerial/terrain/terrain_chunk.h"
@@ -47,15 +49,16 @@ void ShadowMap::Record(const vk::CommandBuffer& cmd, const ShadowCascades& casca
                        const std::array<bool, kShadowCascades>& redraw, const glm::dvec3& camera_position,
                        const SceneGeometry& geometry, const TerrainChunkCache* terrain,
                        const ShadowTerrain& chunks) const {
-  // One scope for all tiles (each scope costs a pass over the whole atlas on a CPU rasterizer),
-  // loading the atlas and clearing the redrawn tiles alone.
-  vk::Rendering rendering(cmd, {.depth = &atlas_});
+  // One scope for all tiles (each scope costs a pass over the whole atlas on a CPU rasterizer):
+  // cleared whole when every tile is redrawn, else loaded with the redrawn tiles cleared alone.
+  const bool all = std::find(redraw.begin(), redraw.end(), false) == redraw.end();
+  vk::Rendering rendering(cmd, {.depth = &atlas_, .clear_depth = all ? std::optional(0.0f) : std::nullopt});
   const ::vk::Extent2D tile{uint32_t(kShadowTileTexels), uint32_t(kShadowTileTexels)};
   for (int i = 0; i < kShadowCascades; ++i) {
     if (!redraw[i]) continue;
     ::vk::Offset2D corner{int32_t(i % kShadowAtlasTilesPerRow) * kShadowTileTexels,
                           int32_t(i / kShadowAtlasTilesPerRow) * kShadowTileTexels};
-    vk::ClearDepth(cmd, {corner, tile}, 0.0f);
+    if (!all) vk::ClearDepth(cmd, {corner, tile}, 0.0f);
     vk::SetViewport(cmd, tile, corner);
     CascadeConstants constants{
         ToColumnMajorFloats(ClipFromRelative(cascades[i], camera_position)),
