@@ -67,6 +67,38 @@ TEST_F(Render, FroxelMatchesPerPixelBeyondOneKilometer) {
   EXPECT_LT(rmse, 0.02);
 }
 
+// Per pixel from two table reads (Bruneton 2017's demo, AerialMode::kTableDifference) against the
+// marched per-pixel path, on the noon frame's opaque pixels beyond 1 km and its sky, shadows off.
+// Measured 0.17% and 0.50%. At noon near the ground the difference S(x) - T S(p) keeps most of the
+// segment's inscatter and the sky needs no correction of the Earth's shadow, so both stay within
+// the 1% of a table read (README, "Radiance to a point"). The sky differs all the same: the demo
+// reads it without the correction of the multiple scattering's blend in nu (sky_lookup.glsl), so
+// equal skies would mean that the mode fell back to the march.
+TEST_F(Render, TableDifferenceIsCloseToTheMarchInDaylight) {
+  const AtmosphereTables& tables = FullTables();
+  Scene scene = BuildPreset("noon", tables.atmosphere().bottom_radius_m);
+  std::erase_if(scene.meshes, [](const Mesh& m) { return m.transparent; });
+  auto render = [&](AerialMode mode) {
+    Renderer renderer(tables, scene, {.width = kWidth, .height = kHeight, .mode = mode, .shadows = false});
+    renderer.Render(scene);
+    return std::pair{renderer.ReadOutput(), renderer.ReadSurface()};
+  };
+  auto [two_reads, surface] = render(AerialMode::kTableDifference);
+  ImageRgbF marched = render(AerialMode::kPerPixel).first;
+  std::vector<bool> far_opaque(surface.rgba.size() / 4), sky(far_opaque.size());
+  for (size_t p = 0; p < far_opaque.size(); ++p) {
+    far_opaque[p] = surface.rgba[4 * p + 3] > 1000.0f;
+    sky[p] = surface.rgba[4 * p + 3] < 0.0f;
+  }
+  double opaque_rmse = RelativeRmse(two_reads, marched, &far_opaque);
+  double sky_rmse = RelativeRmse(two_reads, marched, &sky);
+  std::printf("table difference vs marched, noon: opaque beyond 1 km %.4f%%, sky %.4f%%\n", 100 * opaque_rmse,
+              100 * sky_rmse);
+  EXPECT_LT(opaque_rmse, 0.01);
+  EXPECT_LT(sky_rmse, 0.01);
+  EXPECT_GT(sky_rmse, 1e-4);
+}
+
 // Sky pixels read the per-frame sky-view table (froxel mode) or the tables (per-pixel mode):
 // over a frame without the meshes, for each preset's view and sun, the two agree within a bound.
 // Shadows off: per-pixel mode does not shadow the air (README, "Shadows"), and the terrain's

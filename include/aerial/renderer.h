@@ -19,9 +19,13 @@
 
 namespace aerial {
 
-// Aerial perspective from the froxel volume, or per pixel from the tables (the reference the
-// froxels are measured against).
-enum class AerialMode { kFroxel, kPerPixel };
+// Where the aerial perspective comes from:
+//  - kFroxel: the froxel volume (the default);
+//  - kPerPixel: marched along each pixel's ray through the tables, the reference the froxels are
+//    measured against;
+//  - kTableDifference: per pixel, S(x) - T S(p) from two 4D table reads and no march, as Bruneton
+//    2017's demo renders it (README, "Radiance to a point"), what a user would otherwise pick.
+enum class AerialMode { kFroxel, kPerPixel, kTableDifference };
 
 // How the built-in terrain is drawn: chunks with a level of detail that follows the camera, or
 // the fixed polar mesh around the origin (BuildTerrainMesh) that the level of detail is measured

@@ -4,7 +4,7 @@
 // test passes only there): the inscatter of the whole view ray with the phase functions from the
 // pixel's own ray, plus what lies behind it: the sun disc, or the bare planet where the ray meets
 // the ground beyond the scene's geometry. In froxel mode all of it comes from the sky-view table
-// (3 bilinear taps); in per-pixel mode, from the tables.
+// (3 bilinear taps); in the per-pixel modes, from the tables.
 #include "aerial_perspective.glsl"
 #include "sky_view.glsl"
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
@@ -36,7 +36,7 @@ Inscatter GetPixelSky(vec3 ray, float mu) {
 
 void main() {
   vec3 ray = normalize(view_ray);
-  if (kAerialPerPixel == 1) {
+  if (kAerialPerPixel != AERIAL_FROXELS) {
     color = vec4(GetSkyRadianceAlongRay(transmittance_texture, rayleigh_texture, mie_texture, multiple_texture,
                                         irradiance_texture, ray),
                  1.0);

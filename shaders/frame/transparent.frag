@@ -2,16 +2,14 @@
 #extension GL_GOOGLE_include_directive : require
 // Transparent geometry: the surface lit per vertex (transparent.vert), its sun part times the
 // sun's visibility here (shadow.glsl: opaque casters shade glass too), seen through the
-// interpolated per-vertex aerial perspective with per-pixel phase functions (or, in per-pixel
-// mode, the tables), output premultiplied: alpha (L T + I_R P_R + I_M P_M) over what is already
-// drawn. What is drawn already holds the inscatter of the segment in front of the surface, so
+// interpolated per-vertex aerial perspective with per-pixel phase functions (or, in the
+// per-pixel modes, the tables), output premultiplied: alpha (L T + I_R P_R + I_M P_M) over what
+// is already drawn. What is drawn already holds the inscatter of the segment in front of the surface, so
 // this blend is exact: I + T (alpha L + (1 - alpha) L_behind).
-#include "aerial_perspective.glsl"
+#include "mesh_tables.glsl"
 #include "surface.glsl"
 #define SHADOW_BINDING 8
 #include "shadow.glsl"
-layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
-layout(set = 0, binding = 4) uniform sampler3D multiple_density_texture;
 layout(location = 0) in vec3 relative_position;
 layout(location = 1) in vec4 sun_radiance_opacity;
 layout(location = 2) in vec3 vertex_rayleigh;
@@ -27,9 +25,8 @@ void main() {
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
   Inscatter segment;
-  if (kAerialPerPixel == 1) {
-    segment = GetSkyInscatterToPoint(transmittance_texture, multiple_density_texture, r, mu,
-                                     mu_s, nu, distance);
+  if (kAerialPerPixel != AERIAL_FROXELS) {
+    segment = GetMeshAerialPerspectivePerPixel(r, mu, mu_s, nu, distance);
   } else {
     segment.rayleigh = vertex_rayleigh;
     segment.mie = vertex_mie;

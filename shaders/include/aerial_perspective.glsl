@@ -39,6 +39,19 @@ Inscatter GetAerialPerspectiveAtVertex(sampler3D rayleigh_froxels, sampler3D mie
   return GetAerialPerspective(rayleigh_froxels, mie_froxels, transmittance_froxels, uv, distance);
 }
 
+// The segment's inscatter computed at the pixel instead of read from the froxels
+// (kAerialPerPixel, frame.glsl): marched along the pixel's ray, or as two table reads.
+Inscatter GetAerialPerspectivePerPixel(sampler2D transmittance_texture, sampler3D multiple_density_texture,
+                                       sampler3D rayleigh_texture, sampler3D mie_texture,
+                                       sampler3D multiple_texture, float r, float mu, float mu_s, float nu,
+                                       float distance) {
+  if (kAerialPerPixel == AERIAL_TABLE_DIFFERENCE) {
+    return GetSkyInscatterToPointFromTables(transmittance_texture, rayleigh_texture, mie_texture,
+                                            multiple_texture, r, mu, mu_s, nu, distance);
+  }
+  return GetSkyInscatterToPoint(transmittance_texture, multiple_density_texture, r, mu, mu_s, nu, distance);
+}
+
 // nu: the cosine between the view ray toward a camera-relative point and the sun.
 float ViewSunCosine(vec3 relative_position) { return dot(normalize(relative_position), frame.sun_direction.xyz); }
 
@@ -51,14 +64,18 @@ vec3 ApplyAerialPerspective(vec3 surface_radiance, Inscatter segment, float nu) 
 
 // The sky along a unit view ray (camera-relative world) that meets no geometry, from the tables
 // (aerial::Tables): the whole ray's inscatter with the phases of the ray itself, and
-// behind it the sun's disc or the bare planet. aerial's sky pass draws this in per-pixel mode; in
-// froxel mode it reads the same from a per-frame sky-view table (sky_view.glsl).
+// behind it the sun's disc or the bare planet. aerial's sky pass draws this in the per-pixel modes;
+// in froxel mode it reads the same from a per-frame sky-view table (sky_view.glsl).
 vec3 GetSkyRadianceAlongRay(sampler2D transmittance_texture, sampler3D rayleigh_texture, sampler3D mie_texture,
                             sampler3D multiple_texture, sampler2D irradiance_texture, vec3 ray) {
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
-  Inscatter sky = GetSkyInscatter(transmittance_texture, rayleigh_texture, mie_texture, multiple_texture, r, mu,
-                                  mu_s, nu);
+  // Bruneton 2017's demo reads the sky as the tables hold it, without the Earth's shadow corrected.
+  Inscatter sky = kAerialPerPixel == AERIAL_TABLE_DIFFERENCE
+                      ? GetSkyInscatterFromTables(transmittance_texture, rayleigh_texture, mie_texture,
+                                                  multiple_texture, r, mu, mu_s, nu)
+                      : GetSkyInscatter(transmittance_texture, rayleigh_texture, mie_texture, multiple_texture,
+                                        r, mu, mu_s, nu);
   vec3 background = GetBackgroundThroughAtmosphere(transmittance_texture, irradiance_texture, ray, r, mu,
                                                    sky.transmittance);
   return ApplyPhaseFunctions(sky, nu) + ShadeBackground(background, RayIntersectsGround(r, mu), nu);

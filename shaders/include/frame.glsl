@@ -5,8 +5,11 @@
 #define AERIAL_FRAME_GLSL
 #include "definitions.glsl"
 
-// Aerial perspective per pixel from the tables (1) or from the froxel volume (0): a specialization
-// constant, so the path not taken is compiled out (a CPU rasterizer would run both).
+// Where the aerial perspective of a surface comes from: a specialization constant, so the paths
+// not taken are compiled out (a CPU rasterizer would run them all).
+const int AERIAL_FROXELS = 0;           // the froxel volume: what a caller embedding aerial wants
+const int AERIAL_MARCHED = 1;           // per pixel, marched along the pixel's ray (the reference)
+const int AERIAL_TABLE_DIFFERENCE = 2;  // per pixel, two table reads (Bruneton 2017's demo)
 layout(constant_id = 0) const int kAerialPerPixel = 0;
 
 // Mirrored by aerial::FrameUniforms (aerial/shader_abi/frame_block.h); tests/uniform_layout_test.cpp

@@ -1,7 +1,7 @@
 // The opaque fragment shaders' parts (opaque.frag, opaque_caching.frag): geometry seen through the
 // air, L T + I_R P_R(nu) + I_M P_M(nu), with L the lit surface radiance from the vertices
 // (opaque.vert), its sun part times the sun's visibility here, (I_R, I_M, T) read from the froxel
-// volume at the fragment's screen position and distance (per-pixel mode: from the tables) and nu
+// volume at the fragment's screen position and distance (per-pixel modes: from the tables) and nu
 // from the fragment's own view ray. Geometry is drawn nearest first, so early depth tests skip
 // this work for hidden fragments.
 //
@@ -16,13 +16,11 @@
 //    comparison cost about a third of a still frame; one texel fetch replaces them.
 #ifndef AERIAL_OPAQUE_FRAGMENT_GLSL
 #define AERIAL_OPAQUE_FRAGMENT_GLSL
-#include "aerial_perspective.glsl"
+#include "mesh_tables.glsl"
 #include "surface.glsl"
 #define SHADOW_BINDING 8
 #include "shadow.glsl"
 layout(constant_id = 3) const int kSunVisibilityFromCache = 0;
-layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
-layout(set = 0, binding = 4) uniform sampler3D multiple_density_texture;
 layout(set = 0, binding = 5) uniform sampler3D rayleigh_froxels;
 layout(set = 0, binding = 6) uniform sampler3D mie_froxels;
 layout(set = 0, binding = 7) uniform sampler3D transmittance_froxels;
@@ -45,9 +43,8 @@ vec4 GetFragmentRadiance(float sun_visibility) {
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
   Inscatter segment;
-  if (kAerialPerPixel == 1) {
-    segment = GetSkyInscatterToPoint(transmittance_texture, multiple_density_texture, r, mu,
-                                     mu_s, nu, distance);
+  if (kAerialPerPixel != AERIAL_FROXELS) {
+    segment = GetMeshAerialPerspectivePerPixel(r, mu, mu_s, nu, distance);
   } else {
     segment = GetAerialPerspective(rayleigh_froxels, mie_froxels, transmittance_froxels,
                                    gl_FragCoord.xy / frame.viewport.xy, distance);

@@ -342,6 +342,18 @@ void AddSkyInscatterCorrection(vec3 rayleigh, vec3 mie, inout Inscatter sky) {
   sky.mie = max(sky.mie + mie, vec3(0.0));
 }
 
+// The Rayleigh and Mie inscatter (without phase) that the scattering tables hold for the view ray
+// (r, mu) to the ground or the top of the atmosphere; ray_r_mu_intersects_ground picks the half of
+// the mu axis read.
+void GetTableInscatter(sampler3D rayleigh_texture, sampler3D mie_texture, sampler3D multiple_texture,
+                       float r, float mu, float mu_s, float nu, bool ray_r_mu_intersects_ground,
+                       out vec3 rayleigh, out vec3 mie) {
+  rayleigh = GetRayleighScattering(rayleigh_texture, multiple_texture, r, mu, mu_s, nu,
+                                   ray_r_mu_intersects_ground);
+  mie = GetScatteringExponentialInR(mie_texture, atmosphere.scattering_size, r, mu, mu_s, nu,
+                                    ray_r_mu_intersects_ground);
+}
+
 // S(x, v) as the scattering tables hold it: the Rayleigh and Mie inscatter (without phase) along
 // the whole view ray (r, mu), to the ground or the top of the atmosphere, and its transmittance.
 Inscatter GetSkyInscatterFromTables(sampler2D transmittance_texture, sampler3D rayleigh_texture,
@@ -349,10 +361,8 @@ Inscatter GetSkyInscatterFromTables(sampler2D transmittance_texture, sampler3D r
                                     float mu, float mu_s, float nu) {
   bool ray_r_mu_intersects_ground = RayIntersectsGround(r, mu);
   Inscatter result;
-  result.rayleigh = GetRayleighScattering(rayleigh_texture, multiple_texture, r, mu, mu_s, nu,
-                                          ray_r_mu_intersects_ground);
-  result.mie = GetScatteringExponentialInR(mie_texture, atmosphere.scattering_size, r, mu, mu_s,
-                                           nu, ray_r_mu_intersects_ground);
+  GetTableInscatter(rayleigh_texture, mie_texture, multiple_texture, r, mu, mu_s, nu,
+                    ray_r_mu_intersects_ground, result.rayleigh, result.mie);
   result.transmittance =
       ray_r_mu_intersects_ground
           ? GetTransmittance(transmittance_texture, r, mu,
@@ -390,6 +400,34 @@ Inscatter GetSkyInscatterToPoint(sampler2D transmittance_texture,
                           d * float(i) / float(SEGMENT_STEPS), 1.0);
   }
   return GetInscatterMarchResult(march);
+}
+
+// Inscatter over the first d meters of the view ray (r, mu) as the difference of two table reads,
+// S(x, v) - T(x, p) S(p, v) (Bruneton 2008 eq. 16; Bruneton 2017 GetSkyRadianceToPoint, without
+// its fix near the horizon): how Bruneton 2017's demo renders the aerial perspective, two 4D reads
+// per pixel and no march. It cancels where the segment holds a small part of the whole ray's
+// inscatter (GetSkyInscatterToPoint above), and the Earth's shadow is not corrected; aerial keeps
+// it to compare with (AerialMode::kTableDifference). Both reads take the camera's
+// ray_r_mu_intersects_ground, so that they read the same half of the mu axis.
+Inscatter GetSkyInscatterToPointFromTables(sampler2D transmittance_texture,
+                                           sampler3D rayleigh_texture, sampler3D mie_texture,
+                                           sampler3D multiple_texture, float r, float mu,
+                                           float mu_s, float nu, float d) {
+  bool ray_r_mu_intersects_ground = RayIntersectsGround(r, mu);
+  d = min(d, DistanceToNearestAtmosphereBoundary(r, mu, ray_r_mu_intersects_ground));
+  float r_p = RadiusAtDistance(r, mu, d);
+  float mu_p = MuAtDistance(r, mu, d, r_p);
+  float mu_s_p = SunCosineAlongRay(r, mu_s, nu, d, r_p);
+  vec3 rayleigh, mie, rayleigh_p, mie_p;
+  GetTableInscatter(rayleigh_texture, mie_texture, multiple_texture, r, mu, mu_s, nu,
+                    ray_r_mu_intersects_ground, rayleigh, mie);
+  GetTableInscatter(rayleigh_texture, mie_texture, multiple_texture, r_p, mu_p, mu_s_p, nu,
+                    ray_r_mu_intersects_ground, rayleigh_p, mie_p);
+  Inscatter segment;
+  segment.transmittance = GetTransmittance(transmittance_texture, r, mu, d, ray_r_mu_intersects_ground);
+  segment.rayleigh = max(rayleigh - segment.transmittance * rayleigh_p, vec3(0.0));
+  segment.mie = max(mie - segment.transmittance * mie_p, vec3(0.0));
+  return segment;
 }
 
 vec3 ApplyPhaseFunctions(Inscatter inscatter, float nu) {

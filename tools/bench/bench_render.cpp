@@ -40,8 +40,9 @@ using aerial::bench::RunResult;
 using aerial::bench::Stats;
 using aerial::bench::Summarize;
 
-// The issue's goal for the whole frame's GPU time at 1280x720 (froxel path).
-constexpr double kFrameGoalMs = 25.0;
+// Issue 38's goals for the moving-camera frame at 1280x720 with shadows (froxel path): 30 frames a
+// second on lavapipe, GPU and wall.
+constexpr double kFrameGoalMs = 33.0, kFrameWallGoalMs = 40.0;
 
 struct BenchOptions {
   int width = 1280, height = 720, frames = 9, warmup = 2;
@@ -96,15 +97,17 @@ void Bench(const BenchOptions& cli) {
       {"frame, moving sun", same, Motion::kSun},
       {"frame, moving sun, no shadows", [](RenderOptions& o) { o.shadows = false; }, Motion::kSun},
       {"per-pixel aerial perspective", [](RenderOptions& o) { o.mode = aerial::AerialMode::kPerPixel; }},
+      {"per pixel, two table reads",
+       [](RenderOptions& o) { o.mode = aerial::AerialMode::kTableDifference; }},
       {"fixed fine terrain mesh", [](RenderOptions& o) { o.terrain = aerial::TerrainMode::kStaticMesh; }},
       {"no terrain occlusion culling", [](RenderOptions& o) { o.terrain_occlusion_culling = false; }},
       {"without the sky", [](RenderOptions& o) { o.passes.sky = false; }},
       {"without transparent objects", [](RenderOptions& o) { o.passes.transparent = false; }},
       {"without the terrain", [](RenderOptions& o) { o.passes.terrain = false; }},
   };
-  constexpr size_t kFirstAblation = 9;
+  constexpr size_t kFirstAblation = 10;
   constexpr size_t kStill = 1, kNoShadows = 2, kStillNoShadows = 3, kSun = 4, kSunNoShadows = 5, kPerPixel = 6,
-                   kFineMesh = 7;
+                   kTableDifference = 7, kFineMesh = 8;
   std::vector<std::unique_ptr<aerial::SceneRenderer>> renderers;
   std::vector<aerial::bench::FrameSource> order;
   for (Configuration& c : configurations) {
@@ -193,17 +196,25 @@ void Bench(const BenchOptions& cli) {
   PrintRow("full-screen pass, one 3D tap", tap_stats);
   std::printf("  frame / full-screen tap pass:      %6.2fx\n", frame_ms / tap_stats.median);
   std::printf("  per-pixel / froxel frame:          %6.2fx\n", configurations[kPerPixel].Gpu().median / frame_ms);
+  std::printf("  table difference / froxel frame:   %6.2fx\n",
+              configurations[kTableDifference].Gpu().median / frame_ms);
   std::printf("  fine mesh / level-of-detail frame: %6.2fx\n", configurations[kFineMesh].Gpu().median / frame_ms);
+  double wall_ms = frame.Wall().median;
   std::printf("  goal: frame <= %.0f ms GPU: %s (%.2f ms)\n", kFrameGoalMs,
               frame_ms <= kFrameGoalMs ? "met" : "NOT met", frame_ms);
+  std::printf("  goal: frame <= %.0f ms wall: %s (%.2f ms)\n", kFrameWallGoalMs,
+              wall_ms <= kFrameWallGoalMs ? "met" : "NOT met", wall_ms);
   if (cli.width != 1280 || cli.height != 720)
     std::printf("  (the goal is for 1280x720; this run is %dx%d)\n", cli.width, cli.height);
   doc["comparison"] = {{"full_screen_tap", StatsJson(tap_stats)},
                        {"frame_over_full_screen_tap", frame_ms / tap_stats.median},
                        {"per_pixel_over_frame", configurations[kPerPixel].Gpu().median / frame_ms},
+                       {"table_difference_over_frame", configurations[kTableDifference].Gpu().median / frame_ms},
                        {"fine_mesh_over_frame", configurations[kFineMesh].Gpu().median / frame_ms},
                        {"goal_ms", kFrameGoalMs},
-                       {"goal_met", frame_ms <= kFrameGoalMs}};
+                       {"goal_met", frame_ms <= kFrameGoalMs},
+                       {"wall_goal_ms", kFrameWallGoalMs},
+                       {"wall_goal_met", wall_ms <= kFrameWallGoalMs}};
   if (!cli.json_file.empty()) aerial::WriteFileAtomically(cli.json_file, doc.dump(2) + "\n");
 }
 

@@ -16,15 +16,27 @@ std::unique_ptr<SceneRenderer> ImageRenderer(const Tables& tables, const Scene& 
   return std::make_unique<SceneRenderer>(tables, scene, options);
 }
 
-// One variant's frame of a view on both paths; the surface is the same on both.
-struct VariantImages {
-  ImageRgbF froxel, per_pixel, surface;
+// One variant's renderers, one per path.
+struct VariantRenderers {
+  std::unique_ptr<SceneRenderer> froxel, per_pixel, table_difference;
 };
 
-VariantImages Render(SceneRenderer& froxel, SceneRenderer& per_pixel, const Scene& scene) {
-  froxel.Render(scene);
-  per_pixel.Render(scene);
-  return {froxel.ReadOutput(), per_pixel.ReadOutput(), per_pixel.ReadSurface()};
+VariantRenderers MakeRenderers(const Tables& tables, const Scene& scene, const BenchPlan& plan) {
+  return {ImageRenderer(tables, scene, plan, AerialMode::kFroxel),
+          ImageRenderer(tables, scene, plan, AerialMode::kPerPixel),
+          ImageRenderer(tables, scene, plan, AerialMode::kTableDifference)};
+}
+
+// One variant's frame of a view on every path; the surface is the same on all.
+struct VariantImages {
+  ImageRgbF froxel, per_pixel, table_difference, surface;
+};
+
+VariantImages Render(VariantRenderers& renderers, const Scene& scene) {
+  for (SceneRenderer* r : {renderers.froxel.get(), renderers.per_pixel.get(), renderers.table_difference.get()})
+    r->Render(scene);
+  return {renderers.froxel->ReadOutput(), renderers.per_pixel->ReadOutput(),
+          renderers.table_difference->ReadOutput(), renderers.per_pixel->ReadSurface()};
 }
 
 ClassErrors AgainstReference(const ViewReference& reference, const ImageRgbF& rendered) {
@@ -41,7 +53,8 @@ ViewAccuracy Measure(const std::string& view, const VariantImages& images, const
   return {.view = view,
           .froxel_vs_reference = AgainstReference(reference, images.froxel),
           .per_pixel_vs_reference = AgainstReference(reference, images.per_pixel),
-          .froxel_vs_per_pixel = AgainstImage(images.froxel, images.per_pixel, images.surface)};
+          .froxel_vs_per_pixel = AgainstImage(images.froxel, images.per_pixel, images.surface),
+          .table_difference_vs_reference = AgainstReference(reference, images.table_difference)};
 }
 
 }  // namespace
@@ -76,17 +89,15 @@ void MeasureAccuracy(VariantResult& lut4d, const Tables& tables4d, VariantResult
                      const Tables& tables3d, Scene& scene, const BenchPlan& plan,
                      const std::vector<ViewReference>& references, std::vector<FigureImages>* figures,
                      const std::function<void()>& on_view) {
-  std::unique_ptr<SceneRenderer> froxel4d = ImageRenderer(tables4d, scene, plan, AerialMode::kFroxel);
-  std::unique_ptr<SceneRenderer> per_pixel4d = ImageRenderer(tables4d, scene, plan, AerialMode::kPerPixel);
-  std::unique_ptr<SceneRenderer> froxel3d = ImageRenderer(tables3d, scene, plan, AerialMode::kFroxel);
-  std::unique_ptr<SceneRenderer> per_pixel3d = ImageRenderer(tables3d, scene, plan, AerialMode::kPerPixel);
+  VariantRenderers renderers4d = MakeRenderers(tables4d, scene, plan);
+  VariantRenderers renderers3d = MakeRenderers(tables3d, scene, plan);
   lut4d.accuracy.clear();
   lut3d.accuracy.clear();
   for (size_t v = 0; v < plan.views.size(); ++v) {
     const std::string& view = plan.views[v];
     ApplyPresetView(scene, view, tables4d.atmosphere().bottom_radius_m);
-    VariantImages images4d = Render(*froxel4d, *per_pixel4d, scene);
-    VariantImages images3d = Render(*froxel3d, *per_pixel3d, scene);
+    VariantImages images4d = Render(renderers4d, scene);
+    VariantImages images3d = Render(renderers3d, scene);
     lut4d.accuracy.push_back(Measure(view, images4d, references.at(v)));
     lut3d.accuracy.push_back(Measure(view, images3d, references.at(v)));
     lut3d.accuracy.back().vs_4d = AgainstImage(images3d.per_pixel, images4d.per_pixel, images4d.surface);

@@ -15,6 +15,9 @@ double Median(const std::vector<RunResult>& frames, const char* pass) {
 double VariantResult::PrecomputeMs() const { return Summarize(GpuTotals(precompute.runs)).median; }
 double VariantResult::FrameMs() const { return Summarize(GpuTotals(froxel_frames)).median; }
 double VariantResult::PerPixelFrameMs() const { return Summarize(GpuTotals(per_pixel_frames)).median; }
+double VariantResult::TableDifferenceFrameMs() const {
+  return Summarize(GpuTotals(table_difference_frames)).median;
+}
 double VariantResult::FroxelBuildMs() const { return Median(froxel_frames, kFroxelBuildPass); }
 double VariantResult::FrameWallMs() const { return Summarize(WallTotals(froxel_frames)).median; }
 

@@ -19,6 +19,8 @@ struct ClassErrors {
 struct ViewAccuracy {
   std::string view;
   ClassErrors froxel_vs_reference, per_pixel_vs_reference, froxel_vs_per_pixel;
+  // Per pixel from two table reads (AerialMode::kTableDifference, Bruneton 2017's demo).
+  ClassErrors table_difference_vs_reference;
   std::optional<ClassErrors> vs_4d;  // 3D tables only: 3D against 4D, both on the per-pixel path
 };
 
@@ -26,7 +28,7 @@ struct ViewAccuracy {
 struct VariantResult {
   std::string tier;
   BenchResult precompute;  // options, table bytes, the precompute runs
-  std::vector<RunResult> froxel_frames, per_pixel_frames;
+  std::vector<RunResult> froxel_frames, per_pixel_frames, table_difference_frames;
   std::vector<ViewAccuracy> accuracy;  // in the plan's view order
 
   LutVariant variant() const { return precompute.options.variant; }
@@ -34,6 +36,7 @@ struct VariantResult {
   double PrecomputeMs() const;
   double FrameMs() const;          // whole froxel-path frame
   double PerPixelFrameMs() const;  // whole per-pixel-path frame
+  double TableDifferenceFrameMs() const;  // whole frame, per pixel from two table reads
   double FrameWallMs() const;      // the froxel-path frame's wall-clock time, CPU work included
   double FroxelBuildMs() const;
 };

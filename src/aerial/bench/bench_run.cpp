@@ -13,7 +13,8 @@ namespace {
 
 int ProgressSteps(const BenchPlan& p) {
   int tiers = int(p.tiers.size()), views = int(p.views.size());
-  return tiers * 2 * (p.precompute_warmup + p.precompute_runs) + tiers * 4 * (p.frame_warmup + p.frames) +
+  // Per tier: two variants' precomputes, and their frames on three paths (variant_frames.h).
+  return tiers * 2 * (p.precompute_warmup + p.precompute_runs) + tiers * 6 * (p.frame_warmup + p.frames) +
          views * p.reference_columns * p.reference_rows + tiers * views;
 }
 

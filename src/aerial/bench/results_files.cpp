@@ -41,10 +41,12 @@ nlohmann::json EntryJson(const VariantResult& r) {
   entry["precompute_max_ms"] = Summarize(GpuTotals(r.precompute.runs)).max;
   entry["frame_ms"] = r.FrameMs();
   entry["per_pixel_frame_ms"] = r.PerPixelFrameMs();
+  entry["table_difference_frame_ms"] = r.TableDifferenceFrameMs();
   entry["froxel_build_ms"] = r.FroxelBuildMs();
   entry["frame_wall_ms"] = r.FrameWallMs();
   entry["frame_pass_median_ms"] = {{"froxel", FramePassesJson(r.froxel_frames)},
-                                   {"per_pixel", FramePassesJson(r.per_pixel_frames)}};
+                                   {"per_pixel", FramePassesJson(r.per_pixel_frames)},
+                                   {"table_difference", FramePassesJson(r.table_difference_frames)}};
   nlohmann::json accuracy = nlohmann::json::object();
   for (const ViewAccuracy& view : r.accuracy)
     for (const auto& [name, errors] : NamedComparisons(view))
@@ -67,6 +69,7 @@ std::vector<std::pair<std::string, const ClassErrors*>> NamedComparisons(const V
   named.emplace_back("froxel_vs_reference", &a.froxel_vs_reference);
   named.emplace_back("per_pixel_vs_reference", &a.per_pixel_vs_reference);
   named.emplace_back("froxel_vs_per_pixel", &a.froxel_vs_per_pixel);
+  named.emplace_back("table_difference_vs_reference", &a.table_difference_vs_reference);
   return named;
 }
 
@@ -116,7 +119,8 @@ nlohmann::json ResultsJson(const BenchResults& b) {
          {"precompute_ms", ratios.gpu},
          {"precompute_kinds", kinds},
          {"frame_ms", lut3d.FrameMs() / lut4d.FrameMs()},
-         {"per_pixel_frame_ms", lut3d.PerPixelFrameMs() / lut4d.PerPixelFrameMs()}});
+         {"per_pixel_frame_ms", lut3d.PerPixelFrameMs() / lut4d.PerPixelFrameMs()},
+         {"table_difference_frame_ms", lut3d.TableDifferenceFrameMs() / lut4d.TableDifferenceFrameMs()}});
   }
   doc["reference"] = nlohmann::json::array();
   for (const ReferenceSummary& s : b.references)
@@ -132,12 +136,14 @@ nlohmann::json ResultsJson(const BenchResults& b) {
 std::string ResultsCsv(const BenchResults& b) {
   std::ostringstream csv;
   csv << "variant,tier,scattering_size,table_bytes,precompute_ms,frame_ms,per_pixel_frame_ms,"
-         "froxel_build_ms,frame_wall_ms,view,comparison,pixels,pixel_count,rel_rmse,rel_max\n";
+         "table_difference_frame_ms,froxel_build_ms,frame_wall_ms,view,comparison,pixels,pixel_count,rel_rmse,"
+         "rel_max\n";
   for (const VariantResult& r : b.results) {
     std::string head = ToString(r.variant()) + "," + r.tier + "," +
                        ScatteringSize(r.precompute.options.resolution) + "," +
                        std::to_string(r.precompute.table_bytes) + "," + CsvNumber(r.PrecomputeMs()) + "," +
                        CsvNumber(r.FrameMs()) + "," + CsvNumber(r.PerPixelFrameMs()) + "," +
+                       CsvNumber(r.TableDifferenceFrameMs()) + "," +
                        CsvNumber(r.FroxelBuildMs()) + "," + CsvNumber(r.FrameWallMs());
     for (const ViewAccuracy& view : r.accuracy)
       for (const auto& [name, errors] : NamedComparisons(view))

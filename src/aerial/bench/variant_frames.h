@@ -1,6 +1,7 @@
 #pragma once
-// Frame times of one table tier: the 4D and 3D tables, each on the froxel and the per-pixel path,
-// four renderers of the same scene with their frames interleaved (frame_measurement.h).
+// Frame times of one table tier: the 4D and 3D tables, each on the froxel path, the marched
+// per-pixel path and per pixel from two table reads (Bruneton 2017's demo), six renderers of the
+// same scene with their frames interleaved (frame_measurement.h).
 #include <functional>
 
 #include "aerial/bench/bench_plan.h"
@@ -10,7 +11,7 @@
 
 namespace aerial::bench {
 
-// Fills the froxel_frames and per_pixel_frames of both results, at plan.frame_width x height.
+// Fills the froxel, per-pixel and table-difference frames of both results, at plan.frame_width x height.
 void MeasureVariantFrames(VariantResult& lut4d, const Tables& tables4d, VariantResult& lut3d,
                           const Tables& tables3d, const Scene& scene, const BenchPlan& plan,
                           const std::function<void()>& on_frame);

@@ -49,6 +49,13 @@ FroxelGrid FroxelOptions::Make() const {
   return grid;
 }
 
+AerialMode ParseAerialMode(const std::string& value) {
+  if (value == "froxel") return AerialMode::kFroxel;
+  if (value == "per-pixel") return AerialMode::kPerPixel;
+  if (value == "table-difference") return AerialMode::kTableDifference;
+  throw Error("--aerial", value, "froxel, per-pixel or table-difference");
+}
+
 bool ParseShadows(const std::string& value) {
   if (value != "on" && value != "off") throw Error("--shadows", value, "on or off");
   return value == "on";
@@ -60,8 +67,10 @@ void FrameOptions::AddTo(CLI::App& command, const std::string& size_help) {
   command.add_option("--height", height, size_help + " height in pixels");
   command.add_option("--exposure", exposure,
                      "Radiance multiplier before tone mapping (PNG images, the viewer's window)");
-  command.add_option("--aerial", aerial, "Aerial perspective: froxel or per-pixel")
-      ->check(CLI::IsMember({"froxel", "per-pixel"}));
+  command.add_option("--aerial", aerial,
+                     "Aerial perspective: froxel (default), per-pixel (marched per pixel, the reference) "
+                     "or table-difference (two table reads per pixel, as Bruneton 2017's demo)")
+      ->check(CLI::IsMember({"froxel", "per-pixel", "table-difference"}));
   command.add_option("--render-scale", render_scale,
                      "Rasterize at this fraction (0.25 to 1) of the size, then upscale (default 1)");
   command.add_option("--terrain", terrain,
@@ -85,7 +94,7 @@ RenderOptions FrameOptions::MakeRenderOptions() const {
   render.width = width;
   render.height = height;
   render.froxels = froxels.Make();
-  render.mode = aerial == "per-pixel" ? AerialMode::kPerPixel : AerialMode::kFroxel;
+  render.mode = ParseAerialMode(aerial);
   render.render_scale = render_scale;
   render.terrain = terrain == "mesh" ? TerrainMode::kStaticMesh : TerrainMode::kLod;
   render.terrain_error_px = terrain_error_px;

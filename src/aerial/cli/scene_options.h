@@ -40,6 +40,9 @@ struct FroxelOptions {
 // Error("--shadows", value, "on or off").
 bool ParseShadows(const std::string& value);
 
+// --aerial froxel|per-pixel|table-difference; anything else throws Error("--aerial", value, ...).
+AerialMode ParseAerialMode(const std::string& value);
+
 struct FrameOptions {
   FroxelOptions froxels;
   int width = 1280;

@@ -17,23 +17,33 @@ namespace {
 using vk::kSampled;
 using vk::kUniform;
 
-int32_t PerPixel(AerialMode mode) { return mode == AerialMode::kPerPixel ? 1 : 0; }
+// The aerial mode's specialization constant kAerialPerPixel (frame.glsl).
+int32_t PerPixel(AerialMode mode) {
+  switch (mode) {
+    case AerialMode::kFroxel: return 0;
+    case AerialMode::kPerPixel: return 1;
+    case AerialMode::kTableDifference: return 2;
+  }
+  throw Error("aerial mode", std::to_string(int(mode)), "froxel, per-pixel or table-difference");
+}
 
 // Terrain chunk slots on the GPU: the default view at 720p draws a few hundred chunks and walks
 // through about as many coarser ones; the rest keeps chunks around for a camera that moves.
 constexpr uint32_t kTerrainChunkSlots = 8192;
 
 // Opaque and transparent meshes read the same resources: the atmosphere and frame blocks, the
-// transmittance and irradiance tables (lighting), the multiple density table (per-pixel mode),
-// the froxels, the shadow block and map (shadow.glsl, SHADOW_BINDING 8), and the screen's cached
-// sun visibility (opaque_fragment.glsl).
+// transmittance and irradiance tables (lighting), the multiple density table (marched per-pixel
+// mode), the froxels, the shadow block and map (shadow.glsl, SHADOW_BINDING 8), the screen's cached
+// sun visibility (opaque_fragment.glsl) and the scattering tables (table-difference mode,
+// mesh_tables.glsl).
 const vk::SlotLayout kMeshSlots = {
     {"AtmosphereBlock", kUniform},        {"FrameBlock", kUniform},
     {"transmittance_texture", kSampled},  {"irradiance_texture", kSampled},
     {"multiple_density_texture", kSampled}, {"rayleigh_froxels", kSampled},
     {"mie_froxels", kSampled},            {"transmittance_froxels", kSampled},
     {"ShadowBlock", kUniform},            {"shadow_map", kSampled},
-    {"cached_sun_visibility", kSampled}};
+    {"cached_sun_visibility", kSampled},  {"rayleigh_texture", kSampled},
+    {"mie_texture", kSampled},            {"multiple_texture", kSampled}};
 
 // The sky-view pass (sky_view.comp) and the sky (sky.frag) bind these resources, the sky-view
 // table written by the one (sky_view_type: storage images) and read by the other (sampled).
@@ -386,7 +396,8 @@ std::vector<vk::Slot> Renderer::MeshSlots(uint32_t slot) const {
           tables_.Sampled(tables_.transmittance()), tables_.Sampled(tables_.irradiance()),
           tables_.Sampled(tables_.multiple_density()), tables_.Sampled(froxels_.rayleigh()),
           tables_.Sampled(froxels_.mie()), tables_.Sampled(froxels_.transmittance()),
-          vk::UniformBufferSlot{&shadow_buffers_[slot]}, shadow_map_.slot(), tables_.Sampled(sun_visibility_)};
+          vk::UniformBufferSlot{&shadow_buffers_[slot]}, shadow_map_.slot(), tables_.Sampled(sun_visibility_),
+          tables_.Sampled(tables_.rayleigh()), tables_.Sampled(tables_.mie()), tables_.Sampled(tables_.multiple())};
 }
 
 // Nearest first, so that early depth tests skip the shading of what is hidden: the scene's meshes

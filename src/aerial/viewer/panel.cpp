@@ -75,7 +75,7 @@ void DebugSection(ViewSettings& s, const PanelInfo& info) {
     ImGui::SliderInt("Slice", &s.froxel_slice, 0, s.froxels.depth - 1);
     ImGui::TextDisabled("at %.0f m; columns: Rayleigh, Mie (x 1/4pi), transmittance",
                         s.froxels.SliceDistance(s.froxel_slice + 0.5));
-    if (s.mode == AerialMode::kPerPixel) ImGui::TextWrapped("Per-pixel mode builds no froxels.");
+    if (s.mode != AerialMode::kFroxel) ImGui::TextWrapped("The per-pixel modes build no froxels.");
   }
   if (s.view == DebugView::kDifference) {
     ImGui::SliderFloat("White at", &s.difference_full_scale, 0.001f, 0.5f, "%.3f", ImGuiSliderFlags_Logarithmic);
@@ -141,13 +141,15 @@ PanelEvents DrawPanel(ViewSettings& s, const PanelInfo& info) {
     TablesStatus(info);
   }
   if (ImGui::CollapsingHeader("Frame", ImGuiTreeNodeFlags_DefaultOpen)) {
-    int per_pixel = s.mode == AerialMode::kPerPixel ? 1 : 0;
+    int mode = int(s.mode);
     ImGui::Text("Aerial perspective");
     ImGui::SameLine();
-    ImGui::RadioButton("froxels", &per_pixel, 0);
+    ImGui::RadioButton("froxels", &mode, int(AerialMode::kFroxel));
     ImGui::SameLine();
-    ImGui::RadioButton("per pixel", &per_pixel, 1);
-    s.mode = per_pixel ? AerialMode::kPerPixel : AerialMode::kFroxel;
+    ImGui::RadioButton("per pixel", &mode, int(AerialMode::kPerPixel));
+    ImGui::SameLine();
+    ImGui::RadioButton("table difference", &mode, int(AerialMode::kTableDifference));
+    s.mode = AerialMode(mode);
     ImGui::Checkbox("Sun shadows", &s.shadows);
     FroxelSection(s.froxels);
     RenderScaleCombo(s.render_scale);

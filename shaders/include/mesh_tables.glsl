@@ -1,0 +1,18 @@
+// The tables that aerial's mesh passes (opaque_fragment.glsl, transparent.frag) read per pixel, at
+// the bindings of the renderer's mesh layout (renderer.cpp, kMeshSlots), and the per-pixel
+// aerial perspective read from them (kAerialPerPixel 1 or 2, frame.glsl).
+#ifndef AERIAL_MESH_TABLES_GLSL
+#define AERIAL_MESH_TABLES_GLSL
+#include "aerial_perspective.glsl"
+layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
+layout(set = 0, binding = 4) uniform sampler3D multiple_density_texture;
+layout(set = 0, binding = 11) uniform sampler3D rayleigh_texture;
+layout(set = 0, binding = 12) uniform sampler3D mie_texture;
+layout(set = 0, binding = 13) uniform sampler3D multiple_texture;
+
+Inscatter GetMeshAerialPerspectivePerPixel(float r, float mu, float mu_s, float nu, float distance) {
+  return GetAerialPerspectivePerPixel(transmittance_texture, multiple_density_texture, rayleigh_texture,
+                                      mie_texture, multiple_texture, r, mu, mu_s, nu, distance);
+}
+
+#endif
