@@ -1,6 +1,7 @@
 # Compiles every GLSL stage under a folder to SPIR-V with glslangValidator, optimizes it with
 # spirv-opt, and embeds the words in the library so the binary never searches for shader files.
-# A GLSL error fails the build; glslangValidator prints the file and line.
+# A GLSL error fails the build; glslangValidator prints the file and line. The output folder is
+# made at configure time (Make, unlike Ninja, does not make it).
 function(aerial_compile_shaders target shader_dir)
   file(GLOB_RECURSE stages CONFIGURE_DEPENDS
     ${shader_dir}/*.comp ${shader_dir}/*.vert ${shader_dir}/*.frag)
@@ -17,7 +18,10 @@ function(aerial_compile_shaders target shader_dir)
     set(raw ${out_dir}/${ident}.raw.spv)
     set(opt ${out_dir}/${ident}.spv)
     set(inc ${out_dir}/${ident}.inc)
+    # glslangValidator exits 0 when it cannot write its output: its old output is removed first,
+    # so that spirv-opt then fails on the missing file instead of embedding a stale module.
     add_custom_command(OUTPUT ${inc}
+      COMMAND ${CMAKE_COMMAND} -E rm -f ${raw}
       COMMAND ${GLSLANG_VALIDATOR} --quiet --target-env vulkan1.2 -I${shader_dir}/include -o ${raw} ${stage}
       COMMAND ${SPIRV_OPT} -O ${raw} -o ${opt}
       COMMAND ${CMAKE_COMMAND} -DIN=${opt} -DOUT=${inc} -P ${PROJECT_SOURCE_DIR}/cmake/EmbedSpirv.cmake
