@@ -5,6 +5,7 @@
 
 #include "aerial/bench/heatmap.h"
 #include "aerial/image.h"
+#include "aerial/image/exposure.h"
 
 namespace aerial::bench {
 namespace {
@@ -45,23 +46,11 @@ double Percentile(std::vector<float> values, double p) {
 
 }  // namespace
 
-double AutoExposure(const ImageRgbF& image) {
-  double sum_log = 0.0;
-  size_t n = size_t(image.width) * size_t(image.height);
-  for (size_t i = 0; i < n; ++i) {
-    const float* p = image.rgba.data() + 4 * i;
-    // Rec. 709 luminance weights on the red, green and blue wavelengths.
-    double luminance = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
-    sum_log += std::log(1e-9 + std::max(luminance, 0.0));
-  }
-  return 0.18 / std::exp(sum_log / double(n));
-}
-
 Canvas ComparisonFigure(const FigureImages& images, const std::string& title) {
   int k = (images.lut4d.width + kMaxPanelWidth - 1) / kMaxPanelWidth;
   ImageRgbF small3d = AverageBlocks(images.lut3d, k), small4d = AverageBlocks(images.lut4d, k);
   int w = small4d.width, h = small4d.height;
-  ToneMapOptions tone{.exposure = AutoExposure(small4d)};
+  ToneMapOptions tone{.exposure = Exposure{}.MultiplierFor(small4d)};  // metered, as PNG images are
   std::vector<float> error = MaxBlocks(ErrorMap(images.lut3d, images.lut4d, images.surface),
                                        images.lut4d.width, images.lut4d.height, k);
   // The 99th percentile, rounded up to a readable number: a few hot pixels do not wash out the map.

@@ -15,8 +15,4 @@ inline constexpr int kMaxPanelWidth = 480;
 // title goes above the panels.
 Canvas ComparisonFigure(const FigureImages& images, const std::string& title);
 
-// The exposure that maps the log-average luminance of the image to 0.18, the tone curve's mid
-// grey (Reinhard et al. 2002, "key" 0.18).
-double AutoExposure(const ImageRgbF& image);
-
 }  // namespace aerial::bench

@@ -35,7 +35,8 @@ void RunRender(const RenderCommandOptions& options) {
   SceneRenderer renderer(tables, scene, render);
   renderer.Render(scene);  // the first frame includes lavapipe's shader compilation
   std::vector<PassTime> times = renderer.Render(scene);
-  WriteImage(options.out, renderer.ReadOutput(), {.exposure = options.frame.exposure});
+  ImageRgbF frame = renderer.ReadOutput();
+  WriteImage(options.out, frame, {.exposure = options.frame.MakeExposure().MultiplierFor(frame)});
   if (options.timings) {
     double total = 0.0;
     for (const auto& pass : times) {
@@ -55,11 +56,12 @@ void RunRender(const RenderCommandOptions& options) {
 void AddRenderCommand(CLI::App& app) {
   auto options = std::make_shared<RenderCommandOptions>();
   CLI::App* command = app.add_subcommand("render", "Render one frame of a scene to EXR or PNG");
-  options->tables.AddTo(*command);
   options->scene.AddTo(*command);
+  command->add_option("--out", options->out, "Output image, .exr (linear radiance) or .png (exposed, sRGB)")
+      ->required();
   options->frame.AddTo(*command, "Image");
   command->add_flag("--timings", options->timings, "Print the GPU time of each pass");
-  command->add_option("--out", options->out, "Output image, .exr (linear) or .png (sRGB)")->required();
+  options->tables.AddTo(*command);
   command->callback([options] { RunRender(*options); });
 }
 

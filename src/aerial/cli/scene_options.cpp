@@ -7,12 +7,12 @@ namespace aerial::cli {
 
 void SceneOptions::AddTo(CLI::App& command) {
   auto* scene = command.add_option("--scene", scene_file, "Scene file (TOML)");
-  command.add_option("--preset", preset,
-                     "Built-in scene: noon (default), afternoon, sunset, twilight, high-altitude")
+  command.add_option("--preset", preset, "Built-in scene (default noon)")
+      ->check(CLI::IsMember(PresetNames()))
       ->excludes(scene);
   command.add_option("--camera-position-m", camera_position_m,
                      "Camera position x,y,z in the scene frame (m; x east, y north, z up)")
-      ->delimiter(',')->expected(3);
+      ->delimiter(',')->expected(3)->default_str("");  // a vector: no default to show
   command.add_option("--camera-yaw-deg", overrides.camera_yaw_deg, "Camera compass azimuth (deg)");
   command.add_option("--camera-pitch-deg", overrides.camera_pitch_deg, "Camera elevation (deg)");
   command.add_option("--camera-fov-deg", overrides.camera_fov_deg, "Vertical field of view (deg)");
@@ -62,11 +62,14 @@ bool ParseShadows(const std::string& value) {
 }
 
 void FrameOptions::AddTo(CLI::App& command, const std::string& size_help) {
-  froxels.AddTo(command);
   command.add_option("--width", width, size_help + " width in pixels");
   command.add_option("--height", height, size_help + " height in pixels");
-  command.add_option("--exposure", exposure,
-                     "Radiance multiplier before tone mapping (PNG images, the viewer's window)");
+  CLI::Option* ev100_option = command.add_option(
+      "--ev100", ev100,
+      "Fixed exposure value at ISO 100 for PNG images and the viewer's window (default: automatic, "
+      "metered from the frame's log-average luminance; EXR is always linear radiance)");
+  command.add_option("--exposure", exposure, "Fixed radiance multiplier before tone mapping, instead of --ev100")
+      ->excludes(ev100_option);
   command.add_option("--aerial", aerial,
                      "Aerial perspective: froxel (default), per-pixel (marched per pixel, the reference) "
                      "or table-difference (two table reads per pixel, as Bruneton 2017's demo)")
@@ -83,13 +86,28 @@ void FrameOptions::AddTo(CLI::App& command, const std::string& size_help) {
   command.add_option("--shadows", shadows,
                      "The sun's shadow map of the terrain and the opaque meshes on surfaces: on (default) "
                      "or off");
+  froxels.AddTo(command);
+}
+
+Exposure FrameOptions::MakeExposure() const {
+  if (exposure) {
+    // A radiance multiplier, as a float in the viewer's shader and the tone map: above 1e6 even
+    // the sun's disc (~2e4 W/m^2/sr/nm) is white a million times over, and 1e300 is infinite as a
+    // float.
+    if (!(*exposure > 0.0 && *exposure <= 1e6))
+      throw Error("--exposure", TomlFloat(*exposure), "a multiplier in (0, 1e6]");
+    return {.mode = Exposure::Mode::kMultiplier, .value = *exposure};
+  }
+  if (ev100) {
+    // From a moonless night (-6) to the sun's disc (about 24), with room on both sides.
+    if (!(*ev100 >= -10.0 && *ev100 <= 30.0)) throw Error("--ev100", TomlFloat(*ev100), "-10 to 30");
+    return {.mode = Exposure::Mode::kEv100, .value = *ev100};
+  }
+  return {};
 }
 
 RenderOptions FrameOptions::MakeRenderOptions() const {
-  // A radiance multiplier, as a float in the viewer's shader and the tone map: above 1e6 even the
-  // sun's disc (~2e4 W/m^2/sr/nm) is white a million times over, and 1e300 is infinite as a float.
-  if (!(exposure > 0.0 && exposure <= 1e6))
-    throw Error("--exposure", TomlFloat(exposure), "a multiplier in (0, 1e6]");
+  MakeExposure();  // checked with the rest of the frame's options, before any work
   RenderOptions render;
   render.width = width;
   render.height = height;

@@ -3,12 +3,14 @@
 // scene, the camera and sun overrides, the froxel grid and the frame's shape. Registered once
 // here so every command spells and checks them the same way.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "aerial/froxel_grid.h"
+#include "aerial/image/exposure.h"
 #include "aerial/renderer.h"
 #include "aerial/scene.h"
 #include "aerial/scene/scene_overrides.h"
@@ -47,7 +49,7 @@ struct FrameOptions {
   FroxelOptions froxels;
   int width = 1280;
   int height = 720;
-  double exposure = 8.0;
+  std::optional<double> exposure, ev100;  // neither: automatic exposure
   std::string aerial = "froxel";
   double render_scale = 1.0;
   std::string terrain = "lod";
@@ -58,6 +60,7 @@ struct FrameOptions {
   // --aerial, --render-scale, --terrain, --terrain-error-px and --shadows.
   void AddTo(CLI::App& command, const std::string& size_help);
   RenderOptions MakeRenderOptions() const;  // validated
+  Exposure MakeExposure() const;            // validated
 };
 
 }  // namespace aerial::cli

@@ -71,7 +71,7 @@ void RunView(const ViewCommandOptions& options) {
   viewer.load = options.tables.MakeLoadOptions();
   viewer.device = options.tables.MakeDeviceOptions();
   CheckViewerMemory(options.tables, viewer);
-  viewer.exposure = options.frame.exposure;
+  viewer.exposure = options.frame.MakeExposure();
   viewer.frames = options.frames;
   viewer.screenshot = options.screenshot;
   viewer.stats = options.stats;
@@ -83,7 +83,6 @@ void RunView(const ViewCommandOptions& options) {
 void AddViewCommand(CLI::App& app) {
   auto options = std::make_shared<ViewCommandOptions>();
   CLI::App* command = app.add_subcommand("view", "Real-time viewer: fly through a scene, tune the atmosphere");
-  options->tables.AddTo(*command);
   options->scene.AddTo(*command);
   options->frame.AddTo(*command, "Window");
   command->add_option("--frames", options->frames, "Close after N frames (scripted runs)")
@@ -94,6 +93,7 @@ void AddViewCommand(CLI::App& app) {
                       "Write frame statistics (median and p95 frame ms, FPS, GPU ms per pass) as JSON");
   command->add_option("--camera-path", options->camera_path,
                       "Camera path to play, 1/30 s of path time per frame (TOML, examples/paths/)");
+  options->tables.AddTo(*command);
   command->callback([options] { RunView(*options); });
 }
 

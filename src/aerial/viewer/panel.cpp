@@ -155,7 +155,10 @@ PanelEvents DrawPanel(ViewSettings& s, const PanelInfo& info) {
     RenderScaleCombo(s.render_scale);
     ImGui::SliderFloat("Terrain error", &s.terrain_error_px, 0.25f, 64.0f, "%.2f px",
                        ImGuiSliderFlags_Logarithmic);
-    ImGui::SliderFloat("Exposure", &s.exposure, 0.1f, 100.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+    ImGui::Checkbox("Auto exposure", &s.auto_exposure);
+    ImGui::SameLine();
+    // Setting the EV100 by hand fixes it.
+    if (ImGui::SliderFloat("EV100", &s.ev100, -4.0f, 20.0f, "%.1f")) s.auto_exposure = false;
     DebugSection(s, info);
   }
   if (ImGui::CollapsingHeader("Sun")) events.sun_clock_moved = SunSection(s);

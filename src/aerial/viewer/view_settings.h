@@ -30,7 +30,9 @@ struct ViewSettings {
   // Changes from frame to frame without a new renderer (only the terrain's selection uses it).
   float terrain_error_px = 4.0f;
   // Display.
-  float exposure = 8.0f;
+  // Exposure (aerial/image/exposure.h): metered and adapted every frame, or the EV100 set here.
+  bool auto_exposure = true;
+  float ev100 = 14.0f;
   DebugView view = DebugView::kFinal;
   int froxel_slice = 8;
   float difference_full_scale = 0.05f;  // relative difference shown white

@@ -10,7 +10,9 @@
 
 #include "aerial/error.h"
 #include "aerial/image.h"
+#include "aerial/image/exposure.h"
 #include "aerial/viewer/display_passes.h"
+#include "aerial/viewer/exposure_meter.h"
 #include "aerial/viewer/frame_stats.h"
 #include "aerial/viewer/froxel_export.h"
 #include "aerial/viewer/imgui_layer.h"
@@ -114,6 +116,8 @@ class Viewer::Impl {
   void Act(const PanelEvents& events, const std::vector<int>& keys, const SceneRenderer& renderer);
   void Say(std::string message);
   void CollectFinishedFrame(uint32_t slot);
+  void AdaptExposure(uint32_t slot, double dt_s);
+  float DisplayExposure() const { return float(RadianceMultiplierFromEv100(settings_.ev100)); }
   void ForgetRecordedFrames();
   void RecordDisplay(const vk::CommandBuffer& cmd, uint32_t slot, const SceneRenderer& primary,
                      const SceneRenderer* other);
@@ -136,6 +140,8 @@ class Viewer::Impl {
   ImGuiLayer imgui_;
   InputReader input_;
   DisplayPasses display_;
+  ExposureMeter meter_;
+  bool exposure_metered_ = false;  // auto exposure has had a first reading to start from
   std::vector<std::unique_ptr<vk::GpuTimer>> timers_;  // the display passes', per slot
   FrameStats stats_;
   // What the renderer's image shows, when the frame that drew it left nothing for later: a frame of
@@ -169,7 +175,8 @@ Viewer::Impl::Impl(ViewerOptions options)
       swapchain_(context_, window_.surface(), window_.framebuffer_extent(), kFramesInFlight),
       imgui_(context_, window_.handle(), swapchain_),
       input_(window_.handle()),
-      display_(context_, swapchain_.render_pass(), swapchain_.format()) {
+      display_(context_, swapchain_.render_pass(), swapchain_.format()),
+      meter_(context_, kFramesInFlight) {
   for (uint32_t slot = 0; slot < kFramesInFlight; ++slot)
     timers_.push_back(std::make_unique<vk::GpuTimer>(context_));
   settings_.variant = options_.variant;
@@ -179,7 +186,8 @@ Viewer::Impl::Impl(ViewerOptions options)
   settings_.render_scale = float(options_.render.render_scale);
   settings_.shadows = options_.render.shadows;
   settings_.terrain_error_px = float(options_.render.terrain_error_px);
-  settings_.exposure = float(options_.exposure);
+  settings_.auto_exposure = options_.exposure.mode == Exposure::Mode::kAuto;
+  if (!settings_.auto_exposure) settings_.ev100 = float(options_.exposure.FixedEv100());
   requested_[options_.variant] = options_.atmosphere.Hash();
   last_frame_end_ = Clock::now();
 }
@@ -279,7 +287,7 @@ void Viewer::Impl::Act(const PanelEvents& events, const std::vector<int>& keys, 
   }
   if (screenshot) {
     try {
-      Say(SaveScreenshots(renderer, settings_.exposure));
+      Say(SaveScreenshots(renderer, DisplayExposure()));
     } catch (const Error& e) {
       Say(std::string("screenshot: ") + e.what());
     }
@@ -310,6 +318,20 @@ void Viewer::Impl::CollectFinishedFrame(uint32_t slot) {
   last_passes_ = std::move(passes);
 }
 
+// Auto exposure: the slot's finished frame metered its luminance; the exposure moves toward it
+// (AdaptEv100), from the first reading on. A fixed exposure leaves the EV100 to the panel.
+void Viewer::Impl::AdaptExposure(uint32_t slot, double dt_s) {
+  std::optional<double> luminance = meter_.TakeAverageLuminance(slot);
+  if (!settings_.auto_exposure) {
+    exposure_metered_ = false;
+    return;
+  }
+  if (!luminance) return;
+  double target = Ev100FromAverageLuminance(*luminance);
+  settings_.ev100 = float(exposure_metered_ ? AdaptEv100(settings_.ev100, target, dt_s) : target);
+  exposure_metered_ = true;
+}
+
 // The display pass for the settings' view and the panel over it, into the swapchain's image.
 void Viewer::Impl::RecordDisplay(const vk::CommandBuffer& cmd, uint32_t slot,
                                  const SceneRenderer& primary, const SceneRenderer* other) {
@@ -322,16 +344,16 @@ void Viewer::Impl::RecordDisplay(const vk::CommandBuffer& cmd, uint32_t slot,
     timer.Begin(cmd, PassName(view));
     switch (view) {
       case DebugView::kFinal:
-        display_.RecordToneMap(cmd, extent, primary.output(), settings_.exposure);
+        display_.RecordToneMap(cmd, extent, primary.output(), DisplayExposure());
         break;
       case DebugView::kRayleigh:
       case DebugView::kMie:
       case DebugView::kTransmittance:
         display_.RecordTerm(cmd, extent, primary, slot,
-                            DisplayPasses::Term(int(view) - int(DebugView::kRayleigh)), settings_.exposure);
+                            DisplayPasses::Term(int(view) - int(DebugView::kRayleigh)), DisplayExposure());
         break;
       case DebugView::kFroxelSlice:
-        display_.RecordFroxelSlice(cmd, extent, primary, settings_.froxel_slice, settings_.exposure);
+        display_.RecordFroxelSlice(cmd, extent, primary, settings_.froxel_slice, DisplayExposure());
         break;
       case DebugView::kDifference: {
         bool primary_4d = primary.tables().options().variant == LutVariant::k4D;
@@ -398,6 +420,7 @@ bool Viewer::Impl::Step() {
   const vk::CommandBuffer& cmd = ring_.Begin();
   uint32_t slot = ring_.slot();
   CollectFinishedFrame(slot);
+  AdaptExposure(slot, dt_s);
   recorded_[slot].clear();
   if (!swapchain_.Acquire(ring_)) {  // out of date: nothing is recorded for this frame
     Resize(window_.framebuffer_extent());
@@ -418,6 +441,7 @@ bool Viewer::Impl::Step() {
     other->Record(*cmd, options_.scene, slot);
     recorded_[slot].push_back({other, " (" + ToString(other->tables().options().variant) + ")"});
   }
+  if (settings_.auto_exposure) meter_.Record(cmd, slot, primary->output());
   RecordDisplay(cmd, slot, *primary, other);
   bool presented = swapchain_.SubmitAndPresent(ring_);
   // Reads of the frame (screenshots, exports) are submitted after it, so they see it finished.
@@ -439,8 +463,11 @@ void Viewer::Impl::Run() {
   while ((options_.frames == 0 || frames_ < options_.frames) && Step()) {
   }
   ring_.WaitAll();
-  if (!options_.screenshot.empty() && shown_)
-    WriteImage(options_.screenshot, shown_->ReadOutput(), {.exposure = settings_.exposure});
+  // Exposed as `aerial render` exposes the same frame, so that the two can be compared.
+  if (!options_.screenshot.empty() && shown_) {
+    ImageRgbF frame = shown_->ReadOutput();
+    WriteImage(options_.screenshot, frame, {.exposure = options_.exposure.MultiplierFor(frame)});
+  }
   if (!options_.stats.empty()) stats_.Write(options_.stats);
 }
 

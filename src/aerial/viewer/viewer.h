@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "aerial/device.h"
+#include "aerial/image/exposure.h"
 #include "aerial/renderer.h"
 #include "aerial/tables.h"
 #include "aerial/viewer/camera_path.h"
@@ -32,7 +33,7 @@ struct ViewerOptions {
   TableLoadOptions load;
   DeviceOptions device;             // device and validation; the window's needs are added
   RenderOptions render;             // width and height: the window's first size
-  double exposure = 8.0;
+  Exposure exposure;                // automatic by default (aerial/image/exposure.h)
   int frames = 0;                   // > 0: close after that many presented frames
   std::filesystem::path screenshot;  // written after the last frame, .png or .exr (checked by the caller)
   std::filesystem::path stats;       // frame statistics (frame_stats.h), written at exit

@@ -1,0 +1,78 @@
+// The exposure's arithmetic (Lagarde & de Rousiers 2014, sec. 5.1) and the meter's clipped
+// log-average, on images whose answer is known.
+#include "aerial/image/exposure.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace aerial {
+namespace {
+
+// An image of n pixels of one radiance (the same in the three channels).
+ImageRgbF Grey(int n, float radiance) {
+  ImageRgbF image{n, 1, std::vector<float>(4 * size_t(n), radiance)};
+  for (int i = 0; i < n; ++i) image.rgba[4 * size_t(i) + 3] = 1.0f;
+  return image;
+}
+
+TEST(Exposure, LuminanceOfAFlatSpectrumIsItsRadianceTimes683TimesTheIntegralOfV) {
+  // 1 W/m^2/sr/nm flat over the visible: 683 lm/W x 106.857 nm = 72,983 cd/m^2; the Rec. 709
+  // weights sum to 1.
+  float one[3] = {1.0f, 1.0f, 1.0f};
+  EXPECT_NEAR(LuminanceOfRadiance(one), 72983.3, 0.1);
+}
+
+TEST(Exposure, Ev100OfTheMeterCalibration) {
+  // EV100 = log2(L S / K): with S = 100 and K = 12.5, L = 1 cd/m^2 is EV100 3, and each
+  // doubling one more.
+  EXPECT_NEAR(Ev100FromAverageLuminance(1.0), 3.0, 1e-12);
+  EXPECT_NEAR(Ev100FromAverageLuminance(2.0), 4.0, 1e-12);
+  // A sunny day's 4000 cd/m^2 average is close to the photographers' "sunny 16" EV100 15.
+  EXPECT_NEAR(Ev100FromAverageLuminance(4000.0), 15.0, 0.4);
+}
+
+TEST(Exposure, MultiplierAndEv100AreInverse) {
+  for (double ev100 : {-4.0, 0.0, 9.5, 15.0})
+    EXPECT_NEAR(Ev100FromRadianceMultiplier(RadianceMultiplierFromEv100(ev100)), ev100, 1e-12);
+  // Saturation-based speed: the luminance 1.2 * 2^EV100 maps to 1.
+  double ev100 = 12.0;
+  double luminance = 1.2 * std::exp2(ev100);
+  float one[3] = {1.0f, 1.0f, 1.0f};
+  double radiance = luminance / LuminanceOfRadiance(one);
+  EXPECT_NEAR(radiance * RadianceMultiplierFromEv100(ev100), 1.0, 1e-6);
+}
+
+TEST(Exposure, AutomaticExposureMapsTheMeteredLuminanceToTheSameValue) {
+  // Whatever the scene's brightness, a grey image comes out at L / (1.2 x 2^EV100) with
+  // 2^EV100 = L x 100 / 12.5: 1 / 9.6 of the tone curve's input scale.
+  for (float radiance : {1e-5f, 0.03f, 2.0f}) {
+    ImageRgbF image = Grey(10, radiance);
+    EXPECT_NEAR(double(radiance) * Exposure{}.MultiplierFor(image), 1.0 / 9.6, 1e-6) << radiance;
+  }
+}
+
+TEST(Exposure, TheMeterReadsTheMiddleOfTheImage) {
+  // 10 pixels: 3 black, 4 at one radiance, 3 a million times brighter. The middle 40% (ranks 3 to
+  // 6) are the four: the meter reads them alone, where the plain log-average would be 10^(6 x
+  // 0.3) = 63 times brighter, and a zero pixel would not drag it to 0.
+  ImageRgbF image = Grey(10, 0.01f);
+  for (int i = 0; i < 3; ++i) std::fill_n(&image.rgba[4 * size_t(i)], 3, 0.0f);
+  for (int i = 7; i < 10; ++i) std::fill_n(&image.rgba[4 * size_t(i)], 3, 1e4f);
+  float middle[3] = {0.01f, 0.01f, 0.01f};
+  EXPECT_NEAR(LogAverageLuminance(image) / LuminanceOfRadiance(middle), 1.0, 1e-9);
+}
+
+TEST(Exposure, FixedExposuresIgnoreTheImage) {
+  ImageRgbF bright = Grey(4, 10.0f), dark = Grey(4, 1e-4f);
+  Exposure ev{.mode = Exposure::Mode::kEv100, .value = 13.0};
+  EXPECT_EQ(ev.MultiplierFor(bright), ev.MultiplierFor(dark));
+  EXPECT_NEAR(ev.MultiplierFor(bright), RadianceMultiplierFromEv100(13.0), 1e-12);
+  Exposure multiplier{.mode = Exposure::Mode::kMultiplier, .value = 8.0};
+  EXPECT_EQ(multiplier.MultiplierFor(dark), 8.0);
+  EXPECT_NEAR(multiplier.FixedEv100(), Ev100FromRadianceMultiplier(8.0), 1e-12);
+}
+
+}  // namespace
+}  // namespace aerial
