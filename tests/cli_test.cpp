@@ -82,6 +82,29 @@ TEST(Cli, NoVulkanDriverSaysHowToInstallOne) {
   EXPECT_TRUE(run.out.empty()) << run.out;
 }
 
+// The exit statuses --help's footer promises: 2 for a command line that does not parse, 1 for a
+// value that parses but is refused when the command runs, 0 for --help. (CLI11's own codes, 106
+// and 109, leaked out before.)
+TEST(Cli, UsageErrorsExitTwoAndRunTimeErrorsOne) {
+  const std::string out = " --out /tmp/aerial-cli-exit-test.png";
+  for (const std::string& usage : {std::string("no-such-command"), "render --no-such-option" + out, "render --aerial nope" + out,
+                                   "render --preset nope" + out, "render --width" + out, std::string("render")}) {
+    CommandRun run = RunAerial(usage);
+    EXPECT_EQ(run.exit_code, 2) << usage << "\n" << run.err;
+  }
+  CommandRun refused = RunAerial("render --exposure 0" + out);
+  EXPECT_EQ(refused.exit_code, 1) << refused.err;
+  CommandRun help = RunAerial("render --help");
+  EXPECT_EQ(help.exit_code, 0) << help.err;
+  // The options a user sets most come first, the tables' last, with their defaults.
+  size_t preset = help.out.find("--preset"), width = help.out.find("--width INT=1280"),
+         tables = help.out.find("Tables, device and memory:"), lut = help.out.find("--lut");
+  EXPECT_LT(preset, width) << help.out;
+  EXPECT_LT(width, tables) << help.out;
+  EXPECT_LT(tables, lut) << help.out;
+  EXPECT_NE(lut, std::string::npos) << help.out;
+}
+
 struct BadInput {
   std::string arguments;
   std::string must_mention;
@@ -125,7 +148,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"precompute --orders 0", "--orders"},
         BadInput{"precompute --precision float64", "--precision"},
         BadInput{"precompute --half --precision float32", "--precision = float32 with --half is invalid"},
-        BadInput{"precompute --small-tables --quiet --out /proc/aerial-cannot-write", "/proc/aerial-cannot-write"},
+        BadInput{"precompute --small-tables --quiet --cache-dir /proc/aerial-cannot-write", "/proc/aerial-cannot-write"},
         BadInput{"precompute --atmosphere " AERIAL_SOURCE_DIR "/tests/data/bad_mie_g.toml", "mie.phase_g"},
         BadInput{"precompute --atmosphere " AERIAL_SOURCE_DIR "/tests/data/unknown_key.toml", "rayleigh.scatterring"},
         // Finite doubles beyond float (issue 13): they gave null in the JSON and exit status 0.

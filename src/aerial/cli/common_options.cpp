@@ -6,6 +6,8 @@
 namespace aerial::cli {
 
 void TableOptions::AddTo(CLI::App& command) {
+  // Listed after the command's own options, in a group of their own: most runs leave them alone.
+  command.option_defaults()->group(kTableOptionsGroup);
   command.add_option("--atmosphere", atmosphere_file,
                      "Atmosphere parameters (TOML); default: the built-in \"earth\"");
   command.add_option("--lut", lut, "Scattering table variant: 4d (r, mu, mu_s, nu) or 3d (nu dropped)")
@@ -22,25 +24,26 @@ void TableOptions::AddTo(CLI::App& command) {
   command.add_flag("--half", half_precision, "Store the scattering tables as 16-bit floats (--precision float16)");
   command.add_flag("--small-tables", small_tables, "Quarter-resolution tables (tests, quick looks)");
   command.add_option("--transmittance-size", transmittance_size, "Transmittance table MU,R (default 256,64)")
-      ->delimiter(',')->expected(2);
+      ->delimiter(',')->expected(2)->default_str("");
   command.add_option("--irradiance-size", irradiance_size, "Irradiance table MU_S,R (default 64,32)")
-      ->delimiter(',')->expected(2);
+      ->delimiter(',')->expected(2)->default_str("");
   command.add_option("--scattering-size", scattering_size,
                      "Scattering table R,MU,MU_S,NU (default 32,128,36,9; NU must be 1 with --lut 3d)")
-      ->delimiter(',')->expected(4);
+      ->delimiter(',')->expected(4)->default_str("");
   command.add_option("--multiple-density-size", multiple_density_size,
                      "Multiple scattering density table R,MU,MU_S,NU (default 32,56,36,9; NU must be 1 "
                      "with --lut 3d)")
-      ->delimiter(',')->expected(4);
+      ->delimiter(',')->expected(4)->default_str("");
   command.add_option("--cache-dir", cache_dir, "Table cache directory (default ~/.cache/aerial)");
   command.add_flag("--no-cache", no_cache, "Recompute the tables even when a cached copy exists");
   command.add_option("--device", device, "Vulkan device to use: part of its name (or AERIAL_DEVICE)");
   command.add_flag("--validation", validation, "Enable the Vulkan validation layers (or AERIAL_VALIDATION=1)");
-  command.add_flag("--quiet", quiet, "No progress bar");
   command.add_option("--max-memory-mib", max_memory_mib,
                      "Memory budget for tables, froxels and images, checked before allocating (default " +
                          std::to_string(kDefaultMemoryBudgetMiB) + ", or the device's memory if smaller)")
       ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 30));
+  command.option_defaults()->group("Options");
+  command.add_flag("--quiet", quiet, "No progress bar");
 }
 
 AtmosphereParameters TableOptions::LoadAtmosphere() const {

@@ -16,6 +16,9 @@
 
 namespace aerial::cli {
 
+// The --help group of the table, device and memory options, listed after a command's own.
+inline constexpr const char* kTableOptionsGroup = "Tables, device and memory";
+
 struct TableOptions {
   std::filesystem::path atmosphere_file;
   std::string lut = "4d";

@@ -52,7 +52,6 @@ void AddExportVdbCommand(CLI::App& app) {
   auto options = std::make_shared<ExportVdbCommandOptions>();
   CLI::App* command =
       app.add_subcommand("export-vdb", "Write one frame's froxel volume to an OpenVDB file");
-  options->tables.AddTo(*command);
   options->scene.AddTo(*command);
   options->froxels.AddTo(*command);
   command->add_option("--width", options->vdb.width,
@@ -64,6 +63,7 @@ void AddExportVdbCommand(CLI::App& app) {
   command->add_option("--shadows", options->shadows,
                       "The sun's shadow map in the frame the froxels are captured from: on (default) or off");
   command->add_option("--out", options->out, "Output file (.vdb)")->required();
+  options->tables.AddTo(*command);
   command->callback([options] { RunExportVdb(*options); });
 }
 

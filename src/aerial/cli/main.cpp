@@ -1,5 +1,6 @@
 // aerial: physically based sky and aerial perspective. Errors from any boundary (configs, CLI
-// values, files, Vulkan) arrive here as exceptions, are printed once and turn into exit status 1.
+// values, files, Vulkan) arrive here as exceptions, are printed once and turn into exit status 1;
+// a command line that does not parse exits with 2 (the footer of --help).
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -14,6 +15,8 @@
 #include "aerial/version.h"
 
 namespace {
+
+constexpr int kUsageError = 2;
 
 int Fail(const std::exception& e) {
   std::fprintf(stderr, "aerial: error: %s\n", e.what());
@@ -34,6 +37,10 @@ int main(int argc, char** argv) {
   CLI::App app{"aerial: precomputed atmospheric scattering (Bruneton 2008) on Vulkan"};
   app.require_subcommand(1);
   app.set_version_flag("--version", AERIAL_VERSION);
+  app.option_defaults()->always_capture_default();  // every command's --help shows its defaults
+  app.footer("Exit status: 0 done; 1 a run-time error (a bad value, file, config or device: the message "
+             "names it); 2 a usage error (an unknown command or option, a missing or malformed value); 3 "
+             "Vulkan validation messages (with --validation).\n");
   aerial::cli::AddPrecomputeCommand(app);
   aerial::cli::AddProbeCommand(app);
   aerial::cli::AddRenderCommand(app);
@@ -51,13 +58,14 @@ int main(int argc, char** argv) {
     if (!known) {
       std::fprintf(stderr, "aerial: error: command = %s is invalid; expected one of: %s\n", argv[1],
                    commands.c_str());
-      return 2;
+      return kUsageError;
     }
   }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version end here too, with status 0.
+    return app.exit(e) == 0 ? 0 : kUsageError;
   } catch (const aerial::Error& e) {
     return Fail(e);
   } catch (const ::vk::OutOfDeviceMemoryError& e) {

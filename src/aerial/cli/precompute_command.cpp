@@ -12,7 +12,6 @@ void AddPrecomputeCommand(CLI::App& app) {
   auto options = std::make_shared<TableOptions>();
   CLI::App* command = app.add_subcommand("precompute", "Precompute the atmosphere tables into the cache");
   options->AddTo(*command);
-  command->add_option("--out", options->cache_dir, "Directory for the table cache (alias of --cache-dir)");
   command->callback([options] {
     AtmosphereParameters atmosphere = options->LoadAtmosphere();
     PrecomputeOptions precompute = options->MakePrecomputeOptions();

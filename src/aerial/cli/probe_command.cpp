@@ -80,7 +80,6 @@ void RunProbe(const ProbeOptions& options) {
 void AddProbeCommand(CLI::App& app) {
   auto options = std::make_shared<ProbeOptions>();
   CLI::App* command = app.add_subcommand("probe", "Print the sky seen by one camera along one ray, as JSON");
-  options->tables.AddTo(*command);
   command->add_option("--altitude-m", options->view.altitude_m, "Camera altitude above the ground (m)")
       ->required();
   command->add_option("--view-zenith-deg", options->view.view_zenith_deg, "View zenith angle (deg)")
@@ -94,6 +93,7 @@ void AddProbeCommand(CLI::App& app) {
                       "Also report radiance_to_point and transmittance_to_point for this distance (m)");
   command->add_flag("--reference", options->reference,
                     "Compute with the CPU double-precision reference instead of the tables");
+  options->tables.AddTo(*command);
   command->callback([options] { RunProbe(*options); });
 }
 

@@ -26,7 +26,7 @@ void CheckName(const std::string& name) {
 }  // namespace
 
 std::vector<std::string> PresetNames() {
-  return {"noon", "afternoon", "sunset", "twilight", "high-altitude", "evening"};
+  return {"noon", "afternoon", "sunset", "twilight", "high-altitude", "evening", "sunrise"};
 }
 
 void ApplyPresetView(Scene& scene, const std::string& name, double planet_radius_m) {
@@ -48,6 +48,12 @@ void ApplyPresetView(Scene& scene, const std::string& name, double planet_radius
     camera.yaw_deg = 265.0;
   } else if (name == "evening") {
     sun = {79.0, 300.0};
+  } else if (name == "sunrise") {
+    // Toward a sun 8 degrees up, just above the valley's far ridge: its disc, its aureole (the
+    // Mie forward peak) and the near mountain's shadow in the air to its left.
+    sun = {82.0, 200.0};
+    camera.yaw_deg = 203.0;
+    camera.pitch_deg = 5.0;
   } else if (name == "high-altitude") {
     sun = {50.0, 160.0};
     camera.position = {0.0, 0.0, kHighAltitudeM};

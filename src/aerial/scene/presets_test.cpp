@@ -25,7 +25,7 @@ Scene View(const std::string& name) {
 }
 
 TEST(Preset, EveryNamedPresetBuildsAValidScene) {
-  ASSERT_EQ(PresetNames().size(), 6u);
+  ASSERT_EQ(PresetNames().size(), 7u);
   for (const std::string& name : PresetNames()) {
     Scene scene = BuildPreset(name, kR);
     EXPECT_EQ(scene.name, name);
