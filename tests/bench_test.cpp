@@ -37,7 +37,7 @@ void CheckFilesAndStructure(const fs::path& dir, const nlohmann::json& results) 
   std::string report = ReadText(dir / "report.md");
   report.insert(report.begin(), '\n');  // every heading starts a line
   for (const char* heading :
-       {"# aerial bench", "## Machine", "## Summary", "## Speed and size", "## Accuracy",
+       {"# aerial bench", "## Machine", "## Summary", "### Recommendations", "## Speed and size", "## Accuracy",
         "### What is compared", "### 3D tables against 4D tables",
         "### Against the CPU reference, froxel path", "### Against the CPU reference, per-pixel path",
         "### Froxel path against per-pixel path", "### Against the CPU reference, two table reads per pixel",

@@ -4,6 +4,8 @@
 
 namespace aerial::bench {
 
+bool IsBruneton2017Device(const std::string& device) { return device.find("llvmpipe") != std::string::npos; }
+
 std::string Bruneton2017Step(const std::string& pass) {
   std::string kind = PassKind(pass);
   if (kind == "incident radiance") return "scattering density";

@@ -25,6 +25,11 @@ inline constexpr std::array<ReferenceStep, 5> kBruneton2017Steps = {{
     {"transmittance", 0.02},
 }};
 
+// Whether a device is the kind the figures above were taken on (Mesa's llvmpipe, which lavapipe
+// reports): a speed-up against them on another device (a GPU) would compare two machines, not two
+// programs.
+bool IsBruneton2017Device(const std::string& device);
+
 // The Bruneton step that one of our passes belongs to, or "" if none. Our density is split in
 // "incident radiance" + "scattering density", and our multiple scattering is followed by a
 // separate "accumulate" pass, so each pair maps to one Bruneton step. Direct irradiance has no

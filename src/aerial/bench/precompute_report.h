@@ -25,7 +25,8 @@ struct BenchResult {
 };
 
 // Ratios of Bruneton 2017's time to our median time (> 1: we are faster). Only meaningful for the
-// tables Bruneton's figures were measured with, so it is empty for any other options.
+// tables Bruneton's figures were measured with, on the driver they were measured on, so it is
+// empty for any other options or device.
 struct Speedup {
   double total = 0.0;
   std::vector<std::pair<std::string, double>> steps;  // in kBruneton2017Steps order

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "aerial/bench/recommendations.h"
 #include "aerial/bench/results_files.h"
 #include "aerial/bench/variant_comparison.h"
 #include "aerial/reference/monte_carlo.h"
@@ -75,6 +76,9 @@ void SummarySection(std::ostringstream& md, const BenchResults& b) {
   }
   md << "sky " << Cell(sky) << " (relative RMSE / max, " << sky_view << "), opaque " << Cell(opaque) << " ("
      << opaque_view << ").\n\n";
+  md << "### Recommendations\n\nFrom this run's figures at the " << TierLabel(tier) << " resolution:\n\n";
+  for (const std::string& line : Recommendations(b)) md << line << "\n";
+  md << "\n";
 }
 
 // Median precompute GPU time of each kind of pass, all orders summed.

@@ -76,7 +76,7 @@ void PrintComparison(const BenchResult& lut4d, const BenchResult& lut3d, std::FI
   if (std::optional<Speedup> speedup = CompareWithBruneton2017(lut4d))
     std::fprintf(out, "  4d speed-up vs Bruneton 2017: %.1fx (total)\n", speedup->total);
   else
-    std::fprintf(out, "  4d speed-up vs Bruneton 2017: not shown (not the default tables)\n");
+    std::fprintf(out, "  4d speed-up vs Bruneton 2017: not shown (only for the default tables on llvmpipe)\n");
 }
 
 std::string ComparisonJson(const BenchResult& lut4d, const BenchResult& lut3d) {
