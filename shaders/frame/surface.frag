@@ -15,7 +15,8 @@ layout(location = 3) in vec3 surface_normal;
 layout(location = 0) out vec4 radiance_and_distance;
 
 void main() {
-  float visibility = kSunPart == 0 ? 0.0 : SunVisibility(relative_position, normalize(surface_normal));
-  radiance_and_distance = vec4(ShadeLambertian(LambertianRadiance(sun_radiance, sky_radiance), visibility),
+  vec3 normal = normalize(surface_normal);
+  float visibility = kSunPart == 0 ? 0.0 : SunVisibility(relative_position, normal);
+  radiance_and_distance = vec4(ShadeLambertian(LambertianRadiance(sun_radiance, sky_radiance), normal, visibility),
                                length(relative_position));
 }

@@ -33,8 +33,9 @@ void main() {
     segment.transmittance = vertex_transmittance;
   }
   float alpha = sun_radiance_opacity.a;
-  vec3 surface_radiance = ShadeLambertian(LambertianRadiance(sun_radiance_opacity.rgb, sky_radiance),
-                                          SunVisibility(relative_position, normalize(facing_normal)));
+  vec3 normal = normalize(facing_normal);
+  vec3 surface_radiance = ShadeLambertian(LambertianRadiance(sun_radiance_opacity.rgb, sky_radiance), normal,
+                                          SunVisibility(relative_position, normal));
   vec3 radiance = ApplyAerialPerspective(surface_radiance, segment, nu);
   color = vec4(radiance * alpha, alpha);
 }

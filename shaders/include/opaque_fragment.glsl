@@ -49,7 +49,8 @@ vec4 GetFragmentRadiance(float sun_visibility) {
     segment = GetAerialPerspective(rayleigh_froxels, mie_froxels, transmittance_froxels,
                                    gl_FragCoord.xy / frame.viewport.xy, distance);
   }
-  vec3 surface_radiance = ShadeLambertian(LambertianRadiance(sun_radiance, sky_radiance), sun_visibility);
+  vec3 surface_radiance =
+      ShadeLambertian(LambertianRadiance(sun_radiance, sky_radiance), normalize(surface_normal), sun_visibility);
   return vec4(ApplyAerialPerspective(surface_radiance, segment, nu), 1.0);
 }
 

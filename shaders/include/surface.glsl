@@ -8,7 +8,11 @@
 
 // The radiance leaving a Lambertian surface in its two parts: what the sun lights directly (the
 // part a shadow takes away) and what the sky lights (never shadowed here: the sky is seen from
-// most of the hemisphere even beside a mountain).
+// most of the hemisphere even beside a mountain). `sun` is for a surface facing the sun: its
+// cosine is left to ShadeLambertian, per fragment, because interpolating the vertices' clamped
+// cosines across a triangle blurs the terminator on a slope turned from the sun and lights its
+// dark side (with the sun 55 degrees from the zenith, a terrain pixel just past it was 2.4x the
+// CPU reference's radiance in `aerial bench --quick`).
 struct LambertianRadiance {
   vec3 sun;
   vec3 sky;
@@ -21,16 +25,15 @@ LambertianRadiance GetLambertianRadiance(sampler2D transmittance_texture, sample
   vec3 up = point / r;
   vec3 sun = frame.sun_direction.xyz;
   float mu_s = dot(up, sun);
-  vec3 sun_irradiance = atmosphere.solar_irradiance.rgb *
-                        GetTransmittanceToSun(transmittance_texture, r, mu_s) *
-                        max(dot(normal, sun), 0.0);
+  vec3 sun_irradiance = atmosphere.solar_irradiance.rgb * GetTransmittanceToSun(transmittance_texture, r, mu_s);
   vec3 sky_irradiance = GetIrradiance(irradiance_texture, r, mu_s) * (1.0 + dot(normal, up)) * 0.5;
   return LambertianRadiance(albedo * (1.0 / PI) * sun_irradiance, albedo * (1.0 / PI) * sky_irradiance);
 }
 
-// The surface's radiance where the fraction sun_visibility of the sun is seen (shadow.glsl).
-vec3 ShadeLambertian(LambertianRadiance radiance, float sun_visibility) {
-  return radiance.sun * sun_visibility + radiance.sky;
+// The surface's radiance where its unit normal is `normal` and the fraction sun_visibility of the
+// sun is seen (shadow.glsl).
+vec3 ShadeLambertian(LambertianRadiance radiance, vec3 normal, float sun_visibility) {
+  return radiance.sun * (max(dot(normal, frame.sun_direction.xyz), 0.0) * sun_visibility) + radiance.sky;
 }
 
 // What a view ray from the camera sees behind the atmosphere, through it: where the ray meets the
@@ -43,7 +46,7 @@ vec3 GetBackgroundThroughAtmosphere(sampler2D transmittance_texture, sampler2D i
   vec3 normal = normalize(frame.camera_planet_position.xyz + ground);
   return transmittance * ShadeLambertian(GetLambertianRadiance(transmittance_texture, irradiance_texture,
                                                                ground, normal, atmosphere.ground_albedo.rgb),
-                                         1.0);
+                                         normal, 1.0);
 }
 
 // The sky pixel's radiance behind the inscatter: the background where the ray meets the ground
