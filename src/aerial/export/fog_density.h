@@ -13,8 +13,9 @@
 // It is the rate at which the optical depth -ln T of the froxels' transmittance grows along a
 // view ray. Taken from that transmittance instead, as ln(T(s0) / T(s1)) / (s1 - s0) over each
 // voxel's segment of its ray, it agreed to 1.4% at the median but was off by 40% or more on a
-// tenth of the frustum grid's voxels and negative on some (the test scene, full tables): T comes
-// from ratios of a tabulated transmittance, whose interpolation errors swamp its derivative.
+// tenth of the frustum grid's voxels and not positive on some (the test scene, full tables):
+// T comes from ratios of a tabulated transmittance, whose interpolation errors swamp its
+// derivative.
 #include <glm/glm.hpp>
 
 #include "aerial/atmosphere.h"
