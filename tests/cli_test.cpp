@@ -52,7 +52,7 @@ TEST(Cli, ProbeReferencePrintsItsStandardErrors) {
   EXPECT_FALSE(nlohmann::json::parse(tables.out).contains("sky_radiance_std_error"));
 }
 
-// export-vdb writes a file Debian's python3-openvdb reads, in froxel space and on a world grid.
+// export-vdb writes a file Debian's python3-openvdb reads, on the camera's frustum and on a world grid.
 TEST(Cli, ExportVdbWritesTheFroxelVolume) {
   std::filesystem::path dir = std::filesystem::temp_directory_path() / ("aerial-cli-vdb-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);

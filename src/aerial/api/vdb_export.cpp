@@ -2,6 +2,7 @@
 #include "aerial/vdb_export.h"
 
 #include "aerial/api/impl.h"
+#include "aerial/export/camera_frustum.h"
 #include "aerial/export/froxel_export.h"
 
 namespace aerial {
@@ -17,6 +18,8 @@ void CheckVdbExport(const std::filesystem::path& out, const Scene& scene, const 
   if (options.world_grid_m) {
     FrameUniforms frame = CaptureFrameUniforms(scene, atmosphere.bottom_radius_m, grid, SizeOf(options));
     CheckWorldGrid(*options.world_grid_m, FroxelPlacement(frame, grid));
+  } else {
+    CameraFrustum(scene.camera, SizeOf(options).aspect(), grid);  // throws for a near plane beyond far
   }
 }
 
@@ -24,13 +27,13 @@ size_t ExportFroxelVdb(const std::filesystem::path& out, const Tables& tables, c
                        const FroxelGrid& grid, const VdbExportOptions& options) {
   FroxelFrame frame = CaptureFroxels(tables.impl().tables(), scene, grid, SizeOf(options), options.shadows);
   VdbVolume volume = options.world_grid_m ? MakeWorldSpaceVolume(frame, *options.world_grid_m)
-                                          : MakeFroxelSpaceVolume(frame);
+                                          : MakeFrustumVolume(frame);
   WriteVdb(out, volume);
   return volume.voxels.size();
 }
 
 size_t ExportFroxelVdb(const std::filesystem::path& out, const SceneRenderer& renderer, const Scene& scene) {
-  VdbVolume volume = MakeFroxelSpaceVolume(ReadFroxelFrame(renderer.impl().renderer, scene));
+  VdbVolume volume = MakeFrustumVolume(ReadFroxelFrame(renderer.impl().renderer, scene));
   WriteVdb(out, volume);
   return volume.voxels.size();
 }

@@ -43,7 +43,7 @@ void RunExportVdb(const ExportVdbCommandOptions& options) {
   size_t voxels = ExportFroxelVdb(options.out, tables, scene, grid, vdb);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("wrote %s: %zu voxels per grid (%s), %.2f s\n", options.out.c_str(), voxels,
-              vdb.world_grid_m ? "world grid" : "froxel space", seconds);
+              vdb.world_grid_m ? "world grid" : "camera frustum", seconds);
 }
 
 }  // namespace
@@ -58,8 +58,8 @@ void AddExportVdbCommand(CLI::App& app) {
                       "Width of the image the froxels are for (its aspect shapes the frustum)");
   command->add_option("--height", options->vdb.height, "Height of that image");
   command->add_option("--world-grid", options->vdb.world_grid_m,
-                      "Resample into a regular world-space grid of this voxel size (m) instead of "
-                      "writing the froxels in their own index space");
+                      "Resample into a regular world-space grid of this voxel size (m), for Blender, "
+                      "instead of the camera's frustum (OpenVDB's frustum transform, for Houdini)");
   command->add_option("--shadows", options->shadows,
                       "The sun's shadow map in the frame the froxels are captured from: on (default) or off");
   command->add_option("--out", options->out, "Output file (.vdb)")->required();

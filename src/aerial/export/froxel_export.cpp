@@ -8,6 +8,10 @@
 
 #include "aerial/core/atomic_file.h"
 #include "aerial/error.h"
+#include "aerial/export/camera_frustum.h"
+#include "aerial/export/fog_density.h"
+#include "aerial/export/ground.h"
+#include "aerial/export/volume_grids.h"
 #include "aerial/render/renderer.h"
 #include "aerial/scene/camera.h"
 #include "aerial/version.h"
@@ -58,10 +62,10 @@ VdbMetadata FrameMetadata(const FroxelFrame& frame, const std::string& grid_spac
       {"sun_zenith_deg", frame.sun.zenith_deg},
       {"sun_azimuth_deg", frame.sun.azimuth_deg},
       {"lut", ToString(frame.lut)},
-      {"atmosphere_hash", Hex(frame.atmosphere_hash)},
+      {"atmosphere_hash", Hex(frame.atmosphere.Hash())},
       {"table_options_hash", Hex(frame.table_options_hash)},
-      {"wavelengths_nm", frame.wavelengths_nm},
-      {"planet_radius_m", frame.planet_radius_m},
+      {"wavelengths_nm", frame.atmosphere.wavelengths_nm},
+      {"planet_radius_m", frame.atmosphere.bottom_radius_m},
       {"froxel_resolution", std::array<int32_t, 3>{grid.width, grid.height, grid.depth}},
       {"froxel_depth_distribution", std::string("quadratic")},
       {"froxel_far_m", grid.far_m},
@@ -70,48 +74,11 @@ VdbMetadata FrameMetadata(const FroxelFrame& frame, const std::string& grid_spac
        std::string("froxel (i, j, k) is the point at distance froxel_far_m * ((k + 0.5) / D)^2 "
                    "from the camera along the view ray through the image point "
                    "((i + 0.5) / W, (j + 0.5) / H), (0, 0) the top-left corner")},
+      {"ground", std::string(frame.terrain ? "terrain" : "planet sphere (sea level)")},
   };
 }
 
-struct GridText {
-  const char* name;
-  const char* units;
-  const char* description;
-};
-
-constexpr GridText kRayleigh{"rayleigh_inscatter", "W/m^2/nm",
-                             "Rayleigh inscatter from the camera to the point, without phase: times "
-                             "the Rayleigh phase function (1/sr) it is radiance (W/m^2/sr/nm); "
-                             "channels are wavelengths_nm"};
-constexpr GridText kMie{"mie_inscatter", "W/m^2/nm",
-                        "Mie inscatter from the camera to the point, without phase: times the Mie "
-                        "phase function (1/sr) it is radiance (W/m^2/sr/nm); channels are "
-                        "wavelengths_nm"};
-constexpr GridText kTransmittance{"transmittance", "1",
-                                  "transmittance from the camera to the point; channels are "
-                                  "wavelengths_nm"};
-constexpr GridText kLuminance{"inscatter_luminance", "W/m^2/nm",
-                              "0.2126 R + 0.7152 G + 0.0722 B of rayleigh_inscatter + "
-                              "mie_inscatter (phase taken as 1): a scalar to look at the volume "
-                              "with, not a photometric quantity"};
-constexpr GridText kPosition{"froxel_position", "m",
-                             "world position (scene frame) of the froxel's center, where the "
-                             "renderer puts it"};
-
-VdbVolume::Grid MakeGrid(const GridText& text, int components, size_t voxels) {
-  VdbVolume::Grid grid{.name = text.name, .components = components};
-  grid.values.reserve(voxels * components);
-  grid.metadata = {{"value_units", std::string(text.units)},
-                   {"description", std::string(text.description)}};
-  return grid;
-}
-
 }  // namespace
-
-double InscatterLuminance(const float* rayleigh, const float* mie) {
-  return 0.2126 * (double(rayleigh[0]) + mie[0]) + 0.7152 * (double(rayleigh[1]) + mie[1]) +
-         0.0722 * (double(rayleigh[2]) + mie[2]);
-}
 
 FrameUniforms CaptureFrameUniforms(const Scene& scene, double planet_radius_m, const FroxelGrid& grid,
                                    CaptureSize size) {
@@ -127,10 +94,9 @@ FroxelFrame ReadFroxelFrame(const Renderer& renderer, const Scene& scene) {
   frame.camera = scene.camera;
   frame.sun = scene.sun;
   frame.lut = tables.options().variant;
-  frame.atmosphere_hash = tables.atmosphere().Hash();
+  frame.atmosphere = tables.atmosphere();
   frame.table_options_hash = tables.options().Hash();
-  frame.wavelengths_nm = tables.atmosphere().wavelengths_nm;
-  frame.planet_radius_m = tables.atmosphere().bottom_radius_m;
+  frame.terrain = scene.terrain;
   return frame;
 }
 
@@ -209,41 +175,35 @@ void CheckWorldGrid(double voxel_m, const FroxelPlacement& placement) {
   }
 }
 
-VdbVolume MakeFroxelSpaceVolume(const FroxelFrame& frame) {
+VdbVolume MakeFrustumVolume(const FroxelFrame& frame) {
   const FroxelTexels& texels = frame.texels;
   const FroxelGrid& grid = texels.grid;
-  FroxelPlacement placement = frame.placement();
-  size_t count = size_t(grid.width) * grid.height * grid.depth;
+  const CameraFrustum frustum(frame.camera, frame.size.aspect(), grid);
+  const Ground ground(frame.terrain, frame.atmosphere.bottom_radius_m);
   VdbVolume volume;
-  volume.voxels.reserve(count);
-  VdbVolume::Grid rayleigh = MakeGrid(kRayleigh, 3, count), mie = MakeGrid(kMie, 3, count),
-                  transmittance = MakeGrid(kTransmittance, 3, count),
-                  luminance = MakeGrid(kLuminance, 1, count), position = MakeGrid(kPosition, 3, count);
+  VolumeGrids grids(size_t(grid.width) * grid.height * grid.depth);
   for (int k = 0; k < grid.depth; ++k) {
     for (int j = 0; j < grid.height; ++j) {
       for (int i = 0; i < grid.width; ++i) {
-        size_t texel = ((size_t(k) * grid.height + j) * grid.width + i) * 4;
+        const glm::dvec3 center = frustum.VoxelCenter(i, j, k);
+        const double distance = glm::length(center - frame.camera.position);
+        if (distance > grid.far_m || ground.Below(center)) continue;
         volume.voxels.push_back({i, j, k});
-        for (int c = 0; c < 3; ++c) {
-          rayleigh.values.push_back(texels.rayleigh[texel + c]);
-          mie.values.push_back(texels.mie[texel + c]);
-          transmittance.values.push_back(texels.transmittance[texel + c]);
-        }
-        luminance.values.push_back(
-            float(InscatterLuminance(&texels.rayleigh[texel], &texels.mie[texel])));
-        glm::dvec3 center = placement.FroxelCenter(i, j, k);
-        for (int c = 0; c < 3; ++c) position.values.push_back(float(center[c]));
+        grids.Add(texels.Read(frustum.ScreenPoint(i, j), distance), FogDensity(frame.atmosphere, center));
       }
     }
   }
-  volume.grids = {std::move(rayleigh), std::move(mie), std::move(transmittance),
-                  std::move(luminance), std::move(position)};
-  volume.voxel_size_m = 1.0;  // identity: index space is froxel space
-  volume.grid_metadata = FrameMetadata(frame, "froxel");
+  volume.grids = std::move(grids).Take();
+  volume.frustum = frustum.Map();
+  volume.grid_metadata = FrameMetadata(frame, "frustum");
+  volume.grid_metadata["frustum_near_m"] = frame.camera.near_m;
+  volume.grid_metadata["frustum_far_m"] = grid.far_m;
   volume.grid_metadata["index_space"] =
-      std::string("froxel: voxel (i, j, k) is froxel (i, j, k), i right, j down the image, k away "
-                  "from the camera; the transform is the identity, see froxel_position and "
-                  "froxel_mapping for where each froxel is");
+      std::string("frustum: OpenVDB's NonlinearFrustumMap; voxel (i, j, k) is the point at view depth "
+                  "frustum_near_m + (frustum_far_m - frustum_near_m) * (k + 0.5) / D on the view ray "
+                  "through the image point ((i + 0.5) / W, (j + 0.5) / H), (0, 0) the top-left "
+                  "corner: the froxels' columns, their values read at each voxel's distance; voxels "
+                  "farther than froxel_far_m from the camera or below the ground are inactive");
   volume.file_metadata = volume.grid_metadata;
   return volume;
 }
@@ -252,37 +212,28 @@ VdbVolume MakeWorldSpaceVolume(const FroxelFrame& frame, double voxel_m) {
   FroxelPlacement placement = frame.placement();
   CheckWorldGrid(voxel_m, placement);
   WorldBox box = WorldGridBox(voxel_m, placement.Bounds());
+  const Ground ground(frame.terrain, frame.atmosphere.bottom_radius_m);
   VdbVolume volume;
-  VdbVolume::Grid rayleigh = MakeGrid(kRayleigh, 3, 0), mie = MakeGrid(kMie, 3, 0),
-                  transmittance = MakeGrid(kTransmittance, 3, 0), luminance = MakeGrid(kLuminance, 1, 0);
+  VolumeGrids grids(0);
   for (int32_t z = box.min[2]; z <= box.max[2]; ++z) {
     for (int32_t y = box.min[1]; y <= box.max[1]; ++y) {
       for (int32_t x = box.min[0]; x <= box.max[0]; ++x) {
         glm::dvec3 center = glm::dvec3(x, y, z) * voxel_m;
         std::optional<FroxelPlacement::ScreenPoint> point = placement.ToScreen(center);
-        if (!point || !placement.Covers(*point)) continue;
-        FroxelTexels::Sample sample = frame.texels.Read(point->uv, point->distance);
+        if (!point || !placement.Covers(*point) || ground.Below(center)) continue;
         volume.voxels.push_back({x, y, z});
-        float r[3], m[3];
-        for (int c = 0; c < 3; ++c) {
-          r[c] = float(sample.rayleigh[c]);
-          m[c] = float(sample.mie[c]);
-          rayleigh.values.push_back(r[c]);
-          mie.values.push_back(m[c]);
-          transmittance.values.push_back(float(sample.transmittance[c]));
-        }
-        luminance.values.push_back(float(InscatterLuminance(r, m)));
+        grids.Add(frame.texels.Read(point->uv, point->distance), FogDensity(frame.atmosphere, center));
       }
     }
   }
-  volume.grids = {std::move(rayleigh), std::move(mie), std::move(transmittance), std::move(luminance)};
+  volume.grids = std::move(grids).Take();
   volume.voxel_size_m = voxel_m;
   volume.origin_m = {0.0, 0.0, 0.0};  // voxel (i, j, k)'s center is at voxel_m * (i, j, k)
   volume.grid_metadata = FrameMetadata(frame, "world");
   volume.grid_metadata["world_voxel_size_m"] = voxel_m;
   volume.grid_metadata["index_space"] =
       std::string("world: voxel (i, j, k)'s center is at world_voxel_size_m * (i, j, k) in the "
-                  "scene frame; voxels outside the froxel frustum are inactive");
+                  "scene frame; voxels outside the froxel frustum or below the ground are inactive");
   volume.file_metadata = volume.grid_metadata;
   return volume;
 }

@@ -1,18 +1,19 @@
 #pragma once
-// One frame's froxel volume as an OpenVDB file (`aerial export-vdb`). See froxel/README.md,
-// "Exporting to OpenVDB", for the file's layout, units and coordinate frame.
+// One frame's froxel volume as an OpenVDB file (`aerial export-vdb`). See docs/vdb.md for the
+// file's layout, units and coordinate frame.
 //
 // The froxel pass runs in the real renderer (Renderer::Render on the scene, at the image size the
 // frame is for: only its aspect reaches the froxels, through the projection) and the three froxel
-// images are read back as computed, float32. Two layouts:
-//  - froxel space (default): voxel (i, j, k) holds froxel (i, j, k) exactly, W x H x D voxels,
-//    with an identity index transform, plus a `froxel_position` grid holding each froxel
-//    center's world position. No OpenVDB transform can place the froxels: their slices are
-//    spherical shells (a distance along each ray), quadratic in k, while OpenVDB's frustum map
-//    has planar slices linear in k.
-//  - world space (--world-grid VOXEL_M): a regular grid in the scene frame, each voxel center
-//    read from the froxels the way the shaders read them (trilinear, SampleFroxels in
-//    shaders/include/froxel.glsl); voxels outside the frustum stay inactive.
+// images are read back as computed, float32. In both layouts each active voxel holds the grids of
+// volume_grids.h, read from the froxels at its center the way the shaders read them (trilinear,
+// SampleFroxels in shaders/include/froxel.glsl), and a voxel whose center lies below the ground
+// (ground.h) or beyond the froxels' far distance stays inactive:
+//  - frustum space (default): W x H x D voxels over the camera's frustum with OpenVDB's
+//    NonlinearFrustumMap, the froxels' own columns resampled to linear depth slices
+//    (camera_frustum.h). Houdini places it where the camera saw it; Blender ignores the
+//    perspective part of a transform.
+//  - world space (--world-grid VOXEL_M): a regular grid in the scene frame, linear transform;
+//    voxels outside the frustum stay inactive. It lands in place in Blender and Houdini.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -43,10 +44,9 @@ struct FroxelFrame {
   Camera camera;
   Sun sun;
   LutVariant lut = LutVariant::k4D;
-  uint64_t atmosphere_hash = 0;      // AtmosphereParameters::Hash()
-  uint64_t table_options_hash = 0;   // PrecomputeOptions::Hash()
-  Spectrum wavelengths_nm{};
-  double planet_radius_m = 0.0;
+  AtmosphereParameters atmosphere;  // the tables' (the density grid's, fog_density.h)
+  uint64_t table_options_hash = 0;  // PrecomputeOptions::Hash()
+  bool terrain = false;             // the scene's built-in terrain: the ground (ground.h)
 
   FroxelPlacement placement() const { return FroxelPlacement(uniforms, texels.grid); }
 };
@@ -72,11 +72,9 @@ void CheckVdbOutputPath(const std::filesystem::path& path);
 // frustum's bounding box number at most kMaxWorldGridVoxels.
 void CheckWorldGrid(double voxel_m, const FroxelPlacement& placement);
 
-// The froxel-space layout and the world-space one (see above).
-VdbVolume MakeFroxelSpaceVolume(const FroxelFrame& frame);
+// The frustum-space layout and the world-space one (see above). The frustum layout throws Error
+// naming camera.near_m unless the near plane is in (0, far) (camera_frustum.h).
+VdbVolume MakeFrustumVolume(const FroxelFrame& frame);
 VdbVolume MakeWorldSpaceVolume(const FroxelFrame& frame, double voxel_m);
-
-// Rec. 709 luma weights on the (680, 550, 440 nm) channels: the scalar inscatter_luminance grid.
-double InscatterLuminance(const float* rayleigh, const float* mie);
 
 }  // namespace aerial

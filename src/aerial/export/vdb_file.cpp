@@ -2,6 +2,7 @@
 #include "aerial/export/vdb_file.h"
 
 #include <cmath>
+#include <memory>
 #include <mutex>
 #include <set>
 #include <sstream>
@@ -85,11 +86,29 @@ class VdbArchive : public openvdb::io::Archive {
   }
 };
 
+void CheckFrustum(const VdbFrustum& frustum) {
+  if (!(frustum.taper > 0.0 && frustum.taper <= 1.0))
+    throw Error("VDB frustum taper", std::to_string(frustum.taper), "in (0, 1] (near width / far width)");
+  if (!(frustum.depth > 0.0 && std::isfinite(frustum.depth)))
+    throw Error("VDB frustum depth", std::to_string(frustum.depth), "finite and > 0");
+  for (int axis = 0; axis < 3; ++axis)
+    if (!(frustum.index_max[axis] > frustum.index_min[axis] && std::isfinite(frustum.index_min[axis]) &&
+          std::isfinite(frustum.index_max[axis])))
+      throw Error("VDB frustum index box", std::to_string(frustum.index_max[axis] - frustum.index_min[axis]),
+                  "a finite, non-empty extent on every axis");
+  for (double m : frustum.second_map)
+    if (!std::isfinite(m)) throw Error("VDB frustum second map", std::to_string(m), "finite entries");
+}
+
 void CheckVolume(const VdbVolume& volume) {
-  if (!(volume.voxel_size_m > 0.0 && std::isfinite(volume.voxel_size_m)))
-    throw Error("VDB voxel size", std::to_string(volume.voxel_size_m), "a finite size > 0");
-  for (double o : volume.origin_m)
-    if (!std::isfinite(o)) throw Error("VDB origin", std::to_string(o), "finite meters");
+  if (volume.frustum) {
+    CheckFrustum(*volume.frustum);
+  } else {
+    if (!(volume.voxel_size_m > 0.0 && std::isfinite(volume.voxel_size_m)))
+      throw Error("VDB voxel size", std::to_string(volume.voxel_size_m), "a finite size > 0");
+    for (double o : volume.origin_m)
+      if (!std::isfinite(o)) throw Error("VDB origin", std::to_string(o), "finite meters");
+  }
   std::set<std::string> names;
   for (const VdbVolume::Grid& grid : volume.grids) {
     if (grid.name.empty() || !names.insert(grid.name).second)
@@ -100,16 +119,39 @@ void CheckVolume(const VdbVolume& volume) {
       throw Error("VDB grid values", std::to_string(grid.values.size()),
                   std::to_string(volume.voxels.size() * grid.components) + " (components x voxels)",
                   grid.name);
+    if (!std::isfinite(grid.background))
+      throw Error("VDB grid background", std::to_string(grid.background), "a finite value", grid.name);
   }
+}
+
+// The volume's transform: linear, or OpenVDB's frustum map (see VdbFrustum). Throws
+// openvdb::Exception for a second map it cannot invert.
+openvdb::math::Transform::Ptr MakeTransform(const VdbVolume& volume) {
+  if (!volume.frustum) {
+    openvdb::math::Transform::Ptr transform =
+        openvdb::math::Transform::createLinearTransform(volume.voxel_size_m);
+    transform->postTranslate(openvdb::Vec3d(volume.origin_m[0], volume.origin_m[1], volume.origin_m[2]));
+    return transform;
+  }
+  const VdbFrustum& frustum = *volume.frustum;
+  // OpenVDB multiplies row vectors, world = (x, y, z, 1) m: m is second_map transposed.
+  openvdb::Mat4d m = openvdb::Mat4d::identity();
+  for (int row = 0; row < 3; ++row)
+    for (int column = 0; column < 4; ++column) m(column, row) = frustum.second_map[row * 4 + column];
+  auto second_map = std::make_shared<openvdb::math::AffineMap>(m);
+  openvdb::BBoxd box(openvdb::Vec3d(frustum.index_min.data()), openvdb::Vec3d(frustum.index_max.data()));
+  auto map = std::make_shared<openvdb::math::NonlinearFrustumMap>(box, frustum.taper, frustum.depth, second_map);
+  return std::make_shared<openvdb::math::Transform>(map);
 }
 
 template <typename GridType, typename Value>
 openvdb::GridBase::Ptr MakeGrid(const VdbVolume& volume, const VdbVolume::Grid& source,
                                 const openvdb::math::Transform::Ptr& transform, Value make_value) {
-  typename GridType::Ptr grid = GridType::create(typename GridType::ValueType(0.0f));
+  typename GridType::Ptr grid = GridType::create(typename GridType::ValueType(source.background));
   grid->setName(source.name);
   grid->setTransform(transform);
-  grid->setGridClass(openvdb::GRID_UNKNOWN);
+  grid->setGridClass(source.grid_class == VdbGridClass::kFogVolume ? openvdb::GRID_FOG_VOLUME
+                                                                   : openvdb::GRID_UNKNOWN);
   auto accessor = grid->getAccessor();
   const float* values = source.values.data();
   for (size_t n = 0; n < volume.voxels.size(); ++n, values += source.components) {
@@ -153,37 +195,29 @@ void ReadValues(const GridType& grid, VdbGridData& data, int components) {
 void WriteVdb(const std::filesystem::path& path, const VdbVolume& volume) {
   CheckVolume(volume);
   InitializeOpenVdb();
-  openvdb::math::Transform::Ptr transform =
-      openvdb::math::Transform::createLinearTransform(volume.voxel_size_m);
-  transform->postTranslate(openvdb::Vec3d(volume.origin_m[0], volume.origin_m[1], volume.origin_m[2]));
-  openvdb::GridPtrVec grids;
-  for (const VdbVolume::Grid& source : volume.grids) {
-    if (source.components == 3) {
-      grids.push_back(MakeGrid<openvdb::Vec3SGrid>(
-          volume, source, transform, [](const float* v) { return openvdb::Vec3s(v[0], v[1], v[2]); }));
-    } else {
-      grids.push_back(
-          MakeGrid<openvdb::FloatGrid>(volume, source, transform, [](const float* v) { return *v; }));
-    }
-  }
-  openvdb::MetaMap file_metadata;
-  InsertMetadata(file_metadata, volume.file_metadata);
   // Encoded in memory, then written with write(2), whose every error is checked: openvdb::io::File
   // writes through an std::ofstream and never looks at its state, so a full disk gave a truncated
   // file and no error.
   std::string bytes;
   try {
+    openvdb::math::Transform::Ptr transform = MakeTransform(volume);
+    openvdb::GridPtrVec grids;
+    for (const VdbVolume::Grid& source : volume.grids) {
+      if (source.components == 3) {
+        grids.push_back(MakeGrid<openvdb::Vec3SGrid>(
+            volume, source, transform, [](const float* v) { return openvdb::Vec3s(v[0], v[1], v[2]); }));
+      } else {
+        grids.push_back(
+            MakeGrid<openvdb::FloatGrid>(volume, source, transform, [](const float* v) { return *v; }));
+      }
+    }
+    openvdb::MetaMap file_metadata;
+    InsertMetadata(file_metadata, volume.file_metadata);
     bytes = VdbArchive().Encode(grids, file_metadata);
   } catch (const openvdb::Exception& e) {
     throw Error("file", path.string(), std::string("a VDB file we can encode (") + e.what() + ")");
   }
   WriteFileAtomically(path, bytes);
-}
-
-std::array<double, 3> VdbGridData::IndexToWorld(double i, double j, double k) const {
-  const auto& m = index_to_world;
-  return {m[0] * i + m[1] * j + m[2] * k + m[3], m[4] * i + m[5] * j + m[6] * k + m[7],
-          m[8] * i + m[9] * j + m[10] * k + m[11]};
 }
 
 int64_t VdbGridData::Offset(int32_t i, int32_t j, int32_t k) const {
@@ -213,16 +247,24 @@ VdbFileData ReadVdb(const std::filesystem::path& path) {
       grid.type = base->valueType();
       grid.active_voxels = int64_t(base->activeVoxelCount());
       grid.metadata = ExtractMetadata(*base);
-      const openvdb::math::Transform& transform = base->transform();
-      grid.linear_transform = transform.isLinear();
-      openvdb::Vec3d origin = transform.indexToWorld(openvdb::Vec3d(0, 0, 0));
-      for (int axis = 0; axis < 3; ++axis) {
-        openvdb::Vec3d unit(0, 0, 0);
-        unit[axis] = 1;
-        openvdb::Vec3d column = transform.indexToWorld(unit) - origin;
-        for (int row = 0; row < 3; ++row) grid.index_to_world[row * 4 + axis] = column[row];
+      grid.grid_class = openvdb::GridBase::gridClassToString(base->getGridClass());
+      openvdb::math::Transform::ConstPtr transform = base->constTransformPtr();
+      grid.map_type = transform->mapType();
+      grid.to_world = [transform](double i, double j, double k) {
+        openvdb::Vec3d world = transform->indexToWorld(openvdb::Vec3d(i, j, k));
+        return std::array<double, 3>{world[0], world[1], world[2]};
+      };
+      grid.linear_transform = transform->isLinear();
+      if (grid.linear_transform) {
+        openvdb::Vec3d origin = transform->indexToWorld(openvdb::Vec3d(0, 0, 0));
+        for (int axis = 0; axis < 3; ++axis) {
+          openvdb::Vec3d unit(0, 0, 0);
+          unit[axis] = 1;
+          openvdb::Vec3d column = transform->indexToWorld(unit) - origin;
+          for (int row = 0; row < 3; ++row) grid.index_to_world[row * 4 + axis] = column[row];
+        }
+        for (int row = 0; row < 3; ++row) grid.index_to_world[row * 4 + 3] = origin[row];
       }
-      for (int row = 0; row < 3; ++row) grid.index_to_world[row * 4 + 3] = origin[row];
       openvdb::CoordBBox box = base->evalActiveVoxelBoundingBox();
       if (grid.active_voxels > 0) {
         grid.min = {box.min().x(), box.min().y(), box.min().z()};
@@ -234,11 +276,13 @@ VdbFileData ReadVdb(const std::filesystem::path& path) {
       size_t count = grid.active_voxels > 0 ? size_t(box.volume()) : 0;
       if (auto f = openvdb::GridBase::grid<openvdb::FloatGrid>(base)) {
         grid.components = 1;
+        grid.background[0] = f->background();
         grid.values.assign(count, 0.0f);
         grid.active.assign(count, 0);
         ReadValues(*f, grid, 1);
       } else if (auto v = openvdb::GridBase::grid<openvdb::Vec3SGrid>(base)) {
         grid.components = 3;
+        for (int c = 0; c < 3; ++c) grid.background[c] = v->background()[c];
         grid.values.assign(count * 3, 0.0f);
         grid.active.assign(count, 0);
         ReadValues(*v, grid, 3);

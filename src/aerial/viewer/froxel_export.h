@@ -1,6 +1,6 @@
 #pragma once
-// The V key: the current frame's froxel volume to an OpenVDB file in the working directory, in
-// froxel space, as `aerial export-vdb` writes it (src/aerial/export/froxel_export.h).
+// The V key: the current frame's froxel volume to an OpenVDB file in the working directory, on
+// the camera's frustum, as `aerial export-vdb` writes it (src/aerial/export/froxel_export.h).
 #include <filesystem>
 #include <string>
 
