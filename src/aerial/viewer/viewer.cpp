@@ -429,7 +429,8 @@ bool Viewer::Impl::Step() {
   // The last frame of a scripted run is saved: it is completed like `aerial render`'s.
   bool last = options_.frames > 0 && frames_ + 1 == options_.frames;
   DrawnView view{primary, options_.scene.camera, options_.scene.sun, render.terrain_error_px};
-  if (last || settled_view_ != view) {
+  bool drawn = last || settled_view_ != view;
+  if (drawn) {
     primary->Record(*cmd, options_.scene, slot, last);
     recorded_[slot].push_back({primary, ""});
     shown_ = primary;
@@ -441,7 +442,8 @@ bool Viewer::Impl::Step() {
     other->Record(*cmd, options_.scene, slot);
     recorded_[slot].push_back({other, " (" + ToString(other->tables().options().variant) + ")"});
   }
-  if (settings_.auto_exposure) meter_.Record(cmd, slot, primary->output());
+  // A frame presented again has been metered already.
+  if (settings_.auto_exposure && (drawn || !exposure_metered_)) meter_.Record(cmd, slot, primary->output());
   RecordDisplay(cmd, slot, *primary, other);
   bool presented = swapchain_.SubmitAndPresent(ring_);
   // Reads of the frame (screenshots, exports) are submitted after it, so they see it finished.
