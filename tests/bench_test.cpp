@@ -1,5 +1,5 @@
 // `aerial bench --quick` as users run it: the report's files and structure, comparisons that cover
-// every pixel, and what the command exists to show, at the README's figures (the 3D tables are
+// every pixel, and what the command exists to show, at the figures of docs/tables-3d-4d.md (the 3D tables are
 // smaller, close to the 4D ones in daylight and far from them at sunset), from one run (about 45 s
 // with the validation layers on).
 #include <gtest/gtest.h>
@@ -65,7 +65,7 @@ void CheckFilesAndStructure(const fs::path& dir, const nlohmann::json& results) 
   EXPECT_EQ(variants, (std::set<std::string>{"3d", "4d"}));
 }
 
-// README, "Choosing 3D or 4D tables": --quick renders 320x180 images and samples the reference
+// docs/tables-3d-4d.md, "Choosing 3D or 4D tables": --quick renders 320x180 images and samples the reference
 // at 8x5 pixels.
 constexpr int kImagePixels = 320 * 180;
 constexpr int kReferencePixels = 8 * 5;
@@ -112,9 +112,9 @@ const nlohmann::json& Entry(const nlohmann::json& results, const std::string& va
 
 double MiB(const nlohmann::json& entry) { return entry["table_bytes"].get<double>() / (1 << 20); }
 
-// The figures the README states for the two variants, in both tiers of the quick run.
+// The figures docs/tables-3d-4d.md states for the two variants, in both tiers of the quick run.
 void CheckThreeDAgainstFourD(const nlohmann::json& results) {
-  // README's table of speed and size, "small" rows (16x64x16 scattering, Small() otherwise):
+  // docs/tables-3d-4d.md's table of speed and size, "small" rows (16x64x16 scattering, Small() otherwise):
   // 4.13 and 0.83 MiB, to the printed 0.01 MiB.
   EXPECT_NEAR(MiB(Entry(results, "4d", "small")), 4.13, 0.005);
   EXPECT_NEAR(MiB(Entry(results, "3d", "small")), 0.83, 0.005);
@@ -126,7 +126,7 @@ void CheckThreeDAgainstFourD(const nlohmann::json& results) {
     auto difference = [&](const char* view, const char* pixels) -> const nlohmann::json& {
       return lut3d["accuracy"][view]["3d_vs_4d"][pixels];
     };
-    // README, "Choosing 3D or 4D tables": in daylight (noon, afternoon, 30 km up) the 3D tables
+    // docs/tables-3d-4d.md, "Choosing 3D or 4D tables": in daylight (noon, afternoon, 30 km up) the 3D tables
     // stay within 1% RMSE of the 4D ones (there measured with the default tables; the error is the
     // 3D assumption's, which every tier shares). Not 0: they drop the nu axis, so equal frames
     // would mean the bench compared a variant with itself.
@@ -136,12 +136,12 @@ void CheckThreeDAgainstFourD(const nlohmann::json& results) {
         EXPECT_GT(rmse, 0.0) << view << " " << pixels;
         EXPECT_LT(rmse, 0.01) << view << " " << pixels;
       }
-    // README, "The 3D tables": at most 3.9% from the 4D sky in daylight (sun zenith <= 80
+    // docs/tables-3d-4d.md, "The 3D tables": at most 3.9% from the 4D sky in daylight (sun zenith <= 80
     // degrees, cameras 0-30 km, views above the horizon): the largest sky pixel's error in the
     // two daylight views from the ground.
     for (const char* view : {"noon", "afternoon"})
       EXPECT_LT(difference(view, "sky")["rel_max"].get<double>(), 0.039) << view;
-    // README: with the sun at or below the horizon the 3D tables lose the Earth's shadow along the
+    // docs/tables-3d-4d.md: with the sun at or below the horizon the 3D tables lose the Earth's shadow along the
     // view ray, 23% (sunset) and 77% (twilight) from the 4D sky. The loss is their
     // parameterization's, at any resolution: it must stand ten times above the daylight 1%, or
     // the bench no longer shows why 4D is chosen for sunsets.
@@ -153,7 +153,7 @@ void CheckThreeDAgainstFourD(const nlohmann::json& results) {
 // What the per-pixel frame of Bruneton 2017's demo (two table reads, no march) is there to show:
 // it costs a small part of the marched per-pixel frame, and at a low sun its sky, read without the
 // correction of the Earth's shadow (sky_lookup.glsl), is further from the reference than the
-// marched path's. Measured with the small 4D tables (README, "Radiance to a point"): sunset sky
+// marched path's. Measured with the small 4D tables (docs/accuracy.md, "Radiance to a point"): sunset sky
 // 0.57% against 8.0% RMSE, twilight 2.3% against 17.6%; the marched frame is 26x the other.
 void CheckTableDifference(const nlohmann::json& results) {
   const nlohmann::json& lut4d = Entry(results, "4d", "small");

@@ -38,7 +38,7 @@ const char* kTwilight = "twilight (95-108)";
 // target the upper bound is the target and the lower bound 0. Where it does not (the comment says
 // MISSED and gives both), the upper bound is the measured error plus 10%, rounded up, so that a
 // regression fails, and the lower bound half the measured error, so that an improvement fails too
-// and is written down here and in the README. The afternoon (60-85) has no target and is pinned the
+// and is written down here and in docs/accuracy.md. The afternoon (60-85) has no target and is pinned the
 // same way. Measured with the default tables of this commit (MU_S 36 on the arctangent mapping, 4
 // orders + the series' tail, the density grid's zenith cells quadratic toward the horizon above and
 // below it, the ground irradiance of order 1 corrected by single scattering integrated along an 8x8
@@ -138,7 +138,7 @@ TEST_F(PhysicalSky, DefaultTablesAgainstTheTargets) {
     EXPECT_EQ(samples, bound->samples) << name;
     if (samples == 0) continue;
     EXPECT_LE(region.Max(), bound->max_upper) << name;
-    EXPECT_GE(region.Max(), bound->max_lower) << name << ": better than recorded, update the bound and README";
+    EXPECT_GE(region.Max(), bound->max_lower) << name << ": better than recorded, update the bound and docs/accuracy.md";
     if (bound->median_upper != kNone) {
       EXPECT_LE(region.Median(), bound->median_upper) << name << " (median)";
       EXPECT_GE(region.Median(), bound->median_lower) << name << " (median): better than recorded";
@@ -190,7 +190,7 @@ TEST(PhysicalSkyReference, StoredSamplesMeetTheirBandsNoiseGoal) {
   EXPECT_EQ(checked, 1092);
   // 24 low-sun radiances (which meet the low sun's 0.75% there: at most 0.74%), 14 twilight ones,
   // and 6 low-sun and twilight irradiances, at most 0.78% against their 0.1% (kIrradianceNoiseGoal);
-  // README, "Accuracy against the physical sky".
+  // docs/accuracy.md, "Accuracy against the physical sky".
   EXPECT_EQ(at_most_paths, 44);
 }
 

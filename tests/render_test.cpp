@@ -71,7 +71,7 @@ TEST_F(Render, FroxelMatchesPerPixelBeyondOneKilometer) {
 // marched per-pixel path, on the noon frame's opaque pixels beyond 1 km and its sky, shadows off.
 // Measured 0.17% and 0.50%. At noon near the ground the difference S(x) - T S(p) keeps most of the
 // segment's inscatter and the sky needs no correction of the Earth's shadow, so both stay within
-// the 1% of a table read (README, "Radiance to a point"). The sky differs all the same: the demo
+// the 1% of a table read (docs/accuracy.md, "Radiance to a point"). The sky differs all the same: the demo
 // reads it without the correction of the multiple scattering's blend in nu (sky_lookup.glsl), so
 // equal skies would mean that the mode fell back to the march.
 TEST_F(Render, TableDifferenceIsCloseToTheMarchInDaylight) {
@@ -101,7 +101,7 @@ TEST_F(Render, TableDifferenceIsCloseToTheMarchInDaylight) {
 
 // Sky pixels read the per-frame sky-view table (froxel mode) or the tables (per-pixel mode):
 // over a frame without the meshes, for each preset's view and sun, the two agree within a bound.
-// Shadows off: per-pixel mode does not shadow the air (README, "Shadows"), and the terrain's
+// Shadows off: per-pixel mode does not shadow the air (docs/design.md, "Shadows"), and the terrain's
 // pixels would measure that instead of the sky.
 TEST_F(Render, SkyViewTableMatchesPerPixelSky) {
   const AtmosphereTables& tables = FullTables();

@@ -24,7 +24,7 @@ namespace aerial {
 //  - kPerPixel: marched along each pixel's ray through the tables, the reference the froxels are
 //    measured against;
 //  - kTableDifference: per pixel, S(x) - T S(p) from two 4D table reads and no march, as Bruneton
-//    2017's demo renders it (README, "Radiance to a point"), what a user would otherwise pick.
+//    2017's demo renders it (docs/accuracy.md, "Radiance to a point"), what a user would otherwise pick.
 enum class AerialMode { kFroxel, kPerPixel, kTableDifference };
 
 // How the built-in terrain is drawn: chunks with a level of detail that follows the camera, or
@@ -33,7 +33,7 @@ enum class AerialMode { kFroxel, kPerPixel, kTableDifference };
 enum class TerrainMode { kLod, kStaticMesh };
 
 // The terrain's default screen-space error bound (lod_selection.h), in pixels at 720 rows or
-// more: see README, "Terrain".
+// more: see docs/design.md, "Terrain".
 inline constexpr double kDefaultTerrainErrorPx = 4.0;
 
 // Passes a benchmark may leave out to measure what they cost (lavapipe's timestamps inside one

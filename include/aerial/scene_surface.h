@@ -11,7 +11,7 @@
 //  - The terrain: the renderer draws a level of detail whose triangles lie within a radial
 //    distance eps of the height function's surface, eps K / d' <= error_px for the chunk's nearest
 //    distance d' <= d and K its pixels per radian (terrain/lod_selection.h); eps is measured at
-//    sample points, and the gap found between them reaches 1.25 times the bound (README,
+//    sample points, and the gap found between them reaches 1.25 times the bound (docs/design.md,
 //    "Terrain"); skirts hang up to 0.1 m below that. So where the renderer's point at depth d lies
 //    radially within 1.25 error_px d / K + 0.1 m of the surface, and the CPU finds no mesh in front
 //    of it, it is terrain: the height function's surface point on its radial line is lit, with

@@ -26,7 +26,7 @@ struct TableResolution {
   int scattering_mu = 128;  // even: half for rays that hit the ground, half for the others
   // 36 on the arctangent mapping of mappings.glsl: the texels the low sun and twilight need
   // (aerial_bench_sky measured 32, 36, 38 and 40 texels, and fewer nu for more mu_s: nu 5 or 6
-  // doubled the daylight error, see README). With the multiple density table below, the tables
+  // doubled the daylight error, see docs/accuracy.md). With the multiple density table below, the tables
   // take 1.25x the memory of Bruneton 2017's 32 (issue 12's budget); 36 instead of 40 pays for
   // that table. Against 38, no region got worse by more than 0.4 points (the low-sun irradiance's
   // median on the ground, 0.58% -> 0.98%), while the low-sun radiance to a point on the ground and
@@ -36,14 +36,14 @@ struct TableResolution {
   // nu = 0, where the Earth's shadow changes fastest for a low sun (mappings.glsl,
   // GetNuFromUnitRange): with 8 slices in float32 the low-sun sky was 3.5 / 5.0% off on the ground
   // and 10 km up (target 3%), with 9 in half floats 2.5 / 2.3%, in 36.8 MB instead of 42.2, for
-  // 1.12x the precompute time (aerial_bench_sky --grid quick; README, "Nine nu slices").
+  // 1.12x the precompute time (aerial_bench_sky --grid quick; docs/accuracy.md, "Nine nu slices").
   int scattering_nu = 9;    // 1 in the 3D variant
   // The scattering density of orders >= 2 (J_ms), which render-time marches integrate along a
   // segment instead of subtracting two table values (sky_lookup.glsl, GetSkyInscatterToPoint).
   // It is a convolution of the light field with the phase functions, smooth in r and mu, so a
   // coarse grid holds it there. In mu_s and nu it takes the density tables' own texels: resampled
   // to fewer (32 mu_s, 4 nu), the radiance to a point with a low sun was 13% high off the sun's
-  // plane (4.1 MB; see README, "Radiance to a point", for the sizes measured). In r too: with 16
+  // plane (4.1 MB; see docs/accuracy.md, "Radiance to a point", for the sizes measured). In r too: with 16
   // r texels, each per-order density resampled linearly from the density tables' 32 and read
   // exponentially again, the low-sun radiance to a point on the ground read 3.9% low (red, 2
   // degrees up toward a sun at zenith 95); with their 32, 2.5% (aerial_bench_sky --grid quick).
@@ -83,7 +83,7 @@ struct PrecomputeOptions {
   LutVariant variant = LutVariant::k4D;
   // The 4D Rayleigh table in 16-bit floats: the default's 9 nu slices fit the memory budget that
   // way (in float32 they would take 47.5 MB), and half floats cost at most 0.05 points of error
-  // anywhere against float32 (README; Mie and J_ms stay float32). The 3D and the small tables:
+  // anywhere against float32 (docs/accuracy.md; Mie and J_ms stay float32). The 3D and the small tables:
   // float32.
   TablePrecision precision = TablePrecision::kFloat16;
   int orders = 4;

@@ -30,7 +30,7 @@ float SkyZenithFromUnitRange(float t, float theta_h) {
 // The same below the horizon, from theta_h down to the nadir: quadratic, finest next to the
 // horizon, where the inscatter along rays that meet the ground far away is brightest and falls
 // fastest with depression. Against 8 equal cells this took the atmosphere's order 2 from 5.4% to
-// 3.0% low (red, horizon view from the ground) at the same cost (README, "Accuracy against the
+// 3.0% low (red, horizon view from the ground) at the same cost (docs/accuracy.md, "Accuracy against the
 // physical sky").
 float GroundZenithFromUnitRange(float t, float theta_h) {
   return theta_h + (PI - theta_h) * t * t;

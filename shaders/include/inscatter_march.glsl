@@ -3,7 +3,7 @@
 // The difference cancels where the segment holds a small part of the whole ray's inscatter: 10 km
 // of a ray from a camera 50 km up that goes on to the ground, or a low sun whose shadow line
 // crosses the ray. Each table value is good to about 1%, the difference then to tens of percent
-// (measured against the reference, README "Radiance to a point").
+// (measured against the reference, docs/accuracy.md, "Radiance to a point").
 //  - Single scattering: Bruneton 2008 eq. 11 over the segment, with the sun's transmittance from
 //    the table (the Earth's shadow exactly where the ray passes, in the 4D variant).
 //  - Multiple scattering: the scattering density of orders >= 2, J_ms (the multiple density table),

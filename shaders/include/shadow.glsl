@@ -44,7 +44,7 @@ layout(set = 0, binding = SHADOW_BINDING + 1) uniform sampler2DShadow shadow_map
 // comparison, which compares the point's depth with the four nearest texels and blends the four
 // results bilinearly (a 2x2-texel tent), so a shadow's edge is smooth across one texel and moves
 // without popping. Four such taps half a texel apart (a 3x3-texel tent) looked softer but made
-// the lookup cost 1.3 times as much on lavapipe (README, "Shadows"). The four texels lie within
+// the lookup cost 1.3 times as much on lavapipe (docs/design.md, "Shadows"). The four texels lie within
 // one texel of the point along each axis: the filter's reach r = 1.
 
 // The bias, in texels of the cascade (t, the texel's world size). The depth map holds the

@@ -242,7 +242,7 @@ const float MULTIPLE_SCATTERING_EXPONENTIAL_MU_S = 0.1;
 //    0.34% -> 0.15%; 50 km up median 0.41% -> 0.30% (at most 1.01% -> 1.19%, in blue). 10 km up the
 //    median went 0.23% -> 0.55%: the ground's excess had hidden a deficit of the atmosphere's own
 //    multiple scattering there (order 2 over a black ground 2.8-3.0% low looking 30 degrees down
-//    with the sun at zenith 45 degrees, 0.7% on the texels; see README).
+//    with the sun at zenith 45 degrees, 0.7% on the texels; see docs/accuracy.md).
 
 // Whether the multiple scattering is blended in mu_s by the daylight rule (quadratic over three
 // nodes, above) rather than the read's two: where all three nodes have the sun above

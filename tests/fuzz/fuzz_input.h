@@ -2,7 +2,7 @@
 // Shared by the libFuzzer targets of this directory (one per input aerial reads from users; see
 // tools/fuzz.sh). A target passes when aerial either accepts the input or rejects it with an
 // aerial::Error: any other exception escapes to libFuzzer, which reports it as a crash, just as
-// a sanitizer report or a signal is one. That is the README's promise: bad input gets a named
+// a sanitizer report or a signal is one. That is the promise of docs/usage.md: bad input gets a named
 // error, never a crash.
 #include <cstddef>
 #include <cstdint>

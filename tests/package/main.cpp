@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
     aerial::ProbeResult probed = aerial::Probe(tables, {&query, 1})[0];
     aerial::Spectrum expected = ZenithTransmittance(atmosphere);
     // The transmittance table is within 0.11% of a double-precision reference on grazing rays
-    // (README); 0.5% leaves room for the small tables' coarser r axis.
+    // (docs/accuracy.md); 0.5% leaves room for the small tables' coarser r axis.
     bool ok = tables.from_cache() || passes > 0;
     for (int c = 0; c < 3; ++c) {
       double error = std::abs(probed.transmittance[c] / expected[c] - 1.0);

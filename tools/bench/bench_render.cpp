@@ -40,7 +40,7 @@ using aerial::bench::RunResult;
 using aerial::bench::Stats;
 using aerial::bench::Summarize;
 
-// Issue 38's goals for the moving-camera frame at 1280x720 with shadows (froxel path): 30 frames a
+// The goals for the moving-camera frame at 1280x720 with shadows (froxel path): 30 frames a
 // second on lavapipe, GPU and wall.
 constexpr double kFrameGoalMs = 33.0, kFrameWallGoalMs = 40.0;
 

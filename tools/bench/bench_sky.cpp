@@ -1,6 +1,6 @@
 // aerial_bench_sky: the tables against the CPU reference with all orders, by region of sun zenith
 // angle and camera altitude, per wavelength (aerial/bench/sky_accuracy.h): the figures of the
-// README's "Accuracy against the physical sky". The reference takes minutes and is kept in
+// docs/accuracy.md's "Accuracy against the physical sky". The reference takes minutes and is kept in
 // --reference-file, so that several table configurations (--scattering-size, --orders,
 // --series-tail ...) are compared against the same reference samples.
 #include <cstdio>

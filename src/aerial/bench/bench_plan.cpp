@@ -33,7 +33,7 @@ std::string ScatteringSize(const TableResolution& r) {
 BenchPlan BenchPlan::Full() {
   BenchPlan plan;
   // Small(), the defaults, and the defaults with twice the mu_s resolution: the axis that limits
-  // accuracy near sunset (README, "Accuracy against the physical sky").
+  // accuracy near sunset (docs/accuracy.md, "Accuracy against the physical sky").
   const TableResolution d = PrecomputeOptions::Default().resolution;
   plan.tiers = {{"small", true, 16, 64, 16, 8},
                 {"default", false, d.scattering_r, d.scattering_mu, d.scattering_mu_s, d.scattering_nu},

@@ -1,8 +1,8 @@
 #pragma once
 // The reference point: Bruneton 2017's OpenGL precompute of the same tables (4 orders, float32,
 // separate textures, transmittance 256x64, irradiance 64x16, scattering 32x128x32x8) on llvmpipe
-// on this kind of machine (2 cores). Measured in shared/design.md, "Measured on this kind of
-// machine"; that code cannot run here (no OpenGL context in this setup), so the figures are
+// on this kind of machine (2 cores), measured once (docs/speed.md); that code cannot run here (no
+// OpenGL context in this setup), so the figures are
 // constants and the benchmark compares against them as ratios, which survive the machine's noise
 // better than absolute times.
 #include <array>

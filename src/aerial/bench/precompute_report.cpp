@@ -65,7 +65,7 @@ void PrintReport(const BenchResult& r, std::FILE* out) {
   PrintRow(out, "total GPU", Summarize(GpuTotals(r.runs)));
   PrintRow(out, "wall (Precompute call)", Summarize(WallTotals(r.runs)));
 
-  std::fprintf(out, "\nBruneton 2017 (OpenGL on llvmpipe, shared/design.md): %.1f s total;", kBruneton2017TotalSeconds);
+  std::fprintf(out, "\nBruneton 2017 (OpenGL on llvmpipe, docs/speed.md): %.1f s total;", kBruneton2017TotalSeconds);
   for (const auto& step : kBruneton2017Steps)
     std::fprintf(out, " %.*s %g s%s", int(step.name.size()), step.name.data(), step.seconds,
                  &step == &kBruneton2017Steps.back() ? "\n" : ",");

@@ -13,7 +13,7 @@ inline constexpr const char* kDaylightViews[] = {"noon", "afternoon", "high-alti
 inline constexpr const char* kLowSunViews[] = {"sunset", "twilight"};
 
 // Above this relative RMSE against the 4D tables in daylight, the 3D tables are not recommended
-// even where memory is tight: 1%, about what one table read is good to (README, "Accuracy").
+// even where memory is tight: 1%, about what one table read is good to (docs/accuracy.md, "Accuracy").
 inline constexpr double kDaylightTolerance = 0.01;
 
 // Markdown lines, each starting with "- **use**:".

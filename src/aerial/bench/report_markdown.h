@@ -13,7 +13,7 @@ inline constexpr const char* kChartFile = "precompute-vs-memory.png";
 
 std::string MarkdownReport(const BenchResults& results);
 
-// The "Speed and size" table alone (the README quotes it).
+// The "Speed and size" table alone (docs/tables-3d-4d.md quotes it).
 std::string SpeedTable(const BenchResults& results);
 
 }  // namespace aerial::bench

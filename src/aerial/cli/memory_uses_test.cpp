@@ -47,8 +47,8 @@ TEST(MemoryUses, TableMemoryCountsEveryTable) {
 // Issue 12's memory budget: the default 4D tables take at most 1.25 times the defaults before it
 // (transmittance 256x64, irradiance 64x32, scattering R32 MU128 MU_S32 NU8, Bruneton 2017's
 // scattering resolution). They take 1.22 times: 1.09 with the nine nu slices in half floats
-// (README, "Nine nu slices in half floats"; 11 would take 1.33), and the multiple density table's
-// 32 r texels, the density tables' own, the rest (README, "J_ms on the density tables' r texels").
+// (docs/accuracy.md, "Nine nu slices in half floats"; 11 would take 1.33), and the multiple density table's
+// 32 r texels, the density tables' own, the rest (docs/accuracy.md, "J_ms on the density tables' r texels").
 TEST(MemoryUses, DefaultTablesWithinTheLowSunMemoryBudget) {
   const uint64_t before = 256u * 64 * 16 + 64u * 32 * 16 + 2u * 8 * 32 * 128 * 32 * 16;
   uint64_t now = TableMemory(PrecomputeOptions::Default(LutVariant::k4D)).total();

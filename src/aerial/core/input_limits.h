@@ -1,5 +1,5 @@
 #pragma once
-// Limits on input files, in one place (README, "### Files"): far above what real inputs need,
+// Limits on input files, in one place (docs/usage.md, "Files"): far above what real inputs need,
 // far below what would exhaust memory, time or the stack.
 #include <cstddef>
 #include <cstdint>

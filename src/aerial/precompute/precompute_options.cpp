@@ -85,7 +85,7 @@ void CheckMuAxis(const std::string& field, int value) {
 
 // The tables' texel counts are capped so that the slowest allowed precompute (every table at its
 // cap, 16 orders) ends within a few minutes on lavapipe with 2 cores: it took 188 s there, with
-// another job on one of the cores (README, "Memory, disks and the device"). The per-axis ranges
+// another job on one of the cores (docs/usage.md, "Memory, disks and the device"). The per-axis ranges
 // alone allowed 4096x4096 transmittance and irradiance tables, which ran for over 5 minutes.
 constexpr int64_t kMaxTransmittanceTexels = int64_t(1) << 20;  // 1024x1024: 6 s
 constexpr int64_t kMaxIrradianceTexels = int64_t(1) << 14;     // 256x64: 1.4 s per order
