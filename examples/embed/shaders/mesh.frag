@@ -8,6 +8,7 @@
 layout(location = 0) in vec3 relative_position;
 layout(location = 1) in vec3 sun_radiance;
 layout(location = 2) in vec3 sky_radiance;
+layout(location = 3) in vec3 surface_normal;
 // rgb: radiance at the camera; a: the distance to the surface (m), for the EXR's distance channel.
 layout(location = 0) out vec4 color;
 
@@ -16,6 +17,6 @@ void main() {
   Inscatter segment = GetAerialPerspective(rayleigh_froxels, mie_froxels, transmittance_froxels,
                                            gl_FragCoord.xy / frame.viewport.xy, distance);
   // The whole sun is seen: this example has no shadow map.
-  vec3 surface = ShadeLambertian(LambertianRadiance(sun_radiance, sky_radiance), 1.0);
+  vec3 surface = ShadeLambertian(LambertianRadiance(sun_radiance, sky_radiance), normalize(surface_normal), 1.0);
   color = vec4(ApplyAerialPerspective(surface, segment, ViewSunCosine(relative_position)), distance);
 }
