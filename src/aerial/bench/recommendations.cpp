@@ -1,19 +1,12 @@
 #include "aerial/bench/recommendations.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <span>
+
+#include "aerial/bench/number_text.h"
 
 namespace aerial::bench {
 namespace {
-
-std::string Format(const char* format, double v) {
-  char text[64];
-  std::snprintf(text, sizeof text, format, v);
-  return text;
-}
-
-std::string Percent(double fraction) { return Format(fraction < 0.1 ? "%.2f%%" : "%.1f%%", 100.0 * fraction); }
 
 // The largest relative RMSE of one comparison over some views and both pixel classes, and where.
 struct Worst {

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "aerial/bench/number_text.h"
 #include "aerial/bench/recommendations.h"
 #include "aerial/bench/results_files.h"
 #include "aerial/bench/variant_comparison.h"
@@ -11,17 +12,7 @@
 namespace aerial::bench {
 namespace {
 
-std::string Format(const char* format, double v) {
-  char text[64];
-  std::snprintf(text, sizeof text, format, v);
-  return text;
-}
-
 double MiB(size_t bytes) { return double(bytes) / (1 << 20); }
-
-std::string Percent(double fraction) {
-  return Format(fraction < 0.1 ? "%.2f%%" : "%.1f%%", 100.0 * fraction);
-}
 
 // "0.41% / 2.3%": relative RMSE / maximum.
 std::string Cell(const ErrorStats& e) {
