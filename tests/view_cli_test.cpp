@@ -15,6 +15,7 @@
 #include "aerial/image/image_writer.h"
 #include "command_run.h"
 #include "image_compare.h"
+#include "xvfb_display.h"
 
 namespace aerial::testing {
 namespace {
@@ -29,6 +30,7 @@ std::filesystem::path ScratchDir() {
 }
 
 TEST(ViewCli, RendersFramesLikeRenderAndWritesStats) {
+  if (std::string why = MissingXServer("xvfb-run"); !why.empty()) GTEST_SKIP() << why;
   std::filesystem::path dir = ScratchDir();
   CommandRun view = RunAerial("view" + kSmall + " --frames 5 --screenshot " + (dir / "view.exr").string() +
                                   " --stats " + (dir / "stats.json").string() + " --camera-path " +
@@ -65,6 +67,7 @@ TEST(ViewCli, RendersFramesLikeRenderAndWritesStats) {
 // The window's picture is drawn at half the size and upscaled by the display pass; the screenshot
 // holds the frame at the asked size, as `aerial render --render-scale 0.5` writes it.
 TEST(ViewCli, RenderScaleKeepsTheWindowSize) {
+  if (std::string why = MissingXServer("xvfb-run"); !why.empty()) GTEST_SKIP() << why;
   std::filesystem::path dir = ScratchDir();
   CommandRun view = RunAerial("view" + kSmall + " --render-scale 0.5 --frames 3 --screenshot " +
                                   (dir / "view.exr").string(),

@@ -54,6 +54,7 @@ viewer::ViewerOptions SmallViewerOptions() {
 }
 
 TEST(ViewerSession, ResizesSwitchesAndRecomputesWithoutValidationMessages) {
+  if (std::string why = MissingXServer("Xvfb"); !why.empty()) GTEST_SKIP() << why;
   XvfbDisplay x;
   ASSERT_FALSE(x.display().empty()) << x.error();
   const int messages_before = Device::ValidationMessageCount();
@@ -117,6 +118,7 @@ TEST(ViewerSession, ResizesSwitchesAndRecomputesWithoutValidationMessages) {
 // presented again: its frames time the display pass and no pass of the renderer. A change of the
 // view (here the terrain's error bound, applied without a new renderer) draws again.
 TEST(ViewerSession, AStillViewIsPresentedWithoutRedrawing) {
+  if (std::string why = MissingXServer("Xvfb"); !why.empty()) GTEST_SKIP() << why;
   XvfbDisplay x;
   ASSERT_FALSE(x.display().empty()) << x.error();
   const int messages_before = Device::ValidationMessageCount();

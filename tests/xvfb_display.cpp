@@ -5,8 +5,22 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <filesystem>
 
 namespace aerial::testing {
+
+std::string MissingXServer(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "";
+  for (size_t start = 0; start <= dirs.size();) {
+    size_t end = dirs.find(':', start);
+    if (end == std::string::npos) end = dirs.size();
+    std::filesystem::path candidate = std::filesystem::path(dirs.substr(start, end - start)) / program;
+    if (end > start && ::access(candidate.c_str(), X_OK) == 0) return "";
+    start = end + 1;
+  }
+  return "no X server: " + program + " is not on PATH";
+}
 
 XvfbDisplay::XvfbDisplay() {
   int fds[2];

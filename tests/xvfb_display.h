@@ -8,6 +8,12 @@
 
 namespace aerial::testing {
 
+// Why the tests that need an X server cannot run on this machine: "" when `program` (Xvfb, or
+// xvfb-run for the command's tests) is on PATH, else "no X server: <program> is not on PATH", for
+// GTEST_SKIP. CI installs it (tools/setup.sh), so there they run; a machine without one (a bare
+// GPU node) says so instead of failing.
+std::string MissingXServer(const std::string& program);
+
 class XvfbDisplay {
  public:
   XvfbDisplay();
