@@ -8,6 +8,7 @@
 #include <GLFW/glfw3.h>
 
 #include <functional>
+#include <optional>
 
 #include "aerial/scene.h"
 #include "aerial/viewer/viewer.h"
@@ -53,89 +54,94 @@ viewer::ViewerOptions SmallViewerOptions() {
   return options;
 }
 
-TEST(ViewerSession, ResizesSwitchesAndRecomputesWithoutValidationMessages) {
-  if (std::string why = MissingXServer("Xvfb"); !why.empty()) GTEST_SKIP() << why;
-  XvfbDisplay x;
-  ASSERT_FALSE(x.display().empty()) << x.error();
-  const int messages_before = Device::ValidationMessageCount();
-  {
-    viewer::Viewer viewer(SmallViewerOptions());
-    StepFrames(viewer, kFramesUntilTimed);
-    EXPECT_EQ(viewer.renderer().options().width, 160);
-    EXPECT_TRUE(HasPass(viewer, "present"));
-
-    glfwSetWindowSize(viewer.window(), 200, 120);
-    EXPECT_LE(StepUntil(viewer, [&] { return viewer.renderer().options().width == 200 &&
-                                             viewer.renderer().options().height == 120; }, 20), 20);
-
-    viewer.settings().mode = AerialMode::kPerPixel;
-    viewer.settings().froxels = FroxelGrid::Parse("16x16x16");
-    StepFrames(viewer, kFramesUntilTimed);
-    EXPECT_EQ(viewer.renderer().options().mode, AerialMode::kPerPixel);
-    EXPECT_FALSE(HasPass(viewer, "froxel build"));
-    viewer.settings().mode = AerialMode::kFroxel;
-    for (viewer::DebugView view : {viewer::DebugView::kRayleigh, viewer::DebugView::kMie,
-                                   viewer::DebugView::kTransmittance, viewer::DebugView::kFroxelSlice}) {
-      viewer.settings().view = view;
-      StepFrames(viewer, kFramesUntilTimed);
-      EXPECT_TRUE(HasPass(viewer, "debug view"));
-      EXPECT_EQ(viewer.renderer().options().froxels.depth, 16);
-    }
-
-    // The difference view asks the worker for the other variant's tables and shows the picture
-    // until they come.
-    viewer.settings().view = viewer::DebugView::kDifference;
-    ASSERT_TRUE(viewer.Step());
-    EXPECT_LE(StepUntil(viewer, [&] { return HasPass(viewer, "(3d)"); }, 2000), 2000);
-
-    // A precompute of the small tables takes hundreds of milliseconds, a 200x120 frame tens: the
-    // window must keep drawing while the worker computes.
-    viewer.settings().view = viewer::DebugView::kFinal;
-    viewer.settings().knobs.mie_g = 0.7;
-    viewer.ApplyTableSettings();
-    int busy_frames = 0;
-    EXPECT_LE(StepUntil(viewer, [&] { return viewer.renderer().tables().atmosphere().mie_phase_g == 0.7; },
-                        2000, &busy_frames),
-              2000);
-    std::printf("frames drawn while the worker computed: %d\n", busy_frames);
-    EXPECT_GT(busy_frames, 0);
-
-    // The 3D tables of the first atmosphere (from the difference view) show until those of the
-    // new one arrive.
-    viewer.settings().variant = LutVariant::k3D;
-    ASSERT_TRUE(viewer.Step());
-    EXPECT_EQ(viewer.renderer().tables().options().variant, LutVariant::k3D);
-    EXPECT_LE(StepUntil(viewer, [&] { return viewer.renderer().tables().atmosphere().mie_phase_g == 0.7; }, 2000),
-              2000);
-
-    viewer.settings().view = viewer::DebugView::kDifference;
-    EXPECT_LE(StepUntil(viewer, [&] { return HasPass(viewer, "(4d)"); }, 2000), 2000);
+// Each test opens its windows on a private X server (skipped, with the reason, where there is
+// none) and ends with no new Vulkan validation message once its viewer is gone.
+class ViewerSession : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (std::string why = MissingXServer("Xvfb"); !why.empty()) GTEST_SKIP() << why;
+    x_.emplace();
+    ASSERT_FALSE(x_->display().empty()) << x_->error();
+    messages_before_ = Device::ValidationMessageCount();
   }
-  EXPECT_EQ(Device::ValidationMessageCount(), messages_before);
+  void TearDown() override {
+    if (x_) EXPECT_EQ(Device::ValidationMessageCount(), messages_before_);
+  }
+
+ private:
+  std::optional<XvfbDisplay> x_;  // outlives the test's windows
+  int messages_before_ = 0;
+};
+
+TEST_F(ViewerSession, ResizesSwitchesAndRecomputesWithoutValidationMessages) {
+  viewer::Viewer viewer(SmallViewerOptions());
+  StepFrames(viewer, kFramesUntilTimed);
+  EXPECT_EQ(viewer.renderer().options().width, 160);
+  EXPECT_TRUE(HasPass(viewer, "present"));
+
+  glfwSetWindowSize(viewer.window(), 200, 120);
+  EXPECT_LE(StepUntil(viewer, [&] { return viewer.renderer().options().width == 200 &&
+                                           viewer.renderer().options().height == 120; }, 20), 20);
+
+  viewer.settings().mode = AerialMode::kPerPixel;
+  viewer.settings().froxels = FroxelGrid::Parse("16x16x16");
+  StepFrames(viewer, kFramesUntilTimed);
+  EXPECT_EQ(viewer.renderer().options().mode, AerialMode::kPerPixel);
+  EXPECT_FALSE(HasPass(viewer, "froxel build"));
+  viewer.settings().mode = AerialMode::kFroxel;
+  for (viewer::DebugView view : {viewer::DebugView::kRayleigh, viewer::DebugView::kMie,
+                                 viewer::DebugView::kTransmittance, viewer::DebugView::kFroxelSlice}) {
+    viewer.settings().view = view;
+    StepFrames(viewer, kFramesUntilTimed);
+    EXPECT_TRUE(HasPass(viewer, "debug view"));
+    EXPECT_EQ(viewer.renderer().options().froxels.depth, 16);
+  }
+
+  // The difference view asks the worker for the other variant's tables and shows the picture
+  // until they come.
+  viewer.settings().view = viewer::DebugView::kDifference;
+  ASSERT_TRUE(viewer.Step());
+  EXPECT_LE(StepUntil(viewer, [&] { return HasPass(viewer, "(3d)"); }, 2000), 2000);
+
+  // A precompute of the small tables takes hundreds of milliseconds, a 200x120 frame tens: the
+  // window must keep drawing while the worker computes.
+  viewer.settings().view = viewer::DebugView::kFinal;
+  viewer.settings().knobs.mie_g = 0.7;
+  viewer.ApplyTableSettings();
+  int busy_frames = 0;
+  EXPECT_LE(StepUntil(viewer, [&] { return viewer.renderer().tables().atmosphere().mie_phase_g == 0.7; },
+                      2000, &busy_frames),
+            2000);
+  std::printf("frames drawn while the worker computed: %d\n", busy_frames);
+  EXPECT_GT(busy_frames, 0);
+
+  // The 3D tables of the first atmosphere (from the difference view) show until those of the
+  // new one arrive.
+  viewer.settings().variant = LutVariant::k3D;
+  ASSERT_TRUE(viewer.Step());
+  EXPECT_EQ(viewer.renderer().tables().options().variant, LutVariant::k3D);
+  EXPECT_LE(StepUntil(viewer, [&] { return viewer.renderer().tables().atmosphere().mie_phase_g == 0.7; }, 2000),
+            2000);
+
+  viewer.settings().view = viewer::DebugView::kDifference;
+  EXPECT_LE(StepUntil(viewer, [&] { return HasPass(viewer, "(4d)"); }, 2000), 2000);
 }
 
 // A still view is drawn until its frame left nothing for later (FrameInfo::settled), then only
 // presented again: its frames time the display pass and no pass of the renderer. A change of the
 // view (here the terrain's error bound, applied without a new renderer) draws again.
-TEST(ViewerSession, AStillViewIsPresentedWithoutRedrawing) {
-  if (std::string why = MissingXServer("Xvfb"); !why.empty()) GTEST_SKIP() << why;
-  XvfbDisplay x;
-  ASSERT_FALSE(x.display().empty()) << x.error();
-  const int messages_before = Device::ValidationMessageCount();
-  {
-    viewer::Viewer viewer(SmallViewerOptions());
-    StepFrames(viewer, kFramesUntilTimed);
-    EXPECT_TRUE(HasPass(viewer, "opaque raster")) << "the first frames draw";
-    EXPECT_LE(StepUntil(viewer, [&] { return !HasPass(viewer, "opaque raster"); }, 20), 20);
-    EXPECT_TRUE(viewer.renderer().frame_info().settled);
-    EXPECT_TRUE(HasPass(viewer, "present"));
-    StepFrames(viewer, kFramesUntilTimed);
-    EXPECT_FALSE(HasPass(viewer, "opaque raster")) << "a still view stays presented";
-    viewer.settings().terrain_error_px = 3.0f;
-    StepFrames(viewer, kFramesUntilTimed);
-    EXPECT_TRUE(HasPass(viewer, "opaque raster")) << "a changed view draws again";
-  }
-  EXPECT_EQ(Device::ValidationMessageCount(), messages_before);
+TEST_F(ViewerSession, AStillViewIsPresentedWithoutRedrawing) {
+  viewer::Viewer viewer(SmallViewerOptions());
+  StepFrames(viewer, kFramesUntilTimed);
+  EXPECT_TRUE(HasPass(viewer, "opaque raster")) << "the first frames draw";
+  EXPECT_LE(StepUntil(viewer, [&] { return !HasPass(viewer, "opaque raster"); }, 20), 20);
+  EXPECT_TRUE(viewer.renderer().frame_info().settled);
+  EXPECT_TRUE(HasPass(viewer, "present"));
+  StepFrames(viewer, kFramesUntilTimed);
+  EXPECT_FALSE(HasPass(viewer, "opaque raster")) << "a still view stays presented";
+  viewer.settings().terrain_error_px = 3.0f;
+  StepFrames(viewer, kFramesUntilTimed);
+  EXPECT_TRUE(HasPass(viewer, "opaque raster")) << "a changed view draws again";
 }
 
 }  // namespace

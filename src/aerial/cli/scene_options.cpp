@@ -1,5 +1,8 @@
 #include "aerial/cli/scene_options.h"
 
+#include <utility>
+#include <vector>
+
 #include "aerial/core/toml_reader.h"
 #include "aerial/error.h"
 
@@ -49,10 +52,26 @@ FroxelGrid FroxelOptions::Make() const {
   return grid;
 }
 
+namespace {
+
+// --aerial's names, the one place they are spelled (the option's check and ParseAerialMode).
+const std::vector<std::pair<std::string, AerialMode>> kAerialModes = {
+    {"froxel", AerialMode::kFroxel},
+    {"per-pixel", AerialMode::kPerPixel},
+    {"table-difference", AerialMode::kTableDifference},
+};
+
+std::vector<std::string> AerialModeNames() {
+  std::vector<std::string> names;
+  for (const auto& [name, mode] : kAerialModes) names.push_back(name);
+  return names;
+}
+
+}  // namespace
+
 AerialMode ParseAerialMode(const std::string& value) {
-  if (value == "froxel") return AerialMode::kFroxel;
-  if (value == "per-pixel") return AerialMode::kPerPixel;
-  if (value == "table-difference") return AerialMode::kTableDifference;
+  for (const auto& [name, mode] : kAerialModes)
+    if (name == value) return mode;
   throw Error("--aerial", value, "froxel, per-pixel or table-difference");
 }
 
@@ -73,7 +92,7 @@ void FrameOptions::AddTo(CLI::App& command, const std::string& size_help) {
   command.add_option("--aerial", aerial,
                      "Aerial perspective: froxel (default), per-pixel (marched per pixel, the reference) "
                      "or table-difference (two table reads per pixel, as Bruneton 2017's demo)")
-      ->check(CLI::IsMember({"froxel", "per-pixel", "table-difference"}));
+      ->check(CLI::IsMember(AerialModeNames()));
   command.add_option("--render-scale", render_scale,
                      "Rasterize at this fraction (0.25 to 1) of the size, then upscale (default 1)");
   command.add_option("--terrain", terrain,
