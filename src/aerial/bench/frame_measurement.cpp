@@ -36,6 +36,7 @@ std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<FrameSource>
       double cpu_start = ProcessCpuMs();
       RunResult frame{.passes = sources[r].renderer->Render(frame_scene, /*complete=*/false)};
       frame.cpu_ms = ProcessCpuMs() - cpu_start;
+      frame.shadow_tiles_redrawn = sources[r].renderer->frame_info().shadow_tiles_redrawn;
       frame.wall_ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       if (i >= warmup) measured[r].push_back(std::move(frame));

@@ -15,7 +15,7 @@ namespace aerial::bench {
 
 // The passes timed by the renderer that the frame statistics name (renderer.cpp).
 inline constexpr const char* kFroxelBuildPass = "froxel build";
-// The sun's shadow map: redrawn when the camera or the sun moves, near 0 when it is cached.
+// The sun's shadow map: the tiles a frame redraws (a moving sun: all of them; a still view: none).
 inline constexpr const char* kShadowMapPass = "shadow map";
 
 // A moving camera makes each frame rebuild what the renderer keeps for a still one (the froxel

@@ -31,6 +31,13 @@ std::vector<double> CpuTotals(const std::vector<RunResult>& runs) {
   return values;
 }
 
+double MeanShadowTilesRedrawn(const std::vector<RunResult>& runs) {
+  if (runs.empty()) return 0.0;
+  double tiles = 0.0;
+  for (const auto& run : runs) tiles += run.shadow_tiles_redrawn;
+  return tiles / double(runs.size());
+}
+
 Stats Summarize(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   size_t n = values.size();

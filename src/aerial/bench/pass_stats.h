@@ -20,6 +20,8 @@ struct RunResult {
   // Other processes on the machine lengthen wall and GPU times but barely this, so it tells a
   // cost apart from noise on a shared machine.
   double cpu_ms = 0.0;
+  // Tiles of the sun's shadow map that the frame redrew (FrameInfo::shadow_tiles_redrawn).
+  int shadow_tiles_redrawn = 0;
   double GpuMs() const;
 };
 
@@ -27,6 +29,8 @@ struct RunResult {
 std::vector<double> GpuTotals(const std::vector<RunResult>& runs);
 std::vector<double> WallTotals(const std::vector<RunResult>& runs);
 std::vector<double> CpuTotals(const std::vector<RunResult>& runs);
+// The shadow map's tiles redrawn per run, on average.
+double MeanShadowTilesRedrawn(const std::vector<RunResult>& runs);
 
 struct Stats {
   double median = 0.0, min = 0.0, max = 0.0;

@@ -9,6 +9,7 @@ ShadowTerrain SelectShadowTerrain(const terrain::LodView& frame_view, const Shad
   terrain::LodView view = frame_view;
   view.planes = CascadesUnionPlanes(cascades, basis);
   view.occlusion_culling = false;
+  view.front_to_back = false;
   terrain::Selection selection = terrain::SelectChunks(view, source);
   deferred = selection.deferred;
   ShadowTerrain drawn;

@@ -5,9 +5,9 @@
 // until the pool is full; then the chunk used longest ago goes, but never one that a frame still
 // in flight may draw.
 #include <chrono>
-#include <map>
 #include <optional>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 #include "aerial/terrain/lod_selection.h"
@@ -47,7 +47,7 @@ class TerrainChunkCache : public terrain::ChunkSource {
   double planet_radius_m_;
   uint32_t capacity_, frames_in_flight_;
   vk::Buffer vertices_, indices_;
-  std::map<terrain::ChunkId, Entry> chunks_;
+  std::unordered_map<terrain::ChunkId, Entry, terrain::ChunkIdHash> chunks_;
   std::vector<uint32_t> free_slots_;
   uint64_t frame_ = 0;
   std::chrono::steady_clock::time_point deadline_;

@@ -10,6 +10,7 @@
 #include <array>
 #include <compare>
 #include <cstdint>
+#include <functional>
 
 namespace aerial::terrain {
 
@@ -22,6 +23,13 @@ inline constexpr double kRootSizeM = 204800.0;
 struct ChunkId {
   int level = 0, x = 0, y = 0;
   auto operator<=>(const ChunkId&) const = default;
+};
+
+// For hashed containers: x and y are below 2^kMaxChunkLevel, so the three fit in 32 bits apart.
+struct ChunkIdHash {
+  size_t operator()(const ChunkId& id) const {
+    return std::hash<uint64_t>{}((uint64_t(id.level) << 56) ^ (uint64_t(uint32_t(id.x)) << 28) ^ uint32_t(id.y));
+  }
 };
 
 struct Footprint {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <set>
+#include <unordered_set>
 
 #include "aerial/scene/camera.h"
 #include "aerial/scene/terrain.h"
@@ -39,24 +39,29 @@ bool WithinTerrain(const ChunkId& id) {
 
 // Quadtree order from the camera (its sea-level point): at every node, the child on the camera's
 // side of both splitting lines first, the one across both last. Two chunks are ordered at the
-// first node where their paths from the root part.
+// first node where their paths from the root part. A path's ranks (2 bits a level) are packed from
+// the top bit down, so that comparing the keys compares the paths; no drawn chunk lies inside
+// another, so no path is a prefix of another.
 void SortFrontToBack(const LodView& view, std::vector<SelectedChunk>& chunks) {
+  static_assert(2 * kMaxChunkLevel <= 64, "a path's ranks fit in a 64-bit key");
   const glm::dvec3 center(0.0, 0.0, -view.planet_radius_m);
   glm::dvec3 eye = center + view.planet_radius_m * glm::normalize(view.camera - center);
-  auto rank_path = [&](const ChunkId& id) {
-    std::vector<int> ranks;
+  auto path_key = [&](const ChunkId& id) {
+    uint64_t key = 0;
     for (int level = 0; level < id.level; ++level) {
       int shift = id.level - level - 1;  // the bit of x and y that picks the child at this level
       ChunkId node{level, id.x >> (shift + 1), id.y >> (shift + 1)};
       Footprint f = FootprintOf(node);
       int camera_x = eye.x >= f.x0 + f.size / 2 ? 1 : 0, camera_y = eye.y >= f.y0 + f.size / 2 ? 1 : 0;
       int child_x = (id.x >> shift) & 1, child_y = (id.y >> shift) & 1;
-      ranks.push_back((child_x != camera_x ? 1 : 0) + (child_y != camera_y ? 2 : 0));
+      uint64_t rank = (child_x != camera_x ? 1 : 0) + (child_y != camera_y ? 2 : 0);
+      key |= rank << (62 - 2 * level);
     }
-    return ranks;
+    return key;
   };
-  std::vector<std::pair<std::vector<int>, SelectedChunk>> keyed;
-  for (const SelectedChunk& chunk : chunks) keyed.push_back({rank_path(chunk.id), chunk});
+  std::vector<std::pair<uint64_t, SelectedChunk>> keyed;
+  keyed.reserve(chunks.size());
+  for (const SelectedChunk& chunk : chunks) keyed.push_back({path_key(chunk.id), chunk});
   std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (size_t i = 0; i < chunks.size(); ++i) chunks[i] = keyed[i].second;
 }
@@ -80,7 +85,8 @@ void LeaveOutHidden(const LodView& view, ChunkSource& source, Selection& selecti
 }  // namespace
 
 void MarkSkirts(std::vector<SelectedChunk>& chunks) {
-  std::set<ChunkId> drawn;
+  std::unordered_set<ChunkId, ChunkIdHash> drawn;
+  drawn.reserve(chunks.size());
   for (const SelectedChunk& chunk : chunks) drawn.insert(chunk.id);
   for (SelectedChunk& chunk : chunks) {
     const ChunkId& c = chunk.id;
@@ -91,7 +97,7 @@ void MarkSkirts(std::vector<SelectedChunk>& chunks) {
         std::pair{ChunkId{c.level, c.x - 1, c.y}, uint32_t(kWest)}};
     chunk.skirts = 0;
     for (const auto& [neighbour, side] : neighbours)
-      if (!drawn.count(neighbour)) chunk.skirts |= side;
+      if (!drawn.contains(neighbour)) chunk.skirts |= side;
   }
 }
 
@@ -179,7 +185,7 @@ Selection SelectChunks(const LodView& view, ChunkSource& source) {
     }
     level = std::move(next);
   }
-  SortFrontToBack(view, selection.chunks);
+  if (view.front_to_back || view.occlusion_culling) SortFrontToBack(view, selection.chunks);
   if (view.occlusion_culling) LeaveOutHidden(view, source, selection);
   MarkSkirts(selection.chunks);
   return selection;

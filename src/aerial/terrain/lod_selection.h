@@ -23,6 +23,9 @@ struct LodView {
   double planet_radius_m = 0.0;
   // Leave out chunks hidden behind nearer ones (screen_horizon.h).
   bool occlusion_culling = true;
+  // Return the chunks front to back (for early depth tests); a selection of shadow casters,
+  // drawn into a depth map in any order, leaves it out.
+  bool front_to_back = true;
   // The frustum's four sides and its near plane in the scene frame: a point p is inside when
   // dot(plane.xyz, p) + plane.w >= 0 for all five (there is no far plane).
   std::array<glm::dvec4, 5> planes{};
@@ -77,9 +80,9 @@ struct Selection {
 };
 
 // The chunks of the terrain within kTerrainRadiusM of the origin (chunks entirely beyond it are
-// not drawn) for the view, in front-to-back order: quadtree order from the camera, so that along
-// any view ray a chunk comes after every chunk in front of it. Builds what it needs through
-// source; the root chunk first.
+// not drawn) for the view, in front-to-back order unless view.front_to_back is off: quadtree
+// order from the camera, so that along any view ray a chunk comes after every chunk in front of
+// it. Builds what it needs through source; the root chunk first.
 Selection SelectChunks(const LodView& view, ChunkSource& source);
 
 // Sets each chunk's skirts: a side needs none where the chunk across it is in the list at the same
