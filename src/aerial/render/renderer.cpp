@@ -140,9 +140,14 @@ vk::ImageCreateInfo SunVisibilityTarget(const RenderOptions& o) {
   return o.shadows ? Target(o, kSunVisibilityFormat) : vk::RenderTargetInfo(1, 1, kSunVisibilityFormat);
 }
 
-// With shadows, the opaque pipeline that looks the sun visibility up and also writes it out.
-std::optional<vk::GraphicsPipeline> CachingOpaquePipeline(const vk::Context& context, const RenderOptions& o) {
+// With shadows, the opaque pipelines of the screen's sun visibility (opaque_fragment.glsl): the one
+// that looks it up and also writes it out (kShadowMap), and the one that reads it back (kCache).
+std::optional<vk::GraphicsPipeline> SunVisibilityPipeline(const vk::Context& context, const RenderOptions& o,
+                                                          SunVisibilitySource source) {
   if (!o.shadows) return std::nullopt;
+  if (source == SunVisibilitySource::kCache)
+    return vk::GraphicsPipeline(context, MeshPipeline("frame/opaque.vert", "frame/opaque.frag", false,
+                                                      MeshConstants(o, SurfaceLight::kSunAndSky, source)));
   return vk::GraphicsPipeline(context, MeshPipeline("frame/opaque.vert", "frame/opaque_caching.frag", false,
                                                     MeshConstants(o), {vk::kRgba32f, kSunVisibilityFormat}));
 }
@@ -228,15 +233,13 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       sky_view_correction_(tables.context(), "frame/sky_view_correction.comp", SkyViewCorrectionSlots(),
                            sizeof(kSkyViewSize)),
       sky_view_(tables.context(), "frame/sky_view.comp", SkyViewSlots(), sizeof(kSkyViewSize)),
-      opaque_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/opaque.frag", false,
-                                             MeshConstants(options, SurfaceLight::kSunAndSky,
-                                                           options.shadows ? SunVisibilitySource::kCache
-                                                                           : SunVisibilitySource::kShadowMap))),
+      opaque_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/opaque.frag", false, MeshConstants(options))),
       sky_(tables.context(), SkyPipeline(options.mode)),
       transparent_(tables.context(),
                    MeshPipeline("frame/transparent.vert", "frame/transparent.frag", true, MeshConstants(options))),
       surface_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/surface.frag", false, MeshConstants(options))),
-      opaque_caching_(CachingOpaquePipeline(tables.context(), options)) {
+      opaque_caching_(SunVisibilityPipeline(tables.context(), options, SunVisibilitySource::kShadowMap)),
+      opaque_cached_(SunVisibilityPipeline(tables.context(), options, SunVisibilitySource::kCache)) {
   if (options.frames_in_flight < 1) throw Error("frames in flight", "0", "at least 1");
   for (uint32_t slot = 0; slot < options.frames_in_flight; ++slot) {
     frame_buffers_.emplace_back(tables.context(), vk::UniformBufferInfo(sizeof(FrameUniforms)));
@@ -448,13 +451,19 @@ void Renderer::DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot
 
 // Whether this frame may read the sun visibility the last caching frame wrote: it draws the same
 // surfaces (its uniforms, so the camera and the sun, and its terrain chunks are that frame's)
-// under the same shadow map. Otherwise this frame writes it, and its key is this frame's.
-bool Renderer::SunVisibilityCached() {
-  if (sun_visibility_key_ && !frame_info_.shadow_map_updated && sun_visibility_key_->chunks == terrain_chunks_ &&
-      std::memcmp(&sun_visibility_key_->frame, &frame_uniforms_, sizeof(FrameUniforms)) == 0)
-    return true;
-  sun_visibility_key_ = SunVisibilityKey{frame_uniforms_, terrain_chunks_};
-  return false;
+// under the same shadow map.
+bool Renderer::SunVisibilityCached() const {
+  return sun_visibility_key_ && !frame_info_.shadow_map_updated && sun_visibility_key_->chunks == terrain_chunks_ &&
+         std::memcmp(&sun_visibility_key_->frame, &frame_uniforms_, sizeof(FrameUniforms)) == 0;
+}
+
+// Whether a frame that looks the sun visibility up also writes it for the next frames: the write
+// is a second color target and a raster scope of its own, which only a next frame of the same
+// view reads. So a renderer's first frame writes it (a still image, or a view about to stay), and
+// so does a frame whose view is the one before it (the camera stopped); a moving camera's frames
+// do not.
+bool Renderer::SunVisibilityWorthCaching() const {
+  return opaque_caching_ && (frames_recorded_ == 0 || still_view_);
 }
 
 void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t slot,
@@ -509,7 +518,8 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   // Every pixel is written once by the opaque pass or the sky, so the output is not cleared.
   vk::RenderTargets targets{.colors = {&output_}, .clear_colors = {std::nullopt}, .depth = &depth_, .clear_depth = 0.0f};
   frame_info_.sun_visibility_cached = opaque_caching_ && SunVisibilityCached();
-  if (opaque_caching_ && !frame_info_.sun_visibility_cached) {
+  if (!frame_info_.sun_visibility_cached && SunVisibilityWorthCaching()) {
+    sun_visibility_key_ = SunVisibilityKey{frame_uniforms_, terrain_chunks_};
     // The opaque pass writes the sun visibility as well, in a scope of its own: the sky and the
     // transparent objects draw into the radiance alone.
     {
@@ -528,7 +538,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   } else {
     vk::Rendering rendering(cmd, targets);
     timer.Begin(cmd, "opaque raster");
-    DrawOpaque(cmd, opaque_, mesh_slots);
+    DrawOpaque(cmd, frame_info_.sun_visibility_cached ? *opaque_cached_ : opaque_, mesh_slots);
     timer.End(cmd);
     DrawSkyAndTransparent(cmd, slot, mesh_slots);
   }

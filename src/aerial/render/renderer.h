@@ -88,7 +88,8 @@ class Renderer {
                   const std::vector<vk::Slot>& slots) const;
   void DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot,
                              const std::vector<vk::Slot>& mesh_slots) const;
-  bool SunVisibilityCached();
+  bool SunVisibilityCached() const;
+  bool SunVisibilityWorthCaching() const;
 
   const AtmosphereTables& tables_;
   RenderOptions options_;
@@ -133,10 +134,10 @@ class Renderer {
   bool still_view_ = false;
   bool shadow_selection_whole_ = false;
   vk::ComputePipeline sky_view_correction_, sky_view_;
-  // opaque_ reads the sun visibility back when shadows are on (opaque_fragment.glsl);
-  // opaque_caching_, only then, looks it up and writes it.
+  // opaque_ looks the sun visibility up (opaque_fragment.glsl); with shadows on, opaque_caching_
+  // also writes it and opaque_cached_ reads it back.
   vk::GraphicsPipeline opaque_, sky_, transparent_, surface_;
-  std::optional<vk::GraphicsPipeline> opaque_caching_;
+  std::optional<vk::GraphicsPipeline> opaque_caching_, opaque_cached_;
 };
 
 }  // namespace aerial
