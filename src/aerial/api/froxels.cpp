@@ -4,7 +4,7 @@
 
 #include "aerial/api/impl.h"
 #include "aerial/error.h"
-#include "aerial/shader_abi/frame_block.h"
+#include "aerial/shader_abi/camera_frame_block.h"
 
 namespace aerial {
 namespace {
