@@ -25,18 +25,18 @@ Tables SmallPublicTables(const Device& device) {
 TEST_F(PublicApi, FroxelsRecordedByTheCallerEqualTheRenderersUnshadowedVolume) {
   Device device;
   Tables tables = SmallPublicTables(device);
-  const vk::Context& context = *device.impl().context;
+  const vk::Context& context = *ImplOf(device).context;
   const double R = tables.atmosphere().bottom_radius_m;
   Scene scene = BuildPreset("sunset", R);
   RenderOptions options{.width = 160, .height = 90, .shadows = false};
-  Renderer renderer(tables.impl().tables(), scene, options);
+  Renderer renderer(ImplOf(tables).tables(), scene, options);
   renderer.Render(scene);
   FroxelTexels expected = renderer.froxels().Read(context);
 
   Froxels froxels(device, options.froxels);
   FrameCamera camera = MakeFrameCamera(scene, options.width, options.height);
   context.Submit([&](const vk::CommandBuffer& cmd) { froxels.Record(*cmd, tables, camera); });
-  FroxelTexels built = froxels.impl().volume.Read(context);
+  FroxelTexels built = ImplOf(froxels).volume.Read(context);
 
   const size_t texels = size_t(options.froxels.width) * options.froxels.height * options.froxels.depth;
   ASSERT_EQ(built.rayleigh.size(), 4 * texels);
@@ -109,7 +109,7 @@ TEST_F(PublicApi, FroxelsRefuseAnEmptyViewportAndANonFiniteCamera) {
   empty.width = 0;
   FrameCamera broken = camera;
   broken.position_m[2] = std::nan("");
-  const vk::Context& context = *device.impl().context;
+  const vk::Context& context = *ImplOf(device).context;
   for (const FrameCamera& bad : {empty, broken}) {
     try {
       context.Submit([&](const vk::CommandBuffer& cmd) { froxels.Record(*cmd, tables, bad); });

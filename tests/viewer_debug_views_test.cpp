@@ -93,7 +93,7 @@ TEST_F(ViewerDebugViews, TransmittanceFallsWithDistance) {
   EXPECT_LT(far[2], far[0]) << "blue is attenuated most";
 
   Display transmittance = ShowTerm(viewer::DisplayPasses::Term::kTransmittance);
-  ImageRgbF surface = renderer_->impl().renderer.ReadSurface();
+  ImageRgbF surface = ImplOf(*renderer_).renderer.ReadSurface();
   int sky = -1, ground = -1;  // a pixel of sky, and one of geometry within 2 km
   for (int i = 0; i < kWidth * kHeight; ++i) {
     float distance = surface.rgba[4 * i + 3];

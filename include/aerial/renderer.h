@@ -14,7 +14,6 @@
 #include "aerial/froxel_grid.h"
 #include "aerial/image.h"
 #include "aerial/scene.h"
-#include "aerial/shader_abi/frame_block.h"
 #include "aerial/tables.h"
 
 namespace aerial {
@@ -96,10 +95,6 @@ struct FrameInfo {
   bool settled = false;
 };
 
-// What ReadSurface draws of the lighting: all of it (the sun's part shadowed as in the frame), or
-// the sky's part alone.
-enum class SurfaceLight { kSunAndSky, kSkyOnly };
-
 class SceneRenderer {
  public:
   // The scene's meshes are uploaded once; its camera and sun may change from frame to frame.
@@ -135,22 +130,14 @@ class SceneRenderer {
   SampledImage froxel_mie() const;
   SampledImage froxel_transmittance() const;
 
-  // For checks and benchmarks (frames never draw it): the last frame's opaque geometry drawn
-  // again at the render size without aerial perspective, lit surface radiance in rgb and the
-  // distance from the camera (m) in a, -1 where no geometry is; and the FrameBlock it was drawn
-  // with.
-  ImageRgbF ReadSurface(SurfaceLight light = SurfaceLight::kSunAndSky) const;
-  const FrameUniforms& frame_uniforms() const;
-
   const Tables& tables() const;
   const FrameInfo& frame_info() const;
   const RenderOptions& options() const;
 
-  struct Impl;  // aerial's side (src/aerial/api/)
-  const Impl& impl() const { return *impl_; }
-  Impl& impl() { return *impl_; }
+  struct Impl;  // aerial's side (src/aerial/api/impl.h)
 
  private:
+  friend struct ImplAccess;  // aerial's own code (src/aerial/api/impl.h)
   std::unique_ptr<Impl> impl_;
 };
 

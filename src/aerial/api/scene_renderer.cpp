@@ -4,7 +4,7 @@
 namespace aerial {
 
 SceneRenderer::SceneRenderer(const Tables& tables, const Scene& scene, const RenderOptions& options)
-    : impl_(new Impl{tables, Renderer(tables.impl().tables(), scene, options)}) {}
+    : impl_(new Impl{tables, Renderer(ImplOf(tables).tables(), scene, options)}) {}
 SceneRenderer::~SceneRenderer() = default;
 SceneRenderer::SceneRenderer(SceneRenderer&&) noexcept = default;
 SceneRenderer& SceneRenderer::operator=(SceneRenderer&&) noexcept = default;
@@ -41,8 +41,6 @@ SampledImage SceneRenderer::froxel_transmittance() const {
   return SampledLikeTheTables(impl_->renderer.tables(), impl_->renderer.froxels().transmittance());
 }
 
-ImageRgbF SceneRenderer::ReadSurface(SurfaceLight light) const { return impl_->renderer.ReadSurface(light); }
-const FrameUniforms& SceneRenderer::frame_uniforms() const { return impl_->renderer.frame_uniforms(); }
 
 const Tables& SceneRenderer::tables() const { return impl_->tables; }
 const FrameInfo& SceneRenderer::frame_info() const { return impl_->renderer.frame_info(); }

@@ -30,6 +30,10 @@
 
 namespace aerial {
 
+// What ReadSurface draws of the lighting: all of it (the sun's part shadowed as in the frame), or
+// the sky's part alone.
+enum class SurfaceLight { kSunAndSky, kSkyOnly };
+
 class Renderer {
  public:
   // The scene's meshes are uploaded once; its camera and sun may change from frame to frame.
