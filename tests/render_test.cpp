@@ -172,7 +172,7 @@ TEST_F(Render, MatchesGoldenImages) {
     const AtmosphereTables& tables = FullTables();
     Scene scene = BuildPreset(preset, tables.atmosphere().bottom_radius_m);
     Renderer renderer(tables, scene,
-                      {.width = 96, .height = 54, .terrain = TerrainMode::kStaticMesh, .shadows = false});
+                      RendererOptions{{.width = 96, .height = 54, .shadows = false}, TerrainMode::kStaticMesh});
     renderer.Render(scene);
     std::filesystem::path golden =
         std::filesystem::path(AERIAL_SOURCE_DIR) / "tests/data/golden" / (std::string(preset) + ".exr");

@@ -22,6 +22,8 @@ struct ImplAccess {
   static const typename Public::Impl& Of(const Public& object) { return *object.impl_; }
   template <typename Public>
   static typename Public::Impl& Of(Public& object) { return *object.impl_; }
+  template <typename Public>
+  static Public Make(std::unique_ptr<typename Public::Impl> impl) { return Public(std::move(impl)); }
 };
 template <typename Public>
 decltype(auto) ImplOf(Public& object) { return ImplAccess::Of(object); }
