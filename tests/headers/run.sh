@@ -3,12 +3,7 @@
 # against it (tests/headers/CMakeLists.txt); also fails where an installed header declares
 # something of aerial's implementation namespaces (a forward declaration would compile).
 #   tests/headers/run.sh BUILD_DIR
-set -euo pipefail
-build=$1
-here="$(cd "$(dirname "$0")" && pwd)"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cmake --install "$build" --prefix "$work/prefix" >/dev/null
+source "$(dirname "$0")/../package/install.sh"
 include="$work/prefix/include"
 if grep -rnE 'namespace (aerial::)?(vk|bench|viewer|cli|terrain)\b|\bvk::' "$include/aerial"; then
   echo "an installed header names aerial's implementation (above)" >&2
