@@ -3,12 +3,15 @@
 // runs under Xvfb are in view_cli_test.cpp.)
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "aerial/export/vdb_file.h"
 #include "command_run.h"
 
 namespace aerial::testing {
@@ -52,7 +55,29 @@ TEST(Cli, ProbeReferencePrintsItsStandardErrors) {
   EXPECT_FALSE(nlohmann::json::parse(tables.out).contains("sky_radiance_std_error"));
 }
 
-// export-vdb writes a file Debian's python3-openvdb reads, on the camera's frustum and on a world grid.
+// Steps along the frustum grid's columns (k: farther from the camera) where a value moves against
+// `direction`: +1, it may only grow (inscatter accumulates); -1, it may only fall (transmittance).
+int StepsAgainst(const VdbGridData& grid, int direction) {
+  int against = 0;
+  for (int32_t j = grid.min[1]; j <= grid.max[1]; ++j)
+    for (int32_t i = grid.min[0]; i <= grid.max[0]; ++i) {
+      const float* previous = nullptr;
+      for (int32_t k = grid.min[2]; k <= grid.max[2]; ++k) {
+        const int64_t at = grid.Offset(i, j, k);
+        if (!grid.active[at]) continue;
+        const float* value = &grid.values[at * grid.components];
+        for (int c = 0; previous && c < grid.components; ++c) against += direction * (value[c] - previous[c]) < 0.0f;
+        previous = value;
+      }
+    }
+  return against;
+}
+
+// export-vdb writes a file the OpenVDB library reads (aerial/export/vdb_file.h), on the camera's
+// frustum and on a world grid: the grids aerial writes, with as many active voxels as the command
+// says, of the froxel volume asked for, holding finite inscatter (some of it positive), a
+// transmittance in (0, 1] and a non-negative density; in the frustum, inscatter grows and
+// transmittance falls away from the camera.
 TEST(Cli, ExportVdbWritesTheFroxelVolume) {
   std::filesystem::path dir = std::filesystem::temp_directory_path() / ("aerial-cli-vdb-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
@@ -60,9 +85,39 @@ TEST(Cli, ExportVdbWritesTheFroxelVolume) {
     std::filesystem::path out = dir / "f.vdb";
     CommandRun run = RunAerial("export-vdb --small-tables --quiet --froxels 8x4x6" + extra + " --out " + out.string());
     ASSERT_EQ(run.exit_code, 0) << extra << "\n" << run.err;
-    EXPECT_NE(run.out.find("wrote"), std::string::npos) << run.out;
-    ASSERT_TRUE(std::filesystem::exists(out));
-    EXPECT_GT(std::filesystem::file_size(out), 1000u);
+    const size_t said = run.out.find(": ");  // "wrote PATH: N voxels per grid (...)"
+    size_t voxels = 0;
+    ASSERT_NE(said, std::string::npos) << run.out;
+    ASSERT_EQ(std::sscanf(run.out.c_str() + said, ": %zu voxels per grid", &voxels), 1) << run.out;
+    VdbFileData file = ReadVdb(out);
+    EXPECT_EQ(std::get<std::string>(file.metadata.at("grid_space")), extra.empty() ? "frustum" : "world");
+    using Int3 = std::array<int32_t, 3>;
+    EXPECT_EQ(std::get<Int3>(file.metadata.at("froxel_resolution")), (Int3{8, 4, 6}));
+    for (const char* name : {"rayleigh_inscatter", "mie_inscatter", "transmittance", "inscatter_luminance", "density"}) {
+      const VdbGridData* grid = file.Find(name);
+      ASSERT_NE(grid, nullptr) << name << extra;
+      EXPECT_EQ(grid->linear_transform, !extra.empty()) << name << " " << grid->map_type;
+      EXPECT_EQ(size_t(grid->active_voxels), voxels) << name << extra;
+      const std::string grid_name = name;
+      float largest = 0.0f;
+      int bad = 0;
+      for (size_t v = 0; v < grid->active.size(); ++v) {
+        if (!grid->active[v]) continue;
+        for (int c = 0; c < grid->components; ++c) {
+          float value = grid->values[v * grid->components + c];
+          largest = std::max(largest, value);
+          bad += !std::isfinite(value) || value < 0.0f || (grid_name == "transmittance" && !(value > 0.0f && value <= 1.0f));
+        }
+      }
+      EXPECT_EQ(bad, 0) << name << extra;
+      EXPECT_GT(largest, 0.0f) << name << extra;
+    }
+    if (extra.empty()) {
+      EXPECT_EQ(StepsAgainst(*file.Find("rayleigh_inscatter"), +1), 0);
+      EXPECT_EQ(StepsAgainst(*file.Find("transmittance"), -1), 0);
+    } else {
+      EXPECT_EQ(file.grids.front().index_to_world[0], 8000.0);
+    }
     std::vector<std::string> leftovers;
     for (const auto& entry : std::filesystem::directory_iterator(dir))
       if (entry.path() != out) leftovers.push_back(entry.path().string());

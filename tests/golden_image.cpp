@@ -30,7 +30,7 @@ bool GoldenUpdateRequested() { return std::getenv("AERIAL_UPDATE_GOLDEN") != nul
                                          << expected.height << ", the image " << image.width << "x"
                                          << image.height;
   double rmse = RelativeRmse(image, expected);
-  std::printf("%s: relative RMSE %.4f%% against the golden image\n", golden.filename().c_str(), 100 * rmse);
+  std::printf("%s: relative RMSE %.3g%% against the golden image\n", golden.filename().c_str(), 100 * rmse);
   if (rmse < max_rmse) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << golden.string() << ": relative RMSE " << rmse << ", bound " << max_rmse;
 }

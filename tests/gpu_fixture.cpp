@@ -47,6 +47,20 @@ const aerial::Tables& SmallPublicTables() {
   return tables;
 }
 
+vk::Image Upload(const ImageRgbF& image) {
+  vk::Context& context = SharedContext();
+  vk::Image gpu(context, {.extent = {uint32_t(image.width), uint32_t(image.height), 1}});
+  vk::Buffer staging(context, {.size = gpu.byte_size(), .usage = ::vk::BufferUsageFlagBits::eTransferSrc,
+                               .host_visible = true});
+  staging.Write(std::as_bytes(std::span(image.rgba)));
+  context.Submit([&](const auto& cmd) {
+    gpu.InitializeLayout(cmd);
+    gpu.CopyFromBuffer(cmd, staging);
+    vk::FullBarrier(cmd);
+  });
+  return gpu;
+}
+
 std::vector<std::byte> ReadBack(const vk::Image& image) {
   return vk::ReadImageBytes(SharedContext(), image);
 }

@@ -5,6 +5,7 @@
 // fails the test if the validation layers printed anything while it ran.
 #include <gtest/gtest.h>
 
+#include "aerial/image.h"
 #include "aerial/precompute/table_store.h"
 #include "aerial/tables.h"
 #include "aerial/vk/context.h"
@@ -23,6 +24,9 @@ const AtmosphereTables& SmallTables(LutVariant variant = LutVariant::k4D);
 // it (from the test cache, like SmallTables), for tests of what is built on the public API.
 const Device& SharedDevice();
 const aerial::Tables& SmallPublicTables();
+
+// An rgba32f image holding the image's pixels, in the GENERAL layout, written before it returns.
+vk::Image Upload(const ImageRgbF& image);
 
 // The image's texels, as stored (x fastest, then y, then z), read back through a staging buffer.
 std::vector<std::byte> ReadBack(const vk::Image& image);

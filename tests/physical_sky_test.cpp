@@ -29,89 +29,86 @@ const char* kAfternoon = "afternoon (60-85)";
 const char* kLowSun = "low sun (85-95)";
 const char* kTwilight = "twilight (95-108)";
 
-// Bounds of one region on its largest relative error (any channel) and on its median (the largest
-// of the channels' medians), each an interval [lower, upper], and the number of values it compares
-// (fixed by the stored reference: those above the floor of 1e-4 of the noon sky).
+// One region as measured with the default tables of this commit against the stored reference:
+// its largest relative error (any channel), its median (the largest of the channels' medians), the
+// number of values it compares (fixed by the stored reference: those above the floor of 1e-4 of
+// the noon sky), the reference's noise there (the largest relative standard error over the compared
+// values, ChannelAccuracy::max_relative_std_error) and issue 12's target for the largest error.
 //
-// Issue 12's targets: daylight (sun zenith <= 60) at most 1% on the ground and 1.5% at 10 and 50
-// km, median at most 0.4%; sun zenith 85-95 at most 3%; 95-108 at most 8%. Where a region meets its
-// target the upper bound is the target and the lower bound 0. Where it does not (the comment says
-// MISSED and gives both), the upper bound is the measured error plus 10%, rounded up, so that a
-// regression fails, and the lower bound half the measured error, so that an improvement fails too
-// and is written down here and in docs/accuracy.md. The afternoon (60-85) has no target and is pinned the
-// same way. Measured with the default tables of this commit (MU_S 36 on the arctangent mapping, 4
-// orders + the series' tail, the density grid's zenith cells quadratic toward the horizon above and
-// below it, the ground irradiance of order 1 corrected by single scattering integrated along an 8x8
-// grid, the irradiance read exponentially in r), radiance to a point marched with the multiple
-// density table R32 MU56 MU_S36 NU9 (the density tables' r texels), every density read linearly
-// in mu_s between daylight texels (GetDensityTextureUvwz), the density tables' fourth axis the
-// view-sun azimuth (GetUnitRangeFromViewSunAzimuth), 9 nu slices (one on nu = 0) in 16-bit floats
-// rounded to the nearest (round_to_half.comp), the sky's single scattering corrected where the sun is low and its
-// multiple scattering blended exponentially in mu_s and nu (GetSkyInscatterCorrection,
-// sky_lookup.glsl), single scattering marched with steps that follow a sun on the horizon
-// (GetStepSpacingExponent, scattering.glsl), the scattering density tables' mu axis on the view
-// zenith angle (MU_AXIS_VIEW_ZENITH, mappings.glsl) and their r axis warped (WarpR, the irradiance
-// table's too), J_ms blended exponentially in mu_s in the Earth's shadow, the mu_s mapping's width
-// 1/7 (MU_S_SPREAD), the sky's multiple scattering blended in nu as radiance, the density grid's
-// node at each cell's mean path length (CellNodeZenith), the irradiance read linearly in mu_s in
-// daylight and integrated over zenith nodes by Fejer's rule, the sky's multiple scattering blended
-// in daylight quadratically in mu_s over three texels and at the nus its slices hold
-// (GetMultipleScatteringBlendCorrection),
-// the r axis warped by R_WARP 0.5. Against the stored reference of 65,536 paths per sample (up to
-// 64 times more where noisy, and for every irradiance above the floor), in the sun's vertical plane
-// and across it (azimuth 90).
-struct RegionBound {
+// Each measure is bounded on both sides by the reference's noise: a change of the tables smaller
+// than that cannot be told from the reference's own Monte Carlo error, a larger one fails, either
+// way (an improvement is then written down here and in docs/accuracy.md). The upper bound of the
+// largest error is also held at the target where the noise would reach past it; the daylight
+// medians at issue 12's 0.4%. Lower bounds stop at 0. The noise: 0.06-0.22% in daylight and the
+// afternoon, up to 0.74% for the low sun and 1.23% at twilight.
+//
+// The tables of this commit: MU_S 36 on the arctangent mapping, 4 orders + the series' tail, the
+// density grid's zenith cells quadratic toward the horizon above and below it, radiance to a point
+// marched with the multiple density table R32 MU56 MU_S36 NU9, 9 nu slices in 16-bit floats, the
+// r axis warped by R_WARP 0.5 (docs/accuracy.md lists every choice behind these numbers). The
+// stored reference: 65,536 paths per sample (up to 64 times more where noisy, and for every
+// irradiance above the floor), in the sun's vertical plane and across it (azimuth 90).
+struct MeasuredRegion {
   SkyQuantity quantity;
   const char* band;
   int altitude_km;
   int samples;
-  double max_upper, max_lower, median_upper, median_lower;
+  double max, median, noise, target;
 };
 
-const RegionBound kBounds[] = {
-    {SkyQuantity::kSkyIrradiance, kDay, 0, 9, 0.01, 0, 0.004, 0},  // max 0.686%: target 1%; median 0.39%: target
-    {SkyQuantity::kSkyRadiance, kDay, 0, 81, 0.01, 0, 0.004, 0},  // max 0.460%: target 1%; median 0.26%: target
-    {SkyQuantity::kRadianceToPoint, kDay, 0, 81, 0.01, 0, 0.004, 0},  // max 0.676%: target 1%; median 0.40%: target
-    {SkyQuantity::kSkyIrradiance, kDay, 10, 9, 0.015, 0, 0.004, 0},  // max 0.441%: target 1.5%; median 0.09%: target
-    {SkyQuantity::kSkyRadiance, kDay, 10, 135, 0.015, 0, 0.004, 0},  // max 0.679%: target 1.5%; median 0.23%: target
-    {SkyQuantity::kRadianceToPoint, kDay, 10, 135, 0.015, 0, 0.004, 0},  // max 0.835%: target 1.5%; median 0.17%: target
-    {SkyQuantity::kSkyIrradiance, kDay, 50, 9, 0.015, 0, 0.004, 0},  // max 0.377%: target 1.5%; median 0.21%: target
-    {SkyQuantity::kSkyRadiance, kDay, 50, 135, 0.015, 0, 0.004, 0},  // max 0.640%: target 1.5%; median 0.23%: target
-    {SkyQuantity::kRadianceToPoint, kDay, 50, 108, 0.015, 0, 0.004, 0},  // max 0.665%: target 1.5%; median 0.20%: target
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 0, 3, 0.0032, 0.001427, kNone, 0},  // max 0.285%, median 0.29%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 0, 27, 0.0045, 0.002, kNone, 0},  // max 0.400%, median 0.25%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 0, 27, 0.0055, 0.002485, kNone, 0},  // max 0.497%, median 0.29%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 10, 3, 0.00093, 0.0004201, kNone, 0},  // max 0.084%, median 0.08%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 45, 0.0058, 0.002602, kNone, 0},  // max 0.520%, median 0.15%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 10, 45, 0.0031, 0.001392, kNone, 0},  // max 0.278%, median 0.11%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.0068, 0.003054, kNone, 0},  // max 0.611%, median 0.61%: no target, pinned
-    {SkyQuantity::kSkyRadiance, kAfternoon, 50, 45, 0.0063, 0.00285, kNone, 0},  // max 0.570%, median 0.23%: no target, pinned
-    {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 36, 0.004, 0.001799, kNone, 0},  // max 0.360%, median 0.12%: no target, pinned
-    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.03, 0, kNone, 0},  // max 2.313%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 0, 135, 0.03, 0, kNone, 0},  // max 2.881%: target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 135, 0.03, 0, kNone, 0},  // max 2.446%: target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.03, 0, kNone, 0},  // max 0.819%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 10, 225, 0.03, 0, kNone, 0},  // max 2.345%: target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 206, 0.03, 0, kNone, 0},  // max 1.813%: target 3%
-    {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.03, 0, kNone, 0},  // max 0.966%: target 3%
-    {SkyQuantity::kSkyRadiance, kLowSun, 50, 225, 0.03, 0, kNone, 0},  // max 2.674%: target 3%
-    {SkyQuantity::kRadianceToPoint, kLowSun, 50, 180, 0.03, 0, kNone, 0},  // max 0.269%: target 3%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.08, 0, kNone, 0},  // max 5.784%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 0, 18, 0.08, 0, kNone, 0},  // max 7.355%: target 8%
-    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.08, 0, kNone, 0},  // max 4.560%: target 8%
-    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.08, 0, kNone, 0},  // max 4.014%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 10, 29, 0.08, 0, kNone, 0},  // max 3.779%: target 8%
-    {SkyQuantity::kRadianceToPoint, kTwilight, 10, 0, kNone, 0, kNone, 0},  // no value above the floor
-    {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.08, 0, kNone, 0},  // max 0.094%: target 8%
-    {SkyQuantity::kSkyRadiance, kTwilight, 50, 19, 0.08, 0, kNone, 0},  // max 3.654%: target 8%
-    {SkyQuantity::kRadianceToPoint, kTwilight, 50, 0, kNone, 0, kNone, 0},  // no value above the floor
+constexpr double kDaylightMedianTarget = 0.004;
+
+const MeasuredRegion kRegions[] = {
+    {SkyQuantity::kSkyIrradiance, kDay, 0, 9, 0.00686, 0.00389, 0.00059, 0.01},
+    {SkyQuantity::kSkyRadiance, kDay, 0, 81, 0.00460, 0.00260, 0.00192, 0.01},
+    {SkyQuantity::kRadianceToPoint, kDay, 0, 81, 0.00676, 0.00398, 0.00160, 0.01},
+    {SkyQuantity::kSkyIrradiance, kDay, 10, 9, 0.00441, 0.00090, 0.00067, 0.015},
+    {SkyQuantity::kSkyRadiance, kDay, 10, 135, 0.00679, 0.00234, 0.00219, 0.015},
+    {SkyQuantity::kRadianceToPoint, kDay, 10, 135, 0.00835, 0.00172, 0.00193, 0.015},
+    {SkyQuantity::kSkyIrradiance, kDay, 50, 9, 0.00377, 0.00214, 0.00084, 0.015},
+    {SkyQuantity::kSkyRadiance, kDay, 50, 135, 0.00640, 0.00233, 0.00198, 0.015},
+    {SkyQuantity::kRadianceToPoint, kDay, 50, 108, 0.00665, 0.00205, 0.00183, 0.015},
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 0, 3, 0.00285, 0.00285, 0.00062, kNone},
+    {SkyQuantity::kSkyRadiance, kAfternoon, 0, 27, 0.00400, 0.00247, 0.00202, kNone},
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 0, 27, 0.00497, 0.00287, 0.00191, kNone},
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 10, 3, 0.00084, 0.00084, 0.00065, kNone},
+    {SkyQuantity::kSkyRadiance, kAfternoon, 10, 45, 0.00520, 0.00155, 0.00218, kNone},
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 10, 45, 0.00278, 0.00115, 0.00181, kNone},
+    {SkyQuantity::kSkyIrradiance, kAfternoon, 50, 3, 0.00611, 0.00611, 0.00081, kNone},
+    {SkyQuantity::kSkyRadiance, kAfternoon, 50, 45, 0.00570, 0.00234, 0.00196, kNone},
+    {SkyQuantity::kRadianceToPoint, kAfternoon, 50, 36, 0.00360, 0.00118, 0.00167, kNone},
+    {SkyQuantity::kSkyIrradiance, kLowSun, 0, 15, 0.02313, 0.00804, 0.00230, 0.03},
+    {SkyQuantity::kSkyRadiance, kLowSun, 0, 135, 0.02881, 0.00323, 0.00740, 0.03},
+    {SkyQuantity::kRadianceToPoint, kLowSun, 0, 135, 0.02446, 0.00587, 0.00736, 0.03},
+    {SkyQuantity::kSkyIrradiance, kLowSun, 10, 15, 0.00819, 0.00236, 0.00193, 0.03},
+    {SkyQuantity::kSkyRadiance, kLowSun, 10, 225, 0.02345, 0.00280, 0.00693, 0.03},
+    {SkyQuantity::kRadianceToPoint, kLowSun, 10, 206, 0.01813, 0.00137, 0.00728, 0.03},
+    {SkyQuantity::kSkyIrradiance, kLowSun, 50, 15, 0.00966, 0.00538, 0.00076, 0.03},
+    {SkyQuantity::kSkyRadiance, kLowSun, 50, 225, 0.02674, 0.00230, 0.00728, 0.03},
+    {SkyQuantity::kRadianceToPoint, kLowSun, 50, 180, 0.00269, 0.00042, 0.00123, 0.03},
+    {SkyQuantity::kSkyIrradiance, kTwilight, 0, 3, 0.05784, 0.05784, 0.00782, 0.08},
+    {SkyQuantity::kSkyRadiance, kTwilight, 0, 18, 0.07355, 0.02442, 0.01231, 0.08},
+    {SkyQuantity::kRadianceToPoint, kTwilight, 0, 1, 0.04560, 0.04560, 0.00829, 0.08},
+    {SkyQuantity::kSkyIrradiance, kTwilight, 10, 3, 0.04014, 0.04014, 0.00725, 0.08},
+    {SkyQuantity::kSkyRadiance, kTwilight, 10, 29, 0.03779, 0.00971, 0.01231, 0.08},
+    {SkyQuantity::kRadianceToPoint, kTwilight, 10, 0, 0.00000, 0.00000, 0.00000, kNone},
+    {SkyQuantity::kSkyIrradiance, kTwilight, 50, 1, 0.00094, 0.00094, 0.00076, 0.08},
+    {SkyQuantity::kSkyRadiance, kTwilight, 50, 19, 0.03654, 0.00614, 0.01116, 0.08},
+    {SkyQuantity::kRadianceToPoint, kTwilight, 50, 0, 0.00000, 0.00000, 0.00000, kNone},
 };
 
-const RegionBound* FindBound(const bench::RegionAccuracy& region) {
-  for (const RegionBound& b : kBounds)
-    if (b.quantity == region.quantity && region.band == b.band && region.altitude_m == b.altitude_km * 1000.0)
-      return &b;
+const MeasuredRegion* FindRegion(const bench::RegionAccuracy& region) {
+  for (const MeasuredRegion& r : kRegions)
+    if (r.quantity == region.quantity && region.band == r.band && region.altitude_m == r.altitude_km * 1000.0)
+      return &r;
   return nullptr;
+}
+
+// The reference's noise over a region's compared values, as the stored reference has it.
+double Noise(const bench::RegionAccuracy& region) {
+  double noise = 0.0;
+  for (const bench::ChannelAccuracy& channel : region.channels) noise = std::max(noise, channel.max_relative_std_error);
+  return noise;
 }
 
 class PhysicalSky : public GpuTest {};
@@ -128,21 +125,23 @@ TEST_F(PhysicalSky, DefaultTablesAgainstTheTargets) {
   ASSERT_TRUE(tables.from_cache());
   std::vector<bench::RegionAccuracy> regions = bench::CompareSkyWithTables(tables, reference);
   std::printf("%s\n%s", bench::FormatSkyAccuracy(regions).c_str(), bench::FormatWorstSamples(regions).c_str());
-  ASSERT_EQ(regions.size(), std::size(kBounds));  // 3 quantities x 4 bands x 3 altitudes
+  ASSERT_EQ(regions.size(), std::size(kRegions));  // 3 quantities x 4 bands x 3 altitudes
   for (const bench::RegionAccuracy& region : regions) {
     std::string name = bench::ToString(region.quantity) + ", " + region.band + ", camera at " +
                        std::to_string(int(region.altitude_m / 1000.0)) + " km";
-    const RegionBound* bound = FindBound(region);
-    ASSERT_NE(bound, nullptr) << name;
+    const MeasuredRegion* measured = FindRegion(region);
+    ASSERT_NE(measured, nullptr) << name;
     int samples = region.channels[0].samples + region.channels[1].samples + region.channels[2].samples;
-    EXPECT_EQ(samples, bound->samples) << name;
+    EXPECT_EQ(samples, measured->samples) << name;
     if (samples == 0) continue;
-    EXPECT_LE(region.Max(), bound->max_upper) << name;
-    EXPECT_GE(region.Max(), bound->max_lower) << name << ": better than recorded, update the bound and docs/accuracy.md";
-    if (bound->median_upper != kNone) {
-      EXPECT_LE(region.Median(), bound->median_upper) << name << " (median)";
-      EXPECT_GE(region.Median(), bound->median_lower) << name << " (median): better than recorded";
-    }
+    EXPECT_NEAR(Noise(region), measured->noise, 1e-5) << name << ": the stored reference changed";
+    const double noise = measured->noise;
+    const bool daylight = region.band == kDay;
+    EXPECT_LE(region.Max(), std::min(measured->max + noise, measured->target)) << name;
+    EXPECT_GE(region.Max(), measured->max - noise) << name << ": better than recorded, update it and docs/accuracy.md";
+    EXPECT_LE(region.Median(), std::min(measured->median + noise, daylight ? kDaylightMedianTarget : kNone))
+        << name << " (median)";
+    EXPECT_GE(region.Median(), measured->median - noise) << name << " (median): better than recorded";
   }
 }
 

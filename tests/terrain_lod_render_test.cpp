@@ -25,7 +25,7 @@ struct Frame {
   ImageRgbF radiance, surface;
 };
 
-Frame Draw(const Scene& scene, RenderOptions options) {
+Frame Draw(const Scene& scene, const RendererOptions& options) {
   Renderer renderer(FullTables(), scene, options);
   renderer.Render(scene);
   return {renderer.ReadOutput(), renderer.ReadSurface()};
@@ -70,8 +70,8 @@ double BlockRmse(const Frame& a, const Frame& b, int block, int* blocks) {
 // edges within 4 px at 720 rows, 2 px here, and the mountains' outline is about 1000 px long.
 TEST_F(LeanFrame, LevelOfDetailLooksLikeTheFixedMesh) {
   Scene scene = BuildPreset("noon", FullTables().atmosphere().bottom_radius_m);
-  Frame lod = Draw(scene, {.width = kWidth, .height = kHeight});
-  Frame mesh = Draw(scene, {.width = kWidth, .height = kHeight, .terrain = TerrainMode::kStaticMesh});
+  Frame lod = Draw(scene, {{.width = kWidth, .height = kHeight}});
+  Frame mesh = Draw(scene, {{.width = kWidth, .height = kHeight}, TerrainMode::kStaticMesh});
   std::vector<bool> both(size_t(kWidth) * kHeight);
   size_t opaque = 0, outline = 0;
   for (size_t p = 0; p < both.size(); ++p) {
@@ -136,8 +136,8 @@ TEST_F(LeanFrame, OcclusionCullingLeavesOutOnlyHiddenChunks) {
 // picture, blurred at its edges.
 TEST_F(LeanFrame, RenderScaleUpscalesToTheOutputSize) {
   Scene scene = BuildPreset("noon", FullTables().atmosphere().bottom_radius_m);
-  Frame full = Draw(scene, {.width = kWidth, .height = kHeight});
-  Frame half = Draw(scene, {.width = kWidth, .height = kHeight, .render_scale = 0.5});
+  Frame full = Draw(scene, {{.width = kWidth, .height = kHeight}});
+  Frame half = Draw(scene, {{.width = kWidth, .height = kHeight, .render_scale = 0.5}});
   ASSERT_EQ(half.radiance.width, kWidth);
   ASSERT_EQ(half.radiance.height, kHeight);
   EXPECT_EQ(half.surface.width, kWidth / 2);

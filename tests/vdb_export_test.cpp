@@ -390,7 +390,7 @@ TEST_F(VdbExport, ViewerExportWritesTheCurrentFrame) {
   EXPECT_EQ(written[0].extension(), ".vdb");
   EXPECT_NE(message.find(written[0].string()), std::string::npos) << message;
   VdbFileData file = ReadVdb(written[0]);
-  VdbVolume volume = MakeFrustumVolume(ReadFroxelFrame(renderer.impl().renderer, scene));
+  VdbVolume volume = MakeFrustumVolume(ReadFroxelFrame(ImplOf(renderer).renderer, scene));
   ASSERT_EQ(file.grids.size(), volume.grids.size());
   for (const VdbVolume::Grid& expected : volume.grids) {
     const VdbGridData* read = file.Find(expected.name);

@@ -2,6 +2,7 @@
 // says, with numbers the physics fixes, and the final view is the PNG encoder's output.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 
 #include "aerial/api/impl.h"
@@ -92,7 +93,7 @@ TEST_F(ViewerDebugViews, TransmittanceFallsWithDistance) {
   EXPECT_LT(far[2], far[0]) << "blue is attenuated most";
 
   Display transmittance = ShowTerm(viewer::DisplayPasses::Term::kTransmittance);
-  ImageRgbF surface = renderer_->impl().renderer.ReadSurface();
+  ImageRgbF surface = ImplOf(*renderer_).renderer.ReadSurface();
   int sky = -1, ground = -1;  // a pixel of sky, and one of geometry within 2 km
   for (int i = 0; i < kWidth * kHeight; ++i) {
     float distance = surface.rgba[4 * i + 3];
@@ -104,13 +105,33 @@ TEST_F(ViewerDebugViews, TransmittanceFallsWithDistance) {
   EXPECT_LT(transmittance.rgba[4 * sky + 2], transmittance.rgba[4 * ground + 2]);
 }
 
-// A frame against itself differs nowhere: the heat map is black.
-TEST_F(ViewerDebugViews, DifferenceOfAFrameWithItselfIsBlack) {
-  SampledImage output = renderer_->output();
-  Display same = Show([&](const auto& cmd) { passes_->RecordDifference(cmd, kExtent, output, output, 0.05f); });
-  int lit = 0;
-  for (size_t i = 0; i < same.rgba.size(); ++i) lit += i % 4 != 3 && same.rgba[i] != 0;
-  EXPECT_EQ(lit, 0);
+// The frame against a copy of it 2% brighter in its left half: there the relative difference is
+// 0.02, 0.4 of the full scale 0.05, which the hot map shows as (1, 0.2, 0) before the sRGB
+// encoding (green 0.2 -> 124 of 255); the right half, the frame against itself, is black.
+TEST_F(ViewerDebugViews, DifferenceShowsAKnownDifferenceAndBlackWhereFramesAgree) {
+  ImageRgbF frame = renderer_->ReadOutput();
+  ImageRgbF brighter = frame;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth / 2; ++x)
+      for (int c = 0; c < 3; ++c) brighter.rgba[4 * (size_t(y) * kWidth + x) + c] *= 1.02f;
+  vk::Image first = Upload(frame), second = Upload(brighter);
+  Display shown = Show([&](const auto& cmd) {
+    passes_->RecordDifference(cmd, kExtent, ToSampledImage({&first, VK_NULL_HANDLE}),
+                              ToSampledImage({&second, VK_NULL_HANDLE}), 0.05f);
+  });
+  const int green = int(std::lround(255 * (1.055 * std::pow(0.2, 1 / 2.4) - 0.055)));
+  int wrong_left = 0, lit_right = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const uint8_t* p = shown.pixel(x, y);
+      if (x < kWidth / 2)
+        wrong_left += p[0] != 255 || std::abs(p[1] - green) > 1 || p[2] != 0;
+      else
+        lit_right += p[0] != 0 || p[1] != 0 || p[2] != 0;
+    }
+  EXPECT_EQ(wrong_left, 0) << "expected (255, " << green << ", 0); top left: " << int(shown.pixel(0, 0)[0])
+                           << " " << int(shown.pixel(0, 0)[1]) << " " << int(shown.pixel(0, 0)[2]);
+  EXPECT_EQ(lit_right, 0);
 }
 
 }  // namespace

@@ -32,20 +32,6 @@ ImageRgbF Ramp(double scale) {
   return ramp;
 }
 
-vk::Image Upload(const ImageRgbF& image) {
-  vk::Context& context = SharedContext();
-  vk::Image gpu(context, {.extent = {uint32_t(image.width), uint32_t(image.height), 1}});
-  vk::Buffer staging(context, {.size = gpu.byte_size(), .usage = ::vk::BufferUsageFlagBits::eTransferSrc,
-                               .host_visible = true});
-  staging.Write(std::as_bytes(std::span(image.rgba)));
-  context.Submit([&](const auto& cmd) {
-    gpu.InitializeLayout(cmd);
-    gpu.CopyFromBuffer(cmd, staging);
-    vk::FullBarrier(cmd);
-  });
-  return gpu;
-}
-
 class ViewerToneMap : public GpuTest {};
 
 // Before rounding to 8 bits. The GPU evaluates the same expressions in float32 against the CPU's

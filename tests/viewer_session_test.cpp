@@ -49,7 +49,7 @@ viewer::ViewerOptions SmallViewerOptions() {
   options.tables = {{LutVariant::k4D, PrecomputeOptions::Small(LutVariant::k4D)},
                     {LutVariant::k3D, PrecomputeOptions::Small(LutVariant::k3D)}};
   options.device = {.validation = true};
-  options.render = {.width = 160, .height = 90};
+  options.render = {{.width = 160, .height = 90}};
   options.scene = BuildPreset("noon", options.atmosphere.bottom_radius_m);
   return options;
 }

@@ -79,10 +79,10 @@ class Device {
   // Validation messages (warnings and errors) seen so far by every device aerial created itself.
   static int ValidationMessageCount();
 
-  struct Impl;  // aerial's side (src/aerial/api/)
-  const Impl& impl() const { return *impl_; }
+  struct Impl;  // aerial's side (src/aerial/api/impl.h)
 
  private:
+  friend struct ImplAccess;  // aerial's own code (src/aerial/api/impl.h)
   std::unique_ptr<Impl> impl_;
 };
 

@@ -54,10 +54,10 @@ class Froxels {
   SampledImage mie() const;
   SampledImage transmittance() const;
 
-  struct Impl;  // aerial's side (src/aerial/api/)
-  const Impl& impl() const { return *impl_; }
+  struct Impl;  // aerial's side (src/aerial/api/impl.h)
 
  private:
+  friend struct ImplAccess;  // aerial's own code (src/aerial/api/impl.h)
   std::unique_ptr<Impl> impl_;
 };
 

@@ -14,7 +14,6 @@
 #include "aerial/froxel_grid.h"
 #include "aerial/image.h"
 #include "aerial/scene.h"
-#include "aerial/shader_abi/frame_block.h"
 #include "aerial/tables.h"
 
 namespace aerial {
@@ -27,20 +26,9 @@ namespace aerial {
 //    2017's demo renders it (docs/accuracy.md, "Radiance to a point"), what a user would otherwise pick.
 enum class AerialMode { kFroxel, kPerPixel, kTableDifference };
 
-// How the built-in terrain is drawn: chunks with a level of detail that follows the camera, or
-// the fixed polar mesh around the origin (BuildTerrainMesh) that the level of detail is measured
-// against.
-enum class TerrainMode { kLod, kStaticMesh };
-
 // The terrain's default screen-space error bound (lod_selection.h), in pixels at 720 rows or
 // more: see docs/design.md, "Terrain".
 inline constexpr double kDefaultTerrainErrorPx = 4.0;
-
-// Passes a benchmark may leave out to measure what they cost (lavapipe's timestamps inside one
-// raster pass do not bracket its draws): every frame has all of them.
-struct FramePasses {
-  bool sky = true, transparent = true, terrain = true;
-};
 
 struct RenderOptions {
   int width = 1280;   // the output image
@@ -49,7 +37,6 @@ struct RenderOptions {
   double render_scale = 1.0;
   FroxelGrid froxels;
   AerialMode mode = AerialMode::kFroxel;
-  TerrainMode terrain = TerrainMode::kLod;
   double terrain_error_px = kDefaultTerrainErrorPx;
   // Leave out terrain chunks that nearer ones hide (terrain/screen_horizon.h): the image is the
   // same either way; off only to measure what it saves.
@@ -61,7 +48,6 @@ struct RenderOptions {
   uint32_t frames_in_flight = 1;
   // The sun's shadow map (shadow_map.h) on surfaces; off: no shadow map, and the frame of before.
   bool shadows = true;
-  FramePasses passes;
 
   void Validate() const;  // throws aerial::Error naming the option
   int render_width() const;
@@ -73,7 +59,7 @@ struct FrameMemory {
   uint64_t targets = 0;   // radiance and depth at the render size, the sky-view tables
   uint64_t readback = 0;  // ReadOutput's copies (read back, upscaled) and the encoded image
   uint64_t froxels = 0;   // the froxel volume
-  uint64_t terrain = 0;   // the terrain chunk slots (--terrain lod)
+  uint64_t terrain = 0;   // the terrain chunk slots
   uint64_t shadows = 0;   // the shadow map's depth atlas (--shadows on)
 };
 FrameMemory EstimateFrameMemory(const RenderOptions& options);
@@ -95,10 +81,6 @@ struct FrameInfo {
   // build budget): the next frame of the same camera, sun and options is this frame's image.
   bool settled = false;
 };
-
-// What ReadSurface draws of the lighting: all of it (the sun's part shadowed as in the frame), or
-// the sky's part alone.
-enum class SurfaceLight { kSunAndSky, kSkyOnly };
 
 class SceneRenderer {
  public:
@@ -135,22 +117,15 @@ class SceneRenderer {
   SampledImage froxel_mie() const;
   SampledImage froxel_transmittance() const;
 
-  // For checks and benchmarks (frames never draw it): the last frame's opaque geometry drawn
-  // again at the render size without aerial perspective, lit surface radiance in rgb and the
-  // distance from the camera (m) in a, -1 where no geometry is; and the FrameBlock it was drawn
-  // with.
-  ImageRgbF ReadSurface(SurfaceLight light = SurfaceLight::kSunAndSky) const;
-  const FrameUniforms& frame_uniforms() const;
-
   const Tables& tables() const;
   const FrameInfo& frame_info() const;
   const RenderOptions& options() const;
 
-  struct Impl;  // aerial's side (src/aerial/api/)
-  const Impl& impl() const { return *impl_; }
-  Impl& impl() { return *impl_; }
+  struct Impl;  // aerial's side (src/aerial/api/impl.h)
 
  private:
+  friend struct ImplAccess;  // aerial's own code (src/aerial/api/impl.h)
+  explicit SceneRenderer(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
 

@@ -82,10 +82,6 @@ struct SampleCounts {
   int density_nu = 9;
 };
 
-// What the tables' texels mean (their coordinate mappings, the orders the irradiance holds):
-// part of the cache key, raised whenever a change makes tables computed before it wrong.
-inline constexpr int kTableLayout = 17;
-
 struct PrecomputeOptions {
   LutVariant variant = LutVariant::k4D;
   // The 4D Rayleigh table in 16-bit floats: the default's 9 nu slices fit the memory budget that

@@ -103,10 +103,10 @@ class Tables {
   // The scattering density of orders >= 2 (J_ms), for marches along a segment.
   SampledImage multiple_density() const;
 
-  struct Impl;  // aerial's side (src/aerial/api/)
-  const Impl& impl() const { return *impl_; }
+  struct Impl;  // aerial's side (src/aerial/api/impl.h)
 
  private:
+  friend struct ImplAccess;  // aerial's own code (src/aerial/api/impl.h)
   explicit Tables(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
@@ -121,10 +121,10 @@ class TableSnapshot {
   const AtmosphereParameters& atmosphere() const;
   const PrecomputeOptions& options() const;
 
-  struct Impl;  // aerial's side (src/aerial/api/)
-  const Impl& impl() const { return *impl_; }
+  struct Impl;  // aerial's side (src/aerial/api/impl.h)
 
  private:
+  friend struct ImplAccess;  // aerial's own code (src/aerial/api/impl.h)
   friend class Tables;
   explicit TableSnapshot(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;

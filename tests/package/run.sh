@@ -3,12 +3,7 @@
 # package (find_package(aerial)) and runs it, and compiles the client's own shaders against the
 # installed GLSL (share/aerial/glsl): the package test of CTest (Package.*).
 #   tests/package/run.sh BUILD_DIR
-set -euo pipefail
-build=$1
-here="$(cd "$(dirname "$0")" && pwd)"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cmake --install "$build" --prefix "$work/prefix" >/dev/null
+source "$(dirname "$0")/install.sh"
 # Only the public API is installed: no header of aerial's implementation (src/).
 for internal in vk precompute render froxel; do
   if [ -e "$work/prefix/include/aerial/$internal" ] || [ -e "$work/prefix/include/$internal" ]; then

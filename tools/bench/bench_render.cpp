@@ -30,7 +30,7 @@
 #include "aerial/bench/full_screen_tap.h"
 #include "aerial/core/atomic_file.h"
 #include "aerial/device.h"
-#include "aerial/renderer.h"
+#include "aerial/render/renderer_options.h"
 #include "aerial/scene.h"
 #include "aerial/tables.h"
 #include "aerial/vk/context.h"
@@ -55,7 +55,7 @@ struct BenchOptions {
 
 struct Configuration {
   std::string name;
-  std::function<void(aerial::RenderOptions&)> change;
+  std::function<void(aerial::RendererOptions&)> change;
   aerial::bench::Motion motion = aerial::bench::Motion::kCamera;
   std::vector<RunResult> frames;
   Stats Gpu() const { return Summarize(aerial::bench::GpuTotals(frames)); }
@@ -72,9 +72,9 @@ void PrintRow(const std::string& name, const Stats& s) {
 }
 
 void Bench(const BenchOptions& cli) {
-  aerial::RenderOptions base{.width = cli.width, .height = cli.height,
-                             .froxels = aerial::FroxelGrid::Parse(cli.froxels),
-                             .terrain_error_px = cli.terrain_error_px};
+  aerial::RendererOptions base{{.width = cli.width, .height = cli.height,
+                                .froxels = aerial::FroxelGrid::Parse(cli.froxels),
+                                .terrain_error_px = cli.terrain_error_px}};
   base.Validate();
   aerial::PrecomputeOptions precompute =
       aerial::PrecomputeOptions::Default(aerial::ParseLutVariant(cli.lut, "--lut"));
@@ -87,25 +87,25 @@ void Bench(const BenchOptions& cli) {
   aerial::Device device(context.Handoff());
   aerial::Tables tables = aerial::Tables::LoadOrPrecompute(device, atmosphere, precompute);
   aerial::Scene scene = aerial::BuildPreset(cli.preset, atmosphere.bottom_radius_m);
-  using aerial::RenderOptions;
+  using aerial::RendererOptions;
   using aerial::bench::Motion;
-  auto same = [](RenderOptions&) {};
+  auto same = [](RendererOptions&) {};
   // The parts measured by their absence come last (kFirstAblation on).
   std::vector<Configuration> configurations = {
       {"frame", same},
       {"frame, still camera", same, Motion::kStill},
-      {"frame, no shadows", [](RenderOptions& o) { o.shadows = false; }},
-      {"frame, still camera, no shadows", [](RenderOptions& o) { o.shadows = false; }, Motion::kStill},
+      {"frame, no shadows", [](RendererOptions& o) { o.shadows = false; }},
+      {"frame, still camera, no shadows", [](RendererOptions& o) { o.shadows = false; }, Motion::kStill},
       {"frame, moving sun", same, Motion::kSun},
-      {"frame, moving sun, no shadows", [](RenderOptions& o) { o.shadows = false; }, Motion::kSun},
-      {"per-pixel aerial perspective", [](RenderOptions& o) { o.mode = aerial::AerialMode::kPerPixel; }},
+      {"frame, moving sun, no shadows", [](RendererOptions& o) { o.shadows = false; }, Motion::kSun},
+      {"per-pixel aerial perspective", [](RendererOptions& o) { o.mode = aerial::AerialMode::kPerPixel; }},
       {"per pixel, two table reads",
-       [](RenderOptions& o) { o.mode = aerial::AerialMode::kTableDifference; }},
-      {"fixed fine terrain mesh", [](RenderOptions& o) { o.terrain = aerial::TerrainMode::kStaticMesh; }},
-      {"no terrain occlusion culling", [](RenderOptions& o) { o.terrain_occlusion_culling = false; }},
-      {"without the sky", [](RenderOptions& o) { o.passes.sky = false; }},
-      {"without transparent objects", [](RenderOptions& o) { o.passes.transparent = false; }},
-      {"without the terrain", [](RenderOptions& o) { o.passes.terrain = false; }},
+       [](RendererOptions& o) { o.mode = aerial::AerialMode::kTableDifference; }},
+      {"fixed fine terrain mesh", [](RendererOptions& o) { o.terrain = aerial::TerrainMode::kStaticMesh; }},
+      {"no terrain occlusion culling", [](RendererOptions& o) { o.terrain_occlusion_culling = false; }},
+      {"without the sky", [](RendererOptions& o) { o.passes.sky = false; }},
+      {"without transparent objects", [](RendererOptions& o) { o.passes.transparent = false; }},
+      {"without the terrain", [](RendererOptions& o) { o.passes.terrain = false; }},
   };
   constexpr size_t kFirstAblation = 10;
   constexpr size_t kStill = 1, kNoShadows = 2, kStillNoShadows = 3, kSun = 4, kSunNoShadows = 5, kPerPixel = 6,
@@ -113,9 +113,9 @@ void Bench(const BenchOptions& cli) {
   std::vector<std::unique_ptr<aerial::SceneRenderer>> renderers;
   std::vector<aerial::bench::FrameSource> order;
   for (Configuration& c : configurations) {
-    RenderOptions options = base;
+    RendererOptions options = base;
     c.change(options);
-    renderers.push_back(std::make_unique<aerial::SceneRenderer>(tables, scene, options));
+    renderers.push_back(std::make_unique<aerial::SceneRenderer>(aerial::MakeSceneRenderer(tables, scene, options)));
     order.push_back({renderers.back().get(), c.motion});
   }
   aerial::bench::FullScreenTap tap(context, uint32_t(base.render_width()), uint32_t(base.render_height()),

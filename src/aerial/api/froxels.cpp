@@ -4,7 +4,7 @@
 
 #include "aerial/api/impl.h"
 #include "aerial/error.h"
-#include "aerial/shader_abi/frame_block.h"
+#include "aerial/shader_abi/camera_frame_block.h"
 
 namespace aerial {
 namespace {
@@ -30,14 +30,14 @@ Froxels::Impl::Impl(const vk::Context& context, const FroxelGrid& grid)
       sampler(vk::CreateLinearClampSampler(context)) {}
 
 Froxels::Froxels(const Device& device, const FroxelGrid& grid)
-    : impl_(std::make_unique<Impl>(*device.impl().context, grid)) {}
+    : impl_(std::make_unique<Impl>(*ImplOf(device).context, grid)) {}
 Froxels::~Froxels() = default;
 Froxels::Froxels(Froxels&&) noexcept = default;
 Froxels& Froxels::operator=(Froxels&&) noexcept = default;
 
 void Froxels::Record(VkCommandBuffer command_buffer, const Tables& tables, const FrameCamera& camera) {
   CheckCamera(camera);
-  const AtmosphereTables& atmosphere_tables = tables.impl().tables();
+  const AtmosphereTables& atmosphere_tables = ImplOf(tables).tables();
   vk::BorrowedCommandBuffer cmd(atmosphere_tables.context(), command_buffer);
   FrameUniforms frame = MakeFrameUniforms(camera, tables.atmosphere().bottom_radius_m, grid());
   impl_->frame_block.RecordUpdate(*cmd, std::as_bytes(std::span(&frame, 1)));

@@ -15,6 +15,19 @@
 
 namespace aerial {
 
+// The public classes have no accessor for their Impl: aerial's own code (and its tests) reach it
+// through this friend of each, as ImplOf(tables).
+struct ImplAccess {
+  template <typename Public>
+  static const typename Public::Impl& Of(const Public& object) { return *object.impl_; }
+  template <typename Public>
+  static typename Public::Impl& Of(Public& object) { return *object.impl_; }
+  template <typename Public>
+  static Public Make(std::unique_ptr<typename Public::Impl> impl) { return Public(std::move(impl)); }
+};
+template <typename Public>
+decltype(auto) ImplOf(Public& object) { return ImplAccess::Of(object); }
+
 struct Device::Impl {
   std::unique_ptr<vk::Context> context;
 };

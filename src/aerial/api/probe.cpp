@@ -10,7 +10,7 @@
 namespace aerial {
 
 std::vector<ProbeResult> Probe(const Tables& tables, std::span<const ProbeQuery> queries) {
-  return ProbeTables(tables.impl().tables(), queries);
+  return ProbeTables(ImplOf(tables).tables(), queries);
 }
 
 ProbeResult ProbeReference(const AtmosphereParameters& atmosphere, const RayParameters& ray,

@@ -3,11 +3,23 @@
 
 namespace aerial {
 
+namespace {
+std::unique_ptr<SceneRenderer::Impl> MakeImpl(const Tables& tables, const Scene& scene, const RendererOptions& options) {
+  return std::unique_ptr<SceneRenderer::Impl>(
+      new SceneRenderer::Impl{tables, Renderer(ImplOf(tables).tables(), scene, options)});
+}
+}  // namespace
+
 SceneRenderer::SceneRenderer(const Tables& tables, const Scene& scene, const RenderOptions& options)
-    : impl_(new Impl{tables, Renderer(tables.impl().tables(), scene, options)}) {}
+    : SceneRenderer(MakeImpl(tables, scene, RendererOptions{options})) {}
+SceneRenderer::SceneRenderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 SceneRenderer::~SceneRenderer() = default;
 SceneRenderer::SceneRenderer(SceneRenderer&&) noexcept = default;
 SceneRenderer& SceneRenderer::operator=(SceneRenderer&&) noexcept = default;
+
+SceneRenderer MakeSceneRenderer(const Tables& tables, const Scene& scene, const RendererOptions& options) {
+  return ImplAccess::Make<SceneRenderer>(MakeImpl(tables, scene, options));
+}
 
 void SceneRenderer::Record(VkCommandBuffer command_buffer, const Scene& scene, uint32_t slot, bool complete) {
   vk::BorrowedCommandBuffer cmd(impl_->renderer.tables().context(), command_buffer);
@@ -41,8 +53,6 @@ SampledImage SceneRenderer::froxel_transmittance() const {
   return SampledLikeTheTables(impl_->renderer.tables(), impl_->renderer.froxels().transmittance());
 }
 
-ImageRgbF SceneRenderer::ReadSurface(SurfaceLight light) const { return impl_->renderer.ReadSurface(light); }
-const FrameUniforms& SceneRenderer::frame_uniforms() const { return impl_->renderer.frame_uniforms(); }
 
 const Tables& SceneRenderer::tables() const { return impl_->tables; }
 const FrameInfo& SceneRenderer::frame_info() const { return impl_->renderer.frame_info(); }

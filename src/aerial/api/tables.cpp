@@ -30,7 +30,7 @@ SampledImage Public(const AtmosphereTables& tables, const vk::Image& (Atmosphere
 // snapshot); Upload checks each table's name and size.
 LoadedTables Uploaded(const Device& device, const AtmosphereParameters& atmosphere,
                       const PrecomputeOptions& options, const TableCache& texels) {
-  LoadedTables loaded{.tables = std::make_unique<AtmosphereTables>(*device.impl().context, atmosphere, options)};
+  LoadedTables loaded{.tables = std::make_unique<AtmosphereTables>(*ImplOf(device).context, atmosphere, options)};
   loaded.tables->Upload(texels);
   return loaded;
 }
@@ -52,7 +52,7 @@ Tables Tables::LoadOrPrecompute(const Device& device, const AtmosphereParameters
                           .quiet = !load.print_progress,
                           .progress = load.progress};
   return Tables(std::make_unique<Impl>(
-      Impl{aerial::LoadOrPrecompute(*device.impl().context, atmosphere, options, store)}));
+      Impl{aerial::LoadOrPrecompute(*ImplOf(device).context, atmosphere, options, store)}));
 }
 
 Tables Tables::Load(const Device& device, const AtmosphereParameters& atmosphere,
@@ -74,7 +74,7 @@ TableSnapshot Tables::Snapshot() const {
 }
 
 Tables Tables::FromSnapshot(const Device& device, const TableSnapshot& snapshot) {
-  const TableSnapshot::Impl& taken = snapshot.impl();
+  const TableSnapshot::Impl& taken = ImplOf(snapshot);
   return Tables(std::make_unique<Impl>(Impl{Uploaded(device, taken.atmosphere, taken.options, taken.texels)}));
 }
 

@@ -25,7 +25,7 @@ void CheckVdbExport(const std::filesystem::path& out, const Scene& scene, const 
 
 size_t ExportFroxelVdb(const std::filesystem::path& out, const Tables& tables, const Scene& scene,
                        const FroxelGrid& grid, const VdbExportOptions& options) {
-  FroxelFrame frame = CaptureFroxels(tables.impl().tables(), scene, grid, SizeOf(options), options.shadows);
+  FroxelFrame frame = CaptureFroxels(ImplOf(tables).tables(), scene, grid, SizeOf(options), options.shadows);
   VdbVolume volume = options.world_grid_m ? MakeWorldSpaceVolume(frame, *options.world_grid_m)
                                           : MakeFrustumVolume(frame);
   WriteVdb(out, volume);
@@ -33,7 +33,7 @@ size_t ExportFroxelVdb(const std::filesystem::path& out, const Tables& tables, c
 }
 
 size_t ExportFroxelVdb(const std::filesystem::path& out, const SceneRenderer& renderer, const Scene& scene) {
-  VdbVolume volume = MakeFrustumVolume(ReadFroxelFrame(renderer.impl().renderer, scene));
+  VdbVolume volume = MakeFrustumVolume(ReadFroxelFrame(ImplOf(renderer).renderer, scene));
   WriteVdb(out, volume);
   return volume.voxels.size();
 }

@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "aerial/api/impl.h"
 #include "aerial/renderer.h"
 #include "aerial/scene.h"
 
@@ -36,7 +37,7 @@ VariantImages Render(VariantRenderers& renderers, const Scene& scene) {
   for (SceneRenderer* r : {renderers.froxel.get(), renderers.per_pixel.get(), renderers.table_difference.get()})
     r->Render(scene);
   return {renderers.froxel->ReadOutput(), renderers.per_pixel->ReadOutput(),
-          renderers.table_difference->ReadOutput(), renderers.per_pixel->ReadSurface()};
+          renderers.table_difference->ReadOutput(), ImplOf(*renderers.per_pixel).renderer.ReadSurface()};
 }
 
 ClassErrors AgainstReference(const ViewReference& reference, const ImageRgbF& rendered) {
@@ -79,8 +80,8 @@ std::vector<ViewReference> SampleViews(const Tables& tables, Scene& scene, const
   for (const std::string& view : plan.views) {
     ApplyPresetView(scene, view, atmosphere.bottom_radius_m);
     renderer->Render(scene);
-    references.push_back(
-        SampleReference(model, scene, renderer->frame_uniforms(), renderer->ReadSurface(), sampling, on_pixel));
+    const Renderer& frame = ImplOf(*renderer).renderer;
+    references.push_back(SampleReference(model, scene, frame.frame_uniforms(), frame.ReadSurface(), sampling, on_pixel));
   }
   return references;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Relative errors of rendered radiance against expected radiance, over one class of pixels (sky
-// or opaque: SceneRenderer::ReadSurface's alpha is negative where no geometry was drawn).
+// or opaque: Renderer::ReadSurface's alpha is negative where no geometry was drawn).
 //
 // Per pixel and channel c the error is e = |a - b| / max(|b|, floor_c), with a the actual and b
 // the expected value, and floor_c = 1e-3 of the mean |b| of channel c over the class: the floor

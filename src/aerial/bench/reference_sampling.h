@@ -2,7 +2,7 @@
 // The CPU reference (aerial/reference, double precision) at a sparse grid of pixel centers of a
 // rendered view. Each pixel's ray is rebuilt exactly as the composite shaders build it
 // (shaders/include/frame.glsl: ViewRayFromScreen, GetCameraRayParameters), from the frame's own
-// uniforms (SceneRenderer::frame_uniforms), in double precision. What each pixel is compared with:
+// uniforms (Renderer::frame_uniforms), in double precision. What each pixel is compared with:
 //   sky pixels (no geometry): the sky radiance along the whole view ray, of the orders the tables
 //     stand for (PrecomputeOptions::RepresentedOrders): L = S. Where the ray meets the bare
 //     planet the renderer adds the ground's Lambertian reflection, so the reference adds
@@ -11,7 +11,7 @@
 //   opaque pixels: L = S + T L_surface over the segment to the surface, the surface lit by the
 //     reference itself (lambertian_radiance.h: sun and tilted-sky irradiance of the same orders, no
 //     shadows) at the point, normal and albedo the scene has there (aerial/scene_surface.h). The
-//     renderer's surface image (SceneRenderer::ReadSurface) only gives the depth and tells sky from
+//     renderer's surface image (Renderer::ReadSurface) only gives the depth and tells sky from
 //     geometry: its lighting is what is checked, with the aerial perspective.
 // Pixels that see the sun disc are left out (the disc is not a scattering quantity), and opaque
 // pixels where the scene has no surface at the renderer's depth (aerial/scene_surface.h).
@@ -69,7 +69,7 @@ glm::dvec3 PixelRay(const FrameUniforms& frame, int x, int y);
 std::vector<std::array<int, 2>> GridPixels(int width, int height, int columns, int rows);
 
 // scene: what was rendered (its camera, meshes and terrain); frame and surface: the view's
-// SceneRenderer::frame_uniforms and SceneRenderer::ReadSurface (distances; sky where alpha < 0). on_pixel
+// Renderer::frame_uniforms and Renderer::ReadSurface (distances; sky where alpha < 0). on_pixel
 // (may be empty) is called after each grid pixel.
 ViewReference SampleReference(const reference::Reference& model, const Scene& scene, const FrameUniforms& frame,
                               const ImageRgbF& surface, const ReferenceSampling& sampling,

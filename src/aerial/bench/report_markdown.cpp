@@ -154,7 +154,7 @@ void AccuracySection(std::ostringstream& md, const BenchResults& b) {
   for (const std::string& v : p.views) md << " " << v << (&v == &p.views.back() ? "" : ",");
   md << " of the built-in scene, rendered at " << p.image_width << "x" << p.image_height
      << " without the scene's transparent meshes, so every pixel is sky or an opaque surface. A pixel is "
-        "sky where the opaque pass drew nothing (SceneRenderer::ReadSurface alpha < 0).\n"
+        "sky where the opaque pass drew nothing (Renderer::ReadSurface alpha < 0).\n"
      << "- Each cell is the relative RMSE / the maximum relative error over the pixels of the class: "
      << kErrorDefinition << ".\n"
      << "- **3D against 4D**: every pixel of the 3D frame against the 4D frame, both on the per-pixel path "

@@ -32,7 +32,7 @@ void RunExportVdb(const ExportVdbCommandOptions& options) {
   FroxelGrid grid = options.froxels.Make();
   VdbExportOptions vdb = options.vdb;
   vdb.shadows = ParseShadows(options.shadows);
-  RenderOptions render{.width = int(vdb.width), .height = int(vdb.height), .froxels = grid, .shadows = vdb.shadows};
+  RendererOptions render{{.width = int(vdb.width), .height = int(vdb.height), .froxels = grid, .shadows = vdb.shadows}};
   render.Validate();
   Scene scene = options.scene.Load(atmosphere.bottom_radius_m);
   CheckVdbExport(options.out, scene, atmosphere, grid, vdb);

@@ -30,7 +30,7 @@ std::vector<MemoryUse> TableMemoryUses(const PrecomputeOptions& options) {
            what, 3 * tables.multiple_density + scratch.multiple_density}};
 }
 
-std::vector<MemoryUse> FrameMemoryUses(const RenderOptions& render, int renderers) {
+std::vector<MemoryUse> FrameMemoryUses(const RendererOptions& render, int renderers) {
   FrameMemory frame = EstimateFrameMemory(render);
   std::string size = Join({render.width, render.height}, "x");
   char scale[64] = "";

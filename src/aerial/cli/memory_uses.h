@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "aerial/core/memory_budget.h"
-#include "aerial/renderer.h"
+#include "aerial/render/renderer_options.h"
 #include "aerial/table_options.h"
 
 namespace aerial::cli {
@@ -17,7 +17,7 @@ std::vector<MemoryUse> TableMemoryUses(const PrecomputeOptions& options);
 // One frame of `renderers` renderers of these options: targets and read-back under
 // --width/--height, the froxel volume under --froxels, the terrain's chunk slots under --terrain,
 // the shadow map under --shadows.
-std::vector<MemoryUse> FrameMemoryUses(const RenderOptions& render, int renderers = 1);
+std::vector<MemoryUse> FrameMemoryUses(const RendererOptions& render, int renderers = 1);
 
 // export-vdb's host copies of the froxels: read back (48 bytes a froxel, twice while copying),
 // the volume and OpenVDB's grids (64 bytes each) and the encoded file with a string stream's

@@ -10,7 +10,7 @@ namespace {
 // The estimate of an 8192x8192 render (84 bytes a pixel: 5.3 GiB) is over the default budget and
 // within an 8 GiB one: --max-memory-mib 8192 lets it through.
 TEST(MemoryUses, MaxMemoryLetsALargeRenderThrough) {
-  RenderOptions render{.width = 8192, .height = 8192};
+  RendererOptions render{{.width = 8192, .height = 8192}};
   std::vector<MemoryUse> uses = Combined(TableMemoryUses(PrecomputeOptions::Default()), FrameMemoryUses(render));
   const uint64_t heap = uint64_t{24} << 30;
   EXPECT_THROW(MakeMemoryBudget(std::nullopt, heap).Check(uses), Error);

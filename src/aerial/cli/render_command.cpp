@@ -9,7 +9,7 @@
 #include "aerial/cli/memory_uses.h"
 #include "aerial/cli/scene_options.h"
 #include "aerial/image.h"
-#include "aerial/renderer.h"
+#include "aerial/render/renderer_options.h"
 
 namespace aerial::cli {
 namespace {
@@ -25,14 +25,14 @@ struct RenderCommandOptions {
 void RunRender(const RenderCommandOptions& options) {
   CheckImageOutputPath(options.out);
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
-  RenderOptions render = options.frame.MakeRenderOptions();
+  RendererOptions render = options.frame.MakeRenderOptions();
   Scene scene = options.scene.Load(atmosphere.bottom_radius_m);
   PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
   Device device(options.tables.MakeDeviceOptions());
   options.tables.MakeMemoryBudget(device.largest_heap_bytes())
       .Check(Combined(TableMemoryUses(precompute), FrameMemoryUses(render)));
   Tables tables = Tables::LoadOrPrecompute(device, atmosphere, precompute, options.tables.MakeLoadOptions());
-  SceneRenderer renderer(tables, scene, render);
+  SceneRenderer renderer = MakeSceneRenderer(tables, scene, render);
   renderer.Render(scene);  // the first frame includes lavapipe's shader compilation
   std::vector<PassTime> times = renderer.Render(scene);
   ImageRgbF frame = renderer.ReadOutput();

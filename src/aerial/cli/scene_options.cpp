@@ -125,9 +125,9 @@ Exposure FrameOptions::MakeExposure() const {
   return {};
 }
 
-RenderOptions FrameOptions::MakeRenderOptions() const {
+RendererOptions FrameOptions::MakeRenderOptions() const {
   MakeExposure();  // checked with the rest of the frame's options, before any work
-  RenderOptions render;
+  RendererOptions render;
   render.width = width;
   render.height = height;
   render.froxels = froxels.Make();

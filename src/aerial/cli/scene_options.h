@@ -11,7 +11,7 @@
 
 #include "aerial/froxel_grid.h"
 #include "aerial/image/exposure.h"
-#include "aerial/renderer.h"
+#include "aerial/render/renderer_options.h"
 #include "aerial/scene.h"
 #include "aerial/scene/scene_overrides.h"
 
@@ -59,7 +59,7 @@ struct FrameOptions {
   // The froxel options, --width/--height (size_help: what they size, "Image"), --exposure,
   // --aerial, --render-scale, --terrain, --terrain-error-px and --shadows.
   void AddTo(CLI::App& command, const std::string& size_help);
-  RenderOptions MakeRenderOptions() const;  // validated
+  RendererOptions MakeRenderOptions() const;  // validated
   Exposure MakeExposure() const;            // validated
 };
 

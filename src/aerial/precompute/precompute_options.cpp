@@ -6,6 +6,7 @@
 #include <string>
 
 #include "aerial/error.h"
+#include "aerial/precompute/table_layout.h"
 
 namespace aerial {
 

@@ -8,7 +8,7 @@
 //    there it sees the ground (Lambertian, ground_albedo, lit by the sun and the sky) through the
 //    air, a ground vertex of the path like any other.
 #include "aerial/reference/medium.h"
-#include "aerial/reference/monte_carlo.h"
+#include "aerial/reference/monte_carlo_chunks.h"
 
 namespace aerial::reference {
 

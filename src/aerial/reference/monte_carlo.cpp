@@ -1,4 +1,4 @@
-#include "aerial/reference/monte_carlo.h"
+#include "aerial/reference/monte_carlo_chunks.h"
 
 #include <algorithm>
 #include <atomic>

@@ -4,7 +4,7 @@
 // by DistanceSampler (stratified), with weight T(x, p) / pdf; its first direction is stratified.
 // Only atmospheric in-scattering is counted: never the ground seen along the view ray.
 #include "aerial/reference/medium.h"
-#include "aerial/reference/monte_carlo.h"
+#include "aerial/reference/monte_carlo_chunks.h"
 #include "aerial/reference/vec3.h"
 
 namespace aerial::reference {

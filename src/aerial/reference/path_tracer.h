@@ -28,7 +28,7 @@
 
 #include "aerial/reference/distance_sampler.h"
 #include "aerial/reference/medium.h"
-#include "aerial/reference/monte_carlo.h"
+#include "aerial/reference/monte_carlo_chunks.h"
 #include "aerial/reference/optical_depth.h"
 #include "aerial/reference/vec3.h"
 

@@ -3,7 +3,7 @@
 // sun, froxel grid.
 #include "aerial/froxel_grid.h"
 #include "aerial/scene.h"
-#include "aerial/shader_abi/frame_block.h"
+#include "aerial/shader_abi/camera_frame_block.h"
 
 namespace aerial {
 

@@ -152,7 +152,7 @@ std::optional<vk::GraphicsPipeline> SunVisibilityPipeline(const vk::Context& con
                                                     MeshConstants(o), {vk::kRgba32f, kSunVisibilityFormat}));
 }
 
-std::vector<Mesh> ReferenceTerrain(const Scene& scene, const RenderOptions& options, double R) {
+std::vector<Mesh> ReferenceTerrain(const Scene& scene, const RendererOptions& options, double R) {
   if (!scene.terrain || options.terrain != TerrainMode::kStaticMesh || !options.passes.terrain) return {};
   return {BuildTerrainMesh(R)};
 }
@@ -175,7 +175,7 @@ CasterBounds SceneCasterBounds(const Scene& scene, double R) {
 }
 
 std::unique_ptr<TerrainChunkCache> TerrainCache(const vk::Context& context, const Scene& scene,
-                                                const RenderOptions& options, double R) {
+                                                const RendererOptions& options, double R) {
   if (!scene.terrain || options.terrain != TerrainMode::kLod) return nullptr;
   return std::make_unique<TerrainChunkCache>(context, R, kTerrainChunkSlots, options.frames_in_flight);
 }
@@ -194,9 +194,7 @@ FrameMemory EstimateFrameMemory(const RenderOptions& o) {
       // upscaled image and the encoded file at most 16 bytes per output pixel each.
       .readback = rendered * 32 + output * 32,
       .froxels = 3 * froxels * 16,  // Rayleigh, Mie, transmittance; rgba32f
-      .terrain = o.terrain == TerrainMode::kLod
-                     ? uint64_t(kTerrainChunkSlots) * terrain::kChunkVertices * sizeof(Vertex)
-                     : 0,
+      .terrain = uint64_t(kTerrainChunkSlots) * terrain::kChunkVertices * sizeof(Vertex),
       .shadows = ShadowMap::MemoryBytes(o.shadows) + (o.shadows ? rendered * 4 : 0),  // + r32f visibility
   };
 }
@@ -213,7 +211,7 @@ void RenderOptions::Validate() const {
 int RenderOptions::render_width() const { return std::max(1, int(std::lround(width * render_scale))); }
 int RenderOptions::render_height() const { return std::max(1, int(std::lround(height * render_scale))); }
 
-Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const RenderOptions& options)
+Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const RendererOptions& options)
     : tables_(tables),
       options_((options.Validate(), options)),
       geometry_(tables.context(), scene, options.frames_in_flight,
@@ -256,7 +254,7 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
 Renderer::~Renderer() = default;
 
 void Renderer::SetTerrainErrorPx(double error_px) {
-  RenderOptions changed = options_;
+  RendererOptions changed = options_;
   changed.terrain_error_px = error_px;
   changed.Validate();
   options_ = changed;

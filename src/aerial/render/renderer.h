@@ -20,6 +20,7 @@
 #include "aerial/image.h"
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/render/frame_uniforms.h"
+#include "aerial/render/renderer_options.h"
 #include "aerial/render/scene_geometry.h"
 #include "aerial/render/shadow_map.h"
 #include "aerial/render/terrain_chunk_cache.h"
@@ -30,10 +31,17 @@
 
 namespace aerial {
 
+// What ReadSurface draws of the lighting: all of it (the sun's part shadowed as in the frame), or
+// the sky's part alone.
+enum class SurfaceLight { kSunAndSky, kSkyOnly };
+
 class Renderer {
  public:
   // The scene's meshes are uploaded once; its camera and sun may change from frame to frame.
-  Renderer(const AtmosphereTables& tables, const Scene& scene, const RenderOptions& options);
+  Renderer(const AtmosphereTables& tables, const Scene& scene, const RendererOptions& options);
+  // The level of detail's terrain, every pass.
+  Renderer(const AtmosphereTables& tables, const Scene& scene, const RenderOptions& options)
+      : Renderer(tables, scene, RendererOptions{options}) {}
   ~Renderer();
 
   // Records one frame into cmd, with the per-frame resources of slot (< frames_in_flight). The
@@ -72,7 +80,7 @@ class Renderer {
   const AtmosphereTables& tables() const { return tables_; }
   const FroxelVolume& froxels() const { return froxels_; }
   const FrameUniforms& frame_uniforms() const { return frame_uniforms_; }  // of the last frame
-  const RenderOptions& options() const { return options_; }
+  const RendererOptions& options() const { return options_; }
   const FrameInfo& frame_info() const { return frame_info_; }
 
  private:
@@ -92,7 +100,7 @@ class Renderer {
   bool SunVisibilityWorthCaching() const;
 
   const AtmosphereTables& tables_;
-  RenderOptions options_;
+  RendererOptions options_;
   SceneGeometry geometry_;
   std::unique_ptr<TerrainChunkCache> terrain_;  // null without a terrain or with the fixed mesh
   std::vector<terrain::SelectedChunk> terrain_chunks_;

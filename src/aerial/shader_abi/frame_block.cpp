@@ -1,4 +1,4 @@
-#include "aerial/shader_abi/frame_block.h"
+#include "aerial/shader_abi/camera_frame_block.h"
 
 #include <glm/gtc/type_ptr.hpp>
 

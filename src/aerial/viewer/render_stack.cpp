@@ -1,8 +1,10 @@
 #include "aerial/viewer/render_stack.h"
 
+#include "aerial/api/impl.h"
+
 namespace aerial::viewer {
 
-bool SameRenderOptions(const RenderOptions& a, const RenderOptions& b) {
+bool SameRenderOptions(const RendererOptions& a, const RendererOptions& b) {
   return a.width == b.width && a.height == b.height && a.mode == b.mode &&
          a.render_scale == b.render_scale && a.terrain == b.terrain &&
          a.frames_in_flight == b.frames_in_flight && a.shadows == b.shadows &&
@@ -10,22 +12,22 @@ bool SameRenderOptions(const RenderOptions& a, const RenderOptions& b) {
          a.froxels.depth == b.froxels.depth && a.froxels.far_m == b.froxels.far_m;
 }
 
-void RenderStack::Install(std::unique_ptr<Tables> tables, const RenderOptions& options) {
+void RenderStack::Install(std::unique_ptr<Tables> tables, const RendererOptions& options) {
   Entry& entry = entries_[tables->options().variant];
   if (entry.renderer) before_rebuild_();
   entry.renderer.reset();  // it refers to the old tables
   entry.tables = std::move(tables);
-  entry.renderer = std::make_unique<SceneRenderer>(*entry.tables, scene_, options);
+  entry.renderer = std::make_unique<SceneRenderer>(MakeSceneRenderer(*entry.tables, scene_, options));
 }
 
-SceneRenderer* RenderStack::Get(LutVariant variant, const RenderOptions& options) {
+SceneRenderer* RenderStack::Get(LutVariant variant, const RendererOptions& options) {
   auto it = entries_.find(variant);
   if (it == entries_.end()) return nullptr;
   Entry& entry = it->second;
-  if (!SameRenderOptions(entry.renderer->options(), options)) {
+  if (!SameRenderOptions(ImplOf(*entry.renderer).renderer.options(), options)) {
     before_rebuild_();
     entry.renderer.reset();
-    entry.renderer = std::make_unique<SceneRenderer>(*entry.tables, scene_, options);
+    entry.renderer = std::make_unique<SceneRenderer>(MakeSceneRenderer(*entry.tables, scene_, options));
   }
   entry.renderer->SetTerrainErrorPx(options.terrain_error_px);
   return entry.renderer.get();

@@ -10,7 +10,7 @@
 #include <map>
 #include <memory>
 
-#include "aerial/renderer.h"
+#include "aerial/render/renderer_options.h"
 
 namespace aerial::viewer {
 
@@ -22,11 +22,11 @@ class RenderStack {
       : scene_(scene), before_rebuild_(std::move(before_rebuild)) {}
 
   // Replaces the tables of their variant, and that variant's renderer.
-  void Install(std::unique_ptr<Tables> tables, const RenderOptions& options);
+  void Install(std::unique_ptr<Tables> tables, const RendererOptions& options);
   // The variant's renderer, rebuilt first if its options differ; null if the variant has no
   // tables yet. Its tables may be for an older atmosphere while new ones are being made: check
   // renderer->tables().atmosphere() where that matters.
-  SceneRenderer* Get(LutVariant variant, const RenderOptions& options);
+  SceneRenderer* Get(LutVariant variant, const RendererOptions& options);
   // The variant's tables, whatever atmosphere they were made for; null if none.
   const Tables* tables(LutVariant variant) const;
 
@@ -40,6 +40,6 @@ class RenderStack {
   std::map<LutVariant, Entry> entries_;
 };
 
-bool SameRenderOptions(const RenderOptions& a, const RenderOptions& b);
+bool SameRenderOptions(const RendererOptions& a, const RendererOptions& b);
 
 }  // namespace aerial::viewer

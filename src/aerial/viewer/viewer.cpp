@@ -61,7 +61,7 @@ const char* PassName(DebugView view) {
 
 // The viewer's renderers differ from `aerial render`'s in how they pace work: frames in flight,
 // and terrain chunks built within a budget.
-RenderOptions ForTheWindow(RenderOptions render) {
+RendererOptions ForTheWindow(RendererOptions render) {
   render.terrain_build_budget_ms = kTerrainBuildBudgetMs;
   render.frames_in_flight = kFramesInFlight;
   return render;
@@ -105,7 +105,7 @@ class Viewer::Impl {
   SceneRenderer* shown_ = nullptr;  // the renderer of the last frame
 
  private:
-  RenderOptions CurrentRenderOptions() const;
+  RendererOptions CurrentRenderOptions() const;
   bool HasCurrentTables(LutVariant variant) const;
   void RequestTables();
   void AdoptFinishedTables();
@@ -192,8 +192,8 @@ Viewer::Impl::Impl(ViewerOptions options)
   last_frame_end_ = Clock::now();
 }
 
-RenderOptions Viewer::Impl::CurrentRenderOptions() const {
-  RenderOptions render = ForTheWindow(options_.render);
+RendererOptions Viewer::Impl::CurrentRenderOptions() const {
+  RendererOptions render = ForTheWindow(options_.render);
   render.width = int(swapchain_.extent().width);
   render.height = int(swapchain_.extent().height);
   render.froxels = settings_.froxels;
@@ -402,7 +402,7 @@ bool Viewer::Impl::Step() {
 
   imgui_.NewFrame();
   Steer(input_.Read(dt_s, imgui_.wants_mouse(), imgui_.wants_keyboard()), dt_s);
-  RenderOptions render = CurrentRenderOptions();
+  RendererOptions render = CurrentRenderOptions();
   SceneRenderer* primary = stack_.Get(settings_.variant, render);
   if (!primary) primary = stack_.Get(Other(settings_.variant), render);
   PanelEvents events = DrawPanel(settings_, MakePanelInfo(*primary));

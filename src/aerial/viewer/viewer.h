@@ -13,7 +13,7 @@
 
 #include "aerial/device.h"
 #include "aerial/image/exposure.h"
-#include "aerial/renderer.h"
+#include "aerial/render/renderer_options.h"
 #include "aerial/tables.h"
 #include "aerial/viewer/camera_path.h"
 #include "aerial/viewer/table_worker.h"
@@ -32,7 +32,7 @@ struct ViewerOptions {
   LutVariant variant = LutVariant::k4D;
   TableLoadOptions load;
   DeviceOptions device;             // device and validation; the window's needs are added
-  RenderOptions render;             // width and height: the window's first size
+  RendererOptions render;           // width and height: the window's first size
   Exposure exposure;                // automatic by default (aerial/image/exposure.h)
   int frames = 0;                   // > 0: close after that many presented frames
   std::filesystem::path screenshot;  // written after the last frame, .png or .exr (checked by the caller)

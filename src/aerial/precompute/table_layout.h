@@ -1,0 +1,10 @@
+#pragma once
+// What the tables' texels mean (their coordinate mappings, the orders the irradiance holds):
+// part of the cache key (PrecomputeOptions::Hash), raised whenever a change makes tables computed
+// before it wrong.
+
+namespace aerial {
+
+inline constexpr int kTableLayout = 17;
+
+}  // namespace aerial

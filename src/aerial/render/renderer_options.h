@@ -1,0 +1,32 @@
+#pragma once
+// What aerial's own tools choose of a frame besides the public RenderOptions (aerial/renderer.h):
+// the fixed terrain mesh the level of detail is measured against (`--terrain mesh`) and the passes
+// a benchmark leaves out. A caller's frame is always the level of detail's, with every pass.
+#include "aerial/renderer.h"
+
+namespace aerial {
+
+// How the built-in terrain is drawn: chunks with a level of detail that follows the camera, or
+// the fixed polar mesh around the origin (BuildTerrainMesh) that the level of detail is measured
+// against.
+enum class TerrainMode { kLod, kStaticMesh };
+
+// Passes a benchmark may leave out to measure what they cost (lavapipe's timestamps inside one
+// raster pass do not bracket its draws): every frame has all of them.
+struct FramePasses {
+  bool sky = true, transparent = true, terrain = true;
+};
+
+// RendererOptions{{.width = 96, .height = 54}, TerrainMode::kStaticMesh}.
+struct RendererOptions : RenderOptions {
+  TerrainMode terrain = TerrainMode::kLod;
+  FramePasses passes;
+};
+
+// EstimateFrameMemory (aerial/renderer.h), without the terrain chunk slots for the fixed mesh.
+FrameMemory EstimateFrameMemory(const RendererOptions& options);
+
+// A SceneRenderer (aerial/renderer.h) with these options (src/aerial/api/scene_renderer.cpp).
+SceneRenderer MakeSceneRenderer(const Tables& tables, const Scene& scene, const RendererOptions& options);
+
+}  // namespace aerial
