@@ -37,6 +37,11 @@ void CheckZenithDeg(double degrees, const std::string& field, const std::string&
 // there, and a camera 100 km up sees the horizon at 1130 km.
 inline constexpr double kMaxSceneDistanceM = 1e6;
 
+// How far from its own origin a glTF model's vertex may be, after its node transforms: far beyond
+// any model (a scene's scale may shrink it), far inside float's range, so the check that keeps
+// it also keeps NaN and infinity out.
+inline constexpr double kMaxModelCoordinateM = 1e12;
+
 // The farthest vertex of a placed mesh, before its positions are rounded to float: within
 // kMaxSceneDistanceM of the origin (which also keeps them finite as floats). value describes the
 // placement ("scale 1e+300"), for the message.
