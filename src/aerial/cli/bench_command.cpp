@@ -57,9 +57,10 @@ std::string LoadAverage() {
 }
 
 void RunBenchCommand(const BenchCommandOptions& options) {
-  bench::CheckOutputDirectory(options.out);
+  // Values first: a bad one must not leave the --out directory chain behind.
   bench::BenchPlan plan = options.quick ? bench::BenchPlan::Quick() : bench::BenchPlan::Full();
   plan.shadows = ParseShadows(options.shadows);
+  bench::CheckOutputDirectory(options.out);
   Device device(DeviceOptions{.device_name = options.device, .validation = options.validation});
   bench::MachineInfo machine{.device = device.name(),
                              .date = UtcNow(),

@@ -59,7 +59,7 @@ void RunView(const ViewCommandOptions& options) {
     }
     CheckImageOutputPath(options.screenshot, "--screenshot");
   }
-  if (!options.stats.empty()) CheckWritable(options.stats);
+  if (!options.stats.empty()) CheckOutputFile(options.stats, "--stats");
   viewer::ViewerOptions viewer;
   viewer.atmosphere = options.tables.LoadAtmosphere();
   viewer.render = options.frame.MakeRenderOptions();

@@ -114,12 +114,7 @@ void CheckVdbOutputPath(const std::filesystem::path& path) {
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension != ".vdb") throw Error("--out", path.string(), "a .vdb file");
-  std::filesystem::path parent = path.parent_path().empty() ? "." : path.parent_path();
-  std::error_code error;
-  if (!std::filesystem::is_directory(parent, error))
-    throw Error("--out", path.string(), "a file in an existing directory (" + parent.string() +
-                                            " does not exist or is not a directory)");
-  CheckWritable(path);
+  CheckOutputFile(path, "--out");
 }
 
 namespace {
