@@ -8,6 +8,7 @@
 #include "aerial/core/atomic_file.h"
 #include "aerial/error.h"
 #include "aerial/image/exr.h"
+#include "aerial/image/finite_pixels.h"
 #include "aerial/image.h"
 
 namespace aerial {
@@ -32,6 +33,7 @@ void WriteImage(const std::filesystem::path& path, const ImageRgbF& image,
   // happens before the atomic write starts.
   const ImageFormat format = ImageFormatFromPath(path);
   CheckImageSize(image);
+  CheckFinitePixels(image);
   std::vector<std::byte> bytes;
   switch (format) {
     case ImageFormat::kExr:
