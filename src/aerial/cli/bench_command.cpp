@@ -13,6 +13,7 @@
 #include "aerial/bench/bench_output.h"
 #include "aerial/bench/bench_run.h"
 #include "aerial/cli/commands.h"
+#include "aerial/cli/path_option.h"
 #include "aerial/cli/scene_options.h"
 #include "aerial/version.h"
 
@@ -85,7 +86,7 @@ void AddBenchCommand(CLI::App& app) {
   command->add_flag("--quick", options->quick,
                     "Small tables, few frames, small images, few reference pixels (about 3 minutes on 2 CPU "
                     "cores with lavapipe)");
-  command->add_option("--out", options->out, "Output directory (default bench-out; created if missing)");
+  AddPathOption(*command, "--out", options->out, "Output directory (default bench-out; created if missing)");
   command->add_option("--device", options->device,
                       "Vulkan device to use: part of its name (or AERIAL_DEVICE)");
   command->add_flag("--validation", options->validation,

@@ -145,13 +145,14 @@ WorldBox WorldGridBox(double voxel_m, const std::array<glm::dvec3, 2>& bounds) {
 
 }  // namespace
 
-void CheckWorldGrid(double voxel_m, const FroxelPlacement& placement) {
+int64_t CheckWorldGrid(double voxel_m, const FroxelPlacement& placement) {
   const double far_m = placement.grid().far_m;
   if (!(voxel_m > 0.0 && voxel_m <= far_m))
     throw Error("--world-grid", Number(voxel_m),
                 "a voxel size in meters in (0, " + Number(far_m) + "] (the froxel far distance)");
   std::array<glm::dvec3, 2> bounds = placement.Bounds();
-  if (WorldGridBox(voxel_m, bounds).count > kMaxWorldGridVoxels) {
+  int64_t voxels = WorldGridBox(voxel_m, bounds).count;
+  if (voxels > kMaxWorldGridVoxels) {
     // The smallest voxel (to 1 m) that fits: the count falls as the voxel grows, up to the
     // rounding of the box to whole voxels, which the bisection tolerates.
     double too_small = voxel_m, fits = far_m;
@@ -168,6 +169,7 @@ void CheckWorldGrid(double voxel_m, const FroxelPlacement& placement) {
                   kMaxWorldGridVoxels, extent.x, extent.y, extent.z, std::ceil(fits));
     throw Error("--world-grid", Number(voxel_m), allowed);
   }
+  return voxels;
 }
 
 VdbVolume MakeFrustumVolume(const FroxelFrame& frame) {
