@@ -135,6 +135,15 @@ TEST_F(TableCacheIntegration, AFifoAtTheCacheFileIsSkipped) {
   EXPECT_TRUE(fs::is_fifo(cache));
 }
 
+TEST_F(TableCacheIntegration, ASymlinkLoopAtTheCacheFileIsSkipped) {
+  fs::create_directories(dir_);
+  fs::path cache = CacheFilePath(dir_, AtmosphereParameters::Earth(), PrecomputeOptions::Small());
+  fs::create_symlink(dir_ / "loop", cache);
+  fs::create_symlink(cache, dir_ / "loop");
+  EXPECT_FALSE(Load().from_cache);  // threw "Too many levels of symbolic links" before
+  EXPECT_TRUE(fs::is_symlink(cache));
+}
+
 TEST_F(TableCacheIntegration, WithoutHomeThereIsNoCache) {
   std::string home = std::getenv("HOME") ? std::getenv("HOME") : "";
   for (const char* name : {"HOME", "XDG_CACHE_HOME", "AERIAL_CACHE_DIR"}) ::unsetenv(name);
