@@ -69,7 +69,8 @@ FroxelFrame CaptureFroxels(const AtmosphereTables& tables, const Scene& scene, c
 void CheckVdbOutputPath(const std::filesystem::path& path);
 
 // Throws Error naming --world-grid unless voxel_m is in (0, far_m] and the voxels over the
-// frustum's bounding box number at most kMaxWorldGridVoxels; returns that number.
+// frustum's bounding box number at most kMaxWorldGridVoxels. Returns about how many of them the
+// froxels cover (sampled), the most voxels the volume can hold.
 int64_t CheckWorldGrid(double voxel_m, const FroxelPlacement& placement);
 
 // The frustum-space layout and the world-space one (see above). The frustum layout throws Error

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -13,10 +12,10 @@
 #include "aerial/core/input_limits.h"
 #include "aerial/core/json_depth.h"
 #include "aerial/error.h"
-#include "aerial/scene/gltf_accessors.h"
-#include "aerial/scene/scene_limits.h"
 #include "aerial/scene/glb_layout.h"
+#include "aerial/scene/gltf_accessors.h"
 #include "aerial/scene/gltf_file_system.h"
+#include "aerial/scene/scene_limits.h"
 #include "aerial/scene/tiny_gltf_config.h"
 
 namespace aerial {
