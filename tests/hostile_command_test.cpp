@@ -106,6 +106,14 @@ TEST_F(HostileCommand2, WorldGridCountsInTheMemoryBudget) {
          1, {"--world-grid = 520 is invalid; expected sizes whose memory fits the budget"});
 }
 
+// Before: null in the probe's JSON and NaN pixels, with exit status 0.
+TEST_F(HostileCommand2, NanTablesAreANamedError) {
+  Expect("probe --small-tables --quiet --no-cache --orders 16 --atmosphere " AERIAL_SOURCE_DIR
+         "/tests/data/hostile/thick_atmosphere.toml --altitude-m 1 --view-zenith-deg 45 --sun-zenith-deg 30 "
+         "--azimuth-deg 0",
+         1, {"precompute pass \"", "NaN or infinity in table"});
+}
+
 // Before: a malformed manifest read as "host memory ... lower --width/--height"; a FIFO hung
 // the Vulkan loader.
 TEST_F(HostileCommand2, BrokenDriverManifestIsNamed) {
