@@ -63,7 +63,15 @@ INSTANTIATE_TEST_SUITE_P(
         CraftedGltf{"stride_below_element.gltf", "bufferViews[0].byteStride", "4"},
         CraftedGltf{"view_past_buffer.gltf", "bufferViews[0].byteLength", "40"},
         CraftedGltf{"position_as_short.gltf", "accessors[0].componentType", "5123"},
-        CraftedGltf{"strided_count_past_view.gltf", "accessors[0].count", "3"}),
+        CraftedGltf{"strided_count_past_view.gltf", "accessors[0].count", "3"},
+        // Issue 41: a DAG of 2^40 paths, an index and vertices never shown, a GLB chunk lie.
+        CraftedGltf{"node_dag.gltf", "nodes[40]", "reached twice"},
+        CraftedGltf{"index_past_vertices.gltf", "meshes[0].primitives[0].indices", "element 2"},
+        CraftedGltf{"translation_1e308.gltf", "meshes[0].primitives[0].POSITION",
+                    "vertex 0 after the node transforms"},
+        CraftedGltf{"nan_vertex.gltf", "meshes[0].primitives[0].POSITION",
+                    "vertex 2 after the node transforms"},
+        CraftedGltf{"bin_chunk_past_end.glb", "GLB chunk[1] length", "44"}),
     [](const ::testing::TestParamInfo<CraftedGltf>& info) { return "case" + std::to_string(info.index); });
 
 TEST(HostileGltf, CountBoundFollowsTheStride) {
@@ -114,8 +122,43 @@ class HostileFiles : public ::testing::Test {
                      R"(", "byteLength": )" + std::to_string(byte_length) + "}]}");
   }
 
+  // A message without the scratch directory's path (whose pid may hold any digit).
+  std::string WithoutScratchPath(std::string message) const {
+    for (size_t at; (at = message.find(dir_.path().string())) != std::string::npos;)
+      message.erase(at, dir_.path().string().size());
+    return message;
+  }
+
   ScratchDirectory dir_{"hostile"};
 };
+
+// Issue 41: a buffer must be a file inside the model's folder, refused before it is read. The
+// model is in dir_/model/, beside dir_/secret.bin (a file it must not reach).
+class BufferOutsideTheFolder : public HostileFiles, public ::testing::WithParamInterface<std::string> {};
+
+TEST_P(BufferOutsideTheFolder, IsRefusedNamingTheBuffer) {
+  Write("secret.bin", "0123456");  // 7 bytes: no message may say so
+  fs::create_directory(dir_ / "model");
+  fs::create_symlink(dir_ / "secret.bin", dir_ / "model" / "link.bin");
+  fs::path model = Write("model/model.gltf",
+                         R"({"asset": {"version": "2.0"}, "buffers": [{"uri": ")" + GetParam() +
+                             R"(", "byteLength": 36}]})");
+  Error e = GltfError(model);
+  EXPECT_EQ(e.field(), "buffers[0].uri") << e.what();
+  EXPECT_NE(e.allowed().find("inside the model's folder"), std::string::npos) << e.what();
+  EXPECT_EQ(WithoutScratchPath(e.what()).find('7'), std::string::npos) << e.what();
+}
+
+INSTANTIATE_TEST_SUITE_P(Uris, BufferOutsideTheFolder,
+                         ::testing::Values("../secret.bin", "..%2Fsecret.bin", "link.bin",
+                                           "/etc/passwd", "file:///etc/passwd"));
+
+TEST_F(HostileFiles, BufferSizeMismatchDoesNotShowTheFileSize) {
+  Write("data.bin", "0123456");
+  Error e = GltfError(GltfWithBuffer("data.bin", 36));
+  EXPECT_EQ(e.field(), "buffers[0].byteLength") << e.what();
+  EXPECT_EQ(WithoutScratchPath(e.what()).find('7'), std::string::npos) << e.what();
+}
 
 // JSON nesting levels deep, inside an otherwise valid glTF.
 std::string DeepGltfJson(size_t levels) {
@@ -166,6 +209,21 @@ TEST_F(HostileFiles, OversizeBufferIsRefusedBeforeReading) {
                              " bytes"),
             std::string::npos)
       << e.allowed();
+}
+
+// Issue 41: a 20 MB `extras` array peaked at 1.96 GB RSS whatever --max-memory-mib said. The
+// JSON parse is estimated (here 1,000,001 values, 200 MB) against the budget before it is made.
+TEST_F(HostileFiles, JsonParseBeyondTheBudgetIsRefusedBeforeParsing) {
+  std::string zeros;
+  for (int i = 0; i < 1000000; ++i) zeros += "0,";
+  fs::path path = Write("extras.gltf", R"({"asset": {"version": "2.0"}, "extras": [)" + zeros + "0]}");
+  try {
+    LoadGltfMesh(path, "extras", MemoryBudget{100 * kMiB, "--max-memory-mib 100"});
+    FAIL() << "loaded";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.field(), "glTF model") << e.what();
+    EXPECT_NE(e.allowed().find("> budget 100.0 MiB (--max-memory-mib 100)"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(HostileFiles, OversizeGltfIsRefusedBeforeReading) {

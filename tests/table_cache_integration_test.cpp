@@ -5,9 +5,13 @@
 #include <filesystem>
 #include <fstream>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdlib>
+
+#include "aerial/error.h"
 #include "aerial/precompute/table_store.h"
 #include "gpu_fixture.h"
 
@@ -115,6 +119,46 @@ TEST_F(TableCacheIntegration, TemporariesOfDeadWritersAreRemoved) {
   EXPECT_TRUE(fs::exists(live));
   EXPECT_TRUE(fs::exists(foreign));
   EXPECT_TRUE(fs::exists(unlike));
+}
+
+// Issue 41: the cache is optional. A FIFO at the cache file's name blocked every command, and
+// without HOME the cache went to ./.aerial-cache; now each is a warning and the tables are
+// computed, unless writing the cache is the command's job (precompute), which fails naming it.
+TEST_F(TableCacheIntegration, AFifoAtTheCacheFileIsSkipped) {
+  fs::create_directories(dir_);
+  fs::path cache = CacheFilePath(dir_, AtmosphereParameters::Earth(), PrecomputeOptions::Small());
+  ASSERT_EQ(::mkfifo(cache.c_str(), 0600), 0);
+  ::alarm(60);  // should the open regress, the test's process ends instead of hanging
+  LoadedTables loaded = Load();
+  ::alarm(0);
+  EXPECT_FALSE(loaded.from_cache);
+  EXPECT_TRUE(fs::is_fifo(cache));
+}
+
+TEST_F(TableCacheIntegration, ASymlinkLoopAtTheCacheFileIsSkipped) {
+  fs::create_directories(dir_);
+  fs::path cache = CacheFilePath(dir_, AtmosphereParameters::Earth(), PrecomputeOptions::Small());
+  fs::create_symlink(dir_ / "loop", cache);
+  fs::create_symlink(cache, dir_ / "loop");
+  EXPECT_FALSE(Load().from_cache);  // threw "Too many levels of symbolic links" before
+  EXPECT_TRUE(fs::is_symlink(cache));
+}
+
+TEST_F(TableCacheIntegration, WithoutHomeThereIsNoCache) {
+  std::string home = std::getenv("HOME") ? std::getenv("HOME") : "";
+  for (const char* name : {"HOME", "XDG_CACHE_HOME", "AERIAL_CACHE_DIR"}) ::unsetenv(name);
+  TableStoreOptions store{.quiet = true};
+  LoadedTables loaded = LoadOrPrecompute(SharedContext(), AtmosphereParameters::Earth(), PrecomputeOptions::Small(), store);
+  EXPECT_TRUE(loaded.cache_file.empty());
+  EXPECT_FALSE(fs::exists(".aerial-cache"));
+  store.require_cache_write = true;
+  try {
+    LoadOrPrecompute(SharedContext(), AtmosphereParameters::Earth(), PrecomputeOptions::Small(), store);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.field(), "HOME");
+  }
+  ::setenv("HOME", home.c_str(), 1);
 }
 
 }  // namespace

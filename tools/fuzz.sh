@@ -20,10 +20,10 @@ root=$PWD
 seed_files() {
   case "$1" in
     atmosphere_toml) ls examples/atmospheres/*.toml tests/data/bad_mie_g.toml tests/data/unknown_key.toml \
-         tests/data/huge_rayleigh.toml tests/data/huge_solar_irradiance.toml ;;
-    scene_toml) ls examples/scenes/*.toml tests/data/bad_scene.toml tests/data/huge_*.toml tests/data/hostile/scene_*.toml ;;
-    gltf) ls examples/scenes/*.gltf tests/data/hostile/*.gltf ;;
-    camera_path) ls examples/paths/*.toml tests/data/bad_camera_path.toml tests/data/hostile/camera_path_*.toml ;;
+         tests/data/huge_rayleigh.toml tests/data/huge_solar_irradiance.toml tests/fuzz/seeds/toml/* ;;
+    scene_toml) ls examples/scenes/*.toml tests/data/bad_scene.toml tests/data/huge_*.toml tests/data/hostile/scene_*.toml tests/fuzz/seeds/toml/* ;;
+    gltf) ls examples/scenes/*.gltf tests/data/hostile/*.gltf tests/data/hostile/*.glb ;;
+    camera_path) ls examples/paths/*.toml tests/data/bad_camera_path.toml tests/data/hostile/camera_path_*.toml tests/fuzz/seeds/toml/* ;;
     table_cache) ls tests/fuzz/seeds/table_cache/* ;;
     *) echo "fuzz.sh: unknown target $1" >&2; exit 2 ;;
   esac

@@ -25,9 +25,11 @@ struct VdbExportOptions {
 // Checks, before any GPU work, the output path (.vdb, an existing directory where a file can be
 // created; errors name --out), the world grid (voxel size in (0, far], at most 2^24 voxels
 // over the frustum's bounding box; errors name --world-grid) or else the frustum grid (the
-// camera's near plane in (0, far); errors name camera.near_m).
-void CheckVdbExport(const std::filesystem::path& out, const Scene& scene, const AtmosphereParameters& atmosphere,
-                    const FroxelGrid& grid, const VdbExportOptions& options);
+// camera's near plane in (0, far); errors name camera.near_m). Returns the most voxels the volume
+// can have (the froxels, or the world grid's voxels the froxels cover, sampled), for a memory
+// estimate.
+uint64_t CheckVdbExport(const std::filesystem::path& out, const Scene& scene, const AtmosphereParameters& atmosphere,
+                        const FroxelGrid& grid, const VdbExportOptions& options);
 
 // Renders the scene's frame once (SceneRenderer) and writes its froxel volume to out, atomically
 // (a temporary file, then a rename). Returns the number of active voxels per grid.

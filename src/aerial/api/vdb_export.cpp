@@ -12,15 +12,15 @@ CaptureSize SizeOf(const VdbExportOptions& options) { return {int(options.width)
 
 }  // namespace
 
-void CheckVdbExport(const std::filesystem::path& out, const Scene& scene, const AtmosphereParameters& atmosphere,
-                    const FroxelGrid& grid, const VdbExportOptions& options) {
+uint64_t CheckVdbExport(const std::filesystem::path& out, const Scene& scene, const AtmosphereParameters& atmosphere,
+                        const FroxelGrid& grid, const VdbExportOptions& options) {
   CheckVdbOutputPath(out);
   if (options.world_grid_m) {
     FrameUniforms frame = CaptureFrameUniforms(scene, atmosphere.bottom_radius_m, grid, SizeOf(options));
-    CheckWorldGrid(*options.world_grid_m, FroxelPlacement(frame, grid));
-  } else {
-    CameraFrustum(scene.camera, SizeOf(options).aspect(), grid);  // throws for a near plane beyond far
+    return uint64_t(CheckWorldGrid(*options.world_grid_m, FroxelPlacement(frame, grid)));
   }
+  CameraFrustum(scene.camera, SizeOf(options).aspect(), grid);  // throws for a near plane beyond far
+  return uint64_t(grid.width) * grid.height * grid.depth;
 }
 
 size_t ExportFroxelVdb(const std::filesystem::path& out, const Tables& tables, const Scene& scene,

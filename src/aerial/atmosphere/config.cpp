@@ -89,11 +89,12 @@ void Check(bool ok, const std::string& field, double value, const std::string& a
   if (!ok) throw Error(field, TomlFloat(value), allowed, where);
 }
 
-// A value in [low, high] once rounded to float; NaN fails every comparison.
+// A value in [low, high] once value and bounds are rounded to float, so that a bound itself is in
+// range as the message says ("0.1" is 0.100000001 as float); NaN fails every comparison.
 void CheckRange(double value, const std::string& field, double low, double high,
                 const std::string& unit, const std::string& where) {
   double f = AsFloat(value);
-  Check(f >= low && f <= high, field, value,
+  Check(f >= AsFloat(low) && f <= AsFloat(high), field, value,
         "in [" + TomlFloat(low) + ", " + TomlFloat(high) + "]" + unit + " (as float)", where);
 }
 

@@ -165,6 +165,13 @@ TEST(AtmosphereConfig, ValuesBeyondFloatAreNamedWithTheirValue) {
   }
 }
 
+// Issue 41: the bounds a message states are in the range, as float: 0.1 was refused as
+// 0.100000001 by a message allowing [0.0, 0.1].
+TEST(AtmosphereConfig, StatedBoundsAreAccepted) {
+  EXPECT_NO_THROW(ParseAtmosphereToml("[rayleigh]\nscattering = [0.1, 0.1, 0.1]", "snippet.toml"));
+  EXPECT_NO_THROW(ParseAtmosphereToml("sun_angular_radius_rad = 0.1", "snippet.toml"));
+}
+
 struct BadSnippet {
   const char* toml;
   const char* field;  // the dotted key the error must name.

@@ -13,6 +13,7 @@
 #include "aerial/bench/bench_output.h"
 #include "aerial/bench/bench_run.h"
 #include "aerial/cli/commands.h"
+#include "aerial/cli/path_option.h"
 #include "aerial/cli/scene_options.h"
 #include "aerial/version.h"
 
@@ -57,9 +58,10 @@ std::string LoadAverage() {
 }
 
 void RunBenchCommand(const BenchCommandOptions& options) {
-  bench::CheckOutputDirectory(options.out);
+  // Values first: a bad one must not leave the --out directory chain behind.
   bench::BenchPlan plan = options.quick ? bench::BenchPlan::Quick() : bench::BenchPlan::Full();
   plan.shadows = ParseShadows(options.shadows);
+  bench::CheckOutputDirectory(options.out);
   Device device(DeviceOptions{.device_name = options.device, .validation = options.validation});
   bench::MachineInfo machine{.device = device.name(),
                              .date = UtcNow(),
@@ -84,7 +86,7 @@ void AddBenchCommand(CLI::App& app) {
   command->add_flag("--quick", options->quick,
                     "Small tables, few frames, small images, few reference pixels (about 3 minutes on 2 CPU "
                     "cores with lavapipe)");
-  command->add_option("--out", options->out, "Output directory (default bench-out; created if missing)");
+  AddPathOption(*command, "--out", options->out, "Output directory (default bench-out; created if missing)");
   command->add_option("--device", options->device,
                       "Vulkan device to use: part of its name (or AERIAL_DEVICE)");
   command->add_flag("--validation", options->validation,

@@ -1,6 +1,7 @@
 #include "aerial/cli/common_options.h"
 
 #include "aerial/atmosphere.h"
+#include "aerial/cli/path_option.h"
 #include "aerial/error.h"
 
 namespace aerial::cli {
@@ -8,7 +9,7 @@ namespace aerial::cli {
 void TableOptions::AddTo(CLI::App& command) {
   // Listed after the command's own options, in a group of their own: most runs leave them alone.
   command.option_defaults()->group(kTableOptionsGroup);
-  command.add_option("--atmosphere", atmosphere_file,
+  AddPathOption(command, "--atmosphere", atmosphere_file,
                      "Atmosphere parameters (TOML); default: the built-in \"earth\"");
   command.add_option("--lut", lut, "Scattering table variant: 4d (r, mu, mu_s, nu) or 3d (nu dropped)")
       ->check(CLI::IsMember({"4d", "3d"}));
@@ -39,7 +40,7 @@ void TableOptions::AddTo(CLI::App& command) {
                      "Multiple scattering density table R,MU,MU_S,NU (default 32,56,36,9; NU must be 1 "
                      "with --lut 3d)")
       ->delimiter(',')->expected(4)->default_str("");
-  command.add_option("--cache-dir", cache_dir, "Table cache directory (default ~/.cache/aerial)");
+  AddPathOption(command, "--cache-dir", cache_dir, "Table cache directory (default ~/.cache/aerial)");
   command.add_flag("--no-cache", no_cache, "Recompute the tables even when a cached copy exists");
   command.add_option("--device", device, "Vulkan device to use: part of its name (or AERIAL_DEVICE)");
   command.add_flag("--validation", validation, "Enable the Vulkan validation layers (or AERIAL_VALIDATION=1)");
@@ -97,5 +98,7 @@ TableLoadOptions TableOptions::MakeLoadOptions() const {
 MemoryBudget TableOptions::MakeMemoryBudget(uint64_t largest_heap_bytes) const {
   return aerial::MakeMemoryBudget(max_memory_mib, largest_heap_bytes);
 }
+
+MemoryBudget TableOptions::MakeHostMemoryBudget() const { return MakeMemoryBudget(UINT64_MAX); }
 
 }  // namespace aerial::cli

@@ -46,6 +46,8 @@ struct TableOptions {
   TableLoadOptions MakeLoadOptions() const;  // --cache-dir, --no-cache, --quiet
   // --max-memory-mib, else the default budget or the device's heap when smaller.
   MemoryBudget MakeMemoryBudget(uint64_t largest_heap_bytes) const;
+  // Before a device is chosen (loading the scene's models): --max-memory-mib, else the default.
+  MemoryBudget MakeHostMemoryBudget() const;
 };
 
 }  // namespace aerial::cli

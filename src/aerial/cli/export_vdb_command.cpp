@@ -9,6 +9,7 @@
 #include "aerial/cli/commands.h"
 #include "aerial/cli/common_options.h"
 #include "aerial/cli/memory_uses.h"
+#include "aerial/cli/path_option.h"
 #include "aerial/cli/scene_options.h"
 #include "aerial/renderer.h"
 #include "aerial/vdb_export.h"
@@ -34,11 +35,12 @@ void RunExportVdb(const ExportVdbCommandOptions& options) {
   vdb.shadows = ParseShadows(options.shadows);
   RendererOptions render{{.width = int(vdb.width), .height = int(vdb.height), .froxels = grid, .shadows = vdb.shadows}};
   render.Validate();
-  Scene scene = options.scene.Load(atmosphere.bottom_radius_m);
-  CheckVdbExport(options.out, scene, atmosphere, grid, vdb);
+  Scene scene = options.scene.Load(atmosphere.bottom_radius_m, options.tables.MakeHostMemoryBudget());
+  uint64_t most_voxels = CheckVdbExport(options.out, scene, atmosphere, grid, vdb);
   Device device(options.tables.MakeDeviceOptions());
-  options.tables.MakeMemoryBudget(device.largest_heap_bytes())
-      .Check(Combined(TableMemoryUses(precompute), Combined(FrameMemoryUses(render), FroxelExportMemoryUses(grid))));
+  std::vector<MemoryUse> uses = Combined(TableMemoryUses(precompute), Combined(FrameMemoryUses(render), FroxelExportMemoryUses(grid)));
+  if (vdb.world_grid_m) uses = Combined(uses, WorldGridMemoryUses(*vdb.world_grid_m, most_voxels));
+  options.tables.MakeMemoryBudget(device.largest_heap_bytes()).Check(uses);
   Tables tables = Tables::LoadOrPrecompute(device, atmosphere, precompute, options.tables.MakeLoadOptions());
   size_t voxels = ExportFroxelVdb(options.out, tables, scene, grid, vdb);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -62,7 +64,7 @@ void AddExportVdbCommand(CLI::App& app) {
                       "instead of the camera's frustum (OpenVDB's frustum transform, for Houdini)");
   command->add_option("--shadows", options->shadows,
                       "The sun's shadow map in the frame the froxels are captured from: on (default) or off");
-  command->add_option("--out", options->out, "Output file (.vdb)")->required();
+  AddPathOption(*command, "--out", options->out, "Output file (.vdb)")->required();
   options->tables.AddTo(*command);
   command->callback([options] { RunExportVdb(*options); });
 }

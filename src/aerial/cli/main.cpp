@@ -64,8 +64,12 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    // --help and --version end here too, with status 0.
-    return app.exit(e) == 0 ? 0 : kUsageError;
+    // --help and --version end here too, with status 0; a real parse error is said in aerial's
+    // own form, not CLI11's.
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::fprintf(stderr, "aerial: error: %s (aerial --help lists the commands, aerial COMMAND --help "
+                 "their options)\n", e.what());
+    return kUsageError;
   } catch (const aerial::Error& e) {
     return Fail(e);
   } catch (const ::vk::OutOfDeviceMemoryError& e) {

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "aerial/core/format_number.h"
+
 
 namespace aerial::cli {
 namespace {
@@ -45,10 +47,16 @@ std::vector<MemoryUse> FrameMemoryUses(const RendererOptions& render, int render
   return uses;
 }
 
+constexpr uint64_t kBytesPerExportedVoxel = 320;
+
 std::vector<MemoryUse> FroxelExportMemoryUses(const FroxelGrid& grid) {
-  constexpr uint64_t kBytesPerFroxel = 320;
   return {{"--froxels", Join({grid.width, grid.height, grid.depth}, "x"), "froxel export copies",
-           uint64_t(grid.width) * grid.height * grid.depth * kBytesPerFroxel}};
+           uint64_t(grid.width) * grid.height * grid.depth * kBytesPerExportedVoxel}};
+}
+
+std::vector<MemoryUse> WorldGridMemoryUses(double voxel_m, uint64_t voxels) {
+  return {{"--world-grid", FormatNumber(voxel_m), "world grid volume (" + std::to_string(voxels) + " voxels)",
+           voxels * kBytesPerExportedVoxel}};
 }
 
 std::vector<MemoryUse> SwapchainMemoryUses(const RenderOptions& window) {

@@ -21,9 +21,12 @@ std::vector<MemoryUse> FrameMemoryUses(const RendererOptions& render, int render
 
 // export-vdb's host copies of the froxels: read back (48 bytes a froxel, twice while copying),
 // the volume and OpenVDB's grids (64 bytes each) and the encoded file with a string stream's
-// growth (about 128): 320 bytes a froxel. (A --world-grid volume has its own cap,
-// kMaxWorldGridVoxels.)
+// growth (about 128): 320 bytes a froxel.
 std::vector<MemoryUse> FroxelExportMemoryUses(const FroxelGrid& grid);
+
+// A --world-grid volume of voxel_m and at most voxels voxels (CheckVdbExport): 320 bytes a voxel,
+// as for a froxel, on top of the froxels read back.
+std::vector<MemoryUse> WorldGridMemoryUses(double voxel_m, uint64_t voxels);
 
 // The viewer's window: up to 4 swapchain images of 4 bytes a pixel.
 std::vector<MemoryUse> SwapchainMemoryUses(const RenderOptions& window);

@@ -7,6 +7,7 @@
 #include "aerial/cli/commands.h"
 #include "aerial/cli/common_options.h"
 #include "aerial/cli/memory_uses.h"
+#include "aerial/cli/path_option.h"
 #include "aerial/cli/scene_options.h"
 #include "aerial/image.h"
 #include "aerial/render/renderer_options.h"
@@ -26,7 +27,7 @@ void RunRender(const RenderCommandOptions& options) {
   CheckImageOutputPath(options.out);
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
   RendererOptions render = options.frame.MakeRenderOptions();
-  Scene scene = options.scene.Load(atmosphere.bottom_radius_m);
+  Scene scene = options.scene.Load(atmosphere.bottom_radius_m, options.tables.MakeHostMemoryBudget());
   PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
   Device device(options.tables.MakeDeviceOptions());
   options.tables.MakeMemoryBudget(device.largest_heap_bytes())
@@ -57,7 +58,7 @@ void AddRenderCommand(CLI::App& app) {
   auto options = std::make_shared<RenderCommandOptions>();
   CLI::App* command = app.add_subcommand("render", "Render one frame of a scene to EXR or PNG");
   options->scene.AddTo(*command);
-  command->add_option("--out", options->out, "Output image, .exr (linear radiance) or .png (exposed, sRGB)")
+  AddPathOption(*command, "--out", options->out, "Output image, .exr (linear radiance) or .png (exposed, sRGB)")
       ->required();
   options->frame.AddTo(*command, "Image");
   command->add_flag("--timings", options->timings, "Print the GPU time of each pass");

@@ -1,15 +1,18 @@
 #include "aerial/cli/scene_options.h"
 
+#include <new>
 #include <utility>
 #include <vector>
 
+#include "aerial/cli/path_option.h"
 #include "aerial/core/toml_reader.h"
 #include "aerial/error.h"
+#include "aerial/scene/scene_file.h"
 
 namespace aerial::cli {
 
 void SceneOptions::AddTo(CLI::App& command) {
-  auto* scene = command.add_option("--scene", scene_file, "Scene file (TOML)");
+  auto* scene = AddPathOption(command, "--scene", scene_file, "Scene file (TOML)");
   command.add_option("--preset", preset, "Built-in scene (default noon)")
       ->check(CLI::IsMember(PresetNames()))
       ->excludes(scene);
@@ -23,10 +26,17 @@ void SceneOptions::AddTo(CLI::App& command) {
   command.add_option("--sun-azimuth-deg", overrides.sun_azimuth_deg, "Sun compass azimuth (deg)");
 }
 
-Scene SceneOptions::Load(double planet_radius_m) const {
-  Scene scene = scene_file.empty()
-                    ? BuildPreset(preset.empty() ? "noon" : preset, planet_radius_m)
-                    : LoadSceneFile(scene_file, planet_radius_m);
+Scene SceneOptions::Load(double planet_radius_m, const MemoryBudget& budget) const {
+  Scene scene;
+  try {
+    scene = scene_file.empty() ? BuildPreset(preset.empty() ? "noon" : preset, planet_radius_m)
+                               : LoadSceneFile(scene_file, planet_radius_m, budget);
+  } catch (const std::bad_alloc&) {
+    // Past the models' estimates (gltf_loader.h): it is the scene that is too big, not the frame.
+    throw Error("--scene", scene_file.string(),
+                "a scene whose models fit in this machine's memory (a lower --max-memory-mib makes "
+                "the estimate stop it first)");
+  }
   SceneOverrides all = overrides;
   if (!camera_position_m.empty()) {
     all.camera_position_m =

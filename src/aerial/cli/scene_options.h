@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "aerial/core/memory_budget.h"
 #include "aerial/froxel_grid.h"
 #include "aerial/image/exposure.h"
 #include "aerial/render/renderer_options.h"
@@ -25,8 +26,9 @@ struct SceneOptions {
 
   // --scene, --preset and the camera and sun overrides.
   void AddTo(CLI::App& command);
-  // The preset (noon by default) or the scene file, with the overrides applied (validated).
-  Scene Load(double planet_radius_m) const;
+  // The preset (noon by default) or the scene file, with the overrides applied (validated); the
+  // scene's glTF models load within budget.
+  Scene Load(double planet_radius_m, const MemoryBudget& budget) const;
 };
 
 struct FroxelOptions {

@@ -5,6 +5,7 @@
 #include "aerial/cli/commands.h"
 #include "aerial/cli/common_options.h"
 #include "aerial/cli/memory_uses.h"
+#include "aerial/cli/path_option.h"
 #include "aerial/cli/scene_options.h"
 #include "aerial/core/atomic_file.h"
 #include "aerial/error.h"
@@ -59,7 +60,7 @@ void RunView(const ViewCommandOptions& options) {
     }
     CheckImageOutputPath(options.screenshot, "--screenshot");
   }
-  if (!options.stats.empty()) CheckWritable(options.stats);
+  if (!options.stats.empty()) CheckOutputFile(options.stats, "--stats");
   viewer::ViewerOptions viewer;
   viewer.atmosphere = options.tables.LoadAtmosphere();
   viewer.render = options.frame.MakeRenderOptions();
@@ -67,7 +68,7 @@ void RunView(const ViewCommandOptions& options) {
   viewer.variant = ParseLutVariant(options.tables.lut, "--lut");
   if (!options.camera_path.empty())
     viewer.camera_path = viewer::CameraPath::Load(options.camera_path, viewer.atmosphere.bottom_radius_m);
-  viewer.scene = options.scene.Load(viewer.atmosphere.bottom_radius_m);
+  viewer.scene = options.scene.Load(viewer.atmosphere.bottom_radius_m, options.tables.MakeHostMemoryBudget());
   viewer.load = options.tables.MakeLoadOptions();
   viewer.device = options.tables.MakeDeviceOptions();
   CheckViewerMemory(options.tables, viewer);
@@ -87,11 +88,11 @@ void AddViewCommand(CLI::App& app) {
   options->frame.AddTo(*command, "Window");
   command->add_option("--frames", options->frames, "Close after N frames (scripted runs)")
       ->check(CLI::Range(1, 100000000));
-  command->add_option("--screenshot", options->screenshot,
+  AddPathOption(*command, "--screenshot", options->screenshot,
                       "With --frames: save the last frame, .exr (linear) or .png (sRGB)");
-  command->add_option("--stats", options->stats,
+  AddPathOption(*command, "--stats", options->stats,
                       "Write frame statistics (median and p95 frame ms, FPS, GPU ms per pass) as JSON");
-  command->add_option("--camera-path", options->camera_path,
+  AddPathOption(*command, "--camera-path", options->camera_path,
                       "Camera path to play, 1/30 s of path time per frame (TOML, examples/paths/)");
   options->tables.AddTo(*command);
   command->callback([options] { RunView(*options); });

@@ -7,11 +7,14 @@
 
 #include <cerrno>
 #include <cstring>
+#include <optional>
 #include <random>
 #include <string>
 #include <string_view>
 #include <system_error>
 
+#include "aerial/core/file_kind.h"
+#include "aerial/core/live_temporary.h"
 #include "aerial/error.h"
 
 namespace aerial {
@@ -83,6 +86,46 @@ pid_t TemporaryOwner(std::string_view name, std::string_view target_prefix) {
   return static_cast<pid_t>(pid);
 }
 
+// The file a write replaces: the target of a symbolic link (which is kept), else path itself.
+fs::path ReplacedPath(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::is_symlink(path, ec)) return path;
+  fs::path target = fs::canonical(path, ec);
+  return ec ? path : target;
+}
+
+// Outputs are regular files, replaced whole. What sits at path (after symbolic links) is nothing,
+// a regular file (returned, for its mode and owner) or something else, which is refused by name:
+// renaming over a device, FIFO or socket would replace it (as root, `--stats /dev/null` would
+// replace the system's /dev/null), and writing into one could not be atomic (a FIFO without a
+// reader also blocks). field names the option in messages, which show the path as written and
+// the file a link leads to.
+std::optional<struct stat> ExistingRegularFile(const fs::path& path, const std::string& field) {
+  struct stat info;
+  if (::stat(path.c_str(), &info) != 0) {
+    if (errno == ENOENT) return std::nullopt;  // nothing there (or a dangling link)
+    Fail(path, "write a file", errno);          // a symbolic link loop, a search permission
+  }
+  if (S_ISREG(info.st_mode)) return info;
+  fs::path target = ReplacedPath(path);
+  throw Error(field, path.string(),
+              std::string("a regular file or a new one, not ") + FileKindName(info.st_mode) +
+                  (target == path ? "" : " (" + target.string() + ")") +
+                  " (outputs are written whole to a temporary and renamed over the path)");
+}
+
+// The replacement keeps the replaced file's mode and, where the process may set it, its owner
+// (root, or a file of ours): a non-root writer cannot give a file away, so its replacement of
+// someone else's writable file is its own, as with any editor that saves by renaming. Hard links
+// to the old file keep the old content: a rename replaces one name, and writing in place instead
+// would let a crash or a full disk leave the file half written, which atomic outputs promise never
+// to do.
+void KeepModeAndOwner(int fd, const struct stat& existing, const fs::path& path) {
+  if (::fchmod(fd, existing.st_mode & 07777) != 0) Fail(path, "keep the mode of", errno);
+  if (::fchown(fd, existing.st_uid, existing.st_gid) != 0 && errno != EPERM)
+    Fail(path, "keep the owner of", errno);
+}
+
 // Failures name the target, the path the user asked for; the temporary is removed by the caller.
 void WriteAll(int fd, const std::byte* data, size_t size, const fs::path& path) {
   while (size > 0) {
@@ -114,21 +157,38 @@ void CommitTemporary(Fd& file, const fs::path& temporary, const fs::path& path) 
   if (::rename(temporary.c_str(), path.c_str()) != 0) Fail(path, "rename a file over", errno);
 }
 
+// What WriteFileAtomically(path) will replace is a regular file or nothing, and a file can be
+// created beside it. Creating a file tests the very operation the write will do; access(W_OK)
+// checks permission bits only and misses, e.g., NFS root squashing or a full inode table.
+void CheckReplaceable(const fs::path& path, const std::string& field) {
+  ExistingRegularFile(path, field);
+  const fs::path target = ReplacedPath(path);
+  const fs::path probe = TemporaryNameFor(target);
+  Fd file{::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)};
+  if (file.fd < 0) Fail(path, "create a file in " + ParentOf(target).string(), errno);
+  ::unlink(probe.c_str());
+}
+
 }  // namespace
 
 void WriteFileAtomically(const fs::path& path, std::span<const std::byte> bytes) {
   EnsureParentDirectory(path);
-  const fs::path temporary = TemporaryNameFor(path);
+  std::optional<struct stat> existing = ExistingRegularFile(path, "file");
+  const fs::path target = ReplacedPath(path);
+  RemoveStaleTemporaries(ParentOf(target), target.filename().string());
+  const fs::path temporary = TemporaryNameFor(target);
   Fd file{::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)};
   if (file.fd < 0) Fail(path, "create the temporary " + temporary.filename().string(), errno);
+  LiveTemporary live(temporary);
   try {
+    if (existing) KeepModeAndOwner(file.fd, *existing, path);
     WriteAll(file.fd, bytes.data(), bytes.size(), path);
-    CommitTemporary(file, temporary, path);
+    CommitTemporary(file, temporary, target);
   } catch (...) {
     ::unlink(temporary.c_str());
     throw;
   }
-  SyncDirectory(ParentOf(path));
+  SyncDirectory(ParentOf(target));
 }
 
 void WriteFileAtomically(const fs::path& path, std::string_view text) {
@@ -174,12 +234,20 @@ void CheckWritable(const fs::path& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) Fail(path, "write a file", EISDIR);
   EnsureParentDirectory(path);
-  // Creating a file tests the very operation the write will do; access(W_OK) checks permission
-  // bits only and misses, e.g., NFS root squashing or a full inode table.
-  const fs::path probe = TemporaryNameFor(path);
-  Fd file{::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)};
-  if (file.fd < 0) Fail(path, "create a file in " + ParentOf(path).string(), errno);
-  ::unlink(probe.c_str());
+  CheckReplaceable(path, "file");
+}
+
+void CheckOutputFile(const fs::path& path, const std::string& field) {
+  if (path.empty()) throw Error(field, "", "a file path");
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw Error(field, path.string(), "a file, not a directory");
+  // An output goes where the user points; a mistyped directory is an error, not created silently
+  // (unlike the table cache's and bench's directories, which are theirs to create).
+  fs::path parent = ParentOf(path);
+  if (!fs::is_directory(parent, ec))
+    throw Error(field, path.string(), "a file in an existing directory (" + parent.string() +
+                                          " does not exist or is not a directory)");
+  CheckReplaceable(path, field);
 }
 
 }  // namespace aerial

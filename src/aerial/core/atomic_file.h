@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -14,7 +15,11 @@ namespace aerial {
 
 // Writes bytes to path atomically: path then holds either its old content or all of bytes.
 // Missing parent directories are created. The data is fsync'ed before the rename, and the
-// directory after it, so the new content also survives a power cut.
+// directory after it, so the new content also survives a power cut. A regular file at path is
+// replaced keeping its mode and (where the process may set it) its owner; through a symbolic link,
+// the file it points to is replaced and the link kept; a directory, device, FIFO or socket is
+// refused by name, never replaced. Temporaries a killed writer of path left are removed first, and
+// this write's own one if SIGINT, SIGTERM or SIGHUP ends the program (core/live_temporary.h).
 void WriteFileAtomically(const std::filesystem::path& path, std::span<const std::byte> bytes);
 void WriteFileAtomically(const std::filesystem::path& path, std::string_view text);
 
@@ -30,8 +35,12 @@ std::vector<std::filesystem::path> RemoveStaleTemporaries(const std::filesystem:
 std::vector<std::byte> ReadFile(const std::filesystem::path& path);
 
 // Checks, before any long work, that WriteFileAtomically(path, ...) can succeed: the parent
-// directory exists (it is created if missing) and a file can be created in it, and path is not
-// a directory. It cannot foresee a full disk.
+// directory exists (it is created if missing) and a file can be created in it, and path is
+// neither a directory nor a special file. It cannot foresee a full disk.
 void CheckWritable(const std::filesystem::path& path);
+
+// The same check for an output file the user names (field: the option, "--stats"), which must
+// lie in an existing directory: nothing is created. An empty path is refused too.
+void CheckOutputFile(const std::filesystem::path& path, const std::string& field);
 
 }  // namespace aerial

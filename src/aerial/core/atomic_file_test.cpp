@@ -1,6 +1,8 @@
 #include "aerial/core/atomic_file.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -113,6 +115,78 @@ TEST_F(AtomicFile, CheckWritableRejectsParentThatIsAFile) {
 
 TEST_F(AtomicFile, CheckWritableRejectsDirectoryTarget) {
   EXPECT_THROW(CheckWritable(dir_), Error);
+}
+
+// Issue 41: outputs write into what exists, or refuse it.
+
+TEST_F(AtomicFile, ReplacedFileKeepsItsModeAndOwner) {
+  WriteFileAtomically(dir_ / "out.txt", std::string_view("old"));
+  fs::permissions(dir_ / "out.txt", fs::perms::owner_read | fs::perms::owner_write);  // 0600
+  ASSERT_EQ(::chown((dir_ / "out.txt").c_str(), 1234, 5678), 0);  // tests run as root
+  WriteFileAtomically(dir_ / "out.txt", std::string_view("new"));
+  struct stat info;
+  ASSERT_EQ(::stat((dir_ / "out.txt").c_str(), &info), 0);
+  EXPECT_EQ(info.st_mode & 07777, 0600u) << "was 0644 before issue 41";
+  EXPECT_EQ(info.st_uid, 1234u);
+  EXPECT_EQ(info.st_gid, 5678u);
+}
+
+TEST_F(AtomicFile, WriteThroughASymlinkReplacesItsTargetAndKeepsTheLink) {
+  WriteFileAtomically(dir_ / "target.txt", std::string_view("old"));
+  fs::create_symlink("target.txt", dir_ / "link.txt");
+  WriteFileAtomically(dir_ / "link.txt", std::string_view("new"));
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link.txt"));
+  EXPECT_EQ(ReadFile(dir_ / "target.txt").size(), 3u);
+  EXPECT_EQ(Entries(), (std::vector<std::string>{"link.txt", "target.txt"}));
+}
+
+// A FIFO, or a symlink to a device, is refused by name: as root, renaming over /dev/null would
+// replace the system's /dev/null. (Checked through a link, so that a regression replaces only
+// the link.)
+TEST_F(AtomicFile, SpecialFilesAreRefusedByNameNotReplaced) {
+  ASSERT_EQ(::mkfifo((dir_ / "fifo").c_str(), 0600), 0);
+  fs::create_symlink("/dev/null", dir_ / "null");
+  for (const auto& [name, kind] : {std::pair{"fifo", "not a FIFO (named pipe)"},
+                                   std::pair{"null", "not a character device"}}) {
+    for (auto write : {+[](const fs::path& p) { WriteFileAtomically(p, std::string_view("x")); },
+                       +[](const fs::path& p) { CheckWritable(p); }}) {
+      try {
+        write(dir_ / name);
+        ADD_FAILURE() << name << " accepted";
+      } catch (const Error& e) {
+        EXPECT_NE(e.allowed().find(kind), std::string::npos) << e.what();
+      }
+    }
+  }
+  EXPECT_TRUE(fs::is_fifo(dir_ / "fifo"));
+  EXPECT_TRUE(fs::is_symlink(dir_ / "null"));
+  EXPECT_EQ(Entries(), (std::vector<std::string>{"fifo", "null"})) << "no temporary left";
+}
+
+TEST_F(AtomicFile, CheckOutputFileCreatesNothing) {
+  try {
+    CheckOutputFile(dir_ / "missing" / "dir" / "s.json", "--stats");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.field(), "--stats");
+    EXPECT_EQ(e.value(), (dir_ / "missing" / "dir" / "s.json").string());
+  }
+  EXPECT_TRUE(Entries().empty()) << "the directory chain was created before issue 41";
+  EXPECT_THROW(CheckOutputFile("", "--stats"), Error);
+  EXPECT_NO_THROW(CheckOutputFile(dir_ / "s.json", "--stats"));
+}
+
+// A write removes the temporaries that killed writers of the same path left (issue 41: only the
+// table cache's were).
+TEST_F(AtomicFile, StaleTemporariesOfTheTargetAreRemovedByTheNextWrite) {
+  pid_t dead = ::fork();
+  if (dead == 0) ::_exit(0);
+  ASSERT_GT(dead, 0);
+  ::waitpid(dead, nullptr, 0);  // reaped: its pid names no process now
+  std::string stale = "out.vdb.tmp-" + std::to_string(dead) + "-0123456789abcdef";
+  MakeRegularFile(dir_ / stale);
+  WriteFileAtomically(dir_ / "out.vdb", std::string_view("x"));
+  EXPECT_EQ(Entries(), std::vector<std::string>{"out.vdb"});
 }
 
 }  // namespace

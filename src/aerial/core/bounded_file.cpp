@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "aerial/core/file_kind.h"
 #include "aerial/error.h"
 
 namespace aerial {
@@ -19,19 +20,10 @@ namespace {
               std::string("a readable file (") + std::strerror(error_number) + ")");
 }
 
-const char* KindOf(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "a special file";
-}
-
 void RequireRegular(const struct stat& info, const std::filesystem::path& path,
                     const std::string& field) {
   if (!S_ISREG(info.st_mode))
-    throw Error(field, path.string(), std::string("a regular file, not ") + KindOf(info.st_mode));
+    throw Error(field, path.string(), std::string("a regular file, not ") + FileKindName(info.st_mode));
 }
 
 [[noreturn]] void FailTooBig(const std::filesystem::path& path, const std::string& field,

@@ -22,6 +22,10 @@ inline constexpr size_t kMaxGltfBytes = 256 * kMiB;
 // 100,000 levels overflow the stack.
 inline constexpr size_t kMaxJsonDepth = 64;
 
+// Levels of a TOML text: dotted key parts plus nested arrays and inline tables. Aerial's files
+// need 4; toml++ recurses once per level, and 40,000 overflow the stack.
+inline constexpr size_t kMaxTomlDepth = 64;
+
 // A table cache file. The largest tables the size caps allow (precompute_options.cpp: 2^22
 // scattering texels in each of two 4D tables, 2^20 transmittance and 2^14 irradiance texels, 16
 // bytes each) take about 145 MiB; a bigger file is not one aerial wrote, and reading it would

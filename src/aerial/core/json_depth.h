@@ -8,8 +8,17 @@
 
 namespace aerial {
 
-// The deepest nesting of arrays and objects in json, by a scan of its brackets outside strings
-// ("[[]]" is 2). It does not check that json is valid; the parser does that afterwards.
+// What a parse of json will build, by one scan of its brackets and commas outside strings: the
+// deepest nesting of arrays and objects ("[[]]" is 2) and about how many values it holds (each
+// array and object, and one per comma). It does not check that json is valid; the parser does
+// that afterwards.
+struct JsonShape {
+  size_t depth = 0;
+  size_t values = 0;
+};
+JsonShape MeasureJson(std::string_view json);
+
+// MeasureJson(json).depth.
 size_t JsonNestingDepth(std::string_view json);
 
 // Throws Error("JSON nesting", "<depth> levels", ..., where) when json nests deeper than

@@ -32,6 +32,11 @@ void MemoryBudget::Check(const std::vector<MemoryUse>& uses) const {
                   ") > budget " + FormatMiB(bytes) + " (" + origin + ")");
 }
 
+void MemoryTally::Add(uint64_t bytes) {
+  use_.bytes = bytes > UINT64_MAX - use_.bytes ? UINT64_MAX : use_.bytes + bytes;
+  budget_.Check({use_});
+}
+
 MemoryBudget MakeMemoryBudget(std::optional<uint64_t> max_memory_mib, uint64_t device_heap_bytes) {
   if (max_memory_mib) return {*max_memory_mib * kMiB, "--max-memory-mib " + std::to_string(*max_memory_mib)};
   uint64_t default_bytes = kDefaultMemoryBudgetMiB * kMiB;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace aerial {
@@ -29,6 +30,22 @@ struct MemoryBudget {
   // Throws aerial::Error when the uses add up to more than the budget. The error names the
   // option of the largest use and its value, the estimate with its parts, and the budget.
   void Check(const std::vector<MemoryUse>& uses) const;
+};
+
+// Memory an input's loader allocates as it reads (a glTF model's JSON tree and geometry, whose
+// size only the file knows), added up and checked against the budget before each allocation.
+class MemoryTally {
+ public:
+  // option and value name the input in the error, as MemoryUse does; what says what is counted.
+  MemoryTally(MemoryBudget budget, std::string option, std::string value, std::string what)
+      : budget_(std::move(budget)), use_{std::move(option), std::move(value), std::move(what), 0} {}
+
+  // Throws as MemoryBudget::Check when the total with bytes exceeds the budget.
+  void Add(uint64_t bytes);
+
+ private:
+  MemoryBudget budget_;
+  MemoryUse use_;
 };
 
 // --max-memory-mib when given (any value >= 1, even above the device's memory: the user knows

@@ -7,6 +7,7 @@
 
 #include "aerial/core/bounded_file.h"
 #include "aerial/core/input_limits.h"
+#include "aerial/core/toml_depth.h"
 #include "aerial/error.h"
 
 namespace aerial {
@@ -45,6 +46,7 @@ std::string ReadTomlFile(const std::filesystem::path& path, const std::string& f
 }
 
 toml::table TomlReader::Parse(std::string_view text) const {
+  CheckTomlDepth(text, where_);
   try {
     return toml::parse(text, where_);
   } catch (const toml::parse_error& e) {

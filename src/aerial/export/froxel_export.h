@@ -69,8 +69,9 @@ FroxelFrame CaptureFroxels(const AtmosphereTables& tables, const Scene& scene, c
 void CheckVdbOutputPath(const std::filesystem::path& path);
 
 // Throws Error naming --world-grid unless voxel_m is in (0, far_m] and the voxels over the
-// frustum's bounding box number at most kMaxWorldGridVoxels.
-void CheckWorldGrid(double voxel_m, const FroxelPlacement& placement);
+// frustum's bounding box number at most kMaxWorldGridVoxels. Returns about how many of them the
+// froxels cover (sampled), the most voxels the volume can hold.
+int64_t CheckWorldGrid(double voxel_m, const FroxelPlacement& placement);
 
 // The frustum-space layout and the world-space one (see above). The frustum layout throws Error
 // naming camera.near_m unless the near plane is in (0, far) (camera_frustum.h).

@@ -10,6 +10,7 @@
 #include <openvdb/openvdb.h>
 
 #include "aerial/core/atomic_file.h"
+#include "aerial/core/format_number.h"
 #include "aerial/error.h"
 
 namespace aerial {
@@ -105,7 +106,7 @@ void CheckVolume(const VdbVolume& volume) {
     CheckFrustum(*volume.frustum);
   } else {
     if (!(volume.voxel_size_m > 0.0 && std::isfinite(volume.voxel_size_m)))
-      throw Error("VDB voxel size", std::to_string(volume.voxel_size_m), "a finite size > 0");
+      throw Error("VDB voxel size", FormatNumber(volume.voxel_size_m), "a finite size > 0");
     for (double o : volume.origin_m)
       if (!std::isfinite(o)) throw Error("VDB origin", std::to_string(o), "finite meters");
   }
@@ -120,7 +121,7 @@ void CheckVolume(const VdbVolume& volume) {
                   std::to_string(volume.voxels.size() * grid.components) + " (components x voxels)",
                   grid.name);
     if (!std::isfinite(grid.background))
-      throw Error("VDB grid background", std::to_string(grid.background), "a finite value", grid.name);
+      throw Error("VDB grid background", FormatNumber(grid.background), "a finite value", grid.name);
   }
 }
 

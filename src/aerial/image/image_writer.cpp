@@ -8,6 +8,7 @@
 #include "aerial/core/atomic_file.h"
 #include "aerial/error.h"
 #include "aerial/image/exr.h"
+#include "aerial/image/finite_pixels.h"
 #include "aerial/image.h"
 
 namespace aerial {
@@ -23,14 +24,7 @@ ImageFormat ImageFormatFromPath(const std::filesystem::path& path, const std::st
 
 void CheckImageOutputPath(const std::filesystem::path& path, const std::string& field) {
   ImageFormatFromPath(path, field);
-  // An image goes where the user points; a mistyped directory is an error, not created silently
-  // (unlike the table cache, whose directory is ours to create).
-  std::filesystem::path parent = path.parent_path().empty() ? "." : path.parent_path();
-  std::error_code error;
-  if (!std::filesystem::is_directory(parent, error))
-    throw Error(field, path.string(), "a file in an existing directory (" + parent.string() +
-                                            " does not exist or is not a directory)");
-  CheckWritable(path);
+  CheckOutputFile(path, field);
 }
 
 void WriteImage(const std::filesystem::path& path, const ImageRgbF& image,
@@ -39,6 +33,7 @@ void WriteImage(const std::filesystem::path& path, const ImageRgbF& image,
   // happens before the atomic write starts.
   const ImageFormat format = ImageFormatFromPath(path);
   CheckImageSize(image);
+  CheckFinitePixels(image);
   std::vector<std::byte> bytes;
   switch (format) {
     case ImageFormat::kExr:

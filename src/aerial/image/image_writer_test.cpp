@@ -4,6 +4,7 @@
 
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <string>
 
 #include "aerial/error.h"
@@ -81,6 +82,18 @@ TEST_F(ImageWriter, AbsurdSizeIsRejectedBeforeWriting) {
   ImageRgbF short_buffer{4, 4, std::vector<float>(4 * 4 * 3)};
   EXPECT_EQ(Thrown([&] { WriteImage(dir_ / "sky.exr", short_buffer, {}); }).field(),
             "image size");
+  EXPECT_TRUE(Entries().empty());
+}
+
+// Issue 41: a frame of NaN pixels (a yaw of 5.8e307 degrees) was written with exit status 0.
+TEST_F(ImageWriter, NonFiniteFrameIsRefusedNamingThePixel) {
+  ImageRgbF image = Grey(3, 2);
+  image.rgba[4 * 4 + 1] = std::numeric_limits<float>::quiet_NaN();  // pixel (1, 1), green
+  for (const char* name : {"sky.exr", "sky.png"}) {
+    Error e = Thrown([&] { WriteImage(dir_ / name, image, {}); });
+    EXPECT_EQ(e.field(), "frame");
+    EXPECT_EQ(e.value(), "NaN or infinity at pixel (1, 1)");
+  }
   EXPECT_TRUE(Entries().empty());
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "aerial/core/format_number.h"
 #include "aerial/error.h"
 
 namespace aerial {
@@ -48,7 +49,7 @@ std::vector<uint8_t> ToneMapToSrgb8(const ImageRgbF& image, const ToneMapOptions
   CheckImageSize(image);
   // A zero, negative or non-finite exposure would silently give a black or NaN image.
   if (!(options.exposure > 0.0) || !std::isfinite(options.exposure))
-    throw Error("exposure", std::to_string(options.exposure), "a finite number > 0");
+    throw Error("exposure", FormatNumber(options.exposure), "a finite number > 0");
   std::vector<uint8_t> out(image.rgba.size());
   for (size_t i = 0; i < image.rgba.size(); i += 4) {
     for (size_t c = 0; c < 3; ++c) {

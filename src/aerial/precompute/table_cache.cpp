@@ -1,5 +1,9 @@
 #include "aerial/precompute/table_cache.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <bit>
 #include <cerrno>
@@ -10,6 +14,7 @@
 
 #include "aerial/core/atomic_file.h"
 #include "aerial/core/checksum.h"
+#include "aerial/core/file_kind.h"
 #include "aerial/core/input_limits.h"
 #include "aerial/error.h"
 
@@ -135,6 +140,27 @@ class Cursor {
 };
 
 using File = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
+
+// The cache file, opened only if it is a regular one: O_NONBLOCK keeps a FIFO at its name from
+// blocking the open (the cache is optional; a command must not hang on it).
+File OpenRegularFile(const std::filesystem::path& path, const std::string& where) {
+  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) {
+    throw Error("cache file", where,
+                std::string("an existing table cache (") + std::strerror(errno) + ")", where);
+  }
+  struct stat info {};
+  if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
+    ::close(fd);
+    throw Error("cache file", where, std::string("a regular file, not ") + FileKindName(info.st_mode), where);
+  }
+  File file(::fdopen(fd, "rb"), &std::fclose);
+  if (!file) {
+    ::close(fd);
+    throw Error("cache file", where, std::string("a readable file (") + std::strerror(errno) + ")", where);
+  }
+  return file;
+}
 
 void ReadExactly(std::FILE* file, std::byte* data, size_t count, const std::string& where) {
   if (std::fread(data, 1, count, file) != count) {
@@ -267,14 +293,11 @@ void WriteTableCache(const std::filesystem::path& path, const TableCache& cache)
 
 TableCache ReadTableCache(const std::filesystem::path& path, const TableCacheKey& expected) {
   const std::string where = path.string();
-  File file(std::fopen(path.c_str(), "rb"), &std::fclose);
-  if (!file) {
-    throw Error("cache file", where,
-                std::string("an existing table cache (") + std::strerror(errno) + ")", where);
-  }
-  std::error_code ec;
-  uint64_t actual_bytes = std::filesystem::file_size(path, ec);
-  if (ec) throw Error("cache file", where, "a regular file (" + ec.message() + ")", where);
+  File file = OpenRegularFile(path, where);
+  struct stat info;
+  if (::fstat(::fileno(file.get()), &info) != 0)
+    throw Error("cache file", where, std::string("a readable file (") + std::strerror(errno) + ")", where);
+  uint64_t actual_bytes = static_cast<uint64_t>(info.st_size);
   if (actual_bytes > kMaxTableCacheBytes) {
     throw Error("cache size", std::to_string(actual_bytes) + " bytes",
                 "at most " + std::to_string(kMaxTableCacheBytes) + " bytes (no table set is larger)",

@@ -6,17 +6,18 @@
 #include "aerial/core/atomic_file.h"
 #include "aerial/core/progress.h"
 #include "aerial/error.h"
+#include "aerial/precompute/finite_tables.h"
 #include "aerial/precompute/precomputer.h"
 
 namespace aerial {
 
-std::filesystem::path DefaultCacheDirectory() {
+std::optional<std::filesystem::path> DefaultCacheDirectory() {
   if (const char* dir = std::getenv("AERIAL_CACHE_DIR"); dir && *dir) return dir;
   if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
     return std::filesystem::path(xdg) / "aerial";
   if (const char* home = std::getenv("HOME"); home && *home)
     return std::filesystem::path(home) / ".cache" / "aerial";
-  return ".aerial-cache";
+  return std::nullopt;
 }
 
 std::filesystem::path CacheFilePath(const std::filesystem::path& dir,
@@ -35,14 +36,29 @@ LoadedTables LoadOrPrecompute(const vk::Context& context, const AtmosphereParame
   options.Validate();
   LoadedTables loaded;
   loaded.tables = std::make_unique<AtmosphereTables>(context, atmosphere, options);
-  std::filesystem::path dir = store.cache_dir.empty() ? DefaultCacheDirectory() : store.cache_dir;
-  loaded.cache_file = CacheFilePath(dir, atmosphere, options);
-
-  for (const std::filesystem::path& stale : RemoveStaleTemporaries(dir, "tables-")) {
-    if (!store.quiet)
-      std::fprintf(stderr, "aerial: removed %s, left by a table cache write that was killed\n", stale.c_str());
+  // The cache is optional: anything wrong at its path only costs the next run its precompute,
+  // and the command goes on without it (a warning naming what is wrong), unless writing it is the
+  // command's job.
+  bool use_cache = true;
+  auto without_cache = [&](const Error& e) {
+    if (store.require_cache_write) throw e;
+    std::fprintf(stderr, "aerial: warning: not caching the tables (%s)\n", e.what());
+    use_cache = false;
+  };
+  std::optional<std::filesystem::path> dir =
+      store.cache_dir.empty() ? DefaultCacheDirectory() : store.cache_dir;
+  if (!dir) {
+    without_cache(Error("HOME", "unset",
+                        "set, or XDG_CACHE_HOME, AERIAL_CACHE_DIR or --cache-dir, to place the table cache"));
+  } else {
+    loaded.cache_file = CacheFilePath(*dir, atmosphere, options);
+    for (const std::filesystem::path& stale : RemoveStaleTemporaries(*dir, "tables-")) {
+      if (!store.quiet)
+        std::fprintf(stderr, "aerial: removed %s, left by a table cache write that was killed\n", stale.c_str());
+    }
   }
-  if (store.read_cache && std::filesystem::exists(loaded.cache_file)) {
+  std::error_code ec;  // a symbolic link loop at the path: no cache to read, and writing fails below
+  if (use_cache && store.read_cache && std::filesystem::exists(loaded.cache_file, ec)) {
     try {
       loaded.tables->Upload(ReadTableCache(loaded.cache_file, loaded.tables->cache_key()));
       loaded.from_cache = true;
@@ -52,28 +68,22 @@ LoadedTables LoadOrPrecompute(const vk::Context& context, const AtmosphereParame
       std::fprintf(stderr, "aerial: ignoring table cache (%s); recomputing\n", e.what());
     }
   }
-  // A cache that cannot be written (read-only, full disk, file size limit) only costs the next
-  // run its precompute: the command goes on without it, unless writing it is the command's job.
-  auto without_cache = [&](const Error& e) {
-    if (store.require_cache_write) throw e;
-    std::fprintf(stderr, "aerial: warning: not caching the tables (%s)\n", e.what());
-  };
-  bool write_cache = store.write_cache;
-  if (write_cache) {
+  if (use_cache && store.write_cache) {
     try {
       CheckWritable(loaded.cache_file);
     } catch (const Error& e) {
       without_cache(e);
-      write_cache = false;
     }
   }
   Progress progress("precompute " + ToString(options.variant), PrecomputePassCount(options), stderr,
                     store.quiet);
   progress.set_observer(store.progress);
   loaded.pass_times = Precompute(*loaded.tables, &progress);
-  if (write_cache) {
+  TableCache texels = loaded.tables->Download();
+  CheckFiniteTables(texels);
+  if (use_cache && store.write_cache) {
     try {
-      WriteTableCache(loaded.cache_file, loaded.tables->Download());
+      WriteTableCache(loaded.cache_file, texels);
     } catch (const Error& e) {
       without_cache(e);
     }

@@ -5,6 +5,7 @@
 // cache directory are removed first (core/atomic_file.h, RemoveStaleTemporaries).
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "aerial/core/progress.h"
@@ -28,12 +29,13 @@ struct TableStoreOptions {
 struct LoadedTables {
   std::unique_ptr<AtmosphereTables> tables;
   bool from_cache = false;
-  std::filesystem::path cache_file;
+  std::filesystem::path cache_file;  // empty when there is no cache directory
   std::vector<vk::PassTime> pass_times;  // empty when read from the cache
 };
 
-// $AERIAL_CACHE_DIR, else $XDG_CACHE_HOME/aerial, else ~/.cache/aerial, else ./.aerial-cache.
-std::filesystem::path DefaultCacheDirectory();
+// $AERIAL_CACHE_DIR, else $XDG_CACHE_HOME/aerial, else $HOME/.cache/aerial; none when none of
+// them is set (a cache in the working directory would surprise: the caller goes on without one).
+std::optional<std::filesystem::path> DefaultCacheDirectory();
 
 // One file per variant and parameter set: tables-<variant>-<atmosphere hash>-<options hash>.bin.
 std::filesystem::path CacheFilePath(const std::filesystem::path& dir, const AtmosphereParameters&,

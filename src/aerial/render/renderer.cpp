@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "aerial/core/format_number.h"
 #include "aerial/error.h"
 #include "aerial/image/resample.h"
 #include "aerial/render/shadow_uniforms.h"
@@ -202,9 +203,9 @@ FrameMemory EstimateFrameMemory(const RenderOptions& o) {
 void RenderOptions::Validate() const {
   CheckImageSize(width, height, "--width/--height");
   if (!(render_scale >= 0.25 && render_scale <= 1.0))
-    throw Error("--render-scale", std::to_string(render_scale), "0.25 to 1");
+    throw Error("--render-scale", FormatNumber(render_scale), "in [0.25, 1]");
   if (!(terrain_error_px >= 0.25 && terrain_error_px <= 64.0))
-    throw Error("--terrain-error-px", std::to_string(terrain_error_px), "0.25 to 64");
+    throw Error("--terrain-error-px", FormatNumber(terrain_error_px), "in [0.25, 64]");
   froxels.Validate();
 }
 

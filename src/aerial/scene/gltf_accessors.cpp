@@ -89,7 +89,9 @@ GltfReader::Elements GltfReader::Find(int index, int type, const std::vector<int
   size_t element_size = static_cast<size_t>(
       tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type)) *
       tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType)));
-  return Locate(index, element_size, used_as);
+  Elements elements = Locate(index, element_size, used_as);
+  tally_.Add(elements.count * kModelBytesPerElement);  // count < 2^32: it fits in the buffer
+  return elements;
 }
 
 // The accessor's elements, after checking that all count elements of element_size bytes lie

@@ -9,14 +9,20 @@
 #include <utility>
 #include <vector>
 
+#include "aerial/core/memory_budget.h"
 #include "aerial/scene/tiny_gltf_config.h"
 
 namespace aerial {
 
+// What reading one element costs, counted in the tally before its vector is allocated: a double
+// vec3 (24 bytes) or an index (4), and a 40-byte vertex in the mesh, the GPU's buffer and its
+// upload copy (an index gives one vertex when the model has no normals).
+inline constexpr uint64_t kModelBytesPerElement = 24 + 3 * 40;
+
 class GltfReader {
  public:
-  GltfReader(const tinygltf::Model& model, std::string where)
-      : model_(model), where_(std::move(where)) {}
+  GltfReader(const tinygltf::Model& model, std::string where, MemoryTally& tally)
+      : model_(model), where_(std::move(where)), tally_(tally) {}
 
   [[noreturn]] void Fail(const std::string& field, const std::string& value,
                          const std::string& allowed) const;
@@ -43,6 +49,7 @@ class GltfReader {
 
   const tinygltf::Model& model_;
   std::string where_;
+  MemoryTally& tally_;
 };
 
 }  // namespace aerial

@@ -19,7 +19,7 @@ class GltfFileSystemTest : public ::testing::Test {
 
 TEST_F(GltfFileSystemTest, FilesShareOneBudget) {
   tinygltf::Model model;
-  GltfFileSystem files(model, 100);
+  GltfFileSystem files(model, dir_.path().string(), 100);
   EXPECT_EQ(files.ReadModelFile(dir_ / "60.bin").size(), 60u);
   // 40 bytes are left: the same 60-byte file no longer fits.
   try {
@@ -36,7 +36,7 @@ TEST_F(GltfFileSystemTest, FilesShareOneBudget) {
 TEST_F(GltfFileSystemTest, FailedBufferReadIsNamedAndRethrown) {
   tinygltf::Model model;
   model.buffers.resize(2);  // tinygltf has read buffers 0 and 1: this read is buffers[2]
-  GltfFileSystem files(model, 100);
+  GltfFileSystem files(model, dir_.path().string(), 100);
   tinygltf::FsCallbacks callbacks = files.Callbacks();
   std::vector<unsigned char> out;
   std::string error;
@@ -55,7 +55,7 @@ TEST_F(GltfFileSystemTest, FailedBufferReadIsNamedAndRethrown) {
 
 TEST_F(GltfFileSystemTest, BufferReadCountsAgainstTheBudget) {
   tinygltf::Model model;
-  GltfFileSystem files(model, 100);
+  GltfFileSystem files(model, dir_.path().string(), 100);
   tinygltf::FsCallbacks callbacks = files.Callbacks();
   std::vector<unsigned char> out;
   std::string error;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -13,8 +12,10 @@
 #include "aerial/core/input_limits.h"
 #include "aerial/core/json_depth.h"
 #include "aerial/error.h"
+#include "aerial/scene/glb_layout.h"
 #include "aerial/scene/gltf_accessors.h"
 #include "aerial/scene/gltf_file_system.h"
+#include "aerial/scene/scene_limits.h"
 #include "aerial/scene/tiny_gltf_config.h"
 
 namespace aerial {
@@ -95,13 +96,22 @@ void AppendPrimitive(const GltfReader& reader, const tinygltf::Primitive& primit
   }
   if (indices.size() % 3 != 0)
     reader.Fail(field + ".indices", std::to_string(indices.size()) + " indices", "a multiple of 3");
-  for (uint32_t index : indices) {
-    if (index >= positions.size())
-      reader.Fail(field + ".indices", std::to_string(index),
-                  "below the vertex count " + std::to_string(positions.size()));
+  // Values read from a buffer are not shown: only the written counts and positions in it.
+  for (size_t i = 0; i < indices.size(); ++i) {
+    if (indices[i] >= positions.size())
+      reader.Fail(field + ".indices", "element " + std::to_string(i),
+                  "an index below the vertex count " + std::to_string(positions.size()));
   }
 
-  for (glm::dvec3& p : positions) p = glm::dvec3(to_world * glm::dvec4(p, 1.0));
+  for (size_t i = 0; i < positions.size(); ++i) {
+    positions[i] = glm::dvec3(to_world * glm::dvec4(positions[i], 1.0));
+    // Checked in double, before the positions become floats (a cast out of float's range is
+    // undefined) and before the scene's distance check, which a NaN would pass.
+    if (!(glm::length(positions[i]) <= kMaxModelCoordinateM))
+      reader.Fail(field + ".POSITION", "vertex " + std::to_string(i) + " after the node transforms",
+                  "finite coordinates within " + FormatNumber(kMaxModelCoordinateM) +
+                      " m of the model's origin (coordinates read from buffers are not shown)");
+  }
   // A mirroring transform turns counter-clockwise triangles clockwise (glTF 2.0 spec, 3.7.4).
   glm::dmat3 linear(to_world);
   bool mirrored = glm::determinant(linear) < 0.0;
@@ -152,27 +162,25 @@ void AppendMesh(const GltfReader& reader, const tinygltf::Model& model, int mesh
   }
 }
 
-// The JSON chunk of a .glb (glTF 2.0 spec, "Binary glTF Layout": a 12-byte header, then the
-// chunk's length, its type and its bytes). A malformed header gives what there is, and tinygltf
-// rejects the file afterwards.
-std::string_view GlbJson(const std::vector<unsigned char>& bytes) {
-  if (bytes.size() < 20) return {};
-  uint32_t length;
-  std::memcpy(&length, bytes.data() + 12, 4);  // little-endian, like the machines this runs on
-  return {reinterpret_cast<const char*>(bytes.data()) + 20,
-          std::min<size_t>(length, bytes.size() - 20)};
-}
+// What parsing a glTF's JSON allocates, counted before tinygltf parses it. Each value is held
+// twice, in the JSON library's tree and in tinygltf's (an `extras` array of 10 million zeros, 20 MB,
+// took 1.96 GB: 196 bytes a value); the text, its strings and the buffers decoded from data URIs
+// take a few times the file's bytes.
+constexpr uint64_t kJsonBytesPerValue = 200, kJsonBytesPerFileByte = 4;
 
-tinygltf::Model ReadModel(const std::filesystem::path& path) {
+tinygltf::Model ReadModel(const std::filesystem::path& path, MemoryTally& tally) {
   tinygltf::Model model;
-  GltfFileSystem files(model, kMaxGltfBytes);
+  std::string base_dir = path.parent_path().string();
+  GltfFileSystem files(model, base_dir, kMaxGltfBytes);
   std::vector<unsigned char> bytes = files.ReadModelFile(path);
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   bool binary = extension == ".glb";
   std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-  CheckJsonDepth(binary ? GlbJson(bytes) : text, path.string());
+  std::string_view json = binary ? CheckedGlbJson(bytes, path.string()) : text;
+  CheckJsonDepth(json, path.string());
+  tally.Add(MeasureJson(json).values * kJsonBytesPerValue + bytes.size() * kJsonBytesPerFileByte);
 
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks(files.Callbacks());
@@ -183,13 +191,13 @@ tinygltf::Model ReadModel(const std::filesystem::path& path) {
   std::string error, warning;
   // kMaxGltfBytes keeps the size inside tinygltf's unsigned int.
   auto size = static_cast<unsigned int>(bytes.size());
-  std::string base_dir = path.parent_path().string();
   bool ok = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(), size,
                                                  base_dir)
                    : loader.LoadASCIIFromString(&model, &error, &warning, text.data(), size,
                                                 base_dir);
   files.RethrowFailure();
   if (!ok) {
+    files.RethrowRefusedBuffer();
     while (!error.empty() && error.back() == '\n') error.pop_back();
     throw Error("glTF file", path.string(), "valid glTF 2.0 (" + Shortened(error) + ")");
   }
@@ -198,9 +206,10 @@ tinygltf::Model ReadModel(const std::filesystem::path& path) {
 
 }  // namespace
 
-Mesh LoadGltfMesh(const std::filesystem::path& path, const std::string& name) {
-  tinygltf::Model model = ReadModel(path);
-  GltfReader reader(model, path.string());
+Mesh LoadGltfMesh(const std::filesystem::path& path, const std::string& name, const MemoryBudget& budget) {
+  MemoryTally tally(budget, "glTF model", path.string(), "JSON parse and geometry");
+  tinygltf::Model model = ReadModel(path, tally);
+  GltfReader reader(model, path.string(), tally);
   Mesh mesh;
   mesh.name = name;
 
@@ -212,26 +221,30 @@ Mesh LoadGltfMesh(const std::filesystem::path& path, const std::string& name) {
     size_t scene = model.defaultScene >= 0 ? static_cast<size_t>(model.defaultScene) : 0;
     if (scene >= model.scenes.size())
       reader.Fail("scene", std::to_string(scene), "an existing scene index");
-    // Depth-first over the node hierarchy; a valid glTF is a forest, so a path longer than the
-    // node count means a cycle.
+    // Depth-first over the node hierarchy. A valid glTF is a forest (glTF 2.0 spec, 3.5.3):
+    // a node reached twice (listed twice, by two parents or in a cycle) is refused, so the
+    // walk visits each node once, however the file is shaped.
     struct Pending {
       int node;
       glm::dmat4 parent;
-      size_t depth;
     };
     std::vector<Pending> pending;
-    for (int root : model.scenes[scene].nodes) pending.push_back({root, kYUpToZUp, 0});
+    std::vector<bool> visited(model.nodes.size(), false);
+    for (int root : model.scenes[scene].nodes) pending.push_back({root, kYUpToZUp});
     while (!pending.empty()) {
       Pending p = pending.back();
       pending.pop_back();
       if (p.node < 0 || static_cast<size_t>(p.node) >= model.nodes.size())
         reader.Fail("node", std::to_string(p.node), "an existing node index");
-      if (p.depth > model.nodes.size())
-        reader.Fail("nodes", "a cycle through node " + std::to_string(p.node), "a tree");
+      if (visited[p.node]) {
+        reader.Fail("nodes[" + std::to_string(p.node) + "]", "reached twice",
+                    "a tree: each node listed once, as a scene root or as one parent's child");
+      }
+      visited[p.node] = true;
       const tinygltf::Node& node = model.nodes[p.node];
       glm::dmat4 transform = p.parent * LocalTransform(node);
       if (node.mesh >= 0) AppendMesh(reader, model, node.mesh, transform, mesh);
-      for (int child : node.children) pending.push_back({child, transform, p.depth + 1});
+      for (int child : node.children) pending.push_back({child, transform});
     }
   }
   if (mesh.indices.empty())

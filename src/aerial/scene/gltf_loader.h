@@ -17,15 +17,21 @@
 // Errors throw aerial::Error with the path as where: a missing, unparsable or non-regular file,
 // a model whose files hold more than kMaxGltfBytes together or whose JSON nests deeper than
 // kMaxJsonDepth (core/input_limits.h), a primitive of another mode (naming it), a missing
-// POSITION, data outside its buffer (naming the glTF field, "accessors[2].count"), or no
-// triangles at all.
+// POSITION, data outside its buffer (naming the glTF field, "accessors[2].count"), a buffer file
+// outside the model's folder (gltf_file_system.h), a node reached twice (the nodes must form a
+// tree), a vertex that is not finite or lies beyond kMaxModelCoordinateM after the node
+// transforms, a model whose memory would exceed the budget, or no triangles at all.
 #include <filesystem>
 #include <string>
 
+#include "aerial/core/memory_budget.h"
 #include "aerial/scene.h"
 
 namespace aerial {
 
-Mesh LoadGltfMesh(const std::filesystem::path& path, const std::string& name);
+// budget: the host memory the model may take while it loads, estimated before each allocation
+// (its JSON parse, then each accessor read); by default the default budget (memory_budget.h).
+Mesh LoadGltfMesh(const std::filesystem::path& path, const std::string& name,
+                  const MemoryBudget& budget = MakeMemoryBudget(std::nullopt, UINT64_MAX));
 
 }  // namespace aerial

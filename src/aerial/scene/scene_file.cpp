@@ -86,7 +86,8 @@ struct Placement {
 
 // terrain: whether [x, y] positions stand on the built-in terrain or on the bare planet.
 Mesh ReadMesh(TomlReader& r, const toml::node& node, const std::string& field,
-              const std::filesystem::path& base_dir, double planet_radius_m, bool terrain) {
+              const std::filesystem::path& base_dir, double planet_radius_m, bool terrain,
+              const MemoryBudget& budget) {
   auto key = [&](std::string_view k) { return TomlReader::Join(field, k); };
   const toml::table& t = r.Table(node, field);
   r.RejectUnknownKeys(t, field,
@@ -129,7 +130,7 @@ Mesh ReadMesh(TomlReader& r, const toml::node& node, const std::string& field,
 
   Mesh mesh;
   try {
-    mesh = LoadGltfMesh(path, path.stem().string());
+    mesh = LoadGltfMesh(path, path.stem().string(), budget);
   } catch (const Error& e) {
     // The loader's own field ("meshes[0].primitives[1].mode") and value go into the message.
     std::string problem = e.value() == path.string() ? e.allowed()
@@ -155,7 +156,8 @@ Mesh ReadMesh(TomlReader& r, const toml::node& node, const std::string& field,
 }  // namespace
 
 Scene ParseSceneToml(std::string_view text, const std::string& where,
-                     const std::filesystem::path& base_dir, double planet_radius_m) {
+                     const std::filesystem::path& base_dir, double planet_radius_m,
+                     const MemoryBudget& budget) {
   // Floats shown in their shortest form ("50"), as the range checks show them.
   TomlReader r(where, FormatNumber);
   toml::table root = r.Parse(text);
@@ -184,7 +186,7 @@ Scene ParseSceneToml(std::string_view text, const std::string& where,
     if (!meshes) r.Fail(n, "mesh", "an array of tables ([[mesh]])");
     for (size_t i = 0; i < meshes->size(); ++i) {
       view.meshes.push_back(
-          ReadMesh(r, *meshes->get(i), TomlReader::Index("mesh", i), base_dir, planet_radius_m, built_in));
+          ReadMesh(r, *meshes->get(i), TomlReader::Index("mesh", i), base_dir, planet_radius_m, built_in, budget));
     }
   });
 
@@ -197,8 +199,12 @@ Scene ParseSceneToml(std::string_view text, const std::string& where,
 }
 
 Scene LoadSceneFile(const std::filesystem::path& path, double planet_radius_m) {
+  return LoadSceneFile(path, planet_radius_m, MakeMemoryBudget(std::nullopt, UINT64_MAX));
+}
+
+Scene LoadSceneFile(const std::filesystem::path& path, double planet_radius_m, const MemoryBudget& budget) {
   Scene scene = ParseSceneToml(ReadTomlFile(path, "--scene"), path.string(), path.parent_path(),
-                               planet_radius_m);
+                               planet_radius_m, budget);
   scene.name = path.stem().string();
   return scene;
 }

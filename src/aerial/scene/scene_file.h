@@ -33,12 +33,18 @@
 #include <string>
 #include <string_view>
 
+#include "aerial/core/memory_budget.h"
 #include "aerial/scene.h"
 
 namespace aerial {
 
 // Parses TOML text; where names the source in messages, and glTF paths resolve against base_dir.
+// Each glTF model loads within budget (gltf_loader.h).
 Scene ParseSceneToml(std::string_view text, const std::string& where,
-                     const std::filesystem::path& base_dir, double planet_radius_m);
+                     const std::filesystem::path& base_dir, double planet_radius_m,
+                     const MemoryBudget& budget = MakeMemoryBudget(std::nullopt, UINT64_MAX));
+
+// LoadSceneFile (aerial/scene.h) with the glTF models' memory budget.
+Scene LoadSceneFile(const std::filesystem::path& path, double planet_radius_m, const MemoryBudget& budget);
 
 }  // namespace aerial

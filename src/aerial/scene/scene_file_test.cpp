@@ -137,6 +137,13 @@ TEST(SceneFile, EachInvalidFieldIsNamedWithItsLine) {
   ExpectError(cube + "position_m = [1, 2, 3, 4]", "mesh[0].position_m", 3);
   ExpectError(cube + "position_m = [1, inf]", "mesh[0].position_m[1]", 3);
   ExpectError(cube + "yaw_deg = nan", "mesh[0].yaw_deg", 3);
+  // Issue 41: finite, but degrees x pi overflowed (every pixel NaN) or the mesh vanished.
+  ExpectError("[camera]\nyaw_deg = 5.8e307", "camera.yaw_deg", 2);
+  ExpectError("[sun]\nazimuth_deg = -1e308", "sun.azimuth_deg", 2);
+  ExpectError(cube + "yaw_deg = 1e308", "mesh[0].yaw_deg", 3);
+  ExpectError("[[mesh]]\ngltf = \"" + std::string(AERIAL_SOURCE_DIR) +
+                  "/tests/data/hostile/translation_1e308.gltf\"",
+              "mesh[0].gltf", 2);
   ExpectError(cube + "[[mesh]]\nscale = 2", "mesh[1].gltf", 3);
   ExpectError("[[mesh]]\ngltf = \"missing.glb\"", "mesh[0].gltf", 2);
 }

@@ -1,6 +1,5 @@
 #include "aerial/scene/scene_limits.h"
 
-#include <charconv>
 #include <cmath>
 
 #include "aerial/error.h"
@@ -14,11 +13,6 @@ void Check(bool ok, double value, const std::string& field, const std::string& a
 }
 
 }  // namespace
-
-std::string FormatNumber(double value) {
-  char buffer[64];
-  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
-}
 
 void CheckCameraPosition(const glm::dvec3& p, double planet_radius_m, const std::string& field,
                          const std::string& where) {
@@ -35,7 +29,10 @@ void CheckCameraPosition(const glm::dvec3& p, double planet_radius_m, const std:
 }
 
 void CheckAzimuthDeg(double degrees, const std::string& field, const std::string& where) {
-  Check(std::isfinite(degrees), degrees, field, "a finite angle (degrees)", where);
+  Check(std::fabs(degrees) <= kMaxAzimuthDeg, degrees, field,
+        "an angle in [-" + FormatNumber(kMaxAzimuthDeg) + ", " + FormatNumber(kMaxAzimuthDeg) +
+            "] degrees (compass angles wrap)",
+        where);
 }
 
 void CheckPitchDeg(double degrees, const std::string& field, const std::string& where) {

@@ -6,6 +6,8 @@
 #include <glm/glm.hpp>
 #include <string>
 
+#include "aerial/core/format_number.h"  // FormatNumber, for the messages of these checks' callers
+
 namespace aerial {
 
 // Finite, with an altitude |p - (0, 0, -R)| - R in [-500, 100000] m: from below the lowest dry
@@ -13,7 +15,11 @@ namespace aerial {
 // views from space.
 void CheckCameraPosition(const glm::dvec3& position_m, double planet_radius_m,
                          const std::string& field, const std::string& where);
-// Any finite angle; compass angles wrap.
+// Compass angles wrap, so any number of turns would do; a bound keeps the arithmetic on them
+// finite (degrees x pi overflowed above 5.7e307, and a camera path interpolates between them)
+// and exact enough: a million degrees is 2,778 turns.
+inline constexpr double kMaxAzimuthDeg = 1e6;
+// [-kMaxAzimuthDeg, kMaxAzimuthDeg], which refuses NaN and infinity too.
 void CheckAzimuthDeg(double degrees, const std::string& field, const std::string& where);
 // [-90, 90]: straight down to straight up.
 void CheckPitchDeg(double degrees, const std::string& field, const std::string& where);
@@ -31,13 +37,15 @@ void CheckZenithDeg(double degrees, const std::string& field, const std::string&
 // there, and a camera 100 km up sees the horizon at 1130 km.
 inline constexpr double kMaxSceneDistanceM = 1e6;
 
+// How far from its own origin a glTF model's vertex may be, after its node transforms: far beyond
+// any model (a scene's scale may shrink it), far inside float's range, so the check that keeps
+// it also keeps NaN and infinity out.
+inline constexpr double kMaxModelCoordinateM = 1e12;
+
 // The farthest vertex of a placed mesh, before its positions are rounded to float: within
 // kMaxSceneDistanceM of the origin (which also keeps them finite as floats). value describes the
 // placement ("scale 1e+300"), for the message.
 void CheckPlacedDistance(double farthest_m, const std::string& field, const std::string& value,
                          const std::string& where);
-
-// Shortest text that reads back as the same double ("0.1", "6360000"), for messages.
-std::string FormatNumber(double value);
 
 }  // namespace aerial

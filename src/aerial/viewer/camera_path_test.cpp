@@ -87,6 +87,13 @@ TEST(CameraPath, MissingKeyIsNamedWithItsForm) {
   }
 }
 
+// "x.x...x", parts parts.
+std::string DottedKey(int parts) {
+  std::string key = "x";
+  for (int i = 1; i < parts; ++i) key += ".x";
+  return key;
+}
+
 const std::string kFirst = "[[keyframe]]\ntime_s = 0.0\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 0.0\npitch_deg = 0.0\n";
 
 INSTANTIATE_TEST_SUITE_P(
@@ -107,7 +114,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadPath{kFirst + "[[keyframe]]\ntime_s = 1.0\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 0.0\npitch_deg = 0.0\nroll_deg = 1.0\n",
                 "keyframe[1].roll_deg"},
         BadPath{kFirst + "[[keyframe]]\ntime_s = \"soon\"\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 0.0\npitch_deg = 0.0\n",
-                "keyframe[1].time_s"}),
+                "keyframe[1].time_s"},
+        // Issue 41: a finite yaw whose arithmetic overflowed to NaN frames.
+        BadPath{kFirst + "[[keyframe]]\ntime_s = 1.0\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 1.7e308\npitch_deg = 0.0\n",
+                "keyframe[1].yaw_deg"},
+        // Issue 41: 40,000 dotted parts overflowed toml++'s stack.
+        BadPath{DottedKey(40000) + " = 1\n", "TOML nesting"}),
     [](const ::testing::TestParamInfo<BadPath>& info) { return "case" + std::to_string(info.index); });
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "aerial/error.h"
+#include "aerial/vk/driver_manifests.h"
 
 namespace aerial::vk {
 namespace {
@@ -65,6 +66,7 @@ bool HasLayer(const ::vk::raii::Context& loader, const char* name) {
 int Context::ValidationMessageCount() { return g_validation_messages.load(); }
 
 Context::Context(const ContextCreateInfo& info) {
+  CheckDriverManifests();  // before the loader opens them
   validation_ = info.validation || EnvironmentFlag("AERIAL_VALIDATION");
   const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
   if (validation_ && !HasLayer(loader_, kValidationLayer))
@@ -88,6 +90,9 @@ Context::Context(const ContextCreateInfo& info) {
                                           .ppEnabledExtensionNames = extensions.data()});
   } catch (const ::vk::IncompatibleDriverError& e) {
     ThrowNoDriver(e.what());
+  } catch (const ::vk::OutOfHostMemoryError& e) {
+    BlameDriverManifests(e.what());
+    throw;
   }
   // Performance hints (e.g. GENERAL layouts on copies, which aerial uses on purpose) are not
   // validation errors; warnings and errors of the general and validation kinds all count.

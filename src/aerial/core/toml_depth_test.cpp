@@ -1,0 +1,63 @@
+#include "aerial/core/toml_depth.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "aerial/core/input_limits.h"
+#include "aerial/core/toml_reader.h"
+#include "aerial/error.h"
+
+namespace aerial {
+namespace {
+
+// "x.x.x = 1" (as a key) or "[x.x.x]" (as a header) with parts key parts.
+std::string DottedKey(size_t parts, bool header = false) {
+  std::string text = header ? "[x" : "x";
+  for (size_t i = 1; i < parts; ++i) text += ".x";
+  text += header ? "]\n" : " = 1\n";
+  return text;
+}
+
+TEST(TomlDepth, CountsKeyPartsAndBrackets) {
+  EXPECT_EQ(TomlNestingDepth(""), 0u);
+  EXPECT_EQ(TomlNestingDepth("a = 1\n"), 1u);
+  EXPECT_EQ(TomlNestingDepth("a.b.c = 1\n"), 3u);
+  EXPECT_EQ(TomlNestingDepth("x = [[1]]\n"), 3u);
+  EXPECT_EQ(TomlNestingDepth("[a.b]\nc = {d = [1]}\n"), 3u) << "the deepest, not the sum";
+  EXPECT_EQ(TomlNestingDepth("c = {d = [1.5]}\n"), 4u) << "a number's dot counts too";
+}
+
+TEST(TomlDepth, IgnoresStringsAndComments) {
+  EXPECT_EQ(TomlNestingDepth(R"(a = "[[[...\"[[" # [[[...)"), 1u);
+  EXPECT_EQ(TomlNestingDepth("a = '[[[...'\nb = '''\n[[[\n'''\nc = \"\"\"\n[[[\\\"\"\"\"\n"), 1u);
+  EXPECT_EQ(TomlNestingDepth("\"a.b\".\"c.d\" = 1\n"), 2u) << "dots between quoted parts count";
+}
+
+TEST(TomlDepth, CapIsInclusive) {
+  EXPECT_NO_THROW(CheckTomlDepth(DottedKey(kMaxTomlDepth), "x.toml"));
+  try {
+    CheckTomlDepth(DottedKey(kMaxTomlDepth + 1), "x.toml");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.field(), "TOML nesting");
+    EXPECT_EQ(e.value(), std::to_string(kMaxTomlDepth + 1) + " levels");
+    EXPECT_EQ(e.where(), "x.toml");
+  }
+}
+
+// Issue 41: 40,000 dotted parts (80 KB) overflowed toml++'s stack (SIGSEGV) in every reader.
+TEST(TomlDepth, ReaderRefusesAHugeDottedKeyBeforeParsing) {
+  for (const std::string& text : {DottedKey(40000), DottedKey(40000, true)}) {
+    try {
+      TomlReader("deep.toml").Parse(text);
+      FAIL() << "parsed";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.field(), "TOML nesting");
+      EXPECT_EQ(e.where(), "deep.toml");
+    }
+  }
+}
+
+}  // namespace
+}  // namespace aerial

@@ -1,0 +1,13 @@
+#pragma once
+// A NaN or an infinity in precomputed tables is an error naming the pass that wrote the table, never
+// a sky of NaN pixels with exit status 0: checked on the texels read back after a precompute (the
+// read-back the cache write needs anyway), before they are used or cached.
+#include "aerial/precompute/table_cache.h"
+
+namespace aerial {
+
+// Throws Error("precompute pass \"<pass>\"", "NaN or infinity in table \"<name>\" at texel
+// (x, y, z)", ...) for the first non-finite texel.
+void CheckFiniteTables(const TableCache& tables);
+
+}  // namespace aerial
