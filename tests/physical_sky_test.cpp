@@ -111,24 +111,18 @@ double Noise(const bench::RegionAccuracy& region) {
   return noise;
 }
 
-// The same bounds hold whether the tables are read through lavapipe's samplers (which interpolate
-// in float) or with their weights rounded to 1/256 of a texel as a GPU's samplers do
-// (TableFiltering::kEmulatedHardware, table_read.glsl): measured, every region moved by less than
-// the reference's noise (the largest: afternoon sky radiance on the ground, 440 nm, 0.40% to 0.42%).
-// So the sampler's precision is not what moved four regions on an NVIDIA GPU (issue 43).
-class PhysicalSky : public GpuTest, public ::testing::WithParamInterface<TableFiltering> {};
+class PhysicalSky : public GpuTest {};
 
-TEST_P(PhysicalSky, DefaultTablesAgainstTheTargets) {
+TEST_F(PhysicalSky, DefaultTablesAgainstTheTargets) {
   bench::SkyReference reference = bench::ReadSkyReference(kReferenceFile);
   ASSERT_EQ(reference.orders, reference::kAllOrders);
-  PrecomputeOptions options = PrecomputeOptions::Default();
-  options.filtering = GetParam();
-  ASSERT_EQ(options.RepresentedOrders(), reference::kAllOrders);
-  // Through the public API; the sampler's tables from the test cache that FullTables() fills.
-  if (options.filtering == TableFiltering::kSampler) FullTables();
+  ASSERT_EQ(PrecomputeOptions::Default().RepresentedOrders(), reference::kAllOrders);
+  // Through the public API, from the test cache that FullTables() fills.
+  FullTables();
   Device device;
-  Tables tables = Tables::LoadOrPrecompute(device, AtmosphereParameters::Earth(), options);
-  if (options.filtering == TableFiltering::kSampler) ASSERT_TRUE(tables.from_cache());
+  Tables tables =
+      Tables::LoadOrPrecompute(device, AtmosphereParameters::Earth(), PrecomputeOptions::Default());
+  ASSERT_TRUE(tables.from_cache());
   std::vector<bench::RegionAccuracy> regions = bench::CompareSkyWithTables(tables, reference);
   std::printf("%s\n%s", bench::FormatSkyAccuracy(regions).c_str(), bench::FormatWorstSamples(regions).c_str());
   ASSERT_EQ(regions.size(), std::size(kRegions));  // 3 quantities x 4 bands x 3 altitudes
@@ -150,12 +144,6 @@ TEST_P(PhysicalSky, DefaultTablesAgainstTheTargets) {
     EXPECT_GE(region.Median(), measured->median - noise) << name << " (median): better than recorded";
   }
 }
-
-INSTANTIATE_TEST_SUITE_P(Filtering, PhysicalSky,
-                         ::testing::Values(TableFiltering::kSampler, TableFiltering::kEmulatedHardware),
-                         [](const ::testing::TestParamInfo<TableFiltering>& info) {
-                           return info.param == TableFiltering::kSampler ? "Sampler" : "EmulatedHardware";
-                         });
 
 // The stored samples are today's reference: every 52nd is recomputed with its own path count and
 // seed, which reproduces it to rounding (the reference is deterministic for a seed and a path

@@ -26,7 +26,7 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # GPU test suites (fixtures on GpuTest, and the command-line tests that render or precompute).
 # Everything else runs: the CPU-only tests, and the bad-input tests of the command (hostile files,
 # full disks, resource limits), most of which end before the GPU is used.
-gpu_suites="Render.*:VdbExport.*:VdbPaths.*:TableCacheIntegration.*:TableSanity.*:*PhysicalSky.*"
+gpu_suites="Render.*:VdbExport.*:VdbPaths.*:TableCacheIntegration.*:TableSanity.*:PhysicalSky.*"
 gpu_suites+=":ViewerToneMap.*:TablesVsReference.*:GraphicsPipelineTest.*:SceneSurfaceRender.*"
 gpu_suites+=":ViewerDebugViews.*:LeanFrame.*:Lut3d.*:MappingRoundTrip.*:GoldenImage.*"
 gpu_suites+=":Cli.*:ViewCli.*:BenchQuick.*:ViewerSession.*:Exr.*:Png.*:ImageWriter.*"

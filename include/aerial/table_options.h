@@ -9,18 +9,11 @@ namespace aerial {
 
 enum class LutVariant { k4D, k3D };
 enum class TablePrecision { kFloat32, kFloat16 };
-// Where reads of the tables interpolate between texels (shaders/include/table_read.glsl): the
-// sampler (one tap; real GPUs quantize its weights to 1/256 of a texel, lavapipe does not), the
-// shader in float (the same on every device, 4 or 8 fetches a read), or the shader with the
-// weights rounded to 1/256 (a GPU's sampler emulated, to measure its effect on a CPU driver).
-enum class TableFiltering { kSampler = 0, kShader = 1, kEmulatedHardware = 2 };
 
 std::string ToString(LutVariant variant);         // "4d" / "3d"
 LutVariant ParseLutVariant(const std::string& text, const std::string& field);  // throws Error
 std::string ToString(TablePrecision precision);   // "float32" / "float16"
 TablePrecision ParseTablePrecision(const std::string& text, const std::string& field);  // throws Error
-std::string ToString(TableFiltering filtering);   // "sampler" / "shader" / "emulated-hardware"
-TableFiltering ParseTableFiltering(const std::string& text, const std::string& field);  // throws Error
 
 struct TableResolution {
   int transmittance_mu = 256;
@@ -89,7 +82,6 @@ struct PrecomputeOptions {
   // anywhere against float32 (docs/accuracy.md; Mie and J_ms stay float32). The 3D and the small tables:
   // float32.
   TablePrecision precision = TablePrecision::kFloat16;
-  TableFiltering filtering = TableFiltering::kSampler;
   int orders = 4;
   // After the last order, add the orders beyond it as a geometric series per texel (the tables then
   // stand for the whole series); off: exactly orders 1..N. Needs orders >= 3.

@@ -41,7 +41,7 @@ layout(std140, set = 0, binding = 0) uniform AtmosphereBlock {
   float sun_angular_radius;
   float mie_phase_g;
   float mu_s_min;
-  int table_filtering;          // TABLE_FILTERING_* (table_read.glsl)
+  float pad0;
   float pad1;
   float pad2;
   ivec4 transmittance_size;     // x: mu, y: r.

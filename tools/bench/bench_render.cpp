@@ -50,7 +50,6 @@ struct BenchOptions {
   int width = 1280, height = 720, frames = 9, warmup = 2;
   std::string lut = "4d", froxels = "32x32x32", preset = "noon", json_file;
   std::string precision;  // empty: the variant's default
-  std::string table_filtering = "sampler";
   double terrain_error_px = aerial::kDefaultTerrainErrorPx;
 };
 
@@ -80,7 +79,6 @@ void Bench(const BenchOptions& cli) {
   aerial::PrecomputeOptions precompute =
       aerial::PrecomputeOptions::Default(aerial::ParseLutVariant(cli.lut, "--lut"));
   if (!cli.precision.empty()) precompute.precision = aerial::ParseTablePrecision(cli.precision, "--precision");
-  precompute.filtering = aerial::ParseTableFiltering(cli.table_filtering, "--table-filtering");
   if (!cli.json_file.empty()) aerial::CheckWritable(cli.json_file);
 
   aerial::AtmosphereParameters atmosphere = aerial::AtmosphereParameters::Earth();
@@ -239,9 +237,6 @@ int main(int argc, char** argv) {
   app.add_option("--precision", cli.precision,
                  "Scattering tables' floats: float16 or float32 (default: the variant's)")
       ->check(CLI::IsMember({"float16", "float32"}));
-  app.add_option("--table-filtering", cli.table_filtering,
-                 "Where table reads interpolate: sampler, shader or emulated-hardware (aerial::TableFiltering)")
-      ->check(CLI::IsMember({"sampler", "shader", "emulated-hardware"}));
   app.add_option("--froxels", cli.froxels, "Froxel grid WxHxD");
   app.add_option("--preset", cli.preset, "Built-in scene")->check(CLI::IsMember(aerial::PresetNames()));
   app.add_option("--terrain-error-px", cli.terrain_error_px, "Terrain level of detail's error bound (px)");

@@ -6,7 +6,6 @@
 // the GLSL compiler's layout.
 #include <array>
 #include <cstddef>
-#include <cstdint>
 
 namespace aerial {
 
@@ -25,9 +24,7 @@ struct alignas(16) AtmosphereUniforms {
   std::array<GpuDensityLayer, 2> mie_density;
   std::array<GpuDensityLayer, 2> absorption_density;
   float bottom_radius, top_radius, sun_angular_radius, mie_phase_g;
-  float mu_s_min;
-  int32_t table_filtering;  // TableFiltering (shaders/include/table_read.glsl)
-  float pad1, pad2;
+  float mu_s_min, pad0, pad1, pad2;
   std::array<int, 4> transmittance_size;
   std::array<int, 4> irradiance_size;
   std::array<int, 4> scattering_size;     // r, mu, mu_s, nu

@@ -23,11 +23,6 @@ void TableOptions::AddTo(CLI::App& command) {
                      "tables, float32 for the 3D and the small ones)")
       ->check(CLI::IsMember({"float16", "float32"}));
   command.add_flag("--half", half_precision, "Store the scattering tables as 16-bit floats (--precision float16)");
-  command.add_option("--table-filtering", table_filtering,
-                     "Where table reads interpolate: sampler (one tap; GPUs round its weights to 1/256), "
-                     "shader (in float, the same on every device) or emulated-hardware (the shader with "
-                     "weights rounded as a GPU's sampler does)")
-      ->check(CLI::IsMember({"sampler", "shader", "emulated-hardware"}));
   command.add_flag("--small-tables", small_tables, "Quarter-resolution tables (tests, quick looks)");
   command.add_option("--transmittance-size", transmittance_size, "Transmittance table MU,R (default 256,64)")
       ->delimiter(',')->expected(2)->default_str("");
@@ -84,7 +79,6 @@ PrecomputeOptions TableOptions::MakePrecomputeOptions() const {
     throw Error("--precision", "float32 with --half", "float16 with --half (--half means float16), or no --half");
   if (half_precision) options.precision = TablePrecision::kFloat16;
   if (!precision.empty()) options.precision = ParseTablePrecision(precision, "--precision");
-  options.filtering = ParseTableFiltering(table_filtering, "--table-filtering");
   options.Validate();
   return options;
 }

@@ -26,7 +26,6 @@ struct TableOptions {
   std::string series_tail = "on";
   bool half_precision = false;
   std::string precision;  // empty: the variant's default
-  std::string table_filtering = "sampler";
   bool small_tables = false;
   std::vector<int> transmittance_size;  // mu, r
   std::vector<int> irradiance_size;     // mu_s, r

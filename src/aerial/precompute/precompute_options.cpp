@@ -28,21 +28,6 @@ TablePrecision ParseTablePrecision(const std::string& text, const std::string& f
   throw Error(field, text, "float16 or float32");
 }
 
-std::string ToString(TableFiltering filtering) {
-  switch (filtering) {
-    case TableFiltering::kSampler: return "sampler";
-    case TableFiltering::kShader: return "shader";
-    case TableFiltering::kEmulatedHardware: return "emulated-hardware";
-  }
-  return std::to_string(int(filtering));
-}
-
-TableFiltering ParseTableFiltering(const std::string& text, const std::string& field) {
-  for (TableFiltering f : {TableFiltering::kSampler, TableFiltering::kShader, TableFiltering::kEmulatedHardware})
-    if (text == ToString(f)) return f;
-  throw Error(field, text, "sampler, shader or emulated-hardware");
-}
-
 PrecomputeOptions PrecomputeOptions::Default(LutVariant variant) {
   PrecomputeOptions options;
   options.variant = variant;
@@ -178,7 +163,7 @@ int PrecomputeOptions::RepresentedOrders() const {
 }
 
 uint64_t PrecomputeOptions::Hash() const {
-  const int values[] = {kTableLayout, int(variant), int(precision), int(filtering), orders, int(close_series),
+  const int values[] = {kTableLayout, int(variant), int(precision), orders, int(close_series),
                         resolution.transmittance_mu, resolution.transmittance_r,
                         resolution.irradiance_mu_s, resolution.irradiance_r, resolution.scattering_r,
                         resolution.scattering_mu, resolution.scattering_mu_s, resolution.scattering_nu,
@@ -200,8 +185,7 @@ uint64_t PrecomputeOptions::Hash() const {
 std::string PrecomputeOptions::Describe() const {
   const TableResolution& r = resolution;
   return ToString(variant) + " " + ToString(precision) +
-         (filtering == TableFiltering::kSampler ? "" : ", read by the " + ToString(filtering) + " filter") + ", " +
-         std::to_string(orders) + " orders" + (ClosesSeries() ? " + series tail" : "") +
+         ", " + std::to_string(orders) + " orders" + (ClosesSeries() ? " + series tail" : "") +
          ", transmittance " +
          std::to_string(r.transmittance_mu) + "x" + std::to_string(r.transmittance_r) +
          ", irradiance " + std::to_string(r.irradiance_mu_s) + "x" + std::to_string(r.irradiance_r) +
