@@ -13,6 +13,13 @@ void TableOptions::AddTo(CLI::App& command) {
                      "Atmosphere parameters (TOML); default: the built-in \"earth\"");
   command.add_option("--lut", lut, "Scattering table variant: 4d (r, mu, mu_s, nu) or 3d (nu dropped)")
       ->check(CLI::IsMember({"4d", "3d"}));
+  command.add_option("--colour", colour,
+                     "What the tables' channels hold: rgb (radiance at the atmosphere's three wavelengths, "
+                     "default) or spectral (--wavelengths over 360-830 nm, converted to linear sRGB with "
+                     "the CIE 1931 observer)")
+      ->check(CLI::IsMember({"rgb", "spectral"}));
+  command.add_option("--wavelengths", wavelengths,
+                     "Wavelengths of --colour spectral: a multiple of 3 in [3, 48] (default 12)");
   command.add_option("--orders", orders, "Scattering orders to precompute (1-16)")->check(CLI::Range(1, 16));
   command.add_option("--series-tail", series_tail,
                      "After the last order, add the orders beyond it as a geometric series: on (default; "
@@ -74,6 +81,12 @@ PrecomputeOptions TableOptions::MakePrecomputeOptions() const {
     options.resolution.multiple_density_nu = multiple_density_size[3];
   }
   options.orders = orders;
+  options.colour = ParseColourMode(colour, "--colour");
+  if (wavelengths) {
+    if (options.colour != ColourMode::kSpectral)
+      throw Error("--wavelengths", std::to_string(*wavelengths), "only with --colour spectral");
+    options.spectral_wavelengths = *wavelengths;
+  }
   options.close_series = series_tail == "on";
   if (half_precision && precision == "float32")
     throw Error("--precision", "float32 with --half", "float16 with --half (--half means float16), or no --half");

@@ -22,6 +22,8 @@ inline constexpr const char* kTableOptionsGroup = "Tables, device and memory";
 struct TableOptions {
   std::filesystem::path atmosphere_file;
   std::string lut = "4d";
+  std::string colour = "rgb";
+  std::optional<int> wavelengths;
   int orders = 4;
   std::string series_tail = "on";
   bool half_precision = false;

@@ -14,6 +14,9 @@
 #include "aerial/core/toml_reader.h"
 #include "aerial/error.h"
 #include "aerial/probe.h"
+#include "aerial/probe/spectral_reference.h"
+#include "aerial/spectrum/colour.h"
+#include "aerial/spectrum/spectral_sampling.h"
 
 namespace aerial::cli {
 namespace {
@@ -27,6 +30,18 @@ struct ProbeOptions {
 
 nlohmann::json ToJson(const Spectrum& s) { return nlohmann::json::array({s[0], s[1], s[2]}); }
 
+// A radiance's (or irradiance's) three channels read as linear sRGB, in XYZ, with its luminance in
+// cd/m^2 (or illuminance in lux): exact for spectral tables; for rgb ones, the three wavelengths
+// taken as sRGB primaries, as the renderer shows them.
+nlohmann::json ColourJson(const Spectrum& linear_srgb, const char* luminance_key) {
+  Spectrum xyz = spectrum::Multiply(spectrum::XyzFromLinearSrgb(), linear_srgb);
+  std::array<double, 2> uv = spectrum::ChromaticityUv(xyz);
+  return {{"linear_srgb", ToJson(linear_srgb)},
+          {"xyz", ToJson(xyz)},
+          {"u_v", nlohmann::json::array({uv[0], uv[1]})},
+          {luminance_key, spectrum::LuminanceCdM2(xyz)}};
+}
+
 void RunProbe(const ProbeOptions& options) {
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
   ValidateViewAngles(options.view, atmosphere);
@@ -39,7 +54,10 @@ void RunProbe(const ProbeOptions& options) {
 
   ProbeResult result;
   if (options.reference) {
-    result = ProbeReference(atmosphere, ray, options.distance_m, precompute.RepresentedOrders());
+    result = precompute.colour == ColourMode::kSpectral
+                 ? ProbeReferenceSpectral(atmosphere, ray, options.distance_m, precompute.RepresentedOrders(),
+                                          precompute.spectral_wavelengths)
+                 : ProbeReference(atmosphere, ray, options.distance_m, precompute.RepresentedOrders());
   } else {
     Device device(options.tables.MakeDeviceOptions());
     options.tables.MakeMemoryBudget(device.largest_heap_bytes()).Check(TableMemoryUses(precompute));
@@ -52,7 +70,11 @@ void RunProbe(const ProbeOptions& options) {
   json["source"] = options.reference ? "reference" : "tables";
   json["lut"] = options.tables.lut;
   json["atmosphere"] = atmosphere.name;
-  json["wavelengths_nm"] = ToJson(atmosphere.wavelengths_nm);
+  json["colour"] = options.tables.colour;
+  if (precompute.colour == ColourMode::kSpectral)
+    json["wavelengths_nm"] = spectrum::SpectralSampling(precompute.spectral_wavelengths).wavelengths_nm();
+  else
+    json["wavelengths_nm"] = ToJson(atmosphere.wavelengths_nm);
   json["altitude_m"] = options.view.altitude_m;
   json["view_zenith_deg"] = options.view.view_zenith_deg;
   json["sun_zenith_deg"] = options.view.sun_zenith_deg;
@@ -62,8 +84,12 @@ void RunProbe(const ProbeOptions& options) {
   json["sun_irradiance"] = ToJson(result.sun_irradiance);
   json["sky_irradiance"] = ToJson(result.sky_irradiance);
   json["solar_radiance"] = ToJson(result.solar_radiance);
+  json["sky_radiance_colour"] = ColourJson(result.sky_radiance, "luminance_cd_m2");
+  json["sun_irradiance_colour"] = ColourJson(result.sun_irradiance, "illuminance_lux");
+  json["sky_irradiance_colour"] = ColourJson(result.sky_irradiance, "illuminance_lux");
   if (options.distance_m) {
     json["distance_m"] = *options.distance_m;
+    json["radiance_to_point_colour"] = ColourJson(result.radiance_to_point, "luminance_cd_m2");
     json["radiance_to_point"] = ToJson(result.radiance_to_point);
     json["transmittance_to_point"] = ToJson(result.transmittance_to_point);
   }

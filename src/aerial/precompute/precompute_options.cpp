@@ -28,6 +28,14 @@ TablePrecision ParseTablePrecision(const std::string& text, const std::string& f
   throw Error(field, text, "float16 or float32");
 }
 
+std::string ToString(ColourMode colour) { return colour == ColourMode::kRgb ? "rgb" : "spectral"; }
+
+ColourMode ParseColourMode(const std::string& text, const std::string& field) {
+  if (text == "rgb") return ColourMode::kRgb;
+  if (text == "spectral") return ColourMode::kSpectral;
+  throw Error(field, text, "rgb or spectral");
+}
+
 PrecomputeOptions PrecomputeOptions::Default(LutVariant variant) {
   PrecomputeOptions options;
   options.variant = variant;
@@ -118,6 +126,10 @@ void CheckNuAxis(const std::string& field, int value, LutVariant variant) {
 
 void PrecomputeOptions::Validate() const {
   CheckRange("orders", orders, 1, 16);
+  // 48 is one wavelength per 10 nm of the solar and ozone data; each group of 3 is a precompute.
+  if (colour == ColourMode::kSpectral && (spectral_wavelengths % 3 != 0 || spectral_wavelengths < 3 ||
+                                          spectral_wavelengths > 48))
+    throw Error("wavelengths", std::to_string(spectral_wavelengths), "a multiple of 3 in [3, 48]");
   const TableResolution& r = resolution;
   CheckRange("transmittance width (mu)", r.transmittance_mu, 4, 4096);
   CheckRange("transmittance height (r)", r.transmittance_r, 4, 4096);
@@ -164,6 +176,7 @@ int PrecomputeOptions::RepresentedOrders() const {
 
 uint64_t PrecomputeOptions::Hash() const {
   const int values[] = {kTableLayout, int(variant), int(precision), orders, int(close_series),
+                        int(colour), colour == ColourMode::kSpectral ? spectral_wavelengths : 0,
                         resolution.transmittance_mu, resolution.transmittance_r,
                         resolution.irradiance_mu_s, resolution.irradiance_r, resolution.scattering_r,
                         resolution.scattering_mu, resolution.scattering_mu_s, resolution.scattering_nu,
@@ -184,7 +197,9 @@ uint64_t PrecomputeOptions::Hash() const {
 
 std::string PrecomputeOptions::Describe() const {
   const TableResolution& r = resolution;
-  return ToString(variant) + " " + ToString(precision) +
+  std::string colour_text =
+      colour == ColourMode::kRgb ? "rgb" : "spectral " + std::to_string(spectral_wavelengths) + " wavelengths";
+  return ToString(variant) + " " + ToString(precision) + ", " + colour_text +
          ", " + std::to_string(orders) + " orders" + (ClosesSeries() ? " + series tail" : "") +
          ", transmittance " +
          std::to_string(r.transmittance_mu) + "x" + std::to_string(r.transmittance_r) +

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "aerial/core/progress.h"
+#include "aerial/precompute/spectral_precompute.h"
 #include "aerial/vk/compute_pipeline.h"
 
 namespace aerial {
@@ -173,12 +174,22 @@ TableBytes PrecomputeScratchMemory(const PrecomputeOptions& options) {
 }
 
 int PrecomputePassCount(const PrecomputeOptions& options) {
+  if (options.colour == ColourMode::kSpectral)
+    return SpectralGroupCount(options) * PrecomputePassCount(SpectralGroupOptions(options)) + 1;
   // transmittance, sun band, direct irradiance, single scattering, 6 passes per order >= 2, the
   // ground irradiance of the last order, and for half floats the conversion.
   return 4 + 6 * (options.orders - 1) + 1 + (options.precision == TablePrecision::kFloat16 ? 1 : 0);
 }
 
 std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progress) {
+  std::vector<vk::PassTime> times = tables.options().colour == ColourMode::kSpectral
+                                        ? PrecomputeSpectral(tables, progress)
+                                        : PrecomputeRadiance(tables, progress);
+  if (progress) progress->Finish();
+  return times;
+}
+
+std::vector<vk::PassTime> PrecomputeRadiance(AtmosphereTables& tables, Progress* progress) {
   const vk::Context& context = tables.context();
   Pipelines pipelines(context);
   Scratch scratch(context, tables);
@@ -344,7 +355,6 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
       BlitConvert(cmd, *scratch.multiple_f32, tables.multiple());
     });
   }
-  if (progress) progress->Finish();
   return times;
 }
 

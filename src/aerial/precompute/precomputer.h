@@ -11,8 +11,13 @@ namespace aerial {
 
 class Progress;
 
-// Fills `tables`. Returns the GPU time of every pass, in order. `progress` may be null.
+// Fills `tables`, in either colour mode. Returns the GPU time of every pass, in order. `progress`
+// may be null.
 std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progress);
+
+// Fills `tables` with radiance at the three wavelengths of tables.uniforms() (the rgb mode, and each
+// group of the spectral one); leaves `progress` unfinished.
+std::vector<vk::PassTime> PrecomputeRadiance(AtmosphereTables& tables, Progress* progress);
 
 // Number of passes Precompute runs for these options (progress bars size themselves with it).
 int PrecomputePassCount(const PrecomputeOptions& options);

@@ -1,0 +1,69 @@
+#include "aerial/probe/spectral_reference.h"
+
+#include <cmath>
+
+#include "aerial/spectrum/spectral_atmosphere.h"
+
+namespace aerial {
+namespace {
+
+using spectrum::Matrix3;
+
+struct Accumulator {
+  Spectrum value{};
+  void Add(const Matrix3& m, const Spectrum& group) {
+    Spectrum colour = spectrum::Multiply(m, group);
+    for (int c = 0; c < 3; ++c) value[c] += colour[c];
+  }
+  // Independent errors: the sum of the squares of each weighted error.
+  void AddVariance(const Matrix3& m, const Spectrum& std_error) {
+    for (int c = 0; c < 3; ++c)
+      for (int k = 0; k < 3; ++k) value[c] += std::pow(m[c][k] * std_error[k], 2.0);
+  }
+  Spectrum Sqrt() const { return {std::sqrt(value[0]), std::sqrt(value[1]), std::sqrt(value[2])}; }
+};
+
+Spectrum Times(const Spectrum& a, const Spectrum& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
+Spectrum Over(const Spectrum& a, const Spectrum& b) { return {a[0] / b[0], a[1] / b[1], a[2] / b[2]}; }
+
+}  // namespace
+
+ProbeResult ProbeReferenceSpectral(const AtmosphereParameters& atmosphere, const RayParameters& ray,
+                                   std::optional<double> distance_m, int orders, int wavelengths) {
+  const spectrum::SpectralSampling sampling(wavelengths);
+  const spectrum::SpectralAtmosphere spectral(atmosphere);
+  Accumulator sky, sky_variance, irradiance, irradiance_variance, to_point, to_point_variance;
+  Accumulator sun_irradiance, solar_radiance, sun, sunlit, sunlit_to_point;
+  for (int g = 0; g < sampling.groups(); ++g) {
+    AtmosphereParameters group = spectral.At(sampling.Group(g));
+    ProbeResult r = ProbeReference(group, ray, distance_m, orders);
+    const Matrix3 m = sampling.GroupToLinearSrgb(g);
+    sky.Add(m, r.sky_radiance);
+    sky_variance.AddVariance(m, r.sky_radiance_std_error);
+    irradiance.Add(m, r.sky_irradiance);
+    irradiance_variance.AddVariance(m, r.sky_irradiance_std_error);
+    to_point.Add(m, r.radiance_to_point);
+    to_point_variance.AddVariance(m, r.radiance_to_point_std_error);
+    sun_irradiance.Add(m, r.sun_irradiance);
+    solar_radiance.Add(m, r.solar_radiance);
+    sun.Add(m, group.solar_irradiance);
+    sunlit.Add(m, Times(group.solar_irradiance, r.transmittance));
+    sunlit_to_point.Add(m, Times(group.solar_irradiance, r.transmittance_to_point));
+  }
+  ProbeResult result{};
+  result.sky_radiance = sky.value;
+  result.sky_radiance_std_error = sky_variance.Sqrt();
+  result.sky_irradiance = irradiance.value;
+  result.sky_irradiance_std_error = irradiance_variance.Sqrt();
+  result.sun_irradiance = sun_irradiance.value;
+  result.solar_radiance = solar_radiance.value;
+  result.transmittance = Over(sunlit.value, sun.value);
+  if (distance_m) {
+    result.radiance_to_point = to_point.value;
+    result.radiance_to_point_std_error = to_point_variance.Sqrt();
+    result.transmittance_to_point = Over(sunlit_to_point.value, sun.value);
+  }
+  return result;
+}
+
+}  // namespace aerial

@@ -1,0 +1,17 @@
+#pragma once
+// The CPU reference in colour: ProbeReference at every wavelength of a spectral sampling (the
+// atmosphere extended as the spectral precompute extends it, SpectralAtmosphere), converted to
+// linear sRGB by the same CIE tables as the spectral tables. It shares no code with the shaders.
+#include <optional>
+
+#include "aerial/probe.h"
+
+namespace aerial {
+
+// Radiances and irradiances are converted linearly; the two transmittances as the spectral
+// transmittance table is, weighted by sunlight (LinearSrgb(E * T) / LinearSrgb(E)); standard errors
+// propagate through the conversion's weights as independent errors.
+ProbeResult ProbeReferenceSpectral(const AtmosphereParameters& atmosphere, const RayParameters& ray,
+                                   std::optional<double> distance_m, int orders, int wavelengths);
+
+}  // namespace aerial
