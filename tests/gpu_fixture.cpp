@@ -10,7 +10,6 @@ vk::Context& SharedContext() {
   return context;
 }
 
-namespace {
 const AtmosphereTables& CachedTables(const PrecomputeOptions& options) {
   // The context first: statics are destroyed in reverse order of construction, and the tables
   // must go before their device.
@@ -24,7 +23,6 @@ const AtmosphereTables& CachedTables(const PrecomputeOptions& options) {
   }
   return *it->second.tables;
 }
-}  // namespace
 
 const AtmosphereTables& FullTables(int orders, LutVariant variant) {
   PrecomputeOptions options = PrecomputeOptions::Default(variant);

@@ -15,6 +15,8 @@ namespace aerial::testing {
 
 vk::Context& SharedContext();
 
+// Earth's tables for these options, precomputed once per process or read from the test cache.
+const AtmosphereTables& CachedTables(const PrecomputeOptions& options);
 // Default resolutions (256x64, 64x32, R32 MU128 MU_S36 NU8, or NU1 for 3D), float32.
 const AtmosphereTables& FullTables(int orders = 4, LutVariant variant = LutVariant::k4D);
 // Quarter-size tables for tests that check structure rather than accuracy.

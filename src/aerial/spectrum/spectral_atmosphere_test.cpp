@@ -1,0 +1,52 @@
+#include "aerial/spectrum/spectral_atmosphere.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace aerial::spectrum {
+namespace {
+
+void ExpectRelativelyNear(const Spectrum& a, const Spectrum& b, double tolerance, const char* what) {
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(a[i], b[i], tolerance * std::abs(b[i])) << what << " " << i;
+}
+
+// Extended from Earth's three wavelengths and read back at them, the atmosphere is Earth again:
+// Rayleigh's lambda^-4 and Mie's flat law exactly, ozone and the sun to the 4 digits Earth keeps.
+TEST(SpectralAtmosphere, ReproducesItsThreeWavelengths) {
+  AtmosphereParameters earth = AtmosphereParameters::Earth();
+  AtmosphereParameters again = SpectralAtmosphere(earth).At(earth.wavelengths_nm);
+  ExpectRelativelyNear(again.rayleigh_scattering, earth.rayleigh_scattering, 1e-12, "rayleigh");
+  ExpectRelativelyNear(again.mie_scattering, earth.mie_scattering, 1e-12, "mie scattering");
+  ExpectRelativelyNear(again.mie_extinction, earth.mie_extinction, 1e-12, "mie extinction");
+  ExpectRelativelyNear(again.absorption_extinction, earth.absorption_extinction, 1e-3, "ozone");
+  ExpectRelativelyNear(again.solar_irradiance, earth.solar_irradiance, 1e-3, "sun");
+  ExpectRelativelyNear(again.ground_albedo, earth.ground_albedo, 1e-12, "albedo");
+}
+
+// Bruneton 2017's Rayleigh fit at 400 nm: 1.24062e-6 / 0.4^4 m^-1.
+TEST(SpectralAtmosphere, ExtendsRayleighAsLambdaToTheMinusFour) {
+  SpectralAtmosphere earth(AtmosphereParameters::Earth());
+  EXPECT_NEAR(earth.RayleighScattering(400.0) / (1.24062e-6 / std::pow(0.4, 4.0)), 1.0, 1e-9);
+}
+
+// In linear sRGB, each coefficient times the sun's colour is the colour of the sunlight the
+// coefficient weights: single scattering in thin air is then exact in every channel.
+TEST(SpectralAtmosphere, LinearSrgbCoefficientsWeightTheSunlight) {
+  AtmosphereParameters earth = AtmosphereParameters::Earth();
+  SpectralAtmosphere spectral(earth);
+  SpectralSampling sampling(12);
+  AtmosphereParameters srgb = LinearSrgbAtmosphere(spectral, earth, sampling);
+  std::vector<double> sunlit_rayleigh = sampling.Sample(
+      [&](double nm) { return spectral.SolarIrradiance(nm) * spectral.RayleighScattering(nm); });
+  Spectrum expected = sampling.LinearSrgb(sunlit_rayleigh);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(srgb.rayleigh_scattering[c] * srgb.solar_irradiance[c], expected[c], 1e-12 * expected[c]);
+  // Blue scatters most, and the sun is near white (each channel within 20% of green).
+  EXPECT_GT(srgb.rayleigh_scattering[2], srgb.rayleigh_scattering[1]);
+  EXPECT_GT(srgb.rayleigh_scattering[1], srgb.rayleigh_scattering[0]);
+  for (double c : srgb.solar_irradiance) EXPECT_NEAR(c / srgb.solar_irradiance[1], 1.0, 0.2);
+}
+
+}  // namespace
+}  // namespace aerial::spectrum

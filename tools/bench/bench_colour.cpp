@@ -1,0 +1,151 @@
+// aerial_bench_colour: the tables' colour against the spectral CPU reference (ProbeReferenceSpectral,
+// all orders), by sun band: chromaticity distance du'v' and relative luminance error of the sky
+// radiance, the radiance to a point 10 km away, the sky irradiance and the sun's irradiance, for
+// rgb tables and spectral tables side by side (docs/colour.md). The reference takes minutes and is
+// kept in --reference-file.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "aerial/cli/common_options.h"
+#include "aerial/core/atomic_file.h"
+#include "aerial/error.h"
+#include "aerial/probe.h"
+#include "aerial/probe/spectral_reference.h"
+#include "aerial/spectrum/colour.h"
+#include "aerial/tables.h"
+#include "bench_main.h"
+
+namespace {
+
+using aerial::Spectrum;
+
+constexpr double kPointDistanceM = 10000.0;
+constexpr int kQuantities = 4;
+const char* const kQuantityNames[kQuantities] = {"sky radiance", "radiance to a point", "sky irradiance",
+                                                 "sun irradiance"};
+
+struct Band {
+  const char* name;
+  std::vector<double> sun_zenith_deg;
+};
+// Daylight and the low sun, the two targets (du'v' <= 0.003 and luminance <= 1% in daylight,
+// du'v' <= 0.008 at sun zenith 85-95 degrees).
+const std::vector<Band> kBands = {{"day (sun zenith 0-60)", {0.0, 30.0, 60.0}},
+                                  {"low sun (85-95)", {85.0, 88.0, 90.0, 92.0, 95.0}}};
+
+std::vector<aerial::ViewAngles> Views(const Band& band) {
+  std::vector<aerial::ViewAngles> views;
+  for (double sun : band.sun_zenith_deg)
+    for (double altitude : {0.0, 10000.0})
+      for (double zenith : {0.0, 60.0, 85.0})
+        for (double azimuth : {0.0, 180.0}) views.push_back({altitude, zenith, sun, azimuth});
+  return views;
+}
+
+std::array<Spectrum, kQuantities> Quantities(const aerial::ProbeResult& r) {
+  return {r.sky_radiance, r.radiance_to_point, r.sky_irradiance, r.sun_irradiance};
+}
+
+nlohmann::json ToJson(const Spectrum& s) { return {s[0], s[1], s[2]}; }
+Spectrum FromJson(const nlohmann::json& j) { return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()}; }
+
+struct Errors {
+  std::vector<double> chromaticity, luminance;
+};
+
+double Median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+double Max(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()); }
+
+struct BenchOptions {
+  aerial::cli::TableOptions tables;
+  std::string reference_file;
+};
+
+void Bench(const BenchOptions& cli) {
+  aerial::AtmosphereParameters atmosphere = cli.tables.LoadAtmosphere();
+  aerial::PrecomputeOptions spectral = cli.tables.MakePrecomputeOptions();
+  spectral.colour = aerial::ColourMode::kSpectral;
+  aerial::PrecomputeOptions rgb = spectral;
+  rgb.colour = aerial::ColourMode::kRgb;
+
+  // The reference: one value set per band and view, computed or read back.
+  nlohmann::json reference;
+  if (!cli.reference_file.empty() && std::filesystem::exists(cli.reference_file)) {
+    std::ifstream in(cli.reference_file);
+    reference = nlohmann::json::parse(in);
+    if (reference.value("wavelengths", 0) != spectral.spectral_wavelengths)
+      throw aerial::Error("--reference-file", cli.reference_file, "a reference made with these --wavelengths");
+  } else {
+    reference["wavelengths"] = spectral.spectral_wavelengths;
+    for (const Band& band : kBands) {
+      std::vector<aerial::ViewAngles> views = Views(band);
+      for (size_t i = 0; i < views.size(); ++i) {
+        aerial::ProbeResult r = aerial::ProbeReferenceSpectral(
+            atmosphere, aerial::ToRayParameters(views[i], atmosphere), kPointDistanceM,
+            spectral.RepresentedOrders(), spectral.spectral_wavelengths);
+        nlohmann::json values;
+        for (const Spectrum& q : Quantities(r)) values.push_back(ToJson(q));
+        reference[band.name].push_back(values);
+        std::fprintf(stderr, "reference %s: %zu / %zu\n", band.name, i + 1, views.size());
+      }
+    }
+    if (!cli.reference_file.empty()) aerial::WriteFileAtomically(cli.reference_file, reference.dump(1));
+  }
+
+  aerial::Device device(cli.tables.MakeDeviceOptions());
+  std::printf("reference: spectral, %d wavelengths, all orders\n\n", spectral.spectral_wavelengths);
+  std::printf("| tables | band | quantity | du'v' median / max | luminance error median / max |\n");
+  std::printf("|---|---|---|---|---|\n");
+  for (const aerial::PrecomputeOptions& options : {rgb, spectral}) {
+    aerial::Tables tables = aerial::Tables::LoadOrPrecompute(device, atmosphere, options, cli.tables.MakeLoadOptions());
+    for (const Band& band : kBands) {
+      std::vector<aerial::ProbeQuery> queries;
+      for (const aerial::ViewAngles& view : Views(band))
+        queries.push_back({aerial::ToRayParameters(view, atmosphere), kPointDistanceM});
+      std::vector<aerial::ProbeResult> results = aerial::Probe(tables, queries);
+      std::array<Errors, kQuantities> errors;
+      for (size_t i = 0; i < results.size(); ++i) {
+        std::array<Spectrum, kQuantities> measured = Quantities(results[i]);
+        for (int q = 0; q < kQuantities; ++q) {
+          Spectrum expected = FromJson(reference[band.name][i][q]);
+          const auto& to_xyz = aerial::spectrum::XyzFromLinearSrgb();
+          Spectrum xyz_expected = aerial::spectrum::Multiply(to_xyz, expected);
+          // The sun below the horizon and the sky in the Earth's shadow: no colour to compare.
+          if (xyz_expected[1] <= 1e-6) continue;
+          Spectrum xyz_measured = aerial::spectrum::Multiply(to_xyz, measured[q]);
+          errors[q].chromaticity.push_back(aerial::spectrum::ChromaticityDistance(xyz_measured, xyz_expected));
+          errors[q].luminance.push_back(std::abs(xyz_measured[1] / xyz_expected[1] - 1.0) * 100.0);
+        }
+      }
+      for (int q = 0; q < kQuantities; ++q)
+        std::printf("| %s | %s | %s | %.4f / %.4f | %.2f%% / %.2f%% |\n",
+                    aerial::ToString(options.colour).c_str(), band.name, kQuantityNames[q],
+                    Median(errors[q].chromaticity), Max(errors[q].chromaticity), Median(errors[q].luminance),
+                    Max(errors[q].luminance));
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"aerial_bench_colour: rgb and spectral tables against the spectral CPU reference, in colour"};
+  BenchOptions cli;
+  cli.tables.AddTo(app);
+  app.add_option("--reference-file", cli.reference_file,
+                 "Reference values: read if the file exists, else computed and written there (JSON)");
+  return aerial::bench::ParseAndRun(app, argc, argv, "aerial_bench_colour", [&] { Bench(cli); });
+}
