@@ -2,6 +2,7 @@
 // The one in-memory image every output path shares: linear radiance as 32-bit floats, so the
 // renderer hands over exactly what it computed and each format decides how to encode it (EXR
 // keeps the floats, PNG tone maps them).
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -41,6 +42,9 @@ struct ToneMapOptions {
   // Radiance multiplier applied before the curve. The filmic curve reaches mid grey near 0.18,
   // so exposure should map the scene's typical radiance to roughly that.
   double exposure = 1.0;
+  // Per-channel gains before the exposure: {1, 1, 1}, or a white balance such as the sun's
+  // (aerial render --white-balance). Each finite and > 0.
+  std::array<double, 3> white_balance = {1.0, 1.0, 1.0};
 };
 
 // Linear radiance to 8-bit display values, for PNG previews.

@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "aerial/reference/monte_carlo.h"
 #include "aerial/tables.h"
 #include "aerial/view_geometry.h"
 
@@ -32,6 +33,7 @@ std::vector<ProbeResult> Probe(const Tables& tables, std::span<const ProbeQuery>
 // orders 1..orders (INT_MAX: all of them). radiance_to_point and transmittance_to_point only
 // with a distance; rayleigh and mie stay 0. Seconds per call, not a per-frame function.
 ProbeResult ProbeReference(const AtmosphereParameters& atmosphere, const RayParameters& ray,
-                           std::optional<double> distance_m, int orders);
+                           std::optional<double> distance_m, int orders,
+                           const reference::MonteCarloOptions& monte_carlo = {});
 
 }  // namespace aerial

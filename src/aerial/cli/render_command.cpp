@@ -10,6 +10,7 @@
 #include "aerial/cli/path_option.h"
 #include "aerial/cli/scene_options.h"
 #include "aerial/image.h"
+#include "aerial/precompute/spectral_precompute.h"
 #include "aerial/render/renderer_options.h"
 
 namespace aerial::cli {
@@ -37,7 +38,8 @@ void RunRender(const RenderCommandOptions& options) {
   renderer.Render(scene);  // the first frame includes lavapipe's shader compilation
   std::vector<PassTime> times = renderer.Render(scene);
   ImageRgbF frame = renderer.ReadOutput();
-  WriteImage(options.out, frame, {.exposure = options.frame.MakeExposure().MultiplierFor(frame)});
+  WriteImage(options.out, frame,
+             options.frame.MakeToneMap(frame, ShaderAtmosphere(atmosphere, precompute).solar_irradiance));
   if (options.timings) {
     double total = 0.0;
     for (const auto& pass : times) {

@@ -115,7 +115,17 @@ void FrameOptions::AddTo(CLI::App& command, const std::string& size_help) {
   command.add_option("--shadows", shadows,
                      "The sun's shadow map of the terrain and the opaque meshes on surfaces: on (default) "
                      "or off");
+  command.add_option("--white-balance", white_balance,
+                     "PNG pictures divided by the sun's colour, so that sunlight is white: on (default) or "
+                     "off; EXR output is never white-balanced")
+      ->check(CLI::IsMember({"on", "off"}));
   froxels.AddTo(command);
+}
+
+ToneMapOptions FrameOptions::MakeToneMap(const ImageRgbF& frame, const Spectrum& sun_colour) const {
+  ToneMapOptions tone_map{.exposure = MakeExposure().MultiplierFor(frame)};
+  if (white_balance == "on") tone_map.white_balance = WhiteBalanceForSun(sun_colour);
+  return tone_map;
 }
 
 Exposure FrameOptions::MakeExposure() const {

@@ -57,12 +57,16 @@ struct FrameOptions {
   std::string terrain = "lod";
   double terrain_error_px = kDefaultTerrainErrorPx;
   std::string shadows = "on";
+  std::string white_balance = "on";
 
   // The froxel options, --width/--height (size_help: what they size, "Image"), --exposure,
-  // --aerial, --render-scale, --terrain, --terrain-error-px and --shadows.
+  // --aerial, --render-scale, --terrain, --terrain-error-px, --shadows and --white-balance.
   void AddTo(CLI::App& command, const std::string& size_help);
   RendererOptions MakeRenderOptions() const;  // validated
   Exposure MakeExposure() const;            // validated
+  // The tone map of PNG pictures for tables whose sun has this colour (ShaderAtmosphere's
+  // solar_irradiance): the exposure metered from `frame`, and the sun's white balance if on.
+  ToneMapOptions MakeToneMap(const ImageRgbF& frame, const Spectrum& sun_colour) const;
 };
 
 }  // namespace aerial::cli

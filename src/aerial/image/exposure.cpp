@@ -54,4 +54,9 @@ double Exposure::MultiplierFor(const ImageRgbF& image) const {
   return MultiplierForAverage(mode == Mode::kAuto ? LogAverageLuminance(image) : kMinLuminance);
 }
 
+std::array<double, 3> WhiteBalanceForSun(const std::array<double, 3>& sun_colour) {
+  double mean = (sun_colour[0] + sun_colour[1] + sun_colour[2]) / 3.0;
+  return {mean / sun_colour[0], mean / sun_colour[1], mean / sun_colour[2]};
+}
+
 }  // namespace aerial

@@ -42,6 +42,10 @@ double RadianceMultiplierFromEv100(double ev100);
 // Its inverse: the EV100 of a camera whose radiance multiplier is `multiplier`.
 double Ev100FromRadianceMultiplier(double multiplier);
 
+// The gains that make the sun's colour white, keeping their mean at 1 (the white balance of
+// Bruneton 2017's demo): mean(sun) / sun per channel, for pictures; physical output never has it.
+std::array<double, 3> WhiteBalanceForSun(const std::array<double, 3>& sun_colour);
+
 // How an image is exposed: metered (automatic), a fixed EV100, or a plain radiance multiplier.
 struct Exposure {
   enum class Mode { kAuto, kEv100, kMultiplier };

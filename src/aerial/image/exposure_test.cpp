@@ -24,6 +24,15 @@ TEST(Exposure, LuminanceOfAFlatSpectrumIsItsRadianceTimes683TimesTheIntegralOfV)
   EXPECT_NEAR(LuminanceOfRadiance(one), 72983.3, 0.1);
 }
 
+// The sun's colour times its white balance is grey, at the sun's mean level; a white sun is left
+// alone.
+TEST(Exposure, WhiteBalanceMakesTheSunWhite) {
+  std::array<double, 3> sun = {2.0, 1.77, 1.70};
+  std::array<double, 3> gains = WhiteBalanceForSun(sun);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(sun[c] * gains[c], (2.0 + 1.77 + 1.70) / 3.0, 1e-12);
+  for (double gain : WhiteBalanceForSun({1.5, 1.5, 1.5})) EXPECT_DOUBLE_EQ(gain, 1.0);
+}
+
 TEST(Exposure, Ev100OfTheMeterCalibration) {
   // EV100 = log2(L S / K): with S = 100 and K = 12.5, L = 1 cd/m^2 is EV100 3, and each
   // doubling one more.

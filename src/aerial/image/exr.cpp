@@ -3,6 +3,7 @@
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStdIO.h>
@@ -10,6 +11,7 @@
 #include <exception>
 
 #include "aerial/error.h"
+#include "aerial/image/exposure.h"
 
 namespace aerial {
 namespace {
@@ -38,6 +40,12 @@ std::vector<std::byte> EncodeExr(const ImageRgbF& image) {
   header.compression() = Imf::ZIP_COMPRESSION;
   header.lineOrder() = Imf::INCREASING_Y;  // top row first, as in ImageRgbF
   for (const char* name : kChannels) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+  // The colour space: linear sRGB (Rec. 709 primaries, D65 white, OpenEXR's default
+  // chromaticities, written out so that readers need not assume them), and the luminance of
+  // (1, 1, 1) in cd/m^2: channel values are spectral radiance units, W m^-2 sr^-1 nm^-1, whose
+  // luminance is 683 lm/W times the integral of y-bar (spectrum/colour.h).
+  Imf::addChromaticities(header, Imf::Chromaticities());
+  Imf::addWhiteLuminance(header, float(kRadiancePerNmToLuminance));
 
   Imf::StdOSStream stream;
   {

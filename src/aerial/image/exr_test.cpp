@@ -3,6 +3,7 @@
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfStandardAttributes.h>
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -56,6 +57,22 @@ TEST_F(Exr, ChannelsAreFullFloat) {
     ASSERT_NE(channel, nullptr) << name;
     EXPECT_EQ(channel->type, Imf::FLOAT) << name;
   }
+}
+
+// Readers learn the colour space from the header: Rec. 709 primaries with the D65 white point
+// (x 0.3127, y 0.3290), and (1, 1, 1) at 683 * 106.857 cd/m^2 (spectral radiance units).
+TEST_F(Exr, HeaderNamesTheColourSpaceAndLuminance) {
+  WriteImage(dir_ / "sky.exr", WideRangeImage(), {});
+  Imf::InputFile file((dir_ / "sky.exr").c_str());
+  ASSERT_TRUE(Imf::hasChromaticities(file.header()));
+  const Imf::Chromaticities& c = Imf::chromaticities(file.header());
+  EXPECT_NEAR(c.white.x, 0.3127f, 1e-4f);
+  EXPECT_NEAR(c.white.y, 0.3290f, 1e-4f);
+  EXPECT_NEAR(c.red.x, 0.64f, 1e-4f);
+  EXPECT_NEAR(c.green.y, 0.60f, 1e-4f);
+  EXPECT_NEAR(c.blue.x, 0.15f, 1e-4f);
+  ASSERT_TRUE(Imf::hasWhiteLuminance(file.header()));
+  EXPECT_NEAR(Imf::whiteLuminance(file.header()), 683.0 * 106.857, 1.0);
 }
 
 TEST_F(Exr, PixelAccessorIsRowMajorTopFirst) {

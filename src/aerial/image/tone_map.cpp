@@ -50,10 +50,14 @@ std::vector<uint8_t> ToneMapToSrgb8(const ImageRgbF& image, const ToneMapOptions
   // A zero, negative or non-finite exposure would silently give a black or NaN image.
   if (!(options.exposure > 0.0) || !std::isfinite(options.exposure))
     throw Error("exposure", FormatNumber(options.exposure), "a finite number > 0");
+  for (double gain : options.white_balance)
+    if (!(gain > 0.0) || !std::isfinite(gain))
+      throw Error("white balance", FormatNumber(gain), "finite gains > 0");
   std::vector<uint8_t> out(image.rgba.size());
   for (size_t i = 0; i < image.rgba.size(); i += 4) {
     for (size_t c = 0; c < 3; ++c) {
-      out[i + c] = Quantize(ToneMapChannel(double{image.rgba[i + c]} * options.exposure));
+      out[i + c] =
+          Quantize(ToneMapChannel(double{image.rgba[i + c]} * options.white_balance[c] * options.exposure));
     }
     const double alpha = image.rgba[i + 3];
     out[i + 3] = Quantize(std::isnan(alpha) ? 0.0 : alpha);

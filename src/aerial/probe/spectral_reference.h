@@ -12,6 +12,7 @@ namespace aerial {
 // transmittance table is, weighted by sunlight (LinearSrgb(E * T) / LinearSrgb(E)); standard errors
 // propagate through the conversion's weights as independent errors.
 ProbeResult ProbeReferenceSpectral(const AtmosphereParameters& atmosphere, const RayParameters& ray,
-                                   std::optional<double> distance_m, int orders, int wavelengths);
+                                   std::optional<double> distance_m, int orders, int wavelengths,
+                                   const reference::MonteCarloOptions& monte_carlo = {});
 
 }  // namespace aerial
