@@ -33,6 +33,10 @@ struct AccumulateStep {
 constexpr int kMuAxisRayLength = 0;
 constexpr int kMuAxisViewZenith = 1;
 
+vk::SlotLayout TransmittanceSlots() {
+  return {{"AtmosphereBlock", kUniform}, {"transmittance_image", kStorageImage}};
+}
+
 vk::SlotLayout MultipleScatteringSlots() {
   return {{"AtmosphereBlock", kUniform}, {"transmittance_texture", kSampled},
           {"scattering_density_texture", kSampled},
@@ -44,8 +48,7 @@ vk::SlotLayout MultipleScatteringSlots() {
 // (specialization constant 1, multiple_scattering.comp).
 struct Pipelines {
   explicit Pipelines(const vk::Context& c)
-      : transmittance(c, "precompute/transmittance.comp",
-                      {{"AtmosphereBlock", kUniform}, {"transmittance_image", kStorageImage}}),
+      : transmittance(c, "precompute/transmittance.comp", TransmittanceSlots()),
         sun_band(c, "precompute/sun_band.comp",
                  {{"AtmosphereBlock", kUniform}, {"transmittance_texture", kSampled},
                   {"sun_band_image", kStorageImage}}),
@@ -187,6 +190,21 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
                                         : PrecomputeRadiance(tables, progress);
   if (progress) progress->Finish();
   return times;
+}
+
+vk::PassTime ComputeTransmittance(AtmosphereTables& tables) {
+  const vk::Context& context = tables.context();
+  vk::ComputePipeline pipeline(context, "precompute/transmittance.comp", TransmittanceSlots());
+  vk::GpuTimer timer(context);
+  context.Submit([&](const vk::CommandBuffer& cmd) {
+    timer.Reset(cmd);
+    timer.Begin(cmd, "transmittance");
+    pipeline.Dispatch(cmd, {vk::UniformBufferSlot{&tables.uniform_buffer()}, vk::StorageImageSlot{&tables.transmittance()}},
+                      Extent2D(tables.transmittance()), {8, 8, 1});
+    timer.End(cmd);
+    vk::FullBarrier(cmd);
+  });
+  return timer.Collect().front();
 }
 
 std::vector<vk::PassTime> PrecomputeRadiance(AtmosphereTables& tables, Progress* progress) {

@@ -19,6 +19,9 @@ std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progres
 // group of the spectral one); leaves `progress` unfinished.
 std::vector<vk::PassTime> PrecomputeRadiance(AtmosphereTables& tables, Progress* progress);
 
+// Only the transmittance table T(r, mu), from tables.uniforms().
+vk::PassTime ComputeTransmittance(AtmosphereTables& tables);
+
 // Number of passes Precompute runs for these options (progress bars size themselves with it).
 int PrecomputePassCount(const PrecomputeOptions& options);
 

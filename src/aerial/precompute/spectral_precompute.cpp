@@ -37,11 +37,10 @@ std::vector<std::byte> ToBytes(const std::vector<float>& rgba, TexelFormat forma
   return bytes;
 }
 
-// sum.rgb += m * group.rgb, texel by texel; with `weights`, group.rgb is first multiplied by them.
-void AddConverted(std::vector<float>& sum, const std::vector<float>& group, const Matrix3& m,
-                  const Spectrum& weights = {1.0, 1.0, 1.0}) {
+// sum.rgb += m * group.rgb, texel by texel.
+void AddConverted(std::vector<float>& sum, const std::vector<float>& group, const Matrix3& m) {
   for (size_t i = 0; i + 3 < group.size(); i += 4) {
-    Spectrum value = {group[i] * weights[0], group[i + 1] * weights[1], group[i + 2] * weights[2]};
+    Spectrum value = {group[i], group[i + 1], group[i + 2]};
     Spectrum colour = spectrum::Multiply(m, value);
     for (int c = 0; c < 3; ++c) sum[i + c] += float(colour[c]);
   }
@@ -84,35 +83,24 @@ std::vector<vk::PassTime> PrecomputeSpectral(AtmosphereTables& tables, Progress*
     }
     const Matrix3 to_srgb = sampling.GroupToLinearSrgb(g);
     TableCache downloaded = group.Download();
-    for (size_t i = 0; i < result.tables.size(); ++i) {
-      std::vector<float> texels = AsFloats(downloaded.tables[i]);
-      if (result.tables[i].name == std::string("transmittance")) {
-        // Optical depth to sunlight-weighted transmittance E * exp(-tau), converted.
-        for (size_t t = 0; t + 3 < texels.size(); t += 4)
-          for (int c = 0; c < 3; ++c) texels[t + c] = std::exp(-texels[t + c]);
-        AddConverted(sums[i], texels, to_srgb, group_atmosphere.solar_irradiance);
-      } else {
-        AddConverted(sums[i], texels, to_srgb);
-      }
-    }
+    for (size_t i = 0; i < result.tables.size(); ++i)
+      if (result.tables[i].name != std::string("transmittance"))
+        AddConverted(sums[i], AsFloats(downloaded.tables[i]), to_srgb);
   }
 
-  const Spectrum sun = ShaderAtmosphere(tables.atmosphere(), tables.options()).solar_irradiance;
   for (size_t i = 0; i < result.tables.size(); ++i) {
     CachedTable& table = result.tables[i];
-    std::vector<float>& sum = sums[i];
-    if (table.name == std::string("transmittance")) {
-      // Back to an optical depth per channel; a channel whose sunlight is all gone (or whose
-      // converted value the sRGB matrix's negative lobes took below 0) keeps a finite depth.
-      for (size_t t = 0; t + 3 < sum.size(); t += 4) {
-        for (int c = 0; c < 3; ++c)
-          sum[t + c] = float(-std::log(std::clamp(sum[t + c] / sun[c], 1e-30, 1.0)));
-        sum[t + 3] = 1.0f;
-      }
-    }
-    table.texels = ToBytes(sum, table.format);
+    // Light whose colour lies outside sRGB's gamut (the Mie table's reddened sunlight near the
+    // horizon, with blue down to -2e-3 where Rayleigh's is 5e-2) has negative channels. The sum
+    // of the tables would cancel them, but the render-time reads blend exponentially and integrate
+    // in log space, which need values >= 0: they are clamped to 0 (docs/colour.md).
+    for (float& v : sums[i]) v = std::max(v, 0.0f);
+    table.texels = ToBytes(sums[i], table.format);
   }
   tables.Upload(result);
+  // Transmittance from the linear sRGB coefficients (additive along a ray, as the lookups that
+  // divide two table values need), replacing the uploaded placeholder.
+  times.push_back(ComputeTransmittance(tables));
   if (progress) progress->Advance("spectral to linear sRGB");
   return times;
 }

@@ -3,11 +3,13 @@
 // precomputed once per group of three wavelengths (SpectralAtmosphere::At), each group in float32,
 // and folded into linear sRGB by the CIE 1931 observer (SpectralSampling::GroupToLinearSrgb).
 // Scattering, Mie, J_ms and the ground irradiance are linear in the spectrum, so their colour is
-// exact up to the sampling of the spectrum. Transmittance is not: the table holds, per channel,
-// the sunlight-weighted transmittance LinearSrgb(E * T) / LinearSrgb(E), so that the sun and the
-// light it brings are exact and a surface seen through the air is approximated (docs/colour.md
-// measures it). The render-time shaders then work in linear sRGB with the coefficients of
-// LinearSrgbAtmosphere.
+// exact up to the sampling of the spectrum (values that fall outside sRGB's gamut are clamped to
+// 0). Transmittance is not linear in the spectrum: its table is computed from LinearSrgbAtmosphere's
+// coefficients, the sunlight-weighted mean extinction per channel, exact for thin air and additive
+// along a ray as the lookups that divide two of its values need. A table converted from the
+// spectral transmittance instead (LinearSrgb(E T) / LinearSrgb(E)) made the sun exact at every
+// elevation but is not additive: dividing two of its values near the horizon took 40% of the blue
+// out of a band of the ground at noon. docs/colour.md measures both.
 #include <vector>
 
 #include "aerial/atmosphere.h"

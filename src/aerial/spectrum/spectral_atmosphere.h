@@ -47,8 +47,8 @@ class SpectralAtmosphere {
 // The three channels the render-time shaders work in when the tables are spectral: linear sRGB.
 // The sun's irradiance is the solar spectrum's colour; each coefficient is the sunlight-weighted
 // mean of its spectrum per channel, LinearSrgb(E * sigma) / LinearSrgb(E), which the optically
-// thin limit of single scattering makes exact. The transmittance table itself is converted from
-// the spectral transmittance (spectral_precompute.h), not computed from these coefficients.
+// thin limit of single scattering makes exact; the transmittance table is computed from them too
+// (spectral_precompute.h says why and docs/colour.md what it costs).
 AtmosphereParameters LinearSrgbAtmosphere(const SpectralAtmosphere& atmosphere,
                                           const AtmosphereParameters& base,
                                           const SpectralSampling& sampling);
