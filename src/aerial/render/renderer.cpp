@@ -9,6 +9,7 @@
 #include "aerial/error.h"
 #include "aerial/image/resample.h"
 #include "aerial/render/shadow_uniforms.h"
+#include "aerial/render/sky_view_layout.h"
 #include "aerial/scene/terrain.h"
 #include "aerial/terrain/terrain_chunk.h"
 
@@ -112,14 +113,6 @@ vk::GraphicsPipelineCreateInfo SkyPipeline(AerialMode mode) {
           .depth_compare = vk::kDepthEqual,
           .specialization = {PerPixel(mode)}};
 }
-
-// The sky-view table's size (Hillaire 2020 uses 192x108): azimuth over [0, pi], zenith split at
-// the horizon (54 rows each side).
-constexpr std::array<int, 2> kSkyViewSize = {192, 108};
-// The lattice of the sky inscatter correction (sky_view.glsl, GetSkyViewLatticeSize): nodes every 4
-// texels in azimuth and 3 in zenith per half, the last texel included.
-constexpr std::array<int, 2> kSkyViewLatticeSize = {(kSkyViewSize[0] - 2) / 4 + 2,
-                                                     2 * ((kSkyViewSize[1] / 2 - 2) / 3 + 2)};
 
 vk::ImageCreateInfo SkyViewImage() {
   return {.extent = {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}};
