@@ -23,7 +23,6 @@
 #include "aerial/scene/terrain.h"
 #include "aerial/shader_abi/frame_geometry.h"
 #include "gpu_fixture.h"
-#include "image_compare.h"
 
 namespace aerial::testing {
 namespace {
@@ -293,7 +292,8 @@ TEST_F(ShadowRender, KeptTilesDrawTheFrameThatFreshOnesDraw) {
     streamed.Render(stepped, /*complete=*/false);
     Renderer fresh(tables, stepped, {.width = kWidth, .height = kHeight, .shadows = shadows});
     fresh.Render(stepped);
-    return std::pair{RelativeRmse(streamed.ReadOutput(), fresh.ReadOutput()), fresh.ReadOutput()};
+    ImageRgbF image = fresh.ReadOutput();
+    return std::pair{bench::EnergyWeightedRelativeRmse(streamed.ReadOutput(), image), image};
   };
   Renderer kept(tables, start, {.width = kWidth, .height = kHeight});
   auto [kept_vs_fresh, shadowed] = step(true, kept);
@@ -301,7 +301,7 @@ TEST_F(ShadowRender, KeptTilesDrawTheFrameThatFreshOnesDraw) {
   EXPECT_TRUE(kept.frame_info().froxels_updated);
   Renderer unshadowed(tables, start, {.width = kWidth, .height = kHeight, .shadows = false});
   auto [baseline, unshadowed_image] = step(false, unshadowed);
-  double shadows = RelativeRmse(shadowed, unshadowed_image);
+  double shadows = bench::EnergyWeightedRelativeRmse(shadowed, unshadowed_image);
   std::printf("kept tiles vs fresh: %.2e relative RMSE, without shadows %.2e (the shadows themselves: %.2f%%)\n",
               kept_vs_fresh, baseline, 100 * shadows);
   EXPECT_LT(kept_vs_fresh, baseline + 1e-5);

@@ -1,18 +1,31 @@
 #pragma once
-// Relative errors of rendered radiance against expected radiance, over one class of pixels (sky
-// or opaque: Renderer::ReadSurface's alpha is negative where no geometry was drawn).
+// Relative errors of rendered radiance (a, actual) against expected radiance (b), in the two
+// definitions the project quotes, each named for what it is:
 //
-// Per pixel and channel c the error is e = |a - b| / max(|b|, floor_c), with a the actual and b
-// the expected value, and floor_c = 1e-3 of the mean |b| of channel c over the class: the floor
-// only matters for values a thousand times darker than the class's average, where a relative
-// error says little (a black pixel next to the sun-lit sky). Over a class, the relative RMSE is
-// sqrt(mean e^2) and the maximum is max e, both over every pixel and channel.
+// EnergyWeightedRelativeRmse = sqrt(sum |a - b|^2 / sum |b|^2) over RGB: the error's energy
+// against the image's, so bright pixels weigh most. The tests' image bounds (golden images, froxel
+// against per-pixel, kept against fresh shadow tiles...) and the relative RMSE figures that
+// docs/design.md quotes from them (examples/embed/compare.cpp, built against the installed package
+// alone, sums the same for docs/library.md's).
+//
+// ErrorStats::per_pixel_rel_rmse (CompareSamples), over one class of pixels (sky or opaque:
+// Renderer::ReadSurface's alpha is negative where no geometry was drawn): per pixel and channel c
+// the error is e = |a - b| / max(|b|, floor_c), with floor_c = 1e-3 of the mean |b| of channel c
+// over the class: the floor only matters for values a thousand times darker than the class's
+// average, where a relative error says little (a black pixel next to the sun-lit sky). Over a
+// class, per_pixel_rel_rmse = sqrt(mean e^2) and rel_max = max e, both over every pixel and
+// channel, so a dark pixel counts as much as a bright one. `aerial bench`'s results, report and
+// recommendations (rel_rmse in its files) and the figures of docs/tables-3d-4d.md.
 #include <array>
 #include <vector>
 
 #include "aerial/image.h"
 
 namespace aerial::bench {
+
+// mask, when given, selects the pixels compared (row-major, one entry per pixel).
+double EnergyWeightedRelativeRmse(const ImageRgbF& actual, const ImageRgbF& expected,
+                                  const std::vector<bool>* mask = nullptr);
 
 enum class PixelClass { kSky, kOpaque };
 const char* ToString(PixelClass pixels);  // "sky" / "opaque"
@@ -25,7 +38,7 @@ struct PixelSample {
 
 struct ErrorStats {
   int pixels = 0;  // samples compared; 0: the class is empty in this view
-  double rel_rmse = 0.0, rel_max = 0.0;
+  double per_pixel_rel_rmse = 0.0, rel_max = 0.0;
   int max_x = -1, max_y = -1;  // where the maximum is
 };
 
