@@ -10,6 +10,8 @@
 #include "aerial/reference/monte_carlo.h"
 
 namespace aerial::bench {
+
+using validation::ErrorStats;
 namespace {
 
 double MiB(size_t bytes) { return double(bytes) / (1 << 20); }

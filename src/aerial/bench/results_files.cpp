@@ -7,6 +7,9 @@
 
 namespace aerial::bench {
 
+using validation::ErrorStats;
+using validation::PixelClass;
+
 const char* const kErrorDefinition =
     "per pixel and channel e = |actual - expected| / max(|expected|, floor), floor = 1e-3 x the mean "
     "|expected| of that channel over the pixel class; rel_rmse = sqrt(mean e^2) and rel_max = max e "

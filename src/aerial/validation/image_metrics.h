@@ -21,7 +21,7 @@
 
 #include "aerial/image.h"
 
-namespace aerial::bench {
+namespace aerial::validation {
 
 // mask, when given, selects the pixels compared (row-major, one entry per pixel).
 double EnergyWeightedRelativeRmse(const ImageRgbF& actual, const ImageRgbF& expected,
@@ -57,4 +57,4 @@ ErrorStats CompareImages(const ImageRgbF& actual, const ImageRgbF& expected, con
 // PixelError of every pixel, with the floor of its class (what the heat maps draw), row-major.
 std::vector<float> ErrorMap(const ImageRgbF& actual, const ImageRgbF& expected, const ImageRgbF& surface);
 
-}  // namespace aerial::bench
+}  // namespace aerial::validation

@@ -1,10 +1,10 @@
-#include "aerial/bench/image_metrics.h"
+#include "aerial/validation/image_metrics.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace aerial::bench {
+namespace aerial::validation {
 namespace {
 
 // A bright pixel 10% off and a dark one 100% off: the energy-weighted error is the bright pixel's
@@ -61,4 +61,4 @@ TEST(CompareImages, SplitsSkyAndOpaqueBySurfaceAlpha) {
 }
 
 }  // namespace
-}  // namespace aerial::bench
+}  // namespace aerial::validation

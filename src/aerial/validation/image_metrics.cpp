@@ -1,9 +1,9 @@
-#include "aerial/bench/image_metrics.h"
+#include "aerial/validation/image_metrics.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace aerial::bench {
+namespace aerial::validation {
 
 double EnergyWeightedRelativeRmse(const ImageRgbF& actual, const ImageRgbF& expected,
                                   const std::vector<bool>* mask) {
@@ -95,4 +95,4 @@ std::vector<float> ErrorMap(const ImageRgbF& actual, const ImageRgbF& expected, 
   return map;
 }
 
-}  // namespace aerial::bench
+}  // namespace aerial::validation
