@@ -2,7 +2,7 @@
 // Where one frame's froxels sit in the world, on the CPU, from the same FrameBlock the shaders
 // read (aerial/shader_abi/frame_block.h), and the CPU twin of the shaders' trilinear read.
 //
-// Froxel (i, j, k) stands for the point at distance d_k = far * ((k + 0.5) / D)^2 along the unit
+// Froxel (i, j, k) stands for the point at distance grid.SliceDistance(k + 0.5) along the unit
 // view ray through the screen position uv = ((i + 0.5) / W, (j + 0.5) / H), the ray being
 // normalize(inverse_view_projection * (2 uv - 1, 0.5, 1)) as in shaders/include/frame.glsl
 // (ViewRayFromScreen). uv (0, 0) is the top-left of the image (Vulkan clip y points down), so j

@@ -5,7 +5,7 @@
 
 #include "aerial/error.h"
 #include "aerial/image/image_writer.h"
-#include "image_compare.h"
+#include "aerial/validation/image_metrics.h"
 
 namespace aerial::testing {
 
@@ -29,7 +29,7 @@ bool GoldenUpdateRequested() { return std::getenv("AERIAL_UPDATE_GOLDEN") != nul
     return ::testing::AssertionFailure() << golden.string() << " is " << expected.width << "x"
                                          << expected.height << ", the image " << image.width << "x"
                                          << image.height;
-  double rmse = RelativeRmse(image, expected);
+  double rmse = validation::EnergyWeightedRelativeRmse(image, expected);
   std::printf("%s: relative RMSE %.3g%% against the golden image\n", golden.filename().c_str(), 100 * rmse);
   if (rmse < max_rmse) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << golden.string() << ": relative RMSE " << rmse << ", bound " << max_rmse;

@@ -1,6 +1,6 @@
 // The default tables against the physical sky: the CPU reference with all scattering orders and
 // the sun's whole disc (src/aerial/reference), by sun band, camera altitude and wavelength, for sky
-// radiance, radiance to a point 10 km along the ray and sky irradiance (src/aerial/bench/
+// radiance, radiance to a point 10 km along the ray and sky irradiance (src/aerial/validation/
 // sky_accuracy.h), over the quick grid. The reference samples take ~41 minutes to compute, so they
 // are stored in tests/data/sky_reference_quick.json, made by
 //   build/tools/aerial_bench_sky --grid quick --paths 65536
@@ -13,14 +13,14 @@
 #include <cstdio>
 #include <limits>
 
-#include "aerial/bench/sky_accuracy.h"
 #include "aerial/reference/reference.h"
+#include "aerial/validation/sky_accuracy.h"
 #include "gpu_fixture.h"
 
 namespace aerial::testing {
 namespace {
 
-using bench::SkyQuantity;
+using validation::SkyQuantity;
 
 const char* kReferenceFile = AERIAL_SOURCE_DIR "/tests/data/sky_reference_quick.json";
 constexpr double kNone = std::numeric_limits<double>::infinity();
@@ -97,7 +97,7 @@ const MeasuredRegion kRegions[] = {
     {SkyQuantity::kRadianceToPoint, kTwilight, 50, 0, 0.00000, 0.00000, 0.00000, kNone},
 };
 
-const MeasuredRegion* FindRegion(const bench::RegionAccuracy& region) {
+const MeasuredRegion* FindRegion(const validation::RegionAccuracy& region) {
   for (const MeasuredRegion& r : kRegions)
     if (r.quantity == region.quantity && region.band == r.band && region.altitude_m == r.altitude_km * 1000.0)
       return &r;
@@ -105,16 +105,16 @@ const MeasuredRegion* FindRegion(const bench::RegionAccuracy& region) {
 }
 
 // The reference's noise over a region's compared values, as the stored reference has it.
-double Noise(const bench::RegionAccuracy& region) {
+double Noise(const validation::RegionAccuracy& region) {
   double noise = 0.0;
-  for (const bench::ChannelAccuracy& channel : region.channels) noise = std::max(noise, channel.max_relative_std_error);
+  for (const validation::ChannelAccuracy& channel : region.channels) noise = std::max(noise, channel.max_relative_std_error);
   return noise;
 }
 
 class PhysicalSky : public GpuTest {};
 
 TEST_F(PhysicalSky, DefaultTablesAgainstTheTargets) {
-  bench::SkyReference reference = bench::ReadSkyReference(kReferenceFile);
+  validation::SkyReference reference = validation::ReadSkyReference(kReferenceFile);
   ASSERT_EQ(reference.orders, reference::kAllOrders);
   ASSERT_EQ(PrecomputeOptions::Default().RepresentedOrders(), reference::kAllOrders);
   // Through the public API, from the test cache that FullTables() fills.
@@ -123,11 +123,11 @@ TEST_F(PhysicalSky, DefaultTablesAgainstTheTargets) {
   Tables tables =
       Tables::LoadOrPrecompute(device, AtmosphereParameters::Earth(), PrecomputeOptions::Default());
   ASSERT_TRUE(tables.from_cache());
-  std::vector<bench::RegionAccuracy> regions = bench::CompareSkyWithTables(tables, reference);
-  std::printf("%s\n%s", bench::FormatSkyAccuracy(regions).c_str(), bench::FormatWorstSamples(regions).c_str());
+  std::vector<validation::RegionAccuracy> regions = validation::CompareSkyWithTables(tables, reference);
+  std::printf("%s\n%s", validation::FormatSkyAccuracy(regions).c_str(), validation::FormatWorstSamples(regions).c_str());
   ASSERT_EQ(regions.size(), std::size(kRegions));  // 3 quantities x 4 bands x 3 altitudes
-  for (const bench::RegionAccuracy& region : regions) {
-    std::string name = bench::ToString(region.quantity) + ", " + region.band + ", camera at " +
+  for (const validation::RegionAccuracy& region : regions) {
+    std::string name = validation::ToString(region.quantity) + ", " + region.band + ", camera at " +
                        std::to_string(int(region.altitude_m / 1000.0)) + " km";
     const MeasuredRegion* measured = FindRegion(region);
     ASSERT_NE(measured, nullptr) << name;
@@ -149,12 +149,12 @@ TEST_F(PhysicalSky, DefaultTablesAgainstTheTargets) {
 // seed, which reproduces it to rounding (the reference is deterministic for a seed and a path
 // count, whatever the thread count), unless the reference code changed since the file was made.
 TEST(PhysicalSkyReference, StoredReferenceIsTodaysReference) {
-  bench::SkyReference reference = bench::ReadSkyReference(kReferenceFile);
+  validation::SkyReference reference = validation::ReadSkyReference(kReferenceFile);
   ASSERT_EQ(reference.samples.size(), 1092u);
   int checked = 0;
   for (size_t i = 0; i < reference.samples.size(); i += 52) {
-    const bench::SkySample& sample = reference.samples[i];
-    reference::Estimate again = bench::RecomputeSkySample(AtmosphereParameters::Earth(), reference, sample);
+    const validation::SkySample& sample = reference.samples[i];
+    reference::Estimate again = validation::RecomputeSkySample(AtmosphereParameters::Earth(), reference, sample);
     for (int c = 0; c < 3; ++c)
       EXPECT_NEAR(again.value[c], sample.value[c], 1e-9 * std::abs(sample.value[c]) + 1e-300) << i << " " << c;
     ++checked;
@@ -162,16 +162,16 @@ TEST(PhysicalSkyReference, StoredReferenceIsTodaysReference) {
   EXPECT_EQ(checked, 21);
 }
 
-// Every stored sample met its noise goal (bench::NoiseGoal: a quarter of the target for daylight
+// Every stored sample met its noise goal (validation::NoiseGoal: a quarter of the target for daylight
 // and low-sun radiances, of the 0.4% median target for every irradiance), or took the most paths the reference
 // allows: each compared value (those above the floor) counts.
 TEST(PhysicalSkyReference, StoredSamplesMeetTheirBandsNoiseGoal) {
-  bench::SkyReference reference = bench::ReadSkyReference(kReferenceFile);
-  const int max_paths = bench::kMaxReferencePathsFactor * reference.paths_per_query;
+  validation::SkyReference reference = validation::ReadSkyReference(kReferenceFile);
+  const int max_paths = validation::kMaxReferencePathsFactor * reference.paths_per_query;
   int checked = 0;
   int at_most_paths = 0;
-  for (const bench::SunBand& band : bench::SkyGrid::Quick().bands) {
-    for (const bench::SkySample& sample : reference.samples) {
+  for (const validation::SunBand& band : validation::SkyGrid::Quick().bands) {
+    for (const validation::SkySample& sample : reference.samples) {
       if (sample.band != band.name) continue;
       ++checked;
       double noise = 0.0;
@@ -182,8 +182,8 @@ TEST(PhysicalSkyReference, StoredSamplesMeetTheirBandsNoiseGoal) {
         ++at_most_paths;
         continue;
       }
-      EXPECT_LE(noise, bench::NoiseGoal(band, sample.quantity))
-          << band.name << ", " << bench::ToString(sample.quantity) << " sample with " << sample.paths << " paths";
+      EXPECT_LE(noise, validation::NoiseGoal(band, sample.quantity))
+          << band.name << ", " << validation::ToString(sample.quantity) << " sample with " << sample.paths << " paths";
     }
   }
   EXPECT_EQ(checked, 1092);
@@ -196,10 +196,10 @@ TEST(PhysicalSkyReference, StoredSamplesMeetTheirBandsNoiseGoal) {
 // aerial_bench_sky --samples-csv: a header, then one row per sample and channel ending with the
 // signed relative error tables / reference - 1 (here +10%, 0 and -25%, exact in binary to %.6g).
 TEST(SkySamplesCsv, OneRowPerSampleAndChannelWithTheSignedError) {
-  bench::SkyReference reference;
+  validation::SkyReference reference;
   reference.samples.push_back(
       {SkyQuantity::kSkyRadiance, "day", {0.0, 60.0, 30.0, 90.0}, {2.0, 4.0, 8.0}, {0.1, 0.1, 0.1}, 1024});
-  std::string csv = bench::FormatSampleErrorsCsv(reference, {{2.2, 4.0, 6.0}});
+  std::string csv = validation::FormatSampleErrorsCsv(reference, {{2.2, 4.0, 6.0}});
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);
   EXPECT_EQ(csv.rfind("quantity,band,", 0), 0u) << csv;
   EXPECT_NE(csv.find("sky radiance,day,0,60,30,90,680,2,0.1,2.2,0.1\n"), std::string::npos) << csv;

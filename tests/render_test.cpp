@@ -10,9 +10,9 @@
 #include "aerial/probe/table_probe.h"
 #include "aerial/render/renderer.h"
 #include "aerial/scene.h"
+#include "aerial/validation/image_metrics.h"
 #include "golden_image.h"
 #include "gpu_fixture.h"
-#include "image_compare.h"
 
 namespace aerial::testing {
 namespace {
@@ -60,7 +60,7 @@ TEST_F(Render, FroxelMatchesPerPixelBeyondOneKilometer) {
     count += far_opaque[p];
   }
   ASSERT_GT(count, 1000u);
-  double rmse = RelativeRmse(froxel.ReadOutput(), per_pixel.ReadOutput(), &far_opaque);
+  double rmse = validation::EnergyWeightedRelativeRmse(froxel.ReadOutput(), per_pixel.ReadOutput(), &far_opaque);
   std::printf("froxel vs per-pixel, opaque beyond 1 km: relative RMSE %.4f%% over %zu pixels\n",
               100 * rmse, count);
   // The issue aims at <= 2% in daylight at 32x32x32.
@@ -90,8 +90,8 @@ TEST_F(Render, TableDifferenceIsCloseToTheMarchInDaylight) {
     far_opaque[p] = surface.rgba[4 * p + 3] > 1000.0f;
     sky[p] = surface.rgba[4 * p + 3] < 0.0f;
   }
-  double opaque_rmse = RelativeRmse(two_reads, marched, &far_opaque);
-  double sky_rmse = RelativeRmse(two_reads, marched, &sky);
+  double opaque_rmse = validation::EnergyWeightedRelativeRmse(two_reads, marched, &far_opaque);
+  double sky_rmse = validation::EnergyWeightedRelativeRmse(two_reads, marched, &sky);
   std::printf("table difference vs marched, noon: opaque beyond 1 km %.4f%%, sky %.4f%%\n", 100 * opaque_rmse,
               100 * sky_rmse);
   EXPECT_LT(opaque_rmse, 0.01);
@@ -114,7 +114,7 @@ TEST_F(Render, SkyViewTableMatchesPerPixelSky) {
                     {.width = kWidth, .height = kHeight, .mode = AerialMode::kPerPixel, .shadows = false});
     table.Render(scene);
     direct.Render(scene);
-    double rmse = RelativeRmse(table.ReadOutput(), direct.ReadOutput());
+    double rmse = validation::EnergyWeightedRelativeRmse(table.ReadOutput(), direct.ReadOutput());
     std::printf("%s sky, sky-view table vs per pixel: relative RMSE %.4f%%\n", preset.c_str(), 100 * rmse);
     // Measured 0.10% (sunset) to 0.88% (high altitude, where the limb is sharp); twilight 0.64%,
     // where sky_view.comp interpolates the low sun's single scattering correction from a lattice
@@ -203,7 +203,7 @@ TEST_F(Render, TransparentPerVertexMatchesPerPixel) {
     count += covered[p];
   }
   ASSERT_GT(count, 100u) << "transparent objects cover pixels";
-  double rmse = RelativeRmse(with, per_pixel, &covered);
+  double rmse = validation::EnergyWeightedRelativeRmse(with, per_pixel, &covered);
   std::printf("transparent per-vertex vs per-pixel: relative RMSE %.4f%% over %zu pixels\n", 100 * rmse, count);
   EXPECT_LT(rmse, 0.02);
 }

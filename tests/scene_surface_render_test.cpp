@@ -8,12 +8,11 @@
 
 #include <cmath>
 
-#include "aerial/bench/accuracy.h"
-#include "aerial/bench/image_metrics.h"
-#include "aerial/bench/reference_sampling.h"
-#include "aerial/scene_surface.h"
 #include "aerial/render/renderer.h"
 #include "aerial/scene.h"
+#include "aerial/scene_surface.h"
+#include "aerial/validation/image_metrics.h"
+#include "aerial/validation/reference_sampling.h"
 #include "gpu_fixture.h"
 
 namespace aerial::testing {
@@ -33,7 +32,7 @@ TEST_F(SceneSurfaceRender, FoundAtTheRenderersDepthAtAlmostEveryOpaquePixel) {
   const double R = tables.atmosphere().bottom_radius_m;
   for (const std::string& preset : PresetNames()) {
     SCOPED_TRACE(preset);
-    Scene scene = bench::OpaqueScene(BuildPreset(preset, R));
+    Scene scene = validation::OpaqueScene(BuildPreset(preset, R));
     Renderer renderer(tables, scene, {.width = 320, .height = 180});
     renderer.Render(scene);
     ImageRgbF surface = renderer.ReadSurface();
@@ -41,9 +40,9 @@ TEST_F(SceneSurfaceRender, FoundAtTheRenderersDepthAtAlmostEveryOpaquePixel) {
     int opaque = 0, missing = 0, landmark = 0;
     for (int y = 0; y < surface.height; ++y) {
       for (int x = 0; x < surface.width; ++x) {
-        if (bench::IsSky(surface, x, y)) continue;
+        if (validation::IsSky(surface, x, y)) continue;
         ++opaque;
-        auto found = SurfaceAtDepth(scene, R, bench::PixelRay(renderer.frame_uniforms(), x, y),
+        auto found = SurfaceAtDepth(scene, R, validation::PixelRay(renderer.frame_uniforms(), x, y),
                                            surface.pixel(x, y)[3], tolerance);
         if (!found) {
           ++missing;

@@ -13,17 +13,16 @@
 #include <cstdio>
 #include <optional>
 
-#include "aerial/bench/image_metrics.h"
-#include "aerial/bench/reference_sampling.h"
 #include "aerial/render/renderer.h"
 #include "aerial/render/shadow_cascades.h"
-#include "aerial/scene/camera.h"
 #include "aerial/scene.h"
+#include "aerial/scene/camera.h"
 #include "aerial/scene/primitives.h"
 #include "aerial/scene/terrain.h"
 #include "aerial/shader_abi/frame_geometry.h"
+#include "aerial/validation/image_metrics.h"
+#include "aerial/validation/reference_sampling.h"
 #include "gpu_fixture.h"
-#include "image_compare.h"
 
 namespace aerial::testing {
 namespace {
@@ -39,7 +38,7 @@ struct SurfaceImages {
   // The sun's visibility at a pixel, when its sun term is large enough to divide by (at least 5%
   // of the pixel's radiance without shadows); nullopt where the pixel is sky or the sun grazes.
   std::optional<double> Visibility(int x, int y) const {
-    if (bench::IsSky(off, x, y)) return std::nullopt;
+    if (validation::IsSky(off, x, y)) return std::nullopt;
     double sun = off.pixel(x, y)[1] - sky.pixel(x, y)[1];
     if (!(sun > 0.05 * off.pixel(x, y)[1])) return std::nullopt;
     return (on.pixel(x, y)[1] - sky.pixel(x, y)[1]) / sun;
@@ -112,7 +111,7 @@ SunSeen MarchTowardTheSun(const glm::dvec3& point, const Scene& scene, double as
 }
 
 glm::dvec3 PixelPoint(const SurfaceImages& images, const Scene& scene, int x, int y) {
-  return scene.camera.position + bench::PixelRay(images.frame, x, y) * images.Distance(x, y);
+  return scene.camera.position + validation::PixelRay(images.frame, x, y) * images.Distance(x, y);
 }
 
 class ShadowRender : public GpuTest {};
@@ -179,7 +178,7 @@ TEST_F(ShadowRender, NoAcneOnTheFlatSunlitValleyFloorAtNoon) {
   double darkest = 1.0;
   for (int y = 0; y < kHeight; y += 4) {
     for (int x = 0; x < kWidth; x += 4) {
-      if (bench::IsSky(images.off, x, y)) continue;
+      if (validation::IsSky(images.off, x, y)) continue;
       glm::dvec3 p = PixelPoint(images, scene, x, y);
       glm::dvec3 sea = SeaLevelPoint(p, R);
       TerrainSurface surface = TerrainSurfaceAt(sea.x, sea.y, R);
@@ -293,7 +292,8 @@ TEST_F(ShadowRender, KeptTilesDrawTheFrameThatFreshOnesDraw) {
     streamed.Render(stepped, /*complete=*/false);
     Renderer fresh(tables, stepped, {.width = kWidth, .height = kHeight, .shadows = shadows});
     fresh.Render(stepped);
-    return std::pair{RelativeRmse(streamed.ReadOutput(), fresh.ReadOutput()), fresh.ReadOutput()};
+    ImageRgbF image = fresh.ReadOutput();
+    return std::pair{validation::EnergyWeightedRelativeRmse(streamed.ReadOutput(), image), image};
   };
   Renderer kept(tables, start, {.width = kWidth, .height = kHeight});
   auto [kept_vs_fresh, shadowed] = step(true, kept);
@@ -301,7 +301,7 @@ TEST_F(ShadowRender, KeptTilesDrawTheFrameThatFreshOnesDraw) {
   EXPECT_TRUE(kept.frame_info().froxels_updated);
   Renderer unshadowed(tables, start, {.width = kWidth, .height = kHeight, .shadows = false});
   auto [baseline, unshadowed_image] = step(false, unshadowed);
-  double shadows = RelativeRmse(shadowed, unshadowed_image);
+  double shadows = validation::EnergyWeightedRelativeRmse(shadowed, unshadowed_image);
   std::printf("kept tiles vs fresh: %.2e relative RMSE, without shadows %.2e (the shadows themselves: %.2f%%)\n",
               kept_vs_fresh, baseline, 100 * shadows);
   EXPECT_LT(kept_vs_fresh, baseline + 1e-5);

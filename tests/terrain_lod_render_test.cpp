@@ -8,8 +8,8 @@
 #include "aerial/render/renderer.h"
 #include "aerial/scene.h"
 #include "aerial/scene/terrain.h"
+#include "aerial/validation/image_metrics.h"
 #include "gpu_fixture.h"
-#include "image_compare.h"
 
 namespace aerial::testing {
 namespace {
@@ -82,7 +82,7 @@ TEST_F(LeanFrame, LevelOfDetailLooksLikeTheFixedMesh) {
   }
   int blocks = 0;
   double block_rmse = BlockRmse(lod, mesh, 8, &blocks);
-  double pixel_rmse = RelativeRmse(lod.radiance, mesh.radiance, &both);
+  double pixel_rmse = validation::EnergyWeightedRelativeRmse(lod.radiance, mesh.radiance, &both);
   std::printf("level of detail vs fixed mesh: %zu opaque pixels, RMSE per pixel %.2f%%, over %d 8x8 blocks "
               "%.2f%%; outline differs at %zu pixels (%.3f%%)\n",
               opaque, 100 * pixel_rmse, blocks, 100 * block_rmse, outline, 100.0 * outline / both.size());
@@ -141,7 +141,7 @@ TEST_F(LeanFrame, RenderScaleUpscalesToTheOutputSize) {
   ASSERT_EQ(half.radiance.width, kWidth);
   ASSERT_EQ(half.radiance.height, kHeight);
   EXPECT_EQ(half.surface.width, kWidth / 2);
-  double rmse = RelativeRmse(half.radiance, full.radiance);
+  double rmse = validation::EnergyWeightedRelativeRmse(half.radiance, full.radiance);
   std::printf("render scale 0.5 vs 1: relative RMSE %.2f%%\n", 100 * rmse);
   // Smooth sky and haze survive a 2x upscale; edges (landmarks, ridges, glass) blur over a pixel.
   EXPECT_GT(rmse, 0.0);
@@ -173,7 +173,7 @@ TEST_F(LeanFrame, CachedTablesAreRemadeOnlyWhenTheirInputsChange) {
   // The remade table is the one a fresh renderer makes for that sun and camera.
   Renderer fresh(FullTables(), scene, {.width = 160, .height = 90});
   fresh.Render(scene);
-  EXPECT_EQ(RelativeRmse(renderer.ReadOutput(), fresh.ReadOutput()), 0.0);
+  EXPECT_EQ(validation::EnergyWeightedRelativeRmse(renderer.ReadOutput(), fresh.ReadOutput()), 0.0);
 }
 
 // A table made 10 m below the camera (the most the cache lets it lag) against a fresh one, at
@@ -189,7 +189,7 @@ TEST_F(LeanFrame, SkyViewTableTenMetersOffChangesLittle) {
   ASSERT_FALSE(lagging.frame_info().sky_view_updated);
   Renderer fresh(FullTables(), scene, {.width = 320, .height = 180});
   fresh.Render(scene);
-  double rmse = RelativeRmse(lagging.ReadOutput(), fresh.ReadOutput());
+  double rmse = validation::EnergyWeightedRelativeRmse(lagging.ReadOutput(), fresh.ReadOutput());
   std::printf("sky-view table 9.9 m off: relative RMSE %.4f%%\n", 100 * rmse);
   EXPECT_GT(rmse, 0.0);
   EXPECT_LT(rmse, 0.001);

@@ -94,14 +94,16 @@ bool BelowTerrain(const glm::dvec3& point, double planet_radius_m) {
 // The shaders' read of the froxels at screen position (u, v) and a distance (SampleFroxels in
 // shaders/include/froxel.glsl), written here from the GLSL and Vulkan's linear filtering with
 // clamp-to-edge addressing, independently of FroxelTexels::Read (froxel_placement.cpp), which the
-// world grid calls: texture coordinate (u, v, sqrt(distance / far)) times the size, less half a
-// texel, weighs the two nearest texels on each axis, their indices clamped to the edge; below the
-// first slice center, d_0 = far (0.5 / D)^2, the values blend toward the empty segment.
+// world grid calls: texture coordinate (u, v, grid.DepthCoordinate(distance)) times the size, less
+// half a texel, weighs the two nearest texels on each axis, their indices clamped to the edge;
+// below the first slice center, grid.SliceDistance(0.5), the values blend toward the empty
+// segment. The depth mapping itself is FroxelGrid's (tests/cpu_gpu_mapping_test.cpp holds it
+// to the shaders').
 FroxelTexels::Sample ReadLikeTheShader(const FroxelTexels& texels, double u, double v, double distance) {
   const FroxelGrid& grid = texels.grid;
   const int size[3] = {grid.width, grid.height, grid.depth};
   const double coordinate[3] = {u * size[0] - 0.5, v * size[1] - 0.5,
-                                std::sqrt(distance / grid.far_m) * size[2] - 0.5};
+                                grid.DepthCoordinate(distance) * size[2] - 0.5};
   int low[3];
   double fraction[3];
   for (int axis = 0; axis < 3; ++axis) {
@@ -123,7 +125,7 @@ FroxelTexels::Sample ReadLikeTheShader(const FroxelTexels& texels, double u, dou
           sample.transmittance[c] += weight * texels.transmittance[texel + c];
         }
       }
-  double first = grid.far_m * (0.5 / grid.depth) * (0.5 / grid.depth);
+  double first = grid.SliceDistance(0.5);
   if (distance < first) {
     double t = distance / first;
     sample.rayleigh *= t;

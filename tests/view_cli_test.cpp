@@ -13,8 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "aerial/image/image_writer.h"
+#include "aerial/validation/image_metrics.h"
 #include "command_run.h"
-#include "image_compare.h"
 #include "xvfb_display.h"
 
 namespace aerial::testing {
@@ -50,7 +50,7 @@ TEST(ViewCli, RendersFramesLikeRenderAndWritesStats) {
   ASSERT_EQ(b.width, a.width);
   // The same Renderer, tables, scene, camera and size: the frames are the same computation, so
   // only the last float bits of the camera pose (interpolated vs parsed) may differ.
-  double rmse = RelativeRmse(a, b);
+  double rmse = validation::EnergyWeightedRelativeRmse(a, b);
   std::printf("view vs render: relative RMSE %.2e\n", rmse);
   EXPECT_LT(rmse, 1e-4);
 
@@ -78,7 +78,7 @@ TEST(ViewCli, RenderScaleKeepsTheWindowSize) {
   ImageRgbF a = ReadExr(dir / "view.exr"), b = ReadExr(dir / "render.exr");
   EXPECT_EQ(a.width, 160);
   EXPECT_EQ(a.height, 90);
-  EXPECT_LT(RelativeRmse(a, b), 1e-4);  // the same computation, as in the test above
+  EXPECT_LT(validation::EnergyWeightedRelativeRmse(a, b), 1e-4);  // the same computation, as in the test above
   std::filesystem::remove_all(dir);
 }
 

@@ -39,6 +39,8 @@ struct Difference {
     }
   }
 
+  // Energy-weighted, as aerial's tests compute it (EnergyWeightedRelativeRmse,
+  // src/aerial/validation/image_metrics.h): this example builds against the installed package alone.
   double RelativeRmse() const { return std::sqrt(sum_squared / sum_reference); }
 
   bool Report(const char* kind, double bound) const {

@@ -1,7 +1,8 @@
 #pragma once
 // The froxel grid's shape: resolution across the screen and in depth, and how far it reaches.
-// Its depth slices follow shaders/include/froxel.glsl: slice k's center stands for the distance
-// far * ((k + 0.5) / depth)^2 (quadratic, thin near slices; see there for why).
+// Its depth slices: slice k's center stands for the distance far * ((k + 0.5) / depth)^2
+// (quadratic, thin near slices). SliceDistance and DepthCoordinate are that mapping's only C++
+// definition; shaders/include/froxel_depth.glsl is its only GLSL one (and says why quadratic).
 #include <string>
 
 namespace aerial {

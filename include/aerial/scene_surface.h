@@ -1,6 +1,6 @@
 #pragma once
 // The surface the scene itself has where a renderer drew opaque geometry, for checking that
-// renderer's lighting against a reference (aerial bench: src/aerial/bench/reference_sampling.h,
+// renderer's lighting against a reference (src/aerial/validation/reference_sampling.h,
 // with aerial/reference/): the renderer's depth along the pixel's ray says where (geometry), the
 // scene's description says what is there (point, normal, albedo), never the renderer's lighting.
 //  - Meshes: the nearest hit of a CPU ray cast (src/aerial/scene/mesh_ray_cast.h), taken where it is at the

@@ -1,24 +1,11 @@
 // The froxel volume: a grid aligned with the camera frustum, x and y across the screen, z along
-// the view distance. Slice k's texel center stands for the distance
-//   d_k = far * ((k + 0.5) / D)^2,
-// a quadratic distribution (Hillaire 2020): near slices are thin (31 m at the default 32 slices
-// over 128 km) where aerial perspective changes fastest relative to the distance and where
-// nearby objects need it resolved, far slices are long (8 km) where it changes slowly. The
-// inverse, w = sqrt(d / far), puts any distance on the texture's z axis with texel centers at the
-// d_k. Each froxel holds, from the camera to d_k along its center ray, Rayleigh and Mie inscatter
-// WITHOUT phase and the transmittance: phases are applied per pixel.
+// the view distance with quadratic slices (froxel_depth.glsl). Each froxel holds, from the camera
+// to its slice's distance along its center ray, Rayleigh and Mie inscatter WITHOUT phase and the
+// transmittance: phases are applied per pixel.
 #ifndef AERIAL_FROXEL_GLSL
 #define AERIAL_FROXEL_GLSL
+#include "froxel_depth.glsl"
 #include "sky_lookup.glsl"
-
-float FroxelSliceDistance(float slice_center, float slices, float far_distance) {
-  float s = slice_center / slices;
-  return far_distance * s * s;
-}
-
-float FroxelDepthCoordinate(float distance, float far_distance) {
-  return sqrt(max(distance, 0.0) / far_distance);
-}
 
 // Trilinear read at a screen position and a distance. Below the first slice center the values
 // are blended toward the empty segment (no inscatter, full transmittance), since the sampler

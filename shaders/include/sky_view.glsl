@@ -9,6 +9,7 @@
 #define AERIAL_SKY_VIEW_GLSL
 #include "frame.glsl"
 #include "mappings.glsl"
+#include "sky_view_lattice.glsl"
 
 // (u, v) of a direction: cos_phi relative to the sun's azimuth, theta the zenith angle, theta_h
 // the horizon's (HorizonZenithAngle of the camera's r: the same for every direction of a frame).
@@ -73,46 +74,6 @@ SkyViewRay GetSkyViewRay(ivec2 texel, ivec2 size) {
   ray.mu_s = dot(up, frame.sun_direction.xyz);
   ray.nu = dot(ray.direction, frame.sun_direction.xyz);
   return ray;
-}
-
-// ---- The lattice of the sky inscatter correction (sky_view_correction.comp) ----
-// Nodes every 4 texels in azimuth and 3 in zenith, each half of the zenith axis (above and below
-// the horizon, where the correction jumps with the ray's end) on its own nodes, and the last
-// texel of each axis or half a node too, so that texels only interpolate between nodes.
-const ivec2 SKY_VIEW_LATTICE_SPACING = ivec2(4, 3);
-
-// Along an axis of n texels: the node count, and the texel of node i.
-int GetLatticeNodeCount(int n, int spacing) { return (n - 2) / spacing + 2; }
-int GetLatticeNodeTexel(int i, int n, int spacing) { return min(i * spacing, n - 1); }
-
-// The node at or below texel x, and the weight of the one after it.
-void GetLatticeCell(int x, int n, int spacing, out int i, out float t) {
-  i = min(x / spacing, GetLatticeNodeCount(n, spacing) - 2);
-  int x0 = GetLatticeNodeTexel(i, n, spacing);
-  t = float(x - x0) / float(GetLatticeNodeTexel(i + 1, n, spacing) - x0);
-}
-
-ivec2 GetSkyViewLatticeSize(ivec2 size) {
-  return ivec2(GetLatticeNodeCount(size.x, SKY_VIEW_LATTICE_SPACING.x),
-               2 * GetLatticeNodeCount(size.y / 2, SKY_VIEW_LATTICE_SPACING.y));
-}
-
-ivec2 GetSkyViewLatticeTexel(ivec2 node, ivec2 size) {
-  int half_rows = size.y / 2;
-  int half_nodes = GetLatticeNodeCount(half_rows, SKY_VIEW_LATTICE_SPACING.y);
-  int half_index = node.y / half_nodes;
-  return ivec2(GetLatticeNodeTexel(node.x, size.x, SKY_VIEW_LATTICE_SPACING.x),
-               half_index * half_rows +
-                   GetLatticeNodeTexel(node.y - half_index * half_nodes, half_rows, SKY_VIEW_LATTICE_SPACING.y));
-}
-
-// The lattice cell of a texel: its first node, and the weights of the next ones in x and y.
-void GetSkyViewLatticeCell(ivec2 texel, ivec2 size, out ivec2 node, out vec2 t) {
-  int half_rows = size.y / 2;
-  int half_index = texel.y / half_rows;
-  GetLatticeCell(texel.x, size.x, SKY_VIEW_LATTICE_SPACING.x, node.x, t.x);
-  GetLatticeCell(texel.y - half_index * half_rows, half_rows, SKY_VIEW_LATTICE_SPACING.y, node.y, t.y);
-  node.y += half_index * GetLatticeNodeCount(half_rows, SKY_VIEW_LATTICE_SPACING.y);
 }
 
 #endif

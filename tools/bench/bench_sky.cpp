@@ -1,5 +1,5 @@
 // aerial_bench_sky: the tables against the CPU reference with all orders, by region of sun zenith
-// angle and camera altitude, per wavelength (aerial/bench/sky_accuracy.h): the figures of the
+// angle and camera altitude, per wavelength (aerial/validation/sky_accuracy.h): the figures of the
 // docs/accuracy.md's "Accuracy against the physical sky". The reference takes minutes and is kept in
 // --reference-file, so that several table configurations (--scattering-size, --orders,
 // --series-tail ...) are compared against the same reference samples.
@@ -9,7 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "aerial/bench/sky_accuracy.h"
+#include "aerial/validation/sky_accuracy.h"
 #include "aerial/cli/common_options.h"
 #include "aerial/core/atomic_file.h"
 #include "aerial/error.h"
@@ -17,6 +17,8 @@
 #include "bench_main.h"
 
 namespace {
+
+namespace validation = aerial::validation;
 
 struct BenchOptions {
   aerial::cli::TableOptions tables;
@@ -32,35 +34,35 @@ void Bench(const BenchOptions& cli) {
   aerial::PrecomputeOptions options = cli.tables.MakePrecomputeOptions();
   if (!cli.markdown_file.empty()) aerial::CheckWritable(cli.markdown_file);
   if (!cli.samples_csv_file.empty()) aerial::CheckWritable(cli.samples_csv_file);
-  aerial::bench::SkyReference reference;
+  validation::SkyReference reference;
   if (!cli.reference_file.empty() && std::filesystem::exists(cli.reference_file)) {
-    reference = aerial::bench::ReadSkyReference(cli.reference_file);
+    reference = validation::ReadSkyReference(cli.reference_file);
     if (reference.orders != options.RepresentedOrders())
       throw aerial::Error("--reference-file", cli.reference_file,
                           "a reference of the orders these tables stand for (made with other --orders or --series-tail)");
     std::fprintf(stderr, "reference: %zu samples from %s\n", reference.samples.size(), cli.reference_file.c_str());
   } else {
-    aerial::bench::SkyGrid grid = cli.grid == "quick" ? aerial::bench::SkyGrid::Quick() : aerial::bench::SkyGrid::Full();
-    reference = aerial::bench::ComputeSkyReference(
+    validation::SkyGrid grid = cli.grid == "quick" ? validation::SkyGrid::Quick() : validation::SkyGrid::Full();
+    reference = validation::ComputeSkyReference(
         atmosphere, grid, options.RepresentedOrders(), {.paths_per_query = cli.paths},
         [](size_t done, size_t total) {
           if (done % 100 == 0 || done == total) std::fprintf(stderr, "reference: %zu / %zu\n", done, total);
         });
-    if (!cli.reference_file.empty()) aerial::bench::WriteSkyReference(reference, cli.reference_file);
+    if (!cli.reference_file.empty()) validation::WriteSkyReference(reference, cli.reference_file);
   }
   aerial::Device device(cli.tables.MakeDeviceOptions());
   aerial::Tables tables = aerial::Tables::LoadOrPrecompute(device, atmosphere, options, cli.tables.MakeLoadOptions());
   std::vector<aerial::Spectrum> tables_values;
-  auto regions = aerial::bench::CompareSkyWithTables(tables, reference, &tables_values);
-  std::string table = aerial::bench::FormatSkyAccuracy(regions);
-  std::fprintf(stderr, "%s\n", aerial::bench::FormatWorstSamples(regions).c_str());
+  auto regions = validation::CompareSkyWithTables(tables, reference, &tables_values);
+  std::string table = validation::FormatSkyAccuracy(regions);
+  std::fprintf(stderr, "%s\n", validation::FormatWorstSamples(regions).c_str());
   std::printf("tables: %s\nreference: %d paths per query, %s\n\n%s", options.Describe().c_str(),
               reference.paths_per_query,
               reference.orders == aerial::reference::kAllOrders ? "all orders" : ("orders 1.." + std::to_string(reference.orders)).c_str(),
               table.c_str());
   if (!cli.markdown_file.empty()) aerial::WriteFileAtomically(cli.markdown_file, table);
   if (!cli.samples_csv_file.empty())
-    aerial::WriteFileAtomically(cli.samples_csv_file, aerial::bench::FormatSampleErrorsCsv(reference, tables_values));
+    aerial::WriteFileAtomically(cli.samples_csv_file, validation::FormatSampleErrorsCsv(reference, tables_values));
 }
 
 }  // namespace

@@ -7,6 +7,14 @@
 #include "aerial/scene.h"
 
 namespace aerial::bench {
+
+using validation::CompareImages;
+using validation::CompareSamples;
+using validation::PixelClass;
+using validation::ReferenceSamples;
+using validation::ReferenceSampling;
+using validation::SampleReference;
+using validation::ViewReference;
 namespace {
 
 std::unique_ptr<SceneRenderer> ImageRenderer(const Tables& tables, const Scene& scene,
@@ -59,12 +67,6 @@ ViewAccuracy Measure(const std::string& view, const VariantImages& images, const
 }
 
 }  // namespace
-
-Scene OpaqueScene(const Scene& scene) {
-  Scene opaque = scene;
-  std::erase_if(opaque.meshes, [](const Mesh& mesh) { return mesh.transparent; });
-  return opaque;
-}
 
 std::vector<ViewReference> SampleViews(const Tables& tables, Scene& scene, const BenchPlan& plan,
                                        const std::function<void()>& on_pixel) {

@@ -10,24 +10,21 @@
 
 #include "aerial/bench/bench_plan.h"
 #include "aerial/bench/bench_results.h"
-#include "aerial/bench/reference_sampling.h"
-#include "aerial/tables.h"
 #include "aerial/scene.h"
+#include "aerial/tables.h"
+#include "aerial/validation/reference_sampling.h"
 
 namespace aerial::bench {
 
-// The scene with its transparent meshes removed.
-Scene OpaqueScene(const Scene& scene);
-
 // The reference in each view of plan.views, at plan.image_width x height: tables only serve to
 // render the views' surfaces (distances and sky pixels) and frame uniforms. Sets scene's view.
-std::vector<ViewReference> SampleViews(const Tables& tables, Scene& scene, const BenchPlan& plan,
+std::vector<validation::ViewReference> SampleViews(const Tables& tables, Scene& scene, const BenchPlan& plan,
                                        const std::function<void()>& on_pixel);
 
 // Fills the accuracy of both results; figures (may be null) receives each view's images.
 void MeasureAccuracy(VariantResult& lut4d, const Tables& tables4d, VariantResult& lut3d,
                      const Tables& tables3d, Scene& scene, const BenchPlan& plan,
-                     const std::vector<ViewReference>& references, std::vector<FigureImages>* figures,
+                     const std::vector<validation::ViewReference>& references, std::vector<FigureImages>* figures,
                      const std::function<void()>& on_view);
 
 }  // namespace aerial::bench

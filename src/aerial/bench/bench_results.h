@@ -5,14 +5,14 @@
 #include <vector>
 
 #include "aerial/bench/bench_plan.h"
-#include "aerial/bench/image_metrics.h"
 #include "aerial/bench/precompute_report.h"
 #include "aerial/image.h"
+#include "aerial/validation/image_metrics.h"
 
 namespace aerial::bench {
 
 struct ClassErrors {
-  ErrorStats sky, opaque;
+  validation::ErrorStats sky, opaque;
 };
 
 // One variant's accuracy in one view.

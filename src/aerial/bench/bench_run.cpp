@@ -9,6 +9,10 @@
 #include "aerial/scene.h"
 
 namespace aerial::bench {
+
+using validation::OpaqueScene;
+using validation::ReferencePixel;
+using validation::ViewReference;
 namespace {
 
 int ProgressSteps(const BenchPlan& p) {

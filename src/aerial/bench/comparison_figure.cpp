@@ -8,6 +8,8 @@
 #include "aerial/image/exposure.h"
 
 namespace aerial::bench {
+
+using validation::ErrorMap;
 namespace {
 
 constexpr int kMargin = 12, kGap = 10, kTextScale = 2, kBarWidth = 16;

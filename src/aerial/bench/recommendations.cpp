@@ -10,7 +10,7 @@ namespace {
 
 // The largest relative RMSE of one comparison over some views and both pixel classes, and where.
 struct Worst {
-  double rel_rmse = 0.0;
+  double per_pixel_rel_rmse = 0.0;
   std::string where = "none";
 };
 
@@ -21,8 +21,10 @@ Worst WorstOf(const VariantResult& r, std::span<const char* const> views,
     if (std::find(views.begin(), views.end(), a.view) == views.end()) continue;
     const ClassErrors& e = comparison(a);
     for (auto [stats, name] : {std::pair{&e.sky, "sky"}, std::pair{&e.opaque, "opaque"}}) {
-      if (stats->pixels == 0 || (sky_only && stats == &e.opaque) || stats->rel_rmse < worst.rel_rmse) continue;
-      worst = {stats->rel_rmse, a.view + " " + name};
+      if (stats->pixels == 0 || (sky_only && stats == &e.opaque) ||
+          stats->per_pixel_rel_rmse < worst.per_pixel_rel_rmse)
+        continue;
+      worst = {stats->per_pixel_rel_rmse, a.view + " " + name};
     }
   }
   return worst;
@@ -48,27 +50,27 @@ std::vector<std::string> Recommendations(const BenchResults& b) {
                   Format("%.1f", lut4d.TableDifferenceFrameMs()) +
                   " ms for two table reads per pixel (Bruneton 2017's demo) and " +
                   Format("%.0f", lut4d.PerPixelFrameMs()) + " ms marched per pixel; at most " +
-                  Percent(froxel.rel_rmse) + " RMSE from the marched path (" + froxel.where + ").");
+                  Percent(froxel.per_pixel_rel_rmse) + " RMSE from the marched path (" + froxel.where + ").");
 
   Worst low_sun = WorstOf(lut3d, kLowSunViews, ThreeDVsFourD, true);
   lines.push_back("- **Any sun, sunsets and twilight included**: the 4D tables; with the sun low the 3D "
-                  "tables' sky is " + Percent(low_sun.rel_rmse) + " RMSE from theirs (" + low_sun.where +
+                  "tables' sky is " + Percent(low_sun.per_pixel_rel_rmse) + " RMSE from theirs (" + low_sun.where +
                   "): they have no Earth's shadow along the view ray.");
 
   Worst daylight = WorstOf(lut3d, kDaylightViews, ThreeDVsFourD);
   double smaller = double(lut4d.precompute.table_bytes) / double(lut3d.precompute.table_bytes);
-  lines.push_back(daylight.rel_rmse <= kDaylightTolerance
+  lines.push_back(daylight.per_pixel_rel_rmse <= kDaylightTolerance
                       ? "- **Daylight only, memory tight**: the 3D tables, " + Format("%.1f", smaller) +
-                            "x smaller, within " + Percent(daylight.rel_rmse) + " RMSE of the 4D frames (" +
+                            "x smaller, within " + Percent(daylight.per_pixel_rel_rmse) + " RMSE of the 4D frames (" +
                             daylight.where + ")."
                       : "- **Daylight only, memory tight**: not the 3D tables at this resolution: " +
-                            Percent(daylight.rel_rmse) + " RMSE from the 4D frames (" + daylight.where +
+                            Percent(daylight.per_pixel_rel_rmse) + " RMSE from the 4D frames (" + daylight.where +
                             "), above " + Percent(kDaylightTolerance) + ".");
 
   Worst reference = WorstOf(lut4d, all_views, PerPixelVsReference, true);
   lines.push_back("- **Reference images, validation**: `--aerial per-pixel` with the 4D tables, " +
                   Format("%.0f", lut4d.PerPixelFrameMs()) + " ms a frame here; its sky is within " +
-                  Percent(reference.rel_rmse) + " RMSE of the CPU reference (" + reference.where + ").");
+                  Percent(reference.per_pixel_rel_rmse) + " RMSE of the CPU reference (" + reference.where + ").");
   if (b.plan.quick) {
     std::string tiers;
     for (const TableTier& t : b.plan.tiers) tiers += (tiers.empty() ? "" : ", ") + t.name;

@@ -10,7 +10,7 @@ namespace aerial::bench {
 namespace {
 
 ClassErrors Errors(double sky, double opaque) {
-  return {.sky = {.pixels = 10, .rel_rmse = sky}, .opaque = {.pixels = 10, .rel_rmse = opaque}};
+  return {.sky = {.pixels = 10, .per_pixel_rel_rmse = sky}, .opaque = {.pixels = 10, .per_pixel_rel_rmse = opaque}};
 }
 
 RunResult Frame(double ms) { return {.passes = {{"frame", ms}}}; }

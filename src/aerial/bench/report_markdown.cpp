@@ -10,13 +10,15 @@
 #include "aerial/reference/monte_carlo.h"
 
 namespace aerial::bench {
+
+using validation::ErrorStats;
 namespace {
 
 double MiB(size_t bytes) { return double(bytes) / (1 << 20); }
 
 // "0.41% / 2.3%": relative RMSE / maximum.
 std::string Cell(const ErrorStats& e) {
-  return e.pixels == 0 ? "n/a" : Percent(e.rel_rmse) + " / " + Percent(e.rel_max);
+  return e.pixels == 0 ? "n/a" : Percent(e.per_pixel_rel_rmse) + " / " + Percent(e.rel_max);
 }
 
 std::string TierLabel(const TableTier& tier) {
@@ -61,8 +63,9 @@ void SummarySection(std::ostringstream& md, const BenchResults& b) {
   ErrorStats sky, opaque;
   std::string sky_view, opaque_view;
   for (const ViewAccuracy& v : lut3d.accuracy) {
-    if (v.vs_4d->sky.pixels && v.vs_4d->sky.rel_rmse >= sky.rel_rmse) sky = v.vs_4d->sky, sky_view = v.view;
-    if (v.vs_4d->opaque.pixels && v.vs_4d->opaque.rel_rmse >= opaque.rel_rmse)
+    if (v.vs_4d->sky.pixels && v.vs_4d->sky.per_pixel_rel_rmse >= sky.per_pixel_rel_rmse)
+      sky = v.vs_4d->sky, sky_view = v.view;
+    if (v.vs_4d->opaque.pixels && v.vs_4d->opaque.per_pixel_rel_rmse >= opaque.per_pixel_rel_rmse)
       opaque = v.vs_4d->opaque, opaque_view = v.view;
   }
   md << "sky " << Cell(sky) << " (relative RMSE / max, " << sky_view << "), opaque " << Cell(opaque) << " ("

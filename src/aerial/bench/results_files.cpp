@@ -7,6 +7,9 @@
 
 namespace aerial::bench {
 
+using validation::ErrorStats;
+using validation::PixelClass;
+
 const char* const kErrorDefinition =
     "per pixel and channel e = |actual - expected| / max(|expected|, floor), floor = 1e-3 x the mean "
     "|expected| of that channel over the pixel class; rel_rmse = sqrt(mean e^2) and rel_max = max e "
@@ -17,7 +20,7 @@ namespace {
 nlohmann::json ErrorJson(const ErrorStats& e) {
   if (e.pixels == 0) return {{"pixels", 0}, {"rel_rmse", nullptr}, {"rel_max", nullptr}};
   return {
-      {"pixels", e.pixels}, {"rel_rmse", e.rel_rmse}, {"rel_max", e.rel_max}, {"max_at", {e.max_x, e.max_y}}};
+      {"pixels", e.pixels}, {"rel_rmse", e.per_pixel_rel_rmse}, {"rel_max", e.rel_max}, {"max_at", {e.max_x, e.max_y}}};
 }
 
 nlohmann::json ResolutionJson(const TableResolution& r) {
@@ -150,7 +153,7 @@ std::string ResultsCsv(const BenchResults& b) {
         for (PixelClass pixels : {PixelClass::kSky, PixelClass::kOpaque}) {
           const ErrorStats& e = pixels == PixelClass::kSky ? errors->sky : errors->opaque;
           csv << head << "," << view.view << "," << name << "," << ToString(pixels) << "," << e.pixels << ","
-              << (e.pixels ? CsvNumber(e.rel_rmse) : "") << "," << (e.pixels ? CsvNumber(e.rel_max) : "")
+              << (e.pixels ? CsvNumber(e.per_pixel_rel_rmse) : "") << "," << (e.pixels ? CsvNumber(e.rel_max) : "")
               << "\n";
         }
   }

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 
 #include "aerial/core/format_number.h"
 #include "aerial/error.h"
 #include "aerial/image/resample.h"
 #include "aerial/render/shadow_uniforms.h"
+#include "aerial/render/sky_view_layout.h"
 #include "aerial/scene/terrain.h"
 #include "aerial/terrain/terrain_chunk.h"
 
@@ -112,14 +112,6 @@ vk::GraphicsPipelineCreateInfo SkyPipeline(AerialMode mode) {
           .depth_compare = vk::kDepthEqual,
           .specialization = {PerPixel(mode)}};
 }
-
-// The sky-view table's size (Hillaire 2020 uses 192x108): azimuth over [0, pi], zenith split at
-// the horizon (54 rows each side).
-constexpr std::array<int, 2> kSkyViewSize = {192, 108};
-// The lattice of the sky inscatter correction (sky_view.glsl, GetSkyViewLatticeSize): nodes every 4
-// texels in azimuth and 3 in zenith per half, the last texel included.
-constexpr std::array<int, 2> kSkyViewLatticeSize = {(kSkyViewSize[0] - 2) / 4 + 2,
-                                                     2 * ((kSkyViewSize[1] / 2 - 2) / 3 + 2)};
 
 vk::ImageCreateInfo SkyViewImage() {
   return {.extent = {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}};
@@ -287,24 +279,10 @@ void Renderer::SelectTerrain(const Scene& scene, bool complete) {
   frame_info_.built = terrain_->built_this_frame();
 }
 
-// The sky-view table depends on the camera's distance from the planet's center and the sun's
-// zenith angle there, nothing else (sky_view.glsl builds it in the camera's local frame): it is
-// remade on the first frame, when the sun moves (mu_s by more than 1e-5, 1/80 of the sun's
-// radius at the horizon), and when the camera's altitude moves by more than 10 m. A table 10 m
-// off changes the frame by at most 0.07% relative RMSE (sunset, 30 m to 3 km up; 0.02% at noon;
-// measured against a fresh table when this was chosen, and tested), well under the 0.2-0.8% that
-// the table itself differs from the per-pixel sky; a camera climbing at 180 m/s remakes it every
-// other frame instead of every frame. An exact frame (Record's `complete`) remakes any table not
-// made for its own r and mu_s.
+// When the sky-view table is remade: frame_cache_policy.h (SkyViewReusable).
 bool Renderer::SkyViewStale(bool exact) {
-  constexpr float kAltitudeToleranceM = 10.0f, kMuSTolerance = 1e-5f;
-  const auto& p = frame_uniforms_.camera_planet_position;
-  const auto& s = frame_uniforms_.sun_direction;
-  float r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-  std::array<float, 2> key = {r, (p[0] * s[0] + p[1] * s[1] + p[2] * s[2]) / r};
-  bool close = sky_view_key_ && std::fabs((*sky_view_key_)[0] - key[0]) <= kAltitudeToleranceM &&
-               std::fabs((*sky_view_key_)[1] - key[1]) <= kMuSTolerance;
-  if (sky_view_key_ == key || (close && !exact)) return false;
+  SkyViewKey key = MakeSkyViewKey(frame_uniforms_);
+  if (SkyViewReusable(sky_view_key_, key, exact)) return false;
   sky_view_key_ = key;
   frame_info_.sky_view_updated = true;
   return true;
@@ -345,10 +323,8 @@ constexpr double kCasterToleranceTexels = 0.25;
 
 // The cascades are fitted to every frame's camera (cheap), keeping the windows the shadow map holds
 // while their slices fit (shadow_cascades.h), and a tile of the shadow map is redrawn only when
-// what it shows changed: its window, the sun, or its terrain casters as its texels resolve them
-// (the camera's level of detail changed, or chunks deferred for the build budget arrived). The
-// scene's meshes are fixed for the renderer's life. An exact frame (Record's `complete`) fits its
-// windows afresh, as a new renderer would.
+// what it shows changed (frame_cache_policy.h: its window, the sun, or its terrain casters as its
+// texels resolve them).
 void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene, bool exact) {
   glm::dvec3 sun = scene.sun.Direction();
   const CascadeFitInput fit{.camera = scene.camera,
@@ -356,20 +332,12 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
                             .sun = sun,
                             .tile_texels = kShadowTileTexels,
                             .casters = casters_};
-  HeldCascades held;
-  if (shadow_key_ && !exact)
-    for (int i = 0; i < kShadowCascades; ++i) held[i] = shadow_key_->cascades[i];
-  shadow_cascades_ = FitShadowCascades(fit, held);
+  shadow_cascades_ = FitShadowCascades(fit, HeldShadowWindows(shadow_key_, exact));
   if (!options_.shadows) return;
-  const bool first = !shadow_key_;
-  if (first) shadow_key_.emplace();
+  const std::array<bool, kShadowCascades> moved = ShadowWindowsMoved(shadow_key_, shadow_cascades_);
+  if (!shadow_key_) shadow_key_.emplace();
   ShadowKey& key = *shadow_key_;
-  std::array<bool, kShadowCascades> moved{};
-  for (int i = 0; i < kShadowCascades; ++i)
-    moved[i] = first || key.cascades[i].clip_from_world != shadow_cascades_[i].clip_from_world;
-  // A still view whose selection lacked no chunk draws what the map holds.
-  const bool any_moved = std::find(moved.begin(), moved.end(), true) != moved.end();
-  if (still_view_ && shadow_selection_whole_ && !any_moved) return;
+  if (ShadowMapKept(still_view_, shadow_selection_whole_, moved)) return;
   ShadowTerrain chunks;
   if (terrain_ && options_.passes.terrain) {
     int deferred = 0;
@@ -380,7 +348,7 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
   for (int i = 0; i < kShadowCascades; ++i) {
     std::vector<terrain::SelectedChunk> casters;
     if (terrain_) casters = CoarsenCasters(chunks[i], kCasterToleranceTexels * shadow_cascades_[i].texel_m, *terrain_);
-    redraw[i] = moved[i] || casters != key.casters[i];
+    redraw[i] = ShadowTileRedrawn(moved[i], casters, key.casters[i]);
     key.cascades[i] = shadow_cascades_[i];
     if (!redraw[i]) continue;
     key.casters[i] = std::move(casters);
@@ -448,23 +416,6 @@ void Renderer::DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot
   timer.End(cmd);
 }
 
-// Whether this frame may read the sun visibility the last caching frame wrote: it draws the same
-// surfaces (its uniforms, so the camera and the sun, and its terrain chunks are that frame's)
-// under the same shadow map.
-bool Renderer::SunVisibilityCached() const {
-  return sun_visibility_key_ && !frame_info_.shadow_map_updated && sun_visibility_key_->chunks == terrain_chunks_ &&
-         std::memcmp(&sun_visibility_key_->frame, &frame_uniforms_, sizeof(FrameUniforms)) == 0;
-}
-
-// Whether a frame that looks the sun visibility up also writes it for the next frames: the write
-// is a second color target and a raster scope of its own, which only a next frame of the same
-// view reads. So a renderer's first frame writes it (a still image, or a view about to stay), and
-// so does a frame whose view is the one before it (the camera stopped); a moving camera's frames
-// do not.
-bool Renderer::SunVisibilityWorthCaching() const {
-  return opaque_caching_ && (frames_recorded_ == 0 || still_view_);
-}
-
 void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t slot,
                       bool complete) {
   if (slot >= options_.frames_in_flight)
@@ -473,7 +424,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   vk::GpuTimer& timer = *timers_[slot];
   FrameUniforms uniforms = MakeFrameUniforms(scene, tables_.atmosphere().bottom_radius_m, options_.render_width(),
                                              options_.render_height(), options_.froxels);
-  still_view_ = frames_recorded_ > 0 && std::memcmp(&uniforms, &frame_uniforms_, sizeof(FrameUniforms)) == 0;
+  still_view_ = frames_recorded_ > 0 && SameFrame(uniforms, frame_uniforms_);
   frame_uniforms_ = uniforms;
   frame_buffers_[slot].Write(std::as_bytes(std::span(&frame_uniforms_, 1)));
   geometry_.SortTransparent(scene.camera.position, slot);
@@ -498,10 +449,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
       vk::FullBarrier(cmd);
     }
     timer.Begin(cmd, "froxel build");
-    // The volume depends on the camera, the sun, the shadow map and the tables only: a still view
-    // keeps it.
-    if (!froxels_key_ || frame_info_.shadow_map_updated ||
-        std::memcmp(&*froxels_key_, &frame_uniforms_, sizeof(FrameUniforms)) != 0) {
+    if (!FroxelsReusable(froxels_key_, frame_uniforms_, frame_info_.shadow_map_updated)) {
       froxels_.Build(cmd, tables_, frame, shadow_buffers_[slot],
                      shadow_map_.slot());
       froxels_key_ = frame_uniforms_;
@@ -516,8 +464,11 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   std::vector<vk::Slot> mesh_slots = MeshSlots(slot);
   // Every pixel is written once by the opaque pass or the sky, so the output is not cleared.
   vk::RenderTargets targets{.colors = {&output_}, .clear_colors = {std::nullopt}, .depth = &depth_, .clear_depth = 0.0f};
-  frame_info_.sun_visibility_cached = opaque_caching_ && SunVisibilityCached();
-  if (!frame_info_.sun_visibility_cached && SunVisibilityWorthCaching()) {
+  frame_info_.sun_visibility_cached =
+      opaque_caching_ &&
+      SunVisibilityReusable(sun_visibility_key_, frame_uniforms_, terrain_chunks_, frame_info_.shadow_map_updated);
+  if (!frame_info_.sun_visibility_cached && opaque_caching_ &&
+      SunVisibilityWorthCaching(frames_recorded_ == 0, still_view_)) {
     sun_visibility_key_ = SunVisibilityKey{frame_uniforms_, terrain_chunks_};
     // The opaque pass writes the sun visibility as well, in a scope of its own: the sky and the
     // transparent objects draw into the radiance alone.

@@ -19,6 +19,7 @@
 
 #include "aerial/image.h"
 #include "aerial/precompute/atmosphere_tables.h"
+#include "aerial/render/frame_cache_policy.h"
 #include "aerial/render/frame_uniforms.h"
 #include "aerial/render/renderer_options.h"
 #include "aerial/render/scene_geometry.h"
@@ -96,8 +97,6 @@ class Renderer {
                   const std::vector<vk::Slot>& slots) const;
   void DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot,
                              const std::vector<vk::Slot>& mesh_slots) const;
-  bool SunVisibilityCached() const;
-  bool SunVisibilityWorthCaching() const;
 
   const AtmosphereTables& tables_;
   RendererOptions options_;
@@ -115,28 +114,17 @@ class Renderer {
   // The sun's visibility of the front-most opaque surface at each pixel, as the last frame that
   // looked it up in the shadow map drew it (opaque_fragment.glsl), and what that frame showed.
   vk::Image sun_visibility_;
-  struct SunVisibilityKey {
-    FrameUniforms frame;
-    std::vector<terrain::SelectedChunk> chunks;
-  };
   std::optional<SunVisibilityKey> sun_visibility_key_;
   vk::Image sky_rayleigh_, sky_mie_, sky_background_;
   // The sky inscatter correction at the sky-view table's lattice nodes.
   vk::Image sky_rayleigh_correction_, sky_mie_correction_;
-  // (r, mu_s) the sky-view table was made for: it depends on nothing else of the frame.
-  std::optional<std::array<float, 2>> sky_view_key_;
+  std::optional<SkyViewKey> sky_view_key_;  // what the sky-view table was made for
   std::optional<FrameUniforms> froxels_key_;  // the frame the froxel volume was built for
   ShadowMap shadow_map_;
   std::vector<vk::Buffer> shadow_buffers_;
   CasterBounds casters_;
   ShadowCascades shadow_cascades_{};  // of the last frame
-  // What the shadow map's tiles show: the cascades' windows and the terrain chunks drawn in them
-  // (CoarsenCasters).
-  struct ShadowKey {
-    ShadowCascades cascades;
-    ShadowTerrain casters;
-  };
-  std::optional<ShadowKey> shadow_key_;
+  std::optional<ShadowKey> shadow_key_;  // what the shadow map's tiles show
   // The view did not move since the last frame, whose shadow terrain selection lacked no chunk:
   // this frame's would be the same.
   bool still_view_ = false;

@@ -1,4 +1,4 @@
-#include "aerial/bench/reference_sampling.h"
+#include "aerial/validation/reference_sampling.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include "aerial/render/frame_uniforms.h"
 #include "aerial/scene/camera.h"
 
-namespace aerial::bench {
+namespace aerial::validation {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
@@ -50,4 +50,4 @@ TEST(GridPixels, CellCentersInRowOrder) {
 }
 
 }  // namespace
-}  // namespace aerial::bench
+}  // namespace aerial::validation

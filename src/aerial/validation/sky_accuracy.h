@@ -19,7 +19,7 @@
 #include "aerial/tables.h"
 #include "aerial/view_geometry.h"
 
-namespace aerial::bench {
+namespace aerial::validation {
 
 enum class SkyQuantity { kSkyRadiance, kRadianceToPoint, kSkyIrradiance };
 std::string ToString(SkyQuantity quantity);
@@ -122,4 +122,4 @@ std::string FormatWorstSamples(const std::vector<RegionAccuracy>& regions);
 // error, the tables' value and the signed relative error (tables / reference - 1).
 std::string FormatSampleErrorsCsv(const SkyReference& reference, const std::vector<Spectrum>& tables_values);
 
-}  // namespace aerial::bench
+}  // namespace aerial::validation

@@ -20,13 +20,13 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "aerial/bench/image_metrics.h"
 #include "aerial/image.h"
 #include "aerial/reference/reference.h"
 #include "aerial/scene.h"
 #include "aerial/shader_abi/frame_geometry.h"
+#include "aerial/validation/image_metrics.h"
 
-namespace aerial::bench {
+namespace aerial::validation {
 
 struct ReferencePixel {
   int x = 0, y = 0;
@@ -59,6 +59,10 @@ struct ViewReference {
   double median_relative_std_error = 0.0;
 };
 
+// The scene with its transparent meshes removed, so that every pixel is sky or an opaque surface
+// the reference can light.
+Scene OpaqueScene(const Scene& scene);
+
 // The unit view ray (camera-relative world frame) through the center of pixel (x, y), row 0 at
 // the top, as ViewRayFromScreen computes it: the clip-space point (uv * 2 - 1, 0.5, 1) through the
 // frame's inverse view-projection.
@@ -79,4 +83,4 @@ ViewReference SampleReference(const reference::Reference& model, const Scene& sc
 std::vector<PixelSample> ReferenceSamples(const ViewReference& reference, const ImageRgbF& rendered,
                                           PixelClass pixels);
 
-}  // namespace aerial::bench
+}  // namespace aerial::validation

@@ -23,7 +23,7 @@
 #include "aerial/reference/reference.h"
 #include "aerial/scene_surface.h"
 
-namespace aerial::bench {
+namespace aerial::validation {
 
 using LambertianSurface = SceneSurface;
 
@@ -33,4 +33,4 @@ reference::Estimate LambertianRadiance(const reference::Reference& model, const 
                                        const glm::dvec3& sun, int orders,
                                        const reference::MonteCarloOptions& monte_carlo);
 
-}  // namespace aerial::bench
+}  // namespace aerial::validation

@@ -1,11 +1,23 @@
-#include "aerial/bench/image_metrics.h"
+#include "aerial/validation/image_metrics.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace aerial::bench {
+namespace aerial::validation {
 namespace {
+
+// A bright pixel 10% off and a dark one 100% off: the energy-weighted error is the bright pixel's
+// (the per-pixel RMS of the same errors would be 71%); masked to the dark pixel, it is 100%.
+TEST(EnergyWeightedRelativeRmse, WeighsErrorsByTheReferencesEnergy) {
+  ImageRgbF expected{2, 1, {10, 10, 10, 1, 0.01f, 0.01f, 0.01f, 1}};
+  ImageRgbF actual{2, 1, {11, 11, 11, 1, 0.02f, 0.02f, 0.02f, 1}};
+  double both = std::sqrt((3 * 1.0 + 3 * 1e-4) / (3 * 100.0 + 3 * 1e-4));
+  EXPECT_NEAR(EnergyWeightedRelativeRmse(actual, expected), both, 1e-7);
+  EXPECT_NEAR(both, 0.1, 1e-5);
+  std::vector<bool> dark = {false, true};
+  EXPECT_NEAR(EnergyWeightedRelativeRmse(actual, expected, &dark), 1.0, 1e-6);
+}
 
 TEST(CompareSamples, RmsAndMaximumOfRelativeErrors) {
   // Channel errors 10%, 0, 0 and 20%, 0, 0: RMS over 6 values sqrt((0.01 + 0.04) / 6).
@@ -13,7 +25,7 @@ TEST(CompareSamples, RmsAndMaximumOfRelativeErrors) {
                                       {{0.8, 2.0, 3.0}, {1.0, 2.0, 3.0}, 6, 7}};
   ErrorStats e = CompareSamples(samples);
   EXPECT_EQ(e.pixels, 2);
-  EXPECT_NEAR(e.rel_rmse, std::sqrt(0.05 / 6.0), 1e-12);
+  EXPECT_NEAR(e.per_pixel_rel_rmse, std::sqrt(0.05 / 6.0), 1e-12);
   EXPECT_NEAR(e.rel_max, 0.2, 1e-12);
   EXPECT_EQ(e.max_x, 6);
   EXPECT_EQ(e.max_y, 7);
@@ -49,4 +61,4 @@ TEST(CompareImages, SplitsSkyAndOpaqueBySurfaceAlpha) {
 }
 
 }  // namespace
-}  // namespace aerial::bench
+}  // namespace aerial::validation

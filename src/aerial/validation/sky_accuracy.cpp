@@ -1,4 +1,4 @@
-#include "aerial/bench/sky_accuracy.h"
+#include "aerial/validation/sky_accuracy.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include "aerial/probe.h"
 #include "aerial/reference/reference.h"
 
-namespace aerial::bench {
+namespace aerial::validation {
 namespace {
 
 constexpr int kFileVersion = 2;
@@ -318,4 +318,4 @@ std::string FormatSampleErrorsCsv(const SkyReference& reference, const std::vect
   return out.str();
 }
 
-}  // namespace aerial::bench
+}  // namespace aerial::validation

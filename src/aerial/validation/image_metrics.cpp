@@ -1,9 +1,23 @@
-#include "aerial/bench/image_metrics.h"
+#include "aerial/validation/image_metrics.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace aerial::bench {
+namespace aerial::validation {
+
+double EnergyWeightedRelativeRmse(const ImageRgbF& actual, const ImageRgbF& expected,
+                                  const std::vector<bool>* mask) {
+  double sum_squared = 0.0, sum_reference = 0.0;
+  for (size_t p = 0; p < actual.rgba.size() / 4; ++p) {
+    if (mask && !(*mask)[p]) continue;
+    for (int c = 0; c < 3; ++c) {
+      double a = actual.rgba[4 * p + c], b = expected.rgba[4 * p + c];
+      sum_squared += (a - b) * (a - b);
+      sum_reference += b * b;
+    }
+  }
+  return std::sqrt(sum_squared / sum_reference);
+}
 
 const char* ToString(PixelClass pixels) { return pixels == PixelClass::kSky ? "sky" : "opaque"; }
 
@@ -48,7 +62,7 @@ ErrorStats CompareSamples(const std::vector<PixelSample>& samples) {
       stats.max_y = s.y;
     }
   }
-  stats.rel_rmse = std::sqrt(sum_squares / (3.0 * double(samples.size())));
+  stats.per_pixel_rel_rmse = std::sqrt(sum_squares / (3.0 * double(samples.size())));
   return stats;
 }
 
@@ -81,4 +95,4 @@ std::vector<float> ErrorMap(const ImageRgbF& actual, const ImageRgbF& expected, 
   return map;
 }
 
-}  // namespace aerial::bench
+}  // namespace aerial::validation

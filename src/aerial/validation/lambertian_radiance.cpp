@@ -1,11 +1,11 @@
-#include "aerial/bench/lambertian_radiance.h"
+#include "aerial/validation/lambertian_radiance.h"
 
 #include <algorithm>
 #include <numbers>
 
 #include "aerial/reference/solar_disc.h"
 
-namespace aerial::bench {
+namespace aerial::validation {
 
 reference::Estimate LambertianRadiance(const reference::Reference& model, const LambertianSurface& surface,
                                        const glm::dvec3& sun, int orders,
@@ -28,4 +28,4 @@ reference::Estimate LambertianRadiance(const reference::Reference& model, const 
   return radiance;
 }
 
-}  // namespace aerial::bench
+}  // namespace aerial::validation

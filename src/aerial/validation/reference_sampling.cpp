@@ -1,13 +1,13 @@
-#include "aerial/bench/reference_sampling.h"
+#include "aerial/validation/reference_sampling.h"
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
 
-#include "aerial/bench/lambertian_radiance.h"
 #include "aerial/scene_surface.h"
+#include "aerial/validation/lambertian_radiance.h"
 
-namespace aerial::bench {
+namespace aerial::validation {
 namespace {
 
 glm::dvec3 ToVec3(const std::array<float, 4>& v) { return {v[0], v[1], v[2]}; }
@@ -104,4 +104,10 @@ std::vector<PixelSample> ReferenceSamples(const ViewReference& reference, const 
   return samples;
 }
 
-}  // namespace aerial::bench
+Scene OpaqueScene(const Scene& scene) {
+  Scene opaque = scene;
+  std::erase_if(opaque.meshes, [](const Mesh& mesh) { return mesh.transparent; });
+  return opaque;
+}
+
+}  // namespace aerial::validation

@@ -1,11 +1,11 @@
-#include "aerial/bench/lambertian_radiance.h"
+#include "aerial/validation/lambertian_radiance.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-namespace aerial::bench {
+namespace aerial::validation {
 namespace {
 
 const AtmosphereParameters kEarth = AtmosphereParameters::Earth();
@@ -68,4 +68,4 @@ TEST(LambertianRadiance, TiltedScalesTheSunByTheCosineOnTheSurface) {
 }
 
 }  // namespace
-}  // namespace aerial::bench
+}  // namespace aerial::validation

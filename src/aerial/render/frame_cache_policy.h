@@ -1,0 +1,81 @@
+#pragma once
+// What a frame may reuse of what earlier frames made (the sky-view table, the froxel volume, the
+// screen's sun visibility, the shadow map's tiles), decided from what each was made for (its key)
+// and this frame's: pure functions, so that each rule is tested without a GPU
+// (frame_cache_policy_test.cpp). The renderer keeps the keys and records what these leave to redo.
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "aerial/render/shadow_cascades.h"
+#include "aerial/render/shadow_terrain.h"
+#include "aerial/shader_abi/frame_block.h"
+#include "aerial/terrain/lod_selection.h"
+
+namespace aerial {
+
+// Two frame blocks are the same view under the same sun: equal to the bit.
+bool SameFrame(const FrameUniforms& a, const FrameUniforms& b);
+
+// ---- The sky-view table ----
+// It depends on the camera's distance from the planet's center and the sun's zenith angle there,
+// nothing else (sky_view.glsl builds it in the camera's local frame).
+struct SkyViewKey {
+  float r_m = 0.0f, mu_s = 0.0f;
+  bool operator==(const SkyViewKey&) const = default;
+};
+SkyViewKey MakeSkyViewKey(const FrameUniforms& frame);
+// A table is remade on the first frame, when the sun moves (mu_s by more than 1e-5, 1/80 of the
+// sun's radius at the horizon), and when the camera's altitude moves by more than 10 m. A table
+// 10 m off changes the frame by at most 0.07% relative RMSE (sunset, 30 m to 3 km up; 0.02% at
+// noon; measured against a fresh table when this was chosen, and tested), well under the 0.2-0.8%
+// that the table itself differs from the per-pixel sky; a camera climbing at 180 m/s remakes it
+// every other frame instead of every frame. An exact frame (Renderer::Record's `complete`) remakes
+// any table not made for its own r and mu_s.
+bool SkyViewReusable(const std::optional<SkyViewKey>& made_for, const SkyViewKey& now, bool exact);
+
+// ---- The froxel volume ----
+// It depends on the camera, the sun, the shadow map and the tables only: a still view under an
+// unchanged shadow map keeps it.
+bool FroxelsReusable(const std::optional<FrameUniforms>& built_for, const FrameUniforms& now,
+                     bool shadow_map_updated);
+
+// ---- The screen's sun visibility (opaque_fragment.glsl) ----
+// What the frame that wrote it showed.
+struct SunVisibilityKey {
+  FrameUniforms frame;
+  std::vector<terrain::SelectedChunk> chunks;
+};
+// A frame may read what the last caching frame wrote when it draws the same surfaces (its uniforms,
+// so the camera and the sun, and its terrain chunks are that frame's) under the same shadow map.
+bool SunVisibilityReusable(const std::optional<SunVisibilityKey>& written_for, const FrameUniforms& frame,
+                           const std::vector<terrain::SelectedChunk>& chunks, bool shadow_map_updated);
+// Whether a frame that looks the sun visibility up also writes it for the next frames: the write
+// is a second color target and a raster scope of its own, which only a next frame of the same
+// view reads. So a renderer's first frame writes it (a still image, or a view about to stay), and
+// so does a frame whose view is the one before it (the camera stopped); a moving camera's frames
+// do not.
+bool SunVisibilityWorthCaching(bool first_frame, bool still_view);
+
+// ---- The shadow map's tiles ----
+// What the tiles show: the cascades' windows and the terrain chunks drawn in them (CoarsenCasters).
+struct ShadowKey {
+  ShadowCascades cascades;
+  ShadowTerrain casters;
+};
+// The windows a frame's fit keeps (shadow_cascades.h): those the map holds, except for an exact
+// frame, which fits its windows afresh as a new renderer would.
+HeldCascades HeldShadowWindows(const std::optional<ShadowKey>& drawn, bool exact);
+// Per cascade, whether its window moved (every one on the first frame).
+std::array<bool, kShadowCascades> ShadowWindowsMoved(const std::optional<ShadowKey>& drawn,
+                                                     const ShadowCascades& now);
+// A still view whose terrain selection lacked no chunk, with no window moved, draws what the map
+// holds without selecting its casters again.
+bool ShadowMapKept(bool still_view, bool selection_whole, const std::array<bool, kShadowCascades>& moved);
+// A tile is redrawn when its window moved or its terrain casters changed (the camera's level of
+// detail changed, or chunks deferred for the build budget arrived). The scene's meshes are fixed
+// for the renderer's life.
+bool ShadowTileRedrawn(bool moved, const std::vector<terrain::SelectedChunk>& casters,
+                       const std::vector<terrain::SelectedChunk>& drawn);
+
+}  // namespace aerial

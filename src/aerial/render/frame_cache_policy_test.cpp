@@ -1,0 +1,121 @@
+#include "aerial/render/frame_cache_policy.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace aerial {
+namespace {
+
+constexpr float kR = 6360e3f;
+
+// A camera 100 m above the planet's surface, the sun 60 degrees from its zenith.
+FrameUniforms Frame() {
+  FrameUniforms frame{};
+  frame.camera_planet_position = {0.0f, 0.0f, kR + 100.0f, 0.0f};
+  frame.sun_direction = {std::sqrt(0.75f), 0.0f, 0.5f, 0.0f};
+  frame.froxel_size = {32, 32, 32, 0};
+  return frame;
+}
+
+std::vector<terrain::SelectedChunk> Chunks(int x) { return {{.id = {.level = 3, .x = x, .y = 1}}}; }
+
+TEST(FrameCachePolicy, SameFrameIsBitEqual) {
+  FrameUniforms moved = Frame();
+  moved.camera_scene_position[0] += 0.001f;
+  EXPECT_TRUE(SameFrame(Frame(), Frame()));
+  EXPECT_FALSE(SameFrame(Frame(), moved));
+}
+
+TEST(FrameCachePolicy, SkyViewKeyIsTheCamerasRadiusAndSunZenithCosine) {
+  SkyViewKey key = MakeSkyViewKey(Frame());
+  EXPECT_FLOAT_EQ(key.r_m, kR + 100.0f);
+  EXPECT_FLOAT_EQ(key.mu_s, 0.5f);
+  // The view's direction is no part of it.
+  FrameUniforms turned = Frame();
+  turned.view_projection[0] = 2.0f;
+  EXPECT_EQ(MakeSkyViewKey(turned), key);
+}
+
+TEST(FrameCachePolicy, SkyViewKeptWithinTenMetersAndTheSunsTolerance) {
+  const SkyViewKey made{kR + 100.0f, 0.5f};
+  EXPECT_FALSE(SkyViewReusable(std::nullopt, made, false)) << "the first frame makes it";
+  EXPECT_TRUE(SkyViewReusable(made, made, false));
+  EXPECT_TRUE(SkyViewReusable(made, made, true)) << "made for this very frame";
+  EXPECT_TRUE(SkyViewReusable(made, {kR + 108.0f, 0.5f + 8e-6f}, false));
+  EXPECT_FALSE(SkyViewReusable(made, {kR + 108.0f, 0.5f}, true)) << "an exact frame remakes a nearby one";
+  EXPECT_FALSE(SkyViewReusable(made, {kR + 116.0f, 0.5f}, false)) << "16 m higher";
+  EXPECT_FALSE(SkyViewReusable(made, {kR + 100.0f, 0.5f + 3e-5f}, false)) << "the sun moved";
+}
+
+TEST(FrameCachePolicy, FroxelsKeptForTheSameFrameUnderTheSameShadowMap) {
+  FrameUniforms moved = Frame();
+  moved.sun_direction[0] += 1e-4f;
+  EXPECT_FALSE(FroxelsReusable(std::nullopt, Frame(), false)) << "none built yet";
+  EXPECT_TRUE(FroxelsReusable(Frame(), Frame(), false));
+  EXPECT_FALSE(FroxelsReusable(Frame(), Frame(), true)) << "the shadow map was redrawn";
+  EXPECT_FALSE(FroxelsReusable(Frame(), moved, false)) << "the sun moved";
+}
+
+TEST(FrameCachePolicy, SunVisibilityReadBackOnlyForTheSameSurfacesUnderTheSameShadowMap) {
+  const SunVisibilityKey written{Frame(), Chunks(4)};
+  FrameUniforms moved = Frame();
+  moved.camera_scene_position[2] += 1.0f;
+  EXPECT_FALSE(SunVisibilityReusable(std::nullopt, Frame(), Chunks(4), false)) << "none written yet";
+  EXPECT_TRUE(SunVisibilityReusable(written, Frame(), Chunks(4), false));
+  EXPECT_FALSE(SunVisibilityReusable(written, Frame(), Chunks(4), true)) << "the shadow map was redrawn";
+  EXPECT_FALSE(SunVisibilityReusable(written, Frame(), Chunks(5), false)) << "other terrain chunks";
+  EXPECT_FALSE(SunVisibilityReusable(written, moved, Chunks(4), false)) << "the camera moved";
+}
+
+TEST(FrameCachePolicy, SunVisibilityWrittenByFirstAndStillFramesOnly) {
+  EXPECT_TRUE(SunVisibilityWorthCaching(/*first_frame=*/true, /*still_view=*/false));
+  EXPECT_TRUE(SunVisibilityWorthCaching(false, true));
+  EXPECT_FALSE(SunVisibilityWorthCaching(false, false)) << "a moving camera's frame";
+}
+
+ShadowKey Drawn() {
+  ShadowKey key;
+  for (int i = 0; i < kShadowCascades; ++i) {
+    key.cascades[i].clip_from_world = glm::dmat4(double(i + 1));
+    key.casters[i] = Chunks(i);
+  }
+  return key;
+}
+
+TEST(FrameCachePolicy, ShadowWindowsHeldExceptByAnExactFrame) {
+  HeldCascades held = HeldShadowWindows(Drawn(), false);
+  for (int i = 0; i < kShadowCascades; ++i) {
+    ASSERT_TRUE(held[i].has_value());
+    EXPECT_EQ(held[i]->clip_from_world, Drawn().cascades[i].clip_from_world);
+  }
+  for (const auto& window : HeldShadowWindows(Drawn(), true)) EXPECT_FALSE(window.has_value());
+  for (const auto& window : HeldShadowWindows(std::nullopt, false)) EXPECT_FALSE(window.has_value());
+}
+
+TEST(FrameCachePolicy, ShadowWindowsMovedPerCascade) {
+  ShadowCascades now = Drawn().cascades;
+  for (bool moved : ShadowWindowsMoved(std::nullopt, now)) EXPECT_TRUE(moved) << "the first frame";
+  for (bool moved : ShadowWindowsMoved(Drawn(), now)) EXPECT_FALSE(moved);
+  now[1].clip_from_world[3][0] += 1.0;
+  std::array<bool, kShadowCascades> moved = ShadowWindowsMoved(Drawn(), now);
+  for (int i = 0; i < kShadowCascades; ++i) EXPECT_EQ(moved[i], i == 1) << "cascade " << i;
+}
+
+TEST(FrameCachePolicy, ShadowMapKeptByAStillWholeViewWithNoWindowMoved) {
+  std::array<bool, kShadowCascades> none{}, one{};
+  one[kShadowCascades - 1] = true;
+  EXPECT_TRUE(ShadowMapKept(/*still_view=*/true, /*selection_whole=*/true, none));
+  EXPECT_FALSE(ShadowMapKept(false, true, none)) << "the view moved";
+  EXPECT_FALSE(ShadowMapKept(true, false, none)) << "chunks were missing from the selection";
+  EXPECT_FALSE(ShadowMapKept(true, true, one)) << "a window moved";
+}
+
+TEST(FrameCachePolicy, ShadowTileRedrawnWhenItsWindowOrCastersChanged) {
+  EXPECT_FALSE(ShadowTileRedrawn(false, Chunks(2), Chunks(2)));
+  EXPECT_TRUE(ShadowTileRedrawn(true, Chunks(2), Chunks(2))) << "its window moved";
+  EXPECT_TRUE(ShadowTileRedrawn(false, Chunks(3), Chunks(2))) << "its casters changed";
+}
+
+}  // namespace
+}  // namespace aerial

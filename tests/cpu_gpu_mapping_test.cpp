@@ -1,0 +1,132 @@
+// The mappings that C++ and GLSL both evaluate, run on the GPU (shaders/test/cpu_gpu_mappings.comp)
+// and held against their C++ side: the froxel depth mapping (FroxelGrid against
+// shaders/include/froxel_depth.glsl) and the sky-view lattice's size (the renderer's images
+// against what shaders/include/sky_view_lattice.glsl gives the passes).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+#include "aerial/froxel_grid.h"
+#include "aerial/render/sky_view_layout.h"
+#include "aerial/vk/compute_pipeline.h"
+#include "gpu_fixture.h"
+
+namespace aerial::testing {
+namespace {
+
+// Both sides compute the same formula, the GPU in float32 from the same float inputs, the CPU in
+// double. The slice distance takes a division (at most 2.5 ulp in Vulkan's GLSL), doubled by the
+// square, and two products (0.5 ulp each): 6 ulp = 7.2e-7 relative at worst. The depth coordinate
+// takes a division, halved by the square root, and the root (3 ulp): 4.25 ulp = 5.1e-7 (lavapipe
+// measured 1.1e-7 and 8.2e-8). A wrong formula moves either by far more: an exponent of 2.0001
+// instead of 2 moved the slice distances by up to 7.6e-4, 0.5001 for the root 2.0e-3.
+constexpr double kRelativeTolerance = 1e-6;
+
+struct FroxelCase {
+  float slice_center, slices, far_m, distance;
+};
+
+struct GpuResults {
+  std::vector<std::array<float, 2>> froxel;  // slice distance, depth coordinate
+  std::vector<std::array<int32_t, 2>> lattice;
+};
+
+vk::Buffer HostBuffer(size_t bytes) {
+  return vk::Buffer(SharedContext(), {.size = bytes, .usage = ::vk::BufferUsageFlagBits::eStorageBuffer,
+                                      .host_visible = true});
+}
+
+GpuResults RunOnGpu(const std::vector<FroxelCase>& froxel, const std::vector<std::array<int32_t, 2>>& tables) {
+  vk::Context& context = SharedContext();
+  vk::Buffer froxel_in = HostBuffer(froxel.size() * sizeof(FroxelCase));
+  vk::Buffer froxel_out = HostBuffer(froxel.size() * 2 * sizeof(float));
+  vk::Buffer tables_in = HostBuffer(tables.size() * 2 * sizeof(int32_t));
+  vk::Buffer lattice_out = HostBuffer(tables.size() * 2 * sizeof(int32_t));
+  std::memcpy(froxel_in.mapped(), froxel.data(), froxel.size() * sizeof(FroxelCase));
+  std::memcpy(tables_in.mapped(), tables.data(), tables.size() * 2 * sizeof(int32_t));
+  vk::ComputePipeline pipeline(context, "test/cpu_gpu_mappings.comp",
+                               {{"FroxelInputs", vk::kStorageBuffer},
+                                {"FroxelOutputs", vk::kStorageBuffer},
+                                {"TableSizes", vk::kStorageBuffer},
+                                {"LatticeSizes", vk::kStorageBuffer}});
+  context.Submit([&](const auto& cmd) {
+    pipeline.Dispatch(cmd,
+                      {vk::StorageBufferSlot{&froxel_in}, vk::StorageBufferSlot{&froxel_out},
+                       vk::StorageBufferSlot{&tables_in}, vk::StorageBufferSlot{&lattice_out}},
+                      {uint32_t(std::max(froxel.size(), tables.size())), 1, 1}, {64, 1, 1});
+    vk::FullBarrier(cmd);
+  });
+  GpuResults results{std::vector<std::array<float, 2>>(froxel.size()),
+                     std::vector<std::array<int32_t, 2>>(tables.size())};
+  std::memcpy(results.froxel.data(), froxel_out.mapped(), froxel.size() * 2 * sizeof(float));
+  std::memcpy(results.lattice.data(), lattice_out.mapped(), tables.size() * 2 * sizeof(int32_t));
+  return results;
+}
+
+// Slice centers every quarter slice over the whole grid and distances from behind the camera to
+// past the far end, on the grid sizes and far distances FroxelGrid::Validate allows.
+std::vector<FroxelCase> FroxelCases() {
+  std::vector<FroxelCase> cases;
+  for (float slices : {2.0f, 32.0f, 256.0f})
+    for (float far_m : {150.0f, 128e3f, 1e6f}) {
+      int quarters = int(4 * slices);
+      for (int q = 0; q <= quarters; ++q) {
+        float fraction = float(q) / float(quarters);
+        float distance = q == 0 ? -1.0f : far_m * 1.5f * fraction * fraction * fraction;
+        cases.push_back({0.25f * float(q) + 0.125f, slices, far_m, distance});
+      }
+    }
+  return cases;
+}
+
+class CpuGpuMappings : public GpuTest {};
+
+TEST_F(CpuGpuMappings, FroxelDepthMatchesFroxelGrid) {
+  std::vector<FroxelCase> cases = FroxelCases();
+  GpuResults gpu = RunOnGpu(cases, {{2, 4}});
+  double worst_slice = 0.0, worst_depth = 0.0;
+  for (size_t i = 0; i < cases.size(); ++i) {
+    FroxelGrid grid;
+    grid.depth = int(cases[i].slices);
+    grid.far_m = cases[i].far_m;
+    double slice = grid.SliceDistance(cases[i].slice_center);
+    double depth = grid.DepthCoordinate(cases[i].distance);
+    ASSERT_GT(slice, 0.0);
+    worst_slice = std::max(worst_slice, std::abs(gpu.froxel[i][0] - slice) / slice);
+    if (depth == 0.0) {
+      EXPECT_EQ(gpu.froxel[i][1], 0.0f) << "distance " << cases[i].distance;
+    } else {
+      worst_depth = std::max(worst_depth, std::abs(gpu.froxel[i][1] - depth) / depth);
+    }
+  }
+  std::printf("%zu cases, worst relative difference: slice distance %.2e, depth coordinate %.2e\n",
+              cases.size(), worst_slice, worst_depth);
+  EXPECT_LE(worst_slice, kRelativeTolerance);
+  EXPECT_LE(worst_depth, kRelativeTolerance);
+}
+
+// The lattice the renderer allocates (kSkyViewLatticeSize) is the one the passes index, and the
+// shaders' size agrees with the C++ one for every table size up to 256 x 256.
+TEST_F(CpuGpuMappings, SkyViewLatticeMatchesTheRenderersImages) {
+  std::vector<std::array<int32_t, 2>> tables = {kSkyViewSize};
+  for (int32_t width = 2; width <= 256; ++width)
+    for (int32_t height = 4; height <= 256; ++height) tables.push_back({width, height});
+  GpuResults gpu = RunOnGpu({{0.5f, 2.0f, 150.0f, 1.0f}}, tables);
+  EXPECT_EQ(gpu.lattice[0], kSkyViewLatticeSize);
+  int mismatches = 0;
+  for (size_t i = 0; i < tables.size(); ++i) {
+    std::array<int32_t, 2> cpu = {GetSkyViewLatticeWidth(tables[i][0]), GetSkyViewLatticeHeight(tables[i][1])};
+    if (gpu.lattice[i] != cpu && ++mismatches <= 5)
+      ADD_FAILURE() << "table " << tables[i][0] << "x" << tables[i][1] << ": GPU " << gpu.lattice[i][0] << "x"
+                    << gpu.lattice[i][1] << ", C++ " << cpu[0] << "x" << cpu[1];
+  }
+  EXPECT_EQ(mismatches, 0);
+}
+
+}  // namespace
+}  // namespace aerial::testing
