@@ -11,6 +11,7 @@
 #include "aerial/bench/precompute_measurement.h"
 #include "aerial/bench/variant_comparison.h"
 #include "aerial/core/atomic_file.h"
+#include "aerial/bench/pass_stats.h"
 #include "aerial/device.h"
 #include "bench_main.h"
 
@@ -24,6 +25,8 @@ struct BenchOptions {
   std::string lut = "both";
   bool small = false;
   std::string json_file;
+  // Colour modes to compare, interleaved: 0 = rgb, N = spectral with N wavelengths.
+  std::vector<int> wavelengths;
 
   std::vector<std::string> Variants() const {
     return lut == "both" ? std::vector<std::string>{"4d", "3d"} : std::vector<std::string>{lut};
@@ -40,7 +43,39 @@ struct BenchOptions {
   }
 };
 
+// The precompute's cost per colour mode, as medians of interleaved runs and ratios to the first.
+void BenchColours(const BenchOptions& cli) {
+  std::vector<aerial::PrecomputeOptions> options;
+  for (int n : cli.wavelengths) {
+    aerial::PrecomputeOptions o = cli.MakePrecomputeOptions(cli.lut == "both" ? "4d" : cli.lut);
+    o.colour = n == 0 ? aerial::ColourMode::kRgb : aerial::ColourMode::kSpectral;
+    if (n != 0) o.spectral_wavelengths = n;
+    o.Validate();
+    options.push_back(o);
+  }
+  aerial::Device device;
+  auto on_run = [](const aerial::bench::BenchResult& result, const aerial::bench::RunResult& run, bool warming,
+                   int index) {
+    std::fprintf(stderr, "%s %d (%s): %.1f ms GPU, %.1f ms wall\n", warming ? "warm-up" : "run", index,
+                 result.options.Describe().c_str(), run.GpuMs(), run.wall_ms);
+  };
+  auto measured = aerial::bench::MeasurePrecompute(device, aerial::AtmosphereParameters::Earth(), options,
+                                                   cli.warmup, cli.runs, on_run);
+  std::printf("%-24s %14s %14s %10s %10s\n", "colour", "GPU ms median", "wall ms median", "GPU ratio",
+              "wall ratio");
+  double gpu0 = 0.0, wall0 = 0.0;
+  for (size_t i = 0; i < measured.size(); ++i) {
+    const aerial::bench::BenchResult& r = measured[i].result;
+    double gpu = aerial::bench::Summarize(aerial::bench::GpuTotals(r.runs)).median;
+    double wall = aerial::bench::Summarize(aerial::bench::WallTotals(r.runs)).median;
+    if (i == 0) gpu0 = gpu, wall0 = wall;
+    std::string name = cli.wavelengths[i] == 0 ? "rgb" : "spectral " + std::to_string(cli.wavelengths[i]);
+    std::printf("%-24s %14.1f %14.1f %10.2f %10.2f\n", name.c_str(), gpu, wall, gpu / gpu0, wall / wall0);
+  }
+}
+
 void Bench(const BenchOptions& cli) {
+  if (!cli.wavelengths.empty()) return BenchColours(cli);
   std::vector<aerial::PrecomputeOptions> options;
   for (const std::string& lut : cli.Variants()) options.push_back(cli.MakePrecomputeOptions(lut));
   // Fail on an unwritable --json path now rather than after minutes of precomputation.
@@ -83,6 +118,10 @@ int main(int argc, char** argv) {
   app.add_option("--lut", cli.lut, "Scattering table variant: 4d, 3d, or both (interleaved runs, compared)")
       ->check(CLI::IsMember({"both", "4d", "3d"}));
   app.add_flag("--small", cli.small, "Small tables (about 1/16 of the texels), for a quick check");
+  app.add_option("--colours", cli.wavelengths,
+                 "Compare colour modes instead of variants: a list of wavelength counts, 0 for rgb "
+                 "(e.g. 0,6,9,12,15), interleaved, with ratios to the first")
+      ->delimiter(',');
   app.add_option("--json", cli.json_file, "Also write the results as JSON to this file");
   return aerial::bench::ParseAndRun(app, argc, argv, "aerial_bench_precompute", [&] { Bench(cli); });
 }
