@@ -23,6 +23,7 @@ struct ViewCommandOptions {
   std::filesystem::path screenshot;
   std::filesystem::path stats;
   std::filesystem::path camera_path;
+  double target_ms = 0.0;
 };
 
 // The precompute options of both variants, for the panel's 3D/4D switch: the command line's
@@ -76,6 +77,7 @@ void RunView(const ViewCommandOptions& options) {
   viewer.frames = options.frames;
   viewer.screenshot = options.screenshot;
   viewer.stats = options.stats;
+  viewer.target_ms = options.target_ms;
   viewer::RunViewer(std::move(viewer));
 }
 
@@ -92,6 +94,10 @@ void AddViewCommand(CLI::App& app) {
                       "With --frames: save the last frame, .exr (linear) or .png (sRGB)");
   AddPathOption(*command, "--stats", options->stats,
                       "Write frame statistics (median and p95 frame ms, FPS, GPU ms per pass) as JSON");
+  command->add_option("--target-ms", options->target_ms,
+                      "Dynamic resolution: the render scale (1, 0.75, 0.5, 0.25) follows the frame time "
+                      "toward this many milliseconds (default 0: off, the scale stays --render-scale)")
+      ->check(CLI::Range(0.0, 1000.0));
   AddPathOption(*command, "--camera-path", options->camera_path,
                       "Camera path to play, 1/30 s of path time per frame (TOML, examples/paths/)");
   options->tables.AddTo(*command);

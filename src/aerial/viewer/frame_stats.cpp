@@ -17,7 +17,10 @@ double Percentile(std::vector<double> values, double p) {
   return values[std::clamp<size_t>(rank, 1, values.size()) - 1];
 }
 
-void FrameStats::AddFrame(double frame_ms) { frame_ms_.push_back(frame_ms); }
+void FrameStats::AddFrame(double frame_ms, double render_scale) {
+  frame_ms_.push_back(frame_ms);
+  render_scale_.push_back(render_scale);
+}
 
 void FrameStats::AddGpuFrame(const std::vector<PassTime>& passes) {
   if (passes.empty()) return;
@@ -47,6 +50,7 @@ std::string FrameStats::ToJson() const {
                          {"p95_frame_ms", Percentile(frame_ms_, 95.0)},
                          {"fps_median", median > 0.0 ? 1000.0 / median : 0.0},
                          {"median_gpu_frame_ms", Percentile(gpu_frame_ms_, 50.0)},
+                         {"median_render_scale", Percentile(render_scale_, 50.0)},
                          {"passes", MedianPassMs()}};
   return json.dump(2) + "\n";
 }

@@ -2,7 +2,7 @@
 // Frame times and per-pass GPU times of a viewer session, for the panel and for
 // `aerial view --stats FILE`:
 //   {"frames": N, "median_frame_ms": ..., "p95_frame_ms": ..., "fps_median": 1000 / median,
-//    "median_gpu_frame_ms": ..., "passes": {"froxel build": median GPU ms, ...}}
+//    "median_gpu_frame_ms": ..., "median_render_scale": ..., "passes": {"froxel build": median GPU ms, ...}}
 // A frame's time is wall clock from the end of the previous frame to the end of its present, so
 // it is what a user sees: input, the panel, recording, waiting for the GPU and presenting. Pass
 // times are GPU timestamps (on lavapipe, the CPU time of the pass), and a GPU frame is the sum of
@@ -22,7 +22,7 @@ double Percentile(std::vector<double> values, double p);
 
 class FrameStats {
  public:
-  void AddFrame(double frame_ms);
+  void AddFrame(double frame_ms, double render_scale = 1.0);
   void AddGpuFrame(const std::vector<PassTime>& passes);
 
   size_t frames() const { return frame_ms_.size(); }
@@ -36,7 +36,7 @@ class FrameStats {
   void Write(const std::filesystem::path& path) const;
 
  private:
-  std::vector<double> frame_ms_, gpu_frame_ms_;
+  std::vector<double> frame_ms_, gpu_frame_ms_, render_scale_;
   std::map<std::string, std::vector<double>> pass_ms_;
 };
 

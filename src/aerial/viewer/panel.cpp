@@ -6,6 +6,8 @@
 
 #include <imgui.h>
 
+#include "aerial/viewer/dynamic_resolution.h"
+
 namespace aerial::viewer {
 namespace {
 
@@ -94,11 +96,10 @@ bool SunSection(ViewSettings& s) {
 
 // A few render scales (each one makes a new renderer, so not a continuous slider).
 void RenderScaleCombo(float& scale) {
-  constexpr std::array<float, 4> kScales = {1.0f, 0.75f, 0.5f, 0.25f};
   char current[16];
   std::snprintf(current, sizeof current, "%.2f", scale);
   if (ImGui::BeginCombo("Render scale", current)) {
-    for (float choice : kScales) {
+    for (float choice : kRenderScales) {
       char label[16];
       std::snprintf(label, sizeof label, "%.2f", choice);
       if (ImGui::Selectable(label, choice == scale)) scale = choice;

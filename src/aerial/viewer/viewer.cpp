@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -12,6 +13,7 @@
 #include "aerial/image.h"
 #include "aerial/image/exposure.h"
 #include "aerial/viewer/display_passes.h"
+#include "aerial/viewer/dynamic_resolution.h"
 #include "aerial/viewer/exposure_meter.h"
 #include "aerial/viewer/frame_stats.h"
 #include "aerial/viewer/froxel_export.h"
@@ -159,6 +161,7 @@ class Viewer::Impl {
   std::string message_;
   int frames_ = 0;
   Clock::time_point last_frame_end_;
+  std::optional<DynamicResolution> resolution_;  // with --target-ms
 };
 
 Viewer::Impl::Impl(ViewerOptions options)
@@ -189,6 +192,7 @@ Viewer::Impl::Impl(ViewerOptions options)
   settings_.auto_exposure = options_.exposure.mode == Exposure::Mode::kAuto;
   if (!settings_.auto_exposure) settings_.ev100 = float(options_.exposure.FixedEv100());
   requested_[options_.variant] = options_.atmosphere.Hash();
+  if (options_.target_ms > 0.0) resolution_.emplace(options_.target_ms);
   last_frame_end_ = Clock::now();
 }
 
@@ -455,7 +459,9 @@ bool Viewer::Impl::Step() {
     if (now_extent.width > 0 && now_extent.height > 0) Resize(now_extent);
   }
   Clock::time_point now = Clock::now();
-  stats_.AddFrame(std::chrono::duration<double, std::milli>(now - last_frame_end_).count());
+  double frame_ms = std::chrono::duration<double, std::milli>(now - last_frame_end_).count();
+  stats_.AddFrame(frame_ms, render.render_scale);
+  if (resolution_) settings_.render_scale = resolution_->Update(frame_ms, render.render_scale);
   last_frame_end_ = now;
   ++frames_;
   return true;

@@ -38,6 +38,7 @@ struct ViewerOptions {
   std::filesystem::path screenshot;  // written after the last frame, .png or .exr (checked by the caller)
   std::filesystem::path stats;       // frame statistics (frame_stats.h), written at exit
   std::optional<CameraPath> camera_path;
+  double target_ms = 0.0;            // > 0: dynamic resolution toward this frame time (dynamic_resolution.h)
 };
 
 class Viewer {
