@@ -30,7 +30,7 @@ gpu_suites="Render.*:VdbExport.*:VdbPaths.*:TableCacheIntegration.*:TableSanity.
 gpu_suites+=":ViewerToneMap.*:TablesVsReference.*:GraphicsPipelineTest.*:SceneSurfaceRender.*"
 gpu_suites+=":ViewerDebugViews.*:LeanFrame.*:Lut3d.*:MappingRoundTrip.*:GoldenImage.*"
 gpu_suites+=":Cli.*:ViewCli.*:BenchQuick.*:ViewerSession.*:Exr.*:Png.*:ImageWriter.*"
-gpu_suites+=":ShadowRender.*:FroxelShadows.*:Exposure_.*"
+gpu_suites+=":ShadowRender.*:FroxelShadows.*:Exposure_.*:SpectralTables.*:CpuGpuMappings.*"
 # Not here: the stored sky reference is checked bit for bit against a fresh Monte Carlo run, whose
 # paths fork on the last bit of a float, so another compiler's rounding (clang here, gcc in the
 # main suite) changes the samples; the main suite runs it.
