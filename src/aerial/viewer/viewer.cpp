@@ -23,7 +23,7 @@
 #include "aerial/viewer/render_stack.h"
 #include "aerial/viewer/screenshot.h"
 #include "aerial/viewer/sun_control.h"
-#include "aerial/viewer/table_worker.h"
+#include "aerial/viewer/table_supply.h"
 #include "aerial/viewer/window.h"
 #include "aerial/vk/command_ring.h"
 #include "aerial/vk/gpu_timer.h"
@@ -100,7 +100,7 @@ class Viewer::Impl {
   void Run();
   GLFWwindow* window() const { return window_.handle(); }
 
-  TableWorker worker_;             // its own context, and nothing of the others
+  TableSupply supply_;             // its worker has its own context, and nothing of the others
   ViewSettings settings_;
   AtmosphereKnobs applied_knobs_;  // the knobs the tables are asked for (the panel's, on release)
   std::vector<PassTime> last_passes_;
@@ -126,8 +126,6 @@ class Viewer::Impl {
   PanelInfo MakePanelInfo(const SceneRenderer& primary) const;
 
   ViewerOptions options_;
-  AtmosphereParameters wanted_;                // the base with the applied knobs
-  std::map<LutVariant, uint64_t> requested_;   // atmosphere hash asked of the worker, per variant
   GlfwSession glfw_;
   vk::ContextCreateInfo context_info_;
   vk::Context context_;  // the window's device, the viewer's own
@@ -165,9 +163,8 @@ class Viewer::Impl {
 };
 
 Viewer::Impl::Impl(ViewerOptions options)
-    : worker_(options.device),
+    : supply_(options.device, options.atmosphere, options.tables, options.load, options.variant),
       options_(std::move(options)),
-      wanted_(options_.atmosphere),
       context_info_(WithWindowSupport(options_.device)),
       context_(context_info_),
       device_(context_.Handoff()),  // as an engine hands over its own (aerial/device.h)
@@ -191,7 +188,6 @@ Viewer::Impl::Impl(ViewerOptions options)
   settings_.terrain_error_px = float(options_.render.terrain_error_px);
   settings_.auto_exposure = options_.exposure.mode == Exposure::Mode::kAuto;
   if (!settings_.auto_exposure) settings_.ev100 = float(options_.exposure.FixedEv100());
-  requested_[options_.variant] = options_.atmosphere.Hash();
   if (options_.target_ms > 0.0) resolution_.emplace(options_.target_ms);
   last_frame_end_ = Clock::now();
 }
@@ -210,42 +206,24 @@ RendererOptions Viewer::Impl::CurrentRenderOptions() const {
 
 bool Viewer::Impl::HasCurrentTables(LutVariant variant) const {
   const Tables* tables = stack_.tables(variant);
-  return tables && tables->atmosphere().Hash() == wanted_.Hash();
+  return tables && supply_.IsWanted(*tables);
 }
 
-// Asks the worker for what the settings need and the stack lacks: the shown variant, and for the
-// difference view the other one too. Edited atmospheres are not written to the cache, so that
-// exploring does not fill it with a 32 MiB file per slider release.
+// Asks for what the settings need and the stack lacks: the shown variant, and for the difference
+// view the other one too.
 void Viewer::Impl::RequestTables() {
-  wanted_ = ApplyKnobs(options_.atmosphere, applied_knobs_);
+  supply_.Want(applied_knobs_);
   std::vector<LutVariant> needed = {settings_.variant};
   if (settings_.view == DebugView::kDifference) needed.push_back(Other(settings_.variant));
-  for (LutVariant variant : needed) {
-    if (HasCurrentTables(variant) || requested_[variant] == wanted_.Hash()) continue;
-    requested_[variant] = wanted_.Hash();  // asked once, whatever comes of it
-    auto options = options_.tables.find(variant);
-    if (options == options_.tables.end()) {
-      Say(ToString(variant) + " tables are not available with the command line's table sizes");
-      continue;
-    }
-    TableLoadOptions load = options_.load;
-    load.write_cache = wanted_.Hash() == options_.atmosphere.Hash();
-    worker_.Submit({.slot = int(variant), .atmosphere = wanted_, .options = options->second, .load = load});
-  }
+  for (std::string& message : supply_.Request(needed, [this](LutVariant v) { return HasCurrentTables(v); }))
+    Say(std::move(message));
 }
 
-// Makes the worker's finished tables on this device; results for an atmosphere the panel has
-// since left are dropped.
 void Viewer::Impl::AdoptFinishedTables() {
-  while (std::optional<TableResult> result = worker_.TakeResult()) {
-    const TableRequest& request = result->request;
-    if (!result->tables) {
-      Say("tables: " + result->error);
-      continue;
-    }
-    if (request.atmosphere.Hash() != wanted_.Hash()) continue;
-    stack_.Install(std::make_unique<Tables>(Tables::FromSnapshot(device_, *result->tables)), CurrentRenderOptions());
-  }
+  std::vector<std::string> errors;
+  for (std::unique_ptr<Tables>& tables : supply_.TakeFinished(device_, errors))
+    stack_.Install(std::move(tables), CurrentRenderOptions());
+  for (std::string& error : errors) Say(std::move(error));
 }
 
 void Viewer::Impl::Resize(::vk::Extent2D extent) {
@@ -383,9 +361,9 @@ PanelInfo Viewer::Impl::MakePanelInfo(const SceneRenderer& primary) const {
           .passes = last_passes_,
           .terrain_chunks = primary.frame_info().chunks,
           .terrain_triangles = primary.frame_info().triangles,
-          .work = worker_.status(),
+          .work = supply_.status(),
           .tables = tables.options().Describe() +
-                    (tables.atmosphere().Hash() == wanted_.Hash() ? "" : " (previous atmosphere)"),
+                    (supply_.IsWanted(tables) ? "" : " (previous atmosphere)"),
           .message = message_,
           .difference_ready = HasCurrentTables(LutVariant::k4D) && HasCurrentTables(LutVariant::k3D)};
 }
@@ -487,7 +465,7 @@ ViewSettings& Viewer::settings() { return impl_->settings_; }
 void Viewer::ApplyTableSettings() { impl_->applied_knobs_ = impl_->settings_.knobs; }
 const SceneRenderer& Viewer::renderer() const { return *impl_->shown_; }
 const std::vector<PassTime>& Viewer::last_passes() const { return impl_->last_passes_; }
-TableWorkStatus Viewer::table_work() const { return impl_->worker_.status(); }
+TableWorkStatus Viewer::table_work() const { return impl_->supply_.status(); }
 GLFWwindow* Viewer::window() const { return impl_->window(); }
 
 void RunViewer(ViewerOptions options) { Viewer(std::move(options)).Run(); }

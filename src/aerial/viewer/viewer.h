@@ -4,7 +4,8 @@
 // frame the scene goes through aerial's SceneRenderer (as in `aerial render`), recorded into the
 // viewer's command buffer; the viewer's own passes only tone map it, or show a debug view of the
 // images the renderer hands out, into the swapchain, with a Dear ImGui panel on top. Table changes
-// are made on a worker thread with its own device (table_worker.h), so the window keeps drawing
+// are asked for and adopted apart from the window (table_supply.h) and made on a worker thread
+// with its own device (table_worker.h), so the window keeps drawing
 // with the old tables until the new ones arrive.
 #include <filesystem>
 #include <map>
