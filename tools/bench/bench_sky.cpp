@@ -32,6 +32,10 @@ struct BenchOptions {
 void Bench(const BenchOptions& cli) {
   aerial::AtmosphereParameters atmosphere = cli.tables.LoadAtmosphere();
   aerial::PrecomputeOptions options = cli.tables.MakePrecomputeOptions();
+  // The reference here is at the atmosphere's three wavelengths; spectral tables are compared in
+  // colour by aerial_bench_colour.
+  if (options.colour != aerial::ColourMode::kRgb)
+    throw aerial::Error("--colour", cli.tables.colour, "rgb (for spectral tables: aerial_bench_colour)");
   if (!cli.markdown_file.empty()) aerial::CheckWritable(cli.markdown_file);
   if (!cli.samples_csv_file.empty()) aerial::CheckWritable(cli.samples_csv_file);
   validation::SkyReference reference;
