@@ -3,7 +3,6 @@
 #include <Imath/half.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
 
 #include "aerial/core/progress.h"
@@ -18,7 +17,7 @@ using spectrum::Matrix3;
 using spectrum::SpectralAtmosphere;
 using spectrum::SpectralSampling;
 
-// A table's RGBA texels as float32 (alpha unused but for transmittance's 1).
+// A float32 table's RGBA texels (the groups' tables are all float32).
 std::vector<float> AsFloats(const CachedTable& table) {
   std::vector<float> texels(table.texels.size() / sizeof(float));
   std::memcpy(texels.data(), table.texels.data(), table.texels.size());
