@@ -60,28 +60,6 @@ struct TableResolution {
   int multiple_density_nu = 9;   // 1 in the 3D variant
 };
 
-// Integration sample counts (Bruneton 2017 uses 500, 50, 32x64 and a 16x32 density grid).
-struct SampleCounts {
-  int transmittance_steps = 500;
-  int ray_steps = 50;              // single scattering, per ray
-  // Multiple scattering is a smooth fraction of the sky (20-40% in daylight) and its steps are
-  // integrated exponentially: 32 steps change the 4-order sky by at most 0.28% against 200
-  // (measured over six views from the ground to 50 km, low sun included).
-  int multiple_scattering_steps = 32;
-  int irradiance_zenith = 32;
-  int irradiance_azimuth = 32;     // over [0, pi], mirrored (Bruneton: 64 over [0, 2 pi])
-  int density_theta_up = 16;       // density grid: zenith cells above the horizon
-  int density_theta_down = 8;      // zenith cells below the horizon
-  int density_phi = 16;            // azimuth cells over [0, pi] (mirrored to [0, 2 pi])
-  // Resolution of the per-order scattering density and multiple scattering tables. Both are
-  // smooth (the density is a convolution with the phase functions), so they use half the table's
-  // mu resolution; the Rayleigh table receives them resampled at full resolution.
-  int density_r = 32;
-  int density_mu = 64;
-  int density_mu_s = 36;
-  int density_nu = 9;
-};
-
 struct PrecomputeOptions {
   LutVariant variant = LutVariant::k4D;
   // The 4D Rayleigh table in 16-bit floats: the default's 9 nu slices fit the memory budget that
@@ -99,7 +77,9 @@ struct PrecomputeOptions {
   // 0.023 (docs/colour.md).
   int spectral_wavelengths = 12;
   TableResolution resolution;
-  SampleCounts samples;
+  // Small()'s density grid: the scattering density of each order integrates the incident light over
+  // (12 + 4) x 12 zenith x azimuth cells instead of (16 + 8) x 16 (quick tests and looks).
+  bool coarse_directions = false;
 
   // The default tables of a variant (the 3D variant has one nu slice in every table).
   static PrecomputeOptions Default(LutVariant variant = LutVariant::k4D);
@@ -114,8 +94,8 @@ struct PrecomputeOptions {
   // reference::kAllOrders) when it is closed.
   int RepresentedOrders() const;
 
-  // Sets the scattering tables' size; the per-order density and multiple scattering tables follow
-  // (same r, mu_s and nu, half the mu: see SampleCounts). Validate() checks the result.
+  // Sets the scattering tables' size (the four resolution fields); the precompute's per-order
+  // density tables follow it (same r, mu_s and nu, half the mu). Validate() checks the result.
   void SetScatteringSize(int r, int mu, int mu_s, int nu);
 
   // Throws aerial::Error naming the field, value and allowed range; each table's texel count is

@@ -1,5 +1,7 @@
 #include "aerial/precompute/atmosphere_uniforms.h"
 
+#include "aerial/precompute/sample_counts.h"
+
 namespace aerial {
 namespace {
 
@@ -22,7 +24,7 @@ std::array<GpuDensityLayer, 2> ToGpu(const DensityProfile& profile) {
 AtmosphereUniforms MakeAtmosphereUniforms(const AtmosphereParameters& a,
                                           const PrecomputeOptions& options) {
   const TableResolution& r = options.resolution;
-  const SampleCounts& s = options.samples;
+  const SampleCounts s = SampleCountsOf(options);
   AtmosphereUniforms u{};
   u.solar_irradiance = ToFloat4(a.solar_irradiance);
   u.rayleigh_scattering = ToFloat4(a.rayleigh_scattering);

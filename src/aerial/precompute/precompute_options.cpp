@@ -6,6 +6,7 @@
 #include <string>
 
 #include "aerial/error.h"
+#include "aerial/precompute/sample_counts.h"
 #include "aerial/precompute/table_layout.h"
 
 namespace aerial {
@@ -42,7 +43,6 @@ PrecomputeOptions PrecomputeOptions::Default(LutVariant variant) {
   if (variant == LutVariant::k3D) {
     options.resolution.scattering_nu = 1;
     options.resolution.multiple_density_nu = 1;
-    options.samples.density_nu = 1;
     options.precision = TablePrecision::kFloat32;
   }
   return options;
@@ -58,13 +58,7 @@ PrecomputeOptions PrecomputeOptions::Small(LutVariant variant) {
                         .multiple_density_r = 8, .multiple_density_mu = 16,
                         .multiple_density_mu_s = 8,
                         .multiple_density_nu = variant == LutVariant::k4D ? 4 : 1};
-  options.samples.density_r = 16;
-  options.samples.density_mu = 32;
-  options.samples.density_mu_s = 16;
-  options.samples.density_nu = options.resolution.scattering_nu;
-  options.samples.density_theta_up = 12;
-  options.samples.density_theta_down = 4;
-  options.samples.density_phi = 12;
+  options.coarse_directions = true;
   return options;
 }
 
@@ -73,10 +67,21 @@ void PrecomputeOptions::SetScatteringSize(int r, int mu, int mu_s, int nu) {
   resolution.scattering_mu = mu;
   resolution.scattering_mu_s = mu_s;
   resolution.scattering_nu = nu;
-  samples.density_r = r;
-  samples.density_mu = std::max(4, (mu / 4) * 2);  // half of mu, even
-  samples.density_mu_s = mu_s;
-  samples.density_nu = nu;
+}
+
+SampleCounts SampleCountsOf(const PrecomputeOptions& options) {
+  const TableResolution& r = options.resolution;
+  SampleCounts s;
+  s.density_r = r.scattering_r;
+  s.density_mu = std::max(4, (r.scattering_mu / 4) * 2);  // half of mu, even
+  s.density_mu_s = r.scattering_mu_s;
+  s.density_nu = r.scattering_nu;
+  if (options.coarse_directions) {
+    s.density_theta_up = 12;
+    s.density_theta_down = 4;
+    s.density_phi = 12;
+  }
+  return s;
 }
 
 namespace {
@@ -153,21 +158,6 @@ void PrecomputeOptions::Validate() const {
   CheckTexels("multiple density size",
               {r.multiple_density_r, r.multiple_density_mu, r.multiple_density_mu_s, r.multiple_density_nu},
               kMaxScatteringTexels);
-  const SampleCounts& s = samples;
-  CheckRange("transmittance steps", s.transmittance_steps, 8, 10000);
-  CheckRange("ray steps", s.ray_steps, 4, 1000);
-  CheckRange("multiple scattering steps", s.multiple_scattering_steps, 4, 1000);
-  CheckRange("irradiance zenith samples", s.irradiance_zenith, 2, 512);
-  CheckRange("irradiance azimuth samples", s.irradiance_azimuth, 2, 1024);
-  CheckRange("density zenith cells above the horizon", s.density_theta_up, 2, 128);
-  CheckRange("density zenith cells below the horizon", s.density_theta_down, 1, 128);
-  CheckRange("density azimuth cells", s.density_phi, 1, 128);
-  CheckRange("density r", s.density_r, 2, 512);
-  CheckMuAxis("density mu", s.density_mu);
-  CheckRange("density mu_s", s.density_mu_s, 2, 512);
-  CheckNuAxis("density nu", s.density_nu, variant);
-  // The density pass stages the direction grid in 32 KiB of shared memory (kMaxDirections).
-  CheckRange("density directions", (s.density_theta_up + s.density_theta_down) * s.density_phi, 1, 1024);
 }
 
 int PrecomputeOptions::RepresentedOrders() const {
@@ -175,6 +165,9 @@ int PrecomputeOptions::RepresentedOrders() const {
 }
 
 uint64_t PrecomputeOptions::Hash() const {
+  // The sample counts are derived, but hashed as when they were options, so that the key of a
+  // cached table did not change when they stopped being options.
+  const SampleCounts samples = SampleCountsOf(*this);
   const int values[] = {kTableLayout, int(variant), int(precision), orders, int(close_series),
                         int(colour), colour == ColourMode::kSpectral ? spectral_wavelengths : 0,
                         resolution.transmittance_mu, resolution.transmittance_r,

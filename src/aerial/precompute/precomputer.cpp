@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "aerial/core/progress.h"
+#include "aerial/precompute/sample_counts.h"
 #include "aerial/precompute/spectral_precompute.h"
 #include "aerial/vk/compute_pipeline.h"
 
@@ -92,18 +93,18 @@ struct Pipelines {
 // The sizes of the intermediate tables, from the options alone (so that their memory can be
 // estimated before anything is allocated).
 ::vk::Extent3D DensityExtent(const PrecomputeOptions& o) {
-  const SampleCounts& s = o.samples;
+  const SampleCounts s = SampleCountsOf(o);
   return {uint32_t(s.density_nu * s.density_mu_s), uint32_t(s.density_mu), uint32_t(s.density_r)};
 }
 size_t DirectionCount(const PrecomputeOptions& o) {
-  const SampleCounts& s = o.samples;
+  const SampleCounts s = SampleCountsOf(o);
   return size_t(s.density_theta_up + s.density_theta_down) * s.density_phi;
 }
 size_t IncidentBytes(const PrecomputeOptions& o) {
-  const SampleCounts& s = o.samples;
+  const SampleCounts s = SampleCountsOf(o);
   return DirectionCount(o) * s.density_r * s.density_mu_s * 16;
 }
-size_t DirectionBytes(const PrecomputeOptions& o) { return DirectionCount(o) * o.samples.density_r * 16; }
+size_t DirectionBytes(const PrecomputeOptions& o) { return DirectionCount(o) * SampleCountsOf(o).density_r * 16; }
 
 // Intermediate tables that only live during the precomputation. The per-order ground irradiance
 // and multiple scattering are kept for two consecutive orders (index: order % 2), so that the last
@@ -221,7 +222,7 @@ std::vector<vk::PassTime> PrecomputeRadiance(AtmosphereTables& tables, Progress*
   const vk::Image& multiple_accumulator =
       tables.options().variant == LutVariant::k4D ? rayleigh : multiple;
   const vk::Buffer& uniforms = tables.uniform_buffer();
-  const SampleCounts& samples = tables.options().samples;
+  const SampleCounts samples = SampleCountsOf(tables.options());
   ::vk::Extent3D scattering_threads = tables.rayleigh().extent();
   ::vk::Extent3D density_threads = DensityExtent(tables.options());
 
