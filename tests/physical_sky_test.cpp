@@ -15,6 +15,8 @@
 
 #include "aerial/reference/reference.h"
 #include "aerial/validation/sky_accuracy.h"
+#include "aerial/vk/table_filtering.h"
+#include "scoped_table_filtering.h"
 #include "gpu_fixture.h"
 
 namespace aerial::testing {
@@ -111,18 +113,27 @@ double Noise(const validation::RegionAccuracy& region) {
   return noise;
 }
 
-class PhysicalSky : public GpuTest {};
+// The same bounds hold whether the tables are read through lavapipe's samplers, which interpolate
+// in float, or with the weights rounded to 1/256 of a texel as a GPU's samplers do
+// (AERIAL_TABLE_FILTERING=emulated-hardware, table_read.glsl): measured, every region moved by
+// less than the reference's noise (the largest: afternoon sky radiance on the ground, 440 nm,
+// 0.40% to 0.42%). So the sampler's precision is not what moved four regions on an NVIDIA GPU
+// (issue 43), and a change that makes the sky depend on it fails here.
+class PhysicalSky : public GpuTest, public ::testing::WithParamInterface<vk::TableFiltering> {};
 
-TEST_F(PhysicalSky, DefaultTablesAgainstTheTargets) {
+TEST_P(PhysicalSky, DefaultTablesAgainstTheTargets) {
   validation::SkyReference reference = validation::ReadSkyReference(kReferenceFile);
   ASSERT_EQ(reference.orders, reference::kAllOrders);
   ASSERT_EQ(PrecomputeOptions::Default().RepresentedOrders(), reference::kAllOrders);
-  // Through the public API, from the test cache that FullTables() fills.
-  FullTables();
+  // Through the public API. The sampler's tables come from the test cache that FullTables() fills;
+  // the emulated filtering's are precomputed with it (they are never cached).
+  const bool sampler = GetParam() == vk::TableFiltering::kSampler;
+  if (sampler) FullTables();
+  ScopedTableFiltering filtering(GetParam());
   Device device;
   Tables tables =
       Tables::LoadOrPrecompute(device, AtmosphereParameters::Earth(), PrecomputeOptions::Default());
-  ASSERT_TRUE(tables.from_cache());
+  ASSERT_EQ(tables.from_cache(), sampler);
   std::vector<validation::RegionAccuracy> regions = validation::CompareSkyWithTables(tables, reference);
   std::printf("%s\n%s", validation::FormatSkyAccuracy(regions).c_str(), validation::FormatWorstSamples(regions).c_str());
   ASSERT_EQ(regions.size(), std::size(kRegions));  // 3 quantities x 4 bands x 3 altitudes
@@ -144,6 +155,12 @@ TEST_F(PhysicalSky, DefaultTablesAgainstTheTargets) {
     EXPECT_GE(region.Median(), measured->median - noise) << name << " (median): better than recorded";
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Filtering, PhysicalSky,
+                         ::testing::Values(vk::TableFiltering::kSampler, vk::TableFiltering::kEmulatedHardware),
+                         [](const ::testing::TestParamInfo<vk::TableFiltering>& info) {
+                           return info.param == vk::TableFiltering::kSampler ? "Sampler" : "EmulatedHardware";
+                         });
 
 // The stored samples are today's reference: every 52nd is recomputed with its own path count and
 // seed, which reproduces it to rounding (the reference is deterministic for a seed and a path

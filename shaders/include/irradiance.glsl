@@ -110,9 +110,9 @@ vec3 GetIrradiance(sampler2D irradiance_texture, float r, float mu_s) {
   vec2 uv = GetIrradianceTextureUvFromRMuS(r, mu_s);
   float rows = float(atmosphere.irradiance_size.y);
   vec2 blend = GetTexelBlend(uv.y, rows);
-  vec3 e0 = textureLod(irradiance_texture, vec2(uv.x, (blend.x + 0.5) / rows), 0.0).rgb;
+  vec3 e0 = ReadTable(irradiance_texture, vec2(uv.x, (blend.x + 0.5) / rows)).rgb;
   if (blend.y == 0.0) return e0;
-  vec3 e1 = textureLod(irradiance_texture, vec2(uv.x, (blend.x + 1.5) / rows), 0.0).rgb;
+  vec3 e1 = ReadTable(irradiance_texture, vec2(uv.x, (blend.x + 1.5) / rows)).rgb;
   return MixExponentially(e0, e1, blend.y);
 }
 

@@ -151,12 +151,11 @@ vec2 GetClampedNuBlend(ivec4 size, vec4 uvwz, float mu, float mu_s, float nu) {
 
 // uvw: the table coordinates of (mu_s, mu, r), i.e. uvwz.yzw.
 vec3 GetScatteringBlended(sampler3D scattering_texture, ivec4 size, vec2 nu_blend, vec3 uvw) {
-  if (size.w == 1) return textureLod(scattering_texture, uvw, 0.0).rgb;
+  if (size.w == 1) return ReadTable(scattering_texture, uvw).rgb;
   float nu_size = float(size.w);
   vec3 uvw0 = vec3((nu_blend.x + uvw.x) / nu_size, uvw.y, uvw.z);
   vec3 uvw1 = vec3((nu_blend.x + 1.0 + uvw.x) / nu_size, uvw.y, uvw.z);
-  return mix(textureLod(scattering_texture, uvw0, 0.0).rgb,
-             textureLod(scattering_texture, uvw1, 0.0).rgb, nu_blend.y);
+  return mix(ReadTable(scattering_texture, uvw0).rgb, ReadTable(scattering_texture, uvw1).rgb, nu_blend.y);
 }
 
 vec3 GetScatteringAt(sampler3D scattering_texture, ivec4 size, vec4 uvwz) {

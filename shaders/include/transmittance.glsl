@@ -2,6 +2,7 @@
 #ifndef AERIAL_TRANSMITTANCE_GLSL
 #define AERIAL_TRANSMITTANCE_GLSL
 #include "mappings.glsl"
+#include "table_read.glsl"
 
 // Extinction coefficient at radius r: sum of Rayleigh, Mie and ozone, each scaled by its density.
 vec3 GetExtinction(float r) {
@@ -32,7 +33,7 @@ vec3 ComputeOpticalDepthToTopAtmosphereBoundary(float r, float mu) {
 }
 
 vec3 GetOpticalDepthToTopAtmosphereBoundary(sampler2D transmittance_texture, float r, float mu) {
-  return textureLod(transmittance_texture, GetTransmittanceTextureUvFromRMu(r, mu), 0.0).rgb;
+  return ReadTable(transmittance_texture, GetTransmittanceTextureUvFromRMu(r, mu)).rgb;
 }
 
 vec3 GetTransmittanceToTopAtmosphereBoundary(sampler2D transmittance_texture, float r, float mu) {
@@ -196,7 +197,7 @@ vec3 GetTransmittanceToSunFromBand(sampler2D transmittance_texture, sampler2D su
   if (x > GetSunBandMaxElevationInDiscRadii())
     return GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, mu_s);
   vec2 uv = GetSunBandTextureUv(textureSize(sun_band_texture, 0), r, x);
-  return exp(-textureLod(sun_band_texture, uv, 0.0).rgb) * GetSunDiscVisibleFraction(x);
+  return exp(-ReadTable(sun_band_texture, uv).rgb) * GetSunDiscVisibleFraction(x);
 }
 
 #endif

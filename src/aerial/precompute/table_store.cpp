@@ -47,7 +47,16 @@ LoadedTables LoadOrPrecompute(const vk::Context& context, const AtmosphereParame
   };
   std::optional<std::filesystem::path> dir =
       store.cache_dir.empty() ? DefaultCacheDirectory() : store.cache_dir;
-  if (!dir) {
+  if (const vk::TableFiltering filtering = context.table_filtering(); filtering != vk::TableFiltering::kSampler) {
+    // Tables precomputed with reads that interpolate another way differ slightly: kept out of the
+    // cache, which holds the sampler's.
+    const std::string value = vk::ToString(filtering);
+    if (store.require_cache_write)
+      throw Error("AERIAL_TABLE_FILTERING", value, "unset: only tables read through the sampler are cached");
+    if (!store.quiet)
+      std::fprintf(stderr, "aerial: AERIAL_TABLE_FILTERING=%s: the tables are precomputed, not cached\n", value.c_str());
+    use_cache = false;
+  } else if (!dir) {
     without_cache(Error("HOME", "unset",
                         "set, or XDG_CACHE_HOME, AERIAL_CACHE_DIR or --cache-dir, to place the table cache"));
   } else {

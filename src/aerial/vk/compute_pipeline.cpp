@@ -10,7 +10,7 @@ ComputePipeline::ComputePipeline(const Context& context, const std::string& shad
     : name_(shader),
       layout_(context, std::move(slots), push_constant_bytes, ::vk::ShaderStageFlagBits::eCompute) {
   ::vk::raii::ShaderModule module = CreateShaderModule(context, shader, layout_.slots);
-  Specialization constants(std::move(specialization));
+  Specialization constants(std::move(specialization), context.table_filtering());
   pipeline_ = ::vk::raii::Pipeline(
       context.device(), nullptr,
       ::vk::ComputePipelineCreateInfo{

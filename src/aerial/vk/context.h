@@ -11,6 +11,7 @@
 #include <vulkan/vulkan_raii.hpp>
 
 #include "aerial/device.h"
+#include "aerial/vk/table_filtering.h"
 
 namespace aerial::vk {
 
@@ -50,6 +51,8 @@ class Context {
   // This context's handles, to hand to aerial::Device (the viewer's window device, a bench's).
   DeviceHandoff Handoff() const;
   bool validation_enabled() const { return validation_; }
+  // How this context's pipelines read the tables: AERIAL_TABLE_FILTERING (table_filtering.h).
+  TableFiltering table_filtering() const { return table_filtering_; }
   double timestamp_period_ns() const { return timestamp_period_ns_; }
 
   // Records commands, submits them and waits for completion: for one-off work (uploads,
@@ -82,6 +85,7 @@ class Context {
   ::vk::raii::Fence submit_done_{nullptr};
   uint32_t queue_family_ = 0;
   bool validation_ = false;
+  TableFiltering table_filtering_ = TableFilteringFromEnvironment();
   bool external_ = false;  // the instance and the device are the caller's (DeviceHandoff)
   double timestamp_period_ns_ = 1.0;
 };

@@ -13,7 +13,7 @@ GraphicsPipeline::GraphicsPipeline(const Context& context, const GraphicsPipelin
   bool has_fragment = !info.fragment_shader.empty();
   ::vk::raii::ShaderModule fragment =
       has_fragment ? CreateShaderModule(context, info.fragment_shader, info.slots) : ::vk::raii::ShaderModule(nullptr);
-  Specialization specialization(info.specialization);
+  Specialization specialization(info.specialization, context.table_filtering());
   const ::vk::SpecializationInfo* constants = specialization.info();
   std::array<::vk::PipelineShaderStageCreateInfo, 2> stages = {
       ::vk::PipelineShaderStageCreateInfo{.stage = ::vk::ShaderStageFlagBits::eVertex,
