@@ -9,7 +9,7 @@
 namespace aerial::bench {
 namespace {
 
-Canvas PrecomputeChart(const BenchResults& b) {
+Picture PrecomputeChart(const BenchResults& b) {
   ChartSpec spec{.title = "PRECOMPUTE TIME AGAINST TABLE MEMORY, 3D AND 4D TABLES",
                  .x_label = "TABLE MEMORY (MIB)",
                  .y_label = "PRECOMPUTE, GPU MS (MEDIAN)",
