@@ -66,7 +66,7 @@ Picture ComparisonFigure(const FigureImages& images, const std::string& title) {
   CairoFigure figure(bar_x + ColorBarWidth(kBarWidth, scale_max) + kMargin, panel_y + h + kMargin);
   cairo_t* cr = figure.cr();
   DrawLabel(cr, title, kMargin, kMargin);
-  const char* labels[] = {"3D TABLES", "4D TABLES", "RELATIVE DIFFERENCE"};
+  const char* labels[] = {"3D tables", "4D tables", "Relative difference"};
   for (int i = 0; i < 3; ++i) DrawLabel(cr, labels[i], kMargin + i * (w + kGap), label_y);
   DrawPixels(cr, kMargin, panel_y, ToneMapToSrgb8(small3d, tone), w, h);
   DrawPixels(cr, kMargin + w + kGap, panel_y, ToneMapToSrgb8(small4d, tone), w, h);
