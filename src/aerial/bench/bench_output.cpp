@@ -9,20 +9,15 @@
 namespace aerial::bench {
 namespace {
 
-Canvas PrecomputeChart(const BenchResults& b) {
-  ChartSpec spec{.title = "PRECOMPUTE TIME AGAINST TABLE MEMORY, 3D AND 4D TABLES",
-                 .x_label = "TABLE MEMORY (MIB)",
-                 .y_label = "PRECOMPUTE, GPU MS (MEDIAN)",
-                 .series = {{"4D TABLES", {200, 60, 40}, false, {}}, {"3D TABLES", {40, 90, 200}, true, {}}}};
+Picture PrecomputeChart(const BenchResults& b) {
+  ChartSpec spec{.title = "Precompute time against table memory, 3D and 4D tables",
+                 .x_label = "Table memory (MiB)",
+                 .y_label = "Precompute, GPU ms (median)",
+                 .series = {{"4D tables", {200, 60, 40}, false, {}}, {"3D tables", {40, 90, 200}, true, {}}}};
   for (const VariantResult& r : b.results)
     spec.series[r.variant() == LutVariant::k4D ? 0 : 1].points.push_back(
         {double(r.precompute.table_bytes) / (1 << 20), r.PrecomputeMs()});
   return LogLogChart(spec, 900, 560);
-}
-
-std::string Upper(std::string text) {
-  for (char& c : text) c = char(std::toupper(static_cast<unsigned char>(c)));
-  return text;
 }
 
 }  // namespace
@@ -32,7 +27,7 @@ void CheckOutputDirectory(const std::filesystem::path& dir) { CheckWritable(dir 
 void WriteBenchOutputs(const std::filesystem::path& dir, const BenchResults& b) {
   const TableTier& tier = b.plan.tiers.at(b.plan.figure_tier);
   for (const FigureImages& figure : b.figures) {
-    std::string title = Upper(figure.view) + ", " + Upper(tier.name) + " TABLES, PER-PIXEL PATH";
+    std::string title = "The " + figure.view + " view, " + tier.name + " tables, per-pixel path";
     WriteFileAtomically(dir / ViewFigureFile(figure.view), ComparisonFigure(figure, title).EncodePng());
   }
   WriteFileAtomically(dir / kChartFile, PrecomputeChart(b).EncodePng());

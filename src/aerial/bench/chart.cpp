@@ -3,14 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
+#include "aerial/bench/cairo_figure.h"
+#include "aerial/bench/figure_label.h"
 #include "aerial/error.h"
 
 namespace aerial::bench {
 namespace {
 
-constexpr int kMargin = 14, kTextScale = 2, kTick = 5;
-constexpr Rgb kPaper{255, 255, 255}, kInk{20, 20, 20}, kGrid{225, 225, 225};
+constexpr int kMargin = 14, kTick = 5;
+constexpr Rgb kGrid{225, 225, 225};
 
 std::string FormatNumber(double v) {
   char text[32];
@@ -37,16 +40,29 @@ struct LogAxis {
   }
 };
 
-void Marker(Canvas& canvas, const ChartSeries& s, double x, double y) {
-  if (s.square_markers)
-    canvas.FillRect(int(std::lround(x)) - 4, int(std::lround(y)) - 4, 9, 9, s.color);
-  else
-    canvas.Disc(x, y, 5.0, s.color);
+// (x, y) is the marker's centre; a square covers whole pixels.
+void Marker(cairo_t* cr, const ChartSeries& s, double x, double y) {
+  if (s.square_markers) {
+    FillRect(cr, std::floor(x) - 4, std::floor(y) - 4, 9, 9, s.color);
+  } else {
+    SetColor(cr, s.color);
+    cairo_arc(cr, x, y, 5.0, 0.0, 2.0 * std::numbers::pi);
+    cairo_fill(cr);
+  }
+}
+
+// Through points in order, 2 pixels wide.
+void Polyline(cairo_t* cr, const std::vector<std::array<double, 2>>& points, Rgb color) {
+  SetColor(cr, color);
+  for (auto [x, y] : points) cairo_line_to(cr, x, y);
+  cairo_set_line_width(cr, 2.0);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_stroke(cr);
 }
 
 }  // namespace
 
-Canvas LogLogChart(const ChartSpec& spec, int width, int height) {
+Picture LogLogChart(const ChartSpec& spec, int width, int height) {
   double x_min = INFINITY, x_max = 0.0, y_min = INFINITY, y_max = 0.0;
   for (const ChartSeries& s : spec.series)
     for (auto [x, y] : s.points) {
@@ -59,65 +75,60 @@ Canvas LogLogChart(const ChartSpec& spec, int width, int height) {
   if (x_max == 0.0) throw Error("chart", spec.title, "at least one point");
   LogAxis x_axis(x_min, x_max), y_axis(y_min, y_max);
 
-  int text_h = Canvas::TextHeight(kTextScale);
-  int y_label_w = 0;
-  for (double v : y_axis.Ticks())
-    y_label_w = std::max(y_label_w, Canvas::TextWidth(FormatNumber(v), kTextScale));
+  double text_h = LabelHeight();
+  double y_label_w = 0.0;
+  for (double v : y_axis.Ticks()) y_label_w = std::max(y_label_w, LabelWidth(FormatNumber(v)));
   // The last x label is centered on the right end of the axis: leave room for its half.
-  int x_label_half = Canvas::TextWidth(FormatNumber(std::pow(10.0, x_axis.hi)), kTextScale) / 2;
-  int left = kMargin + y_label_w + kTick + 4, right = width - kMargin - x_label_half;
-  int top = kMargin + 2 * (text_h + 10), bottom = height - kMargin - 2 * text_h - 16;
-  auto px = [&](double x) { return left + x_axis.Fraction(x) * (right - left); };
-  auto py = [&](double y) { return bottom - y_axis.Fraction(y) * (bottom - top); };
+  double x_label_half = LabelWidth(FormatNumber(std::pow(10.0, x_axis.hi))) / 2;
+  int left = int(std::ceil(kMargin + y_label_w + kTick + 4)), right = int(width - kMargin - x_label_half);
+  int top = int(std::ceil(kMargin + 2 * (text_h + 10))), bottom = int(height - kMargin - 2 * text_h - 16);
+  // A value's place: the centre of a pixel at each end of an axis.
+  auto px = [&](double x) { return left + 0.5 + x_axis.Fraction(x) * (right - left); };
+  auto py = [&](double y) { return bottom + 0.5 - y_axis.Fraction(y) * (bottom - top); };
 
-  Canvas canvas(width, height, kPaper);
-  canvas.Text(kMargin, kMargin, spec.title, kTextScale, kInk);
-  canvas.Text(kMargin, kMargin + text_h + 10, spec.y_label, kTextScale, kInk);
-  canvas.Text((left + right - Canvas::TextWidth(spec.x_label, kTextScale)) / 2, height - kMargin - text_h,
-              spec.x_label, kTextScale, kInk);
+  CairoFigure figure(width, height);
+  cairo_t* cr = figure.cr();
+  DrawLabel(cr, spec.title, kMargin, kMargin);
+  DrawLabel(cr, spec.y_label, kMargin, kMargin + text_h + 10);
+  DrawLabel(cr, spec.x_label, (left + right) / 2.0, height - kMargin, {0.5, 1.0});
   for (double v : x_axis.Ticks()) {
-    int x = int(std::lround(px(v)));
-    canvas.FillRect(x, top, 1, bottom - top, kGrid);
-    canvas.FillRect(x, bottom, 1, kTick, kInk);
-    std::string label = FormatNumber(v);
-    canvas.Text(x - Canvas::TextWidth(label, kTextScale) / 2, bottom + kTick + 4, label, kTextScale, kInk);
+    double x = std::floor(px(v));
+    FillRect(cr, x, top, 1, bottom - top, kGrid);
+    FillRect(cr, x, bottom, 1, kTick, kInk);
+    DrawLabel(cr, FormatNumber(v), x + 0.5, bottom + kTick + 4, {0.5, 0.0});
   }
   for (double v : y_axis.Ticks()) {
-    int y = int(std::lround(py(v)));
-    canvas.FillRect(left, y, right - left, 1, kGrid);
-    canvas.FillRect(left - kTick, y, kTick, 1, kInk);
-    std::string label = FormatNumber(v);
-    canvas.Text(left - kTick - 4 - Canvas::TextWidth(label, kTextScale), y - text_h / 2, label, kTextScale,
-                kInk);
+    double y = std::floor(py(v));
+    FillRect(cr, left, y, right - left, 1, kGrid);
+    FillRect(cr, left - kTick, y, kTick, 1, kInk);
+    DrawLabel(cr, FormatNumber(v), left - kTick - 4, y + 0.5, {1.0, 0.5});
   }
-  canvas.FillRect(left, top, 1, bottom - top + 1, kInk);
-  canvas.FillRect(left, bottom, right - left, 1, kInk);
+  FillRect(cr, left, top, 1, bottom - top + 1, kInk);
+  FillRect(cr, left, bottom, right - left, 1, kInk);
 
   for (const ChartSeries& s : spec.series) {
     std::vector<std::array<double, 2>> points = s.points;
     std::sort(points.begin(), points.end());
-    for (size_t i = 1; i < points.size(); ++i)
-      canvas.Line(px(points[i - 1][0]), py(points[i - 1][1]), px(points[i][0]), py(points[i][1]), 2.0,
-                  s.color);
-    for (auto [x, y] : points) Marker(canvas, s, px(x), py(y));
+    for (auto& [x, y] : points) x = px(x), y = py(y);
+    Polyline(cr, points, s.color);
+    for (auto [x, y] : points) Marker(cr, s, x, y);
   }
 
   // Legend, top left inside the plot.
-  int legend_w = 0;
-  for (const ChartSeries& s : spec.series)
-    legend_w = std::max(legend_w, Canvas::TextWidth(s.label, kTextScale));
-  int row_h = text_h + 8, box_w = legend_w + 44, box_h = int(spec.series.size()) * row_h + 8;
-  int box_x = left + 10, box_y = top + 10;
-  canvas.FillRect(box_x, box_y, box_w, box_h, kInk);
-  canvas.FillRect(box_x + 1, box_y + 1, box_w - 2, box_h - 2, kPaper);
+  double legend_w = 0.0;
+  for (const ChartSeries& s : spec.series) legend_w = std::max(legend_w, LabelWidth(s.label));
+  int row_h = int(std::ceil(text_h)) + 8, box_h = int(spec.series.size()) * row_h + 8;
+  int box_x = left + 10, box_y = top + 10, box_w = int(std::ceil(legend_w)) + 44;
+  FillRect(cr, box_x, box_y, box_w, box_h, kInk);
+  FillRect(cr, box_x + 1, box_y + 1, box_w - 2, box_h - 2, kPaper);
   for (size_t i = 0; i < spec.series.size(); ++i) {
     const ChartSeries& s = spec.series[i];
-    int y = box_y + 4 + int(i) * row_h + row_h / 2;
-    canvas.Line(box_x + 8, y, box_x + 32, y, 2.0, s.color);
-    Marker(canvas, s, box_x + 20, y);
-    canvas.Text(box_x + 38, y - text_h / 2, s.label, kTextScale, kInk);
+    double y = box_y + 4 + int(i) * row_h + row_h / 2.0;
+    Polyline(cr, {{box_x + 8.0, y}, {box_x + 32.0, y}}, s.color);
+    Marker(cr, s, box_x + 20, y);
+    DrawLabel(cr, s.label, box_x + 38, y, {0.0, 0.5});
   }
-  return canvas;
+  return figure.Finish();
 }
 
 }  // namespace aerial::bench

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "aerial/bench/canvas.h"
+#include "aerial/bench/picture.h"
 
 namespace aerial::bench {
 
@@ -22,6 +22,6 @@ struct ChartSpec {
 };
 
 // Throws aerial::Error if a point is not positive and finite, or if there are no points.
-Canvas LogLogChart(const ChartSpec& spec, int width, int height);
+Picture LogLogChart(const ChartSpec& spec, int width, int height);
 
 }  // namespace aerial::bench

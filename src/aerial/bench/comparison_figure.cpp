@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "aerial/bench/cairo_figure.h"
+#include "aerial/bench/color_bar.h"
+#include "aerial/bench/figure_label.h"
 #include "aerial/bench/heatmap.h"
 #include "aerial/image.h"
 #include "aerial/image/exposure.h"
@@ -12,8 +15,7 @@ namespace aerial::bench {
 using validation::ErrorMap;
 namespace {
 
-constexpr int kMargin = 12, kGap = 10, kTextScale = 2, kBarWidth = 16;
-constexpr Rgb kPaper{255, 255, 255}, kInk{20, 20, 20};
+constexpr int kMargin = 12, kGap = 10, kBarWidth = 16;
 
 ImageRgbF AverageBlocks(const ImageRgbF& image, int k) {
   ImageRgbF out{image.width / k, image.height / k, {}};
@@ -48,7 +50,7 @@ double Percentile(std::vector<float> values, double p) {
 
 }  // namespace
 
-Canvas ComparisonFigure(const FigureImages& images, const std::string& title) {
+Picture ComparisonFigure(const FigureImages& images, const std::string& title) {
   int k = (images.lut4d.width + kMaxPanelWidth - 1) / kMaxPanelWidth;
   ImageRgbF small3d = AverageBlocks(images.lut3d, k), small4d = AverageBlocks(images.lut4d, k);
   int w = small4d.width, h = small4d.height;
@@ -58,19 +60,19 @@ Canvas ComparisonFigure(const FigureImages& images, const std::string& title) {
   // The 99th percentile, rounded up to a readable number: a few hot pixels do not wash out the map.
   double scale_max = NiceCeiling(std::max(Percentile(error, 0.99), 1e-4));
 
-  int text_h = Canvas::TextHeight(kTextScale);
+  int text_h = int(std::ceil(LabelHeight()));
   int label_y = kMargin + text_h + kGap, panel_y = label_y + text_h + kGap / 2;
   int bar_x = kMargin + 3 * w + 2 * kGap + kGap;
-  int width = bar_x + ColorBarWidth(kBarWidth, scale_max, kTextScale) + kMargin;
-  Canvas canvas(width, panel_y + h + kMargin, kPaper);
-  canvas.Text(kMargin, kMargin, title, kTextScale, kInk);
-  const char* labels[] = {"3D TABLES", "4D TABLES", "RELATIVE DIFFERENCE"};
-  for (int i = 0; i < 3; ++i) canvas.Text(kMargin + i * (w + kGap), label_y, labels[i], kTextScale, kInk);
-  canvas.Blit(kMargin, panel_y, ToneMapToSrgb8(small3d, tone), w, h);
-  canvas.Blit(kMargin + w + kGap, panel_y, ToneMapToSrgb8(small4d, tone), w, h);
-  DrawHeatMap(canvas, kMargin + 2 * (w + kGap), panel_y, error, w, h, scale_max);
-  DrawColorBar(canvas, bar_x, panel_y, kBarWidth, h, scale_max, kTextScale);
-  return canvas;
+  CairoFigure figure(bar_x + ColorBarWidth(kBarWidth, scale_max) + kMargin, panel_y + h + kMargin);
+  cairo_t* cr = figure.cr();
+  DrawLabel(cr, title, kMargin, kMargin);
+  const char* labels[] = {"3D tables", "4D tables", "Relative difference"};
+  for (int i = 0; i < 3; ++i) DrawLabel(cr, labels[i], kMargin + i * (w + kGap), label_y);
+  DrawPixels(cr, kMargin, panel_y, ToneMapToSrgb8(small3d, tone), w, h);
+  DrawPixels(cr, kMargin + w + kGap, panel_y, ToneMapToSrgb8(small4d, tone), w, h);
+  DrawPixels(cr, kMargin + 2 * (w + kGap), panel_y, HeatMapRgba8(error, scale_max), w, h);
+  DrawColorBar(cr, bar_x, panel_y, kBarWidth, h, scale_max);
+  return figure.Finish();
 }
 
 }  // namespace aerial::bench

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "aerial/bench/bench_results.h"
-#include "aerial/bench/canvas.h"
+#include "aerial/bench/picture.h"
 
 namespace aerial::bench {
 
@@ -13,6 +13,6 @@ namespace aerial::bench {
 inline constexpr int kMaxPanelWidth = 480;
 
 // title goes above the panels.
-Canvas ComparisonFigure(const FigureImages& images, const std::string& title);
+Picture ComparisonFigure(const FigureImages& images, const std::string& title);
 
 }  // namespace aerial::bench

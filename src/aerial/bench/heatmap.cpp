@@ -38,34 +38,14 @@ std::string FormatPercent(double fraction) {
   return text;
 }
 
-void DrawHeatMap(Canvas& canvas, int x, int y, const std::vector<float>& values, int w, int h,
-                 double scale_max) {
-  for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i)
-      canvas.Set(x + i, y + j, HeatColor(values[size_t(j) * size_t(w) + size_t(i)] / scale_max));
-}
-
-namespace {
-constexpr double kTicks[] = {0.0, 0.5, 1.0};  // fractions of the scale
-constexpr int kTickLength = 4, kLabelGap = 6;
-}  // namespace
-
-int ColorBarWidth(int w, double scale_max, int text_scale) {
-  int label = 0;
-  for (double t : kTicks)
-    label = std::max(label, Canvas::TextWidth(FormatPercent(t * scale_max), text_scale));
-  return w + kLabelGap + label;
-}
-
-void DrawColorBar(Canvas& canvas, int x, int y, int w, int h, double scale_max, int text_scale) {
-  for (int j = 0; j < h; ++j) canvas.FillRect(x, y + j, w, 1, HeatColor(1.0 - (j + 0.5) / h));
-  const Rgb ink{20, 20, 20};
-  for (double t : kTicks) {
-    int tick_y = y + int(std::lround((1.0 - t) * (h - 1)));
-    canvas.FillRect(x + w, tick_y, kTickLength, 1, ink);
-    canvas.Text(x + w + kLabelGap, tick_y - Canvas::TextHeight(text_scale) / 2, FormatPercent(t * scale_max),
-                text_scale, ink);
+std::vector<uint8_t> HeatMapRgba8(const std::vector<float>& values, double scale_max) {
+  std::vector<uint8_t> rgba8;
+  rgba8.reserve(values.size() * 4);
+  for (float value : values) {
+    Rgb color = HeatColor(value / scale_max);
+    rgba8.insert(rgba8.end(), {color.r, color.g, color.b, 255});
   }
+  return rgba8;
 }
 
 }  // namespace aerial::bench

@@ -1,10 +1,11 @@
 #pragma once
-// Heat maps of relative errors: a colour scale, a scale maximum that reads well, and a colour
-// bar whose ticks are labelled with numbers.
+// Heat maps of relative errors: a colour scale, a scale maximum that reads well, the map's pixels
+// and the percentages that label its colour bar (color_bar.h).
+#include <cstdint>
 #include <string>
 #include <vector>
 
-#include "aerial/bench/canvas.h"
+#include "aerial/bench/picture.h"
 
 namespace aerial::bench {
 
@@ -18,14 +19,7 @@ double NiceCeiling(double value);
 // "5%", "2.5%", "0.05%": a fraction as a percentage with no trailing zeros.
 std::string FormatPercent(double fraction);
 
-// values (w x h, row-major) drawn at (x, y), each value / scale_max through HeatColor.
-void DrawHeatMap(Canvas& canvas, int x, int y, const std::vector<float>& values, int w, int h,
-                 double scale_max);
-
-// A vertical colour bar of w x h pixels at (x, y), scale_max at the top and 0 at the bottom, with
-// three labelled ticks (0, half, max) on its right.
-void DrawColorBar(Canvas& canvas, int x, int y, int w, int h, double scale_max, int text_scale);
-// The width DrawColorBar covers, labels included.
-int ColorBarWidth(int w, double scale_max, int text_scale);
+// RGBA8 pixels of the heat map of values (row-major): each value / scale_max through HeatColor.
+std::vector<uint8_t> HeatMapRgba8(const std::vector<float>& values, double scale_max);
 
 }  // namespace aerial::bench

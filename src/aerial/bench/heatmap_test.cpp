@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "aerial/bench/font5x7.h"
+#include "aerial/bench/picture_test_util.h"
 
 namespace aerial::bench {
 namespace {
@@ -21,29 +21,21 @@ TEST(FormatPercent, NoTrailingZeros) {
 }
 
 TEST(HeatColor, EndsOfInfernoAndClamped) {
-  Rgb low = HeatColor(0.0), high = HeatColor(1.0), above = HeatColor(7.0);
-  EXPECT_EQ((std::array<int, 3>{low.r, low.g, low.b}), (std::array<int, 3>{0, 0, 4}));
-  EXPECT_EQ((std::array<int, 3>{high.r, high.g, high.b}), (std::array<int, 3>{252, 255, 164}));
-  EXPECT_EQ((std::array<int, 3>{above.r, above.g, above.b}), (std::array<int, 3>{252, 255, 164}));
+  EXPECT_EQ(HeatColor(0.0), (Rgb{0, 0, 4}));
+  EXPECT_EQ(HeatColor(1.0), (Rgb{252, 255, 164}));
+  EXPECT_EQ(HeatColor(7.0), (Rgb{252, 255, 164}));
 }
 
-TEST(Font5x7, EveryGlyphIsFiveBySeven) {
-  for (char c : std::string(" 0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ.,-+%:/()|=<>_")) {
-    const auto* glyph = Glyph5x7(c);
-    ASSERT_NE(glyph, nullptr) << c;
-    for (const char* row : *glyph) EXPECT_EQ(std::string(row).size(), size_t(kGlyphWidth)) << c;
-  }
-  EXPECT_EQ(Glyph5x7('a'), Glyph5x7('A'));
-  EXPECT_EQ(Glyph5x7('~'), nullptr);
-}
-
-TEST(Canvas, TextWidthCountsGlyphsAndGaps) {
-  EXPECT_EQ(Canvas::TextWidth("10%", 2), (3 * kGlyphAdvance - 1) * 2);
-  Canvas canvas(12, 7, {255, 255, 255});
-  canvas.Text(0, 0, "1", 1, {0, 0, 0});
-  int lit = 0;
-  for (size_t i = 0; i < canvas.rgba8().size(); i += 4) lit += canvas.rgba8()[i] == 0;
-  EXPECT_EQ(lit, 10);  // the '1' glyph has 10 lit pixels
+// Each value over the scale through HeatColor, in order; above the scale clamps to its top.
+TEST(HeatMapRgba8, EachValueOverTheScale) {
+  std::vector<uint8_t> rgba8 = HeatMapRgba8({0.0f, 0.25f, 0.5f, 2.0f}, 0.5);
+  Picture map{4, 1, rgba8};
+  ASSERT_EQ(rgba8.size(), size_t(16));
+  EXPECT_EQ(map.At(0, 0), HeatColor(0.0));
+  EXPECT_EQ(map.At(1, 0), HeatColor(0.5));
+  EXPECT_EQ(map.At(2, 0), HeatColor(1.0));
+  EXPECT_EQ(map.At(3, 0), HeatColor(1.0));
+  for (size_t i = 3; i < rgba8.size(); i += 4) EXPECT_EQ(rgba8[i], 255) << "opaque";
 }
 
 }  // namespace
