@@ -163,17 +163,31 @@ INSTANTIATE_TEST_SUITE_P(Filtering, PhysicalSky,
                          });
 
 // The stored samples are today's reference: every 52nd is recomputed with its own path count and
-// seed, which reproduces it to rounding (the reference is deterministic for a seed and a path
-// count, whatever the thread count), unless the reference code changed since the file was made.
+// seed, unless the reference code changed since the file was made. The reference is deterministic
+// for a seed and a path count, whatever the thread count, but its paths fork on the last bit of a
+// float: built by the compiler that made the file (gcc), it reproduces the samples to rounding;
+// built by another (clang, in tools/run-sanitizer-tests.sh), a recomputed sample is another draw of
+// the same estimate, held within 5 combined standard errors (63 values: a false alarm about once in
+// 30,000 runs; the median value's standard error is 0.09%, and a change of the reference by 1%
+// exceeds the bound on 39 of the 57 nonzero values).
 TEST(PhysicalSkyReference, StoredReferenceIsTodaysReference) {
+#if defined(__GNUC__) && !defined(__clang__)
+  constexpr bool kFileCompiler = true;
+#else
+  constexpr bool kFileCompiler = false;
+#endif
   validation::SkyReference reference = validation::ReadSkyReference(kReferenceFile);
   ASSERT_EQ(reference.samples.size(), 1092u);
   int checked = 0;
   for (size_t i = 0; i < reference.samples.size(); i += 52) {
     const validation::SkySample& sample = reference.samples[i];
     reference::Estimate again = validation::RecomputeSkySample(AtmosphereParameters::Earth(), reference, sample);
-    for (int c = 0; c < 3; ++c)
-      EXPECT_NEAR(again.value[c], sample.value[c], 1e-9 * std::abs(sample.value[c]) + 1e-300) << i << " " << c;
+    for (int c = 0; c < 3; ++c) {
+      const double combined_error = std::hypot(again.std_error[c], sample.std_error[c]);
+      EXPECT_LE(std::abs(again.value[c] - sample.value[c]), 5.0 * combined_error) << i << " " << c;
+      if (kFileCompiler)
+        EXPECT_NEAR(again.value[c], sample.value[c], 1e-9 * std::abs(sample.value[c]) + 1e-300) << i << " " << c;
+    }
     ++checked;
   }
   EXPECT_EQ(checked, 21);

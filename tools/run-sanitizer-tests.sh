@@ -31,10 +31,6 @@ gpu_suites+=":ViewerToneMap.*:TablesVsReference.*:GraphicsPipelineTest.*:SceneSu
 gpu_suites+=":ViewerDebugViews.*:LeanFrame.*:Lut3d.*:MappingRoundTrip.*:GoldenImage.*"
 gpu_suites+=":Cli.*:ViewCli.*:BenchQuick.*:ViewerSession.*:Exr.*:Png.*:ImageWriter.*"
 gpu_suites+=":ShadowRender.*:FroxelShadows.*:Exposure_.*:SpectralTables.*:CpuGpuMappings.*"
-# Not here: the stored sky reference is checked bit for bit against a fresh Monte Carlo run, whose
-# paths fork on the last bit of a float, so another compiler's rounding (clang here, gcc in the
-# main suite) changes the samples; the main suite runs it.
-cpu_only_elsewhere="PhysicalSkyReference.StoredReferenceIsTodaysReference"
 # Likewise the golden images: they are held to 1e-6 of the frames of the main suite's gcc build;
 # clang's rounding moves the terrain's vertices, built on the CPU (noon 0.756% off, 2026-11-28).
 golden_elsewhere="Render.MatchesGoldenImages"
@@ -45,6 +41,6 @@ gpu_short="TableSanity.*:TableCacheIntegration.*:Render.*:VdbExport.*:Cli.*"
 cd build-sanitize
 ctest --output-on-failure --timeout 1500 -R '^fuzz_regressions\.'
 AERIAL_VALIDATION=1 AERIAL_CACHE_DIR=$PWD/test-cache ./aerial_tests --gtest_brief=1 \
-  --gtest_filter="-$gpu_suites:$cpu_only_elsewhere"
+  --gtest_filter="-$gpu_suites"
 AERIAL_VALIDATION=1 AERIAL_CACHE_DIR=$PWD/test-cache ./aerial_tests --gtest_brief=1 \
   --gtest_filter="$gpu_short-$golden_elsewhere"
