@@ -1,7 +1,7 @@
 #pragma once
 // Shared GPU state for the cross-module tests: one Vulkan context with validation on, and table
 // sets that are precomputed once and then read from the test cache (AERIAL_CACHE_DIR, set by
-// CTest), since every test runs in its own process. Every GPU test derives from GpuTest, which
+// tests/test_environment.cpp), since every test runs in its own process. Every GPU test derives from GpuTest, which
 // fails the test if the validation layers printed anything while it ran.
 #include <gtest/gtest.h>
 
