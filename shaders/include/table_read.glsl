@@ -8,6 +8,8 @@
 //    a lot (the mu axis near the horizon, mu_s near the terminator);
 //  - the shader, in float: 4 or 8 texel fetches, the same on every device;
 //  - the shader with the weights rounded to 1/256: a hardware sampler emulated on lavapipe.
+// A caller's shader that includes aerial's GLSL declares constant_id 16 with it: left unset, it
+// reads through the sampler.
 #ifndef AERIAL_TABLE_READ_GLSL
 #define AERIAL_TABLE_READ_GLSL
 
