@@ -11,7 +11,7 @@ packages=(
   # libraries
   libglm-dev libglfw3-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libopenvdb-dev libboost-iostreams-dev libtbb-dev libopenexr-dev libstb-dev
-  libimgui-dev libtinygltf-dev libxxhash-dev libcairo2-dev
+  libimgui-dev libtinygltf-dev libxxhash-dev libcairo2-dev fonts-dejavu-core
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-openvdb
   # sanitizer and fuzzing builds (tools/run-sanitizer-tests.sh, tools/fuzz.sh): clang, its
