@@ -18,11 +18,16 @@ layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
 layout(set = 0, binding = 3) uniform sampler3D rayleigh_texture;
 layout(set = 0, binding = 4, rgba32f) writeonly uniform image2D rayleigh_correction;
 layout(set = 0, binding = 5, rgba32f) writeonly uniform image2D mie_correction;
-layout(push_constant) uniform Size { ivec2 size; } table;  // the sky-view table's
+// The sky-view table's size, and the lattice rows [first, end) that this dispatch makes (the
+// renderer makes the lattice in bands of rows: frame_cache_policy.h, SkyViewLatticeBandsToRemake).
+layout(push_constant) uniform Size {
+  ivec2 size;
+  ivec2 rows;
+} table;
 
 void main() {
-  ivec2 node = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(node, GetSkyViewLatticeSize(table.size)))) return;
+  ivec2 node = ivec2(gl_GlobalInvocationID.xy) + ivec2(0, table.rows.x);
+  if (node.y >= table.rows.y || any(greaterThanEqual(node, GetSkyViewLatticeSize(table.size)))) return;
   SkyViewRay ray = GetSkyViewRay(GetSkyViewLatticeTexel(node, table.size), table.size);
   vec3 rayleigh, mie;
   GetSkyInscatterCorrection(transmittance_texture, rayleigh_texture, ray.r, ray.mu, ray.mu_s,

@@ -17,12 +17,45 @@ SkyViewKey MakeSkyViewKey(const FrameUniforms& frame) {
   return {r, (p[0] * s[0] + p[1] * s[1] + p[2] * s[2]) / r};
 }
 
+namespace {
+
+constexpr float kSkyViewAltitudeToleranceM = 10.0f, kSkyViewMuSTolerance = 1e-5f;
+
+// How far (m) a table or band made for `made_for` lags `now` in altitude; infinite when it was
+// never made or the sun moved beyond the tolerance.
+float AltitudeLag(const std::optional<SkyViewKey>& made_for, const SkyViewKey& now) {
+  if (!made_for || std::fabs(made_for->mu_s - now.mu_s) > kSkyViewMuSTolerance) return INFINITY;
+  return std::fabs(made_for->r_m - now.r_m);
+}
+
+}  // namespace
+
 bool SkyViewReusable(const std::optional<SkyViewKey>& made_for, const SkyViewKey& now, bool exact) {
-  constexpr float kAltitudeToleranceM = 10.0f, kMuSTolerance = 1e-5f;
-  if (!made_for) return false;
-  bool close = std::fabs(made_for->r_m - now.r_m) <= kAltitudeToleranceM &&
-               std::fabs(made_for->mu_s - now.mu_s) <= kMuSTolerance;
-  return *made_for == now || (close && !exact);
+  if (made_for == now) return true;
+  return !exact && AltitudeLag(made_for, now) <= kSkyViewAltitudeToleranceM;
+}
+
+std::array<bool, kSkyViewLatticeBands> SkyViewLatticeBandsToRemake(const SkyViewLatticeKeys& made_for,
+                                                                    const SkyViewKey& now, bool exact) {
+  std::array<bool, kSkyViewLatticeBands> remake{};
+  int most_behind = -1;
+  float most_lag = kSkyViewAltitudeToleranceM;
+  for (int b = 0; b < kSkyViewLatticeBands; ++b) {
+    float lag = AltitudeLag(made_for[b], now);
+    remake[b] = lag > kSkyViewLatticeLagM || (exact && made_for[b] != now);
+    if (!remake[b] && lag > most_lag) {
+      most_lag = lag;
+      most_behind = b;
+    }
+  }
+  if (most_behind >= 0) remake[most_behind] = true;
+  return remake;
+}
+
+bool SkyViewLatticeCaughtUp(const SkyViewLatticeKeys& made_for, const SkyViewKey& now) {
+  return std::all_of(made_for.begin(), made_for.end(), [&](const std::optional<SkyViewKey>& band) {
+    return AltitudeLag(band, now) <= kSkyViewAltitudeToleranceM;
+  });
 }
 
 bool FroxelsReusable(const std::optional<FrameUniforms>& built_for, const FrameUniforms& now,

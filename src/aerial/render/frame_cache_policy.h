@@ -9,6 +9,7 @@
 
 #include "aerial/render/shadow_cascades.h"
 #include "aerial/render/shadow_terrain.h"
+#include "aerial/render/sky_view_layout.h"
 #include "aerial/shader_abi/frame_block.h"
 #include "aerial/terrain/lod_selection.h"
 
@@ -33,6 +34,28 @@ SkyViewKey MakeSkyViewKey(const FrameUniforms& frame);
 // every other frame instead of every frame. An exact frame (Renderer::Record's `complete`) remakes
 // any table not made for its own r and mu_s.
 bool SkyViewReusable(const std::optional<SkyViewKey>& made_for, const SkyViewKey& now, bool exact);
+
+// ---- The sky-view table's correction lattice ----
+// The correction at the lattice's nodes (sky_view_correction.comp) is most of the cost of remaking
+// the table: it marches six suns along each of 1,862 rays, about 30 ms of process CPU of the
+// moving-camera frame on lavapipe (noon). It changes far more slowly with the camera's altitude
+// than the table's texels do, so its rows are made in kSkyViewLatticeBands bands, each for the
+// altitude of its own frame, and a climbing camera remakes one band a frame, the one that lags
+// most, instead of all eight: time-sliced, as engines update their sky and probe captures.
+//  - A band may lag the camera by up to kSkyViewLatticeLagM. With the whole lattice 49 m behind and
+//    the table's texels remade, the frame moved by at most 0.069% relative RMSE (twilight 1 km up;
+//    sunset 0.019%, noon 0.006%; tested), less than the table's own 10 m tolerance moves it
+//    (0.09% at sunset, 0.35% at twilight). At 99 m it was 0.087% at sunset, 0.11% at twilight.
+//  - A band further behind is remade at once, and so is every band when the sun moves, on the
+//    first frame, and in an exact frame not made for its own r and mu_s, as the table is.
+//  - A band within the table's 10 m is left as it is.
+// The table's texels are remade after any band is (the renderer's SkyViewStale).
+inline constexpr float kSkyViewLatticeLagM = 50.0f;
+using SkyViewLatticeKeys = std::array<std::optional<SkyViewKey>, kSkyViewLatticeBands>;
+std::array<bool, kSkyViewLatticeBands> SkyViewLatticeBandsToRemake(const SkyViewLatticeKeys& made_for,
+                                                                    const SkyViewKey& now, bool exact);
+// Whether every band is within the table's tolerance of `now` (nothing is left for later frames).
+bool SkyViewLatticeCaughtUp(const SkyViewLatticeKeys& made_for, const SkyViewKey& now);
 
 // ---- The froxel volume ----
 // It depends on the camera, the sun, the shadow map and the tables only: a still view under an

@@ -48,6 +48,67 @@ TEST(FrameCachePolicy, SkyViewKeptWithinTenMetersAndTheSunsTolerance) {
   EXPECT_FALSE(SkyViewReusable(made, {kR + 100.0f, 0.5f + 3e-5f}, false)) << "the sun moved";
 }
 
+// The bands a frame remakes, as the list of their indices.
+std::vector<int> BandsRemade(const SkyViewLatticeKeys& made_for, const SkyViewKey& now, bool exact) {
+  std::array<bool, kSkyViewLatticeBands> remake = SkyViewLatticeBandsToRemake(made_for, now, exact);
+  std::vector<int> bands;
+  for (int b = 0; b < kSkyViewLatticeBands; ++b)
+    if (remake[b]) bands.push_back(b);
+  return bands;
+}
+
+SkyViewLatticeKeys AllBands(const SkyViewKey& key) {
+  SkyViewLatticeKeys keys;
+  keys.fill(key);
+  return keys;
+}
+
+TEST(FrameCachePolicy, SkyViewLatticeBandsAreMadeAllAtOnceForANewSunOrAnExactFrame) {
+  const SkyViewKey made{kR + 100.0f, 0.5f};
+  const std::vector<int> all = {0, 1, 2, 3, 4, 5, 6, 7};
+  EXPECT_EQ(BandsRemade({}, made, false), all) << "the first frame";
+  EXPECT_EQ(BandsRemade(AllBands(made), {kR + 100.0f, 0.5f + 3e-5f}, false), all) << "the sun moved";
+  EXPECT_EQ(BandsRemade(AllBands(made), {kR + 105.0f, 0.5f}, true), all) << "an exact frame 5 m higher";
+  EXPECT_TRUE(BandsRemade(AllBands(made), made, true).empty()) << "an exact frame of the same r and mu_s";
+  SkyViewLatticeKeys one_behind = AllBands(made);
+  one_behind[6] = SkyViewKey{kR + 130.0f, 0.5f};
+  EXPECT_EQ(BandsRemade(one_behind, made, true), std::vector<int>{6});
+}
+
+TEST(FrameCachePolicy, SkyViewLatticeBandsFollowAClimbingCameraOneAFrame) {
+  const SkyViewKey made{kR + 100.0f, 0.5f};
+  EXPECT_TRUE(BandsRemade(AllBands(made), {kR + 109.0f, 0.5f}, false).empty()) << "within the table's 10 m";
+  EXPECT_EQ(BandsRemade(AllBands(made), {kR + 130.0f, 0.5f}, false), std::vector<int>{0})
+      << "all 30 m behind: the first of them";
+  // A camera that climbs 12 m a frame: each frame remakes the band made longest ago.
+  SkyViewLatticeKeys keys = AllBands(made);
+  for (int frame = 1; frame <= 3; ++frame) {
+    SkyViewKey now{kR + 100.0f + 12.0f * float(frame), 0.5f};
+    std::vector<int> bands = BandsRemade(keys, now, false);
+    ASSERT_EQ(bands.size(), 1u) << "frame " << frame;
+    EXPECT_EQ(bands[0], frame - 1) << "frame " << frame;
+    keys[bands[0]] = now;
+  }
+  // More than kSkyViewLatticeLagM behind: remade at once, and the most behind of the rest too.
+  keys = AllBands(made);
+  keys[5] = SkyViewKey{kR + 100.0f - kSkyViewLatticeLagM - 1.0f, 0.5f};
+  keys[2] = SkyViewKey{kR + 120.0f, 0.5f};
+  EXPECT_EQ(BandsRemade(keys, made, false), (std::vector<int>{2, 5})) << "5 is 51 m behind, 2 is 20 m ahead";
+  keys[2] = made;
+  EXPECT_EQ(BandsRemade(keys, made, false), std::vector<int>{5});
+  keys[5] = SkyViewKey{kR + 100.0f - kSkyViewLatticeLagM + 1.0f, 0.5f};
+  EXPECT_EQ(BandsRemade(keys, made, false), std::vector<int>{5}) << "49 m behind: the one most behind";
+}
+
+TEST(FrameCachePolicy, SkyViewLatticeCaughtUpWhenEveryBandIsWithinTheTablesTolerance) {
+  const SkyViewKey made{kR + 100.0f, 0.5f};
+  SkyViewLatticeKeys keys = AllBands(made);
+  EXPECT_TRUE(SkyViewLatticeCaughtUp(keys, {kR + 109.0f, 0.5f}));
+  keys[7] = SkyViewKey{kR + 80.0f, 0.5f};
+  EXPECT_FALSE(SkyViewLatticeCaughtUp(keys, made)) << "band 7 is 20 m behind";
+  EXPECT_FALSE(SkyViewLatticeCaughtUp({}, made)) << "none made";
+}
+
 TEST(FrameCachePolicy, FroxelsKeptForTheSameFrameUnderTheSameShadowMap) {
   FrameUniforms moved = Frame();
   moved.sun_direction[0] += 1e-4f;

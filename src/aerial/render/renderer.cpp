@@ -222,7 +222,7 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       shadow_map_(tables.context(), options.shadows),
       casters_(SceneCasterBounds(scene, tables.atmosphere().bottom_radius_m)),
       sky_view_correction_(tables.context(), "frame/sky_view_correction.comp", SkyViewCorrectionSlots(),
-                           sizeof(kSkyViewSize)),
+                           sizeof(kSkyViewSize) + 2 * sizeof(int)),
       sky_view_(tables.context(), "frame/sky_view.comp", SkyViewSlots(), sizeof(kSkyViewSize)),
       opaque_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/opaque.frag", false, MeshConstants(options))),
       sky_(tables.context(), SkyPipeline(options.mode)),
@@ -279,28 +279,47 @@ void Renderer::SelectTerrain(const Scene& scene, bool complete) {
   frame_info_.built = terrain_->built_this_frame();
 }
 
-// When the sky-view table is remade: frame_cache_policy.h (SkyViewReusable).
-bool Renderer::SkyViewStale(bool exact) {
+// When the sky-view table is remade: frame_cache_policy.h (SkyViewReusable), and after a band of
+// its correction lattice was.
+bool Renderer::SkyViewStale(bool exact, bool lattice_remade) {
   SkyViewKey key = MakeSkyViewKey(frame_uniforms_);
-  if (SkyViewReusable(sky_view_key_, key, exact)) return false;
+  if (!lattice_remade && SkyViewReusable(sky_view_key_, key, exact)) return false;
   sky_view_key_ = key;
   frame_info_.sky_view_updated = true;
   return true;
 }
 
 // The correction of the tables' sky inscatter at the sky-view table's lattice nodes
-// (sky_view_correction.comp; with the 3D tables its invocations return at once). It is recorded
-// before the froxel build and followed by a barrier, so that the froxel build and the sky-view pass
-// that reads it still run side by side.
-void Renderer::RecordSkyViewCorrection(const vk::CommandBuffer& cmd, const vk::Buffer& frame) {
-  sky_view_correction_.Dispatch(cmd,
-                                {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame},
-                                 tables_.Sampled(tables_.transmittance()),
-                                 tables_.Sampled(tables_.rayleigh()),
-                                 vk::StorageImageSlot{&sky_rayleigh_correction_},
-                                 vk::StorageImageSlot{&sky_mie_correction_}},
-                                {uint32_t(kSkyViewLatticeSize[0]), uint32_t(kSkyViewLatticeSize[1]), 1},
-                                {8, 8, 1}, kSkyViewSize.data());
+// (sky_view_correction.comp; with the 3D tables its invocations return at once), in the bands
+// that frame_cache_policy.h (SkyViewLatticeBandsToRemake) picks, one dispatch per run of
+// neighbouring bands. It is recorded before the froxel build and followed by a barrier, so that
+// the froxel build and the sky-view pass that reads it still run side by side.
+bool Renderer::RecordSkyViewCorrection(const vk::CommandBuffer& cmd, const vk::Buffer& frame, bool exact) {
+  SkyViewKey key = MakeSkyViewKey(frame_uniforms_);
+  std::array<bool, kSkyViewLatticeBands> remake = SkyViewLatticeBandsToRemake(sky_view_lattice_keys_, key, exact);
+  bool any = false;
+  for (int band = 0; band < kSkyViewLatticeBands;) {
+    if (!remake[band]) {
+      ++band;
+      continue;
+    }
+    int end = band;
+    while (end < kSkyViewLatticeBands && remake[end]) sky_view_lattice_keys_[end++] = key;
+    struct {
+      std::array<int, 2> size;
+      int first_row, end_row;
+    } constants{kSkyViewSize, SkyViewLatticeBandRows(band).first, SkyViewLatticeBandRows(end - 1).end};
+    sky_view_correction_.Dispatch(cmd,
+                                  {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame},
+                                   tables_.Sampled(tables_.transmittance()), tables_.Sampled(tables_.rayleigh()),
+                                   vk::StorageImageSlot{&sky_rayleigh_correction_},
+                                   vk::StorageImageSlot{&sky_mie_correction_}},
+                                  {uint32_t(kSkyViewLatticeSize[0]), uint32_t(constants.end_row - constants.first_row), 1},
+                                  {8, 8, 1}, &constants);
+    any = true;
+    band = end;
+  }
+  return any;
 }
 
 void Renderer::RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& frame) {
@@ -441,13 +460,11 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
       MakeShadowUniforms(shadow_cascades_, scene.sun.Direction(), scene.camera, casters_, options_.shadows);
   shadow_buffers_[slot].Write(std::as_bytes(std::span(&shadow, 1)));
   if (options_.mode == AerialMode::kFroxel) {
-    bool sky_view_stale = SkyViewStale(complete);
-    if (sky_view_stale) {
-      timer.Begin(cmd, "sky view correction");
-      RecordSkyViewCorrection(cmd, frame);
-      timer.End(cmd);
-      vk::FullBarrier(cmd);
-    }
+    timer.Begin(cmd, "sky view correction");
+    bool lattice_remade = RecordSkyViewCorrection(cmd, frame, complete);
+    timer.End(cmd);
+    if (lattice_remade) vk::FullBarrier(cmd);
+    bool sky_view_stale = SkyViewStale(complete, lattice_remade);
     timer.Begin(cmd, "froxel build");
     if (!FroxelsReusable(froxels_key_, frame_uniforms_, frame_info_.shadow_map_updated)) {
       froxels_.Build(cmd, tables_, frame, shadow_buffers_[slot],
@@ -494,7 +511,10 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   }
   vk::FullBarrier(cmd);
   const bool shadowed_terrain = options_.shadows && terrain_ && options_.passes.terrain;
-  frame_info_.settled = frame_info_.deferred == 0 && (!shadowed_terrain || shadow_selection_whole_);
+  const bool lattice_caught_up = options_.mode != AerialMode::kFroxel ||
+                                 SkyViewLatticeCaughtUp(sky_view_lattice_keys_, MakeSkyViewKey(frame_uniforms_));
+  frame_info_.settled =
+      frame_info_.deferred == 0 && (!shadowed_terrain || shadow_selection_whole_) && lattice_caught_up;
   ++frames_recorded_;
   last_slot_ = slot;
 }

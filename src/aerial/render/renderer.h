@@ -88,9 +88,11 @@ class Renderer {
   terrain::LodView FrameLodView(const Scene& scene) const;
   void SelectTerrain(const Scene& scene, bool complete);
   void RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene, bool exact);
-  // Whether this frame remakes the sky-view table; if so, its key becomes this frame's.
-  bool SkyViewStale(bool exact);
-  void RecordSkyViewCorrection(const vk::CommandBuffer& cmd, const vk::Buffer& frame);
+  // Whether this frame remakes the sky-view table (stale, or a band of its lattice was remade); if
+  // so, its key becomes this frame's.
+  bool SkyViewStale(bool exact, bool lattice_remade);
+  // Remakes the lattice's bands marked in `bands` for this frame; whether it remade any.
+  bool RecordSkyViewCorrection(const vk::CommandBuffer& cmd, const vk::Buffer& frame, bool exact);
   void RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& frame);
   std::vector<vk::Slot> MeshSlots(uint32_t slot) const;
   void DrawOpaque(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
@@ -119,6 +121,7 @@ class Renderer {
   // The sky inscatter correction at the sky-view table's lattice nodes.
   vk::Image sky_rayleigh_correction_, sky_mie_correction_;
   std::optional<SkyViewKey> sky_view_key_;  // what the sky-view table was made for
+  SkyViewLatticeKeys sky_view_lattice_keys_;  // and each band of its correction lattice
   std::optional<FrameUniforms> froxels_key_;  // the frame the froxel volume was built for
   ShadowMap shadow_map_;
   std::vector<vk::Buffer> shadow_buffers_;
