@@ -74,7 +74,11 @@ vec3 GetLightCoordinates(vec3 relative_position) {
 // CPU rasterizer gathers a dynamically indexed uniform lane by lane.
 float SunVisibilityOffset(vec3 relative_position, vec3 light_direction) {
   float depth = dot(shadow.view_forward.xyz, relative_position);
-  if (shadow.cascades.x == 0 || depth > shadow.cascade_far_m[kShadowCascades - 1]) return 1.0;
+  // The point's depth is tested first, so that no branch depends on uniform values alone:
+  // lavapipe 22.x inlines such values into the shader and compiles it anew at every bind of its
+  // pipeline. `cascades.x == 0 ||` first made the opaque and transparent passes compile four
+  // shaders a frame (a still frame two, now none; gdb on LLVM's getHostCPUName, 2026-11-28).
+  if (depth > shadow.cascade_far_m[kShadowCascades - 1] || shadow.cascades.x == 0) return 1.0;
   vec4 origin = shadow.cascade_origin[0], scale = shadow.cascade_scale[0];
   vec2 tile = vec2(0.0);
   [[unroll]] for (int i = 1; i < kShadowCascades; ++i) {
