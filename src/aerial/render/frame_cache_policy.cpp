@@ -36,13 +36,15 @@ bool SkyViewReusable(const std::optional<SkyViewKey>& made_for, const SkyViewKey
 }
 
 std::array<bool, kSkyViewLatticeBands> SkyViewLatticeBandsToRemake(const SkyViewLatticeKeys& made_for,
-                                                                    const SkyViewKey& now, bool exact) {
+                                                                    const SkyViewKey& now, bool exact,
+                                                                    bool camera_stopped) {
   std::array<bool, kSkyViewLatticeBands> remake{};
+  const float lag_limit = camera_stopped ? kSkyViewAltitudeToleranceM : kSkyViewLatticeLagM;
   int most_behind = -1;
   float most_lag = kSkyViewAltitudeToleranceM;
   for (int b = 0; b < kSkyViewLatticeBands; ++b) {
     float lag = AltitudeLag(made_for[b], now);
-    remake[b] = lag > kSkyViewLatticeLagM || (exact && made_for[b] != now);
+    remake[b] = lag > lag_limit || (exact && made_for[b] != now);
     if (!remake[b] && lag > most_lag) {
       most_lag = lag;
       most_behind = b;

@@ -49,11 +49,14 @@ bool SkyViewReusable(const std::optional<SkyViewKey>& made_for, const SkyViewKey
 //  - A band further behind is remade at once, and so is every band when the sun moves, on the
 //    first frame, and in an exact frame not made for its own r and mu_s, as the table is.
 //  - A band within the table's 10 m is left as it is.
+//  - A camera that stopped (the same view as the frame before) remakes every band beyond the
+//    table's 10 m at once, so that the view settles in one frame, as it did with a whole lattice.
 // The table's texels are remade after any band is (the renderer's SkyViewStale).
 inline constexpr float kSkyViewLatticeLagM = 50.0f;
 using SkyViewLatticeKeys = std::array<std::optional<SkyViewKey>, kSkyViewLatticeBands>;
 std::array<bool, kSkyViewLatticeBands> SkyViewLatticeBandsToRemake(const SkyViewLatticeKeys& made_for,
-                                                                    const SkyViewKey& now, bool exact);
+                                                                    const SkyViewKey& now, bool exact,
+                                                                    bool camera_stopped);
 // Whether every band is within the table's tolerance of `now` (nothing is left for later frames).
 bool SkyViewLatticeCaughtUp(const SkyViewLatticeKeys& made_for, const SkyViewKey& now);
 

@@ -49,8 +49,9 @@ TEST(FrameCachePolicy, SkyViewKeptWithinTenMetersAndTheSunsTolerance) {
 }
 
 // The bands a frame remakes, as the list of their indices.
-std::vector<int> BandsRemade(const SkyViewLatticeKeys& made_for, const SkyViewKey& now, bool exact) {
-  std::array<bool, kSkyViewLatticeBands> remake = SkyViewLatticeBandsToRemake(made_for, now, exact);
+std::vector<int> BandsRemade(const SkyViewLatticeKeys& made_for, const SkyViewKey& now, bool exact,
+                             bool camera_stopped = false) {
+  std::array<bool, kSkyViewLatticeBands> remake = SkyViewLatticeBandsToRemake(made_for, now, exact, camera_stopped);
   std::vector<int> bands;
   for (int b = 0; b < kSkyViewLatticeBands; ++b)
     if (remake[b]) bands.push_back(b);
@@ -98,6 +99,16 @@ TEST(FrameCachePolicy, SkyViewLatticeBandsFollowAClimbingCameraOneAFrame) {
   EXPECT_EQ(BandsRemade(keys, made, false), std::vector<int>{5});
   keys[5] = SkyViewKey{kR + 100.0f - kSkyViewLatticeLagM + 1.0f, 0.5f};
   EXPECT_EQ(BandsRemade(keys, made, false), std::vector<int>{5}) << "49 m behind: the one most behind";
+}
+
+TEST(FrameCachePolicy, SkyViewLatticeBandsOfAStoppedCameraAllCatchUpAtOnce) {
+  const SkyViewKey made{kR + 100.0f, 0.5f};
+  SkyViewLatticeKeys keys = AllBands(made);
+  keys[1] = SkyViewKey{kR + 70.0f, 0.5f};
+  keys[4] = SkyViewKey{kR + 85.0f, 0.5f};
+  keys[6] = SkyViewKey{kR + 95.0f, 0.5f};
+  EXPECT_EQ(BandsRemade(keys, made, false, true), (std::vector<int>{1, 4})) << "band 6 is within 10 m";
+  EXPECT_EQ(BandsRemade(keys, made, false, false), std::vector<int>{1}) << "moving: the one most behind";
 }
 
 TEST(FrameCachePolicy, SkyViewLatticeCaughtUpWhenEveryBandIsWithinTheTablesTolerance) {

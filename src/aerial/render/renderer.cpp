@@ -291,13 +291,12 @@ bool Renderer::SkyViewStale(bool exact, bool lattice_remade) {
 
 // The correction of the tables' sky inscatter at the sky-view table's lattice nodes
 // (sky_view_correction.comp; with the 3D tables its invocations return at once), in the bands
-// that frame_cache_policy.h (SkyViewLatticeBandsToRemake) picks, one dispatch per run of
-// neighbouring bands. It is recorded before the froxel build and followed by a barrier, so that
-// the froxel build and the sky-view pass that reads it still run side by side.
-bool Renderer::RecordSkyViewCorrection(const vk::CommandBuffer& cmd, const vk::Buffer& frame, bool exact) {
+// marked in `remake` (frame_cache_policy.h, SkyViewLatticeBandsToRemake), one dispatch per run
+// of neighbouring bands. It is recorded before the froxel build and followed by a barrier, so
+// that the froxel build and the sky-view pass that reads it still run side by side.
+void Renderer::RecordSkyViewCorrection(const vk::CommandBuffer& cmd, const vk::Buffer& frame,
+                                       const std::array<bool, kSkyViewLatticeBands>& remake) {
   SkyViewKey key = MakeSkyViewKey(frame_uniforms_);
-  std::array<bool, kSkyViewLatticeBands> remake = SkyViewLatticeBandsToRemake(sky_view_lattice_keys_, key, exact);
-  bool any = false;
   for (int band = 0; band < kSkyViewLatticeBands;) {
     if (!remake[band]) {
       ++band;
@@ -316,10 +315,8 @@ bool Renderer::RecordSkyViewCorrection(const vk::CommandBuffer& cmd, const vk::B
                                    vk::StorageImageSlot{&sky_mie_correction_}},
                                   {uint32_t(kSkyViewLatticeSize[0]), uint32_t(constants.end_row - constants.first_row), 1},
                                   {8, 8, 1}, &constants);
-    any = true;
     band = end;
   }
-  return any;
 }
 
 void Renderer::RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& frame) {
@@ -460,10 +457,15 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
       MakeShadowUniforms(shadow_cascades_, scene.sun.Direction(), scene.camera, casters_, options_.shadows);
   shadow_buffers_[slot].Write(std::as_bytes(std::span(&shadow, 1)));
   if (options_.mode == AerialMode::kFroxel) {
-    timer.Begin(cmd, "sky view correction");
-    bool lattice_remade = RecordSkyViewCorrection(cmd, frame, complete);
-    timer.End(cmd);
-    if (lattice_remade) vk::FullBarrier(cmd);
+    std::array<bool, kSkyViewLatticeBands> bands = SkyViewLatticeBandsToRemake(
+        sky_view_lattice_keys_, MakeSkyViewKey(frame_uniforms_), complete, still_view_);
+    bool lattice_remade = std::find(bands.begin(), bands.end(), true) != bands.end();
+    if (lattice_remade) {
+      timer.Begin(cmd, "sky view correction");
+      RecordSkyViewCorrection(cmd, frame, bands);
+      timer.End(cmd);
+      vk::FullBarrier(cmd);
+    }
     bool sky_view_stale = SkyViewStale(complete, lattice_remade);
     timer.Begin(cmd, "froxel build");
     if (!FroxelsReusable(froxels_key_, frame_uniforms_, frame_info_.shadow_map_updated)) {

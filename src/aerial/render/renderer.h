@@ -91,8 +91,8 @@ class Renderer {
   // Whether this frame remakes the sky-view table (stale, or a band of its lattice was remade); if
   // so, its key becomes this frame's.
   bool SkyViewStale(bool exact, bool lattice_remade);
-  // Remakes the lattice's bands marked in `bands` for this frame; whether it remade any.
-  bool RecordSkyViewCorrection(const vk::CommandBuffer& cmd, const vk::Buffer& frame, bool exact);
+  void RecordSkyViewCorrection(const vk::CommandBuffer& cmd, const vk::Buffer& frame,
+                               const std::array<bool, kSkyViewLatticeBands>& remake);
   void RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& frame);
   std::vector<vk::Slot> MeshSlots(uint32_t slot) const;
   void DrawOpaque(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
