@@ -30,6 +30,10 @@ std::string ScatteringSize(const TableResolution& r) {
          std::to_string(r.scattering_mu_s) + "x" + std::to_string(r.scattering_nu);
 }
 
+int BenchPlan::PerPixelFrames(size_t tier) const {
+  return per_pixel_in_figure_tier_only && tier != figure_tier ? 0 : per_pixel_frames;
+}
+
 BenchPlan BenchPlan::Full() {
   BenchPlan plan;
   // Small(), the defaults, and the defaults with twice the mu_s resolution: the axis that limits
@@ -51,6 +55,8 @@ BenchPlan BenchPlan::Quick() {
   plan.precompute_runs = 2;
   plan.frame_warmup = 1;
   plan.frames = 3;
+  plan.per_pixel_frames = 1;
+  plan.per_pixel_in_figure_tier_only = true;
   plan.image_width = 320;
   plan.image_height = 180;
   plan.reference_columns = 8;

@@ -29,6 +29,10 @@ struct BenchPlan {
   size_t figure_tier = 0;  // the tier whose images the figures show
   int precompute_warmup = 1, precompute_runs = 3;
   int frame_width = 1280, frame_height = 720, frame_warmup = 2, frames = 7;
+  // The marched per-pixel path costs seconds a frame on lavapipe (the reference path, not a
+  // real-time one): quick mode times it once after its warm-up, in the figure tier only.
+  int per_pixel_frames = 7;
+  bool per_pixel_in_figure_tier_only = false;
   // The sun's shadow map in the timed frames (--shadows). The accuracy renders never have it:
   // their CPU reference lights every surface point as if nothing stood between it and the sun.
   bool shadows = true;
@@ -36,6 +40,9 @@ struct BenchPlan {
   int reference_columns = 16, reference_rows = 9;
   int reference_paths = 32768;  // Monte Carlo paths per reference query (orders >= 2)
   std::vector<std::string> views;
+
+  // Measured frames of the per-pixel path in tier `tier` (0: not rendered at all).
+  int PerPixelFrames(size_t tier) const;
 
   static BenchPlan Full();
   static BenchPlan Quick();

@@ -35,11 +35,15 @@ struct VariantResult {
   // Medians over the runs or frames, in ms (GPU timestamps).
   double PrecomputeMs() const;
   double FrameMs() const;          // whole froxel-path frame
-  double PerPixelFrameMs() const;  // whole per-pixel-path frame
+  // Whole per-pixel-path frame; none where it was not timed (quick mode's other tiers, bench_plan.h).
+  std::optional<double> PerPixelFrameMs() const;
   double TableDifferenceFrameMs() const;  // whole frame, per pixel from two table reads
   double FrameWallMs() const;      // the froxel-path frame's wall-clock time, CPU work included
   double FroxelBuildMs() const;
 };
+
+// The 3D / 4D ratio of the per-pixel frame's time, where both were timed.
+std::optional<double> PerPixelFrameRatio(const VariantResult& lut3d, const VariantResult& lut4d);
 
 // How the CPU reference was sampled in one view.
 struct ReferenceSummary {

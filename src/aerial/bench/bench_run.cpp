@@ -17,8 +17,14 @@ namespace {
 
 int ProgressSteps(const BenchPlan& p) {
   int tiers = int(p.tiers.size()), views = int(p.views.size());
-  // Per tier: two variants' precomputes, and their frames on three paths (variant_frames.h).
-  return tiers * 2 * (p.precompute_warmup + p.precompute_runs) + tiers * 6 * (p.frame_warmup + p.frames) +
+  // Per tier: two variants' precomputes, and their frames on three paths (variant_frames.h), the
+  // per-pixel path's fewer or none in quick mode (bench_plan.h).
+  int frames = 0;
+  for (int t = 0; t < tiers; ++t) {
+    int per_pixel = p.PerPixelFrames(t);
+    frames += 4 * (p.frame_warmup + p.frames) + (per_pixel ? 2 * (p.frame_warmup + per_pixel) : 0);
+  }
+  return tiers * 2 * (p.precompute_warmup + p.precompute_runs) + frames +
          views * p.reference_columns * p.reference_rows + tiers * views;
 }
 
@@ -56,7 +62,7 @@ BenchResults RunBench(const BenchPlan& plan, const Device& device, const Machine
   ApplyPresetView(scene, "noon", atmosphere.bottom_radius_m);
   for (size_t t = 0; t < plan.tiers.size(); ++t)
     MeasureVariantFrames(b.results[2 * t], *tables[2 * t].tables, b.results[2 * t + 1],
-                         *tables[2 * t + 1].tables, scene, plan,
+                         *tables[2 * t + 1].tables, scene, plan, plan.PerPixelFrames(t),
                          [&] { progress.Advance("frames, " + plan.tiers[t].name + " tables"); });
 
   Scene opaque = OpaqueScene(scene);

@@ -6,6 +6,7 @@
 // the CPU's part: terrain selection, sorting, recording, submitting, included) and the process's
 // CPU time over it.
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "aerial/bench/pass_stats.h"
@@ -31,6 +32,9 @@ enum class Motion { kCamera, kStill, kSun };
 struct FrameSource {
   SceneRenderer* renderer;
   Motion motion = Motion::kCamera;
+  // At most this many measured frames: a source that costs seconds a frame stops early, while the
+  // others go on (its warm-up frames are rendered in full).
+  int max_frames = std::numeric_limits<int>::max();
 };
 
 // frames[r] holds source r's measured frames, in order. on_frame (may be empty) is called after

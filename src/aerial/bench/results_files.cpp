@@ -36,6 +36,9 @@ nlohmann::json FramePassesJson(const std::vector<RunResult>& frames) {
   return passes;
 }
 
+// A figure that was not measured is null.
+nlohmann::json OrNull(std::optional<double> v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+
 nlohmann::json EntryJson(const VariantResult& r) {
   nlohmann::json entry = VariantJson(r.precompute);
   entry["tier"] = r.tier;
@@ -43,7 +46,7 @@ nlohmann::json EntryJson(const VariantResult& r) {
   entry["precompute_min_ms"] = Summarize(GpuTotals(r.precompute.runs)).min;
   entry["precompute_max_ms"] = Summarize(GpuTotals(r.precompute.runs)).max;
   entry["frame_ms"] = r.FrameMs();
-  entry["per_pixel_frame_ms"] = r.PerPixelFrameMs();
+  entry["per_pixel_frame_ms"] = OrNull(r.PerPixelFrameMs());
   entry["table_difference_frame_ms"] = r.TableDifferenceFrameMs();
   entry["froxel_build_ms"] = r.FroxelBuildMs();
   entry["frame_wall_ms"] = r.FrameWallMs();
@@ -122,7 +125,7 @@ nlohmann::json ResultsJson(const BenchResults& b) {
          {"precompute_ms", ratios.gpu},
          {"precompute_kinds", kinds},
          {"frame_ms", lut3d.FrameMs() / lut4d.FrameMs()},
-         {"per_pixel_frame_ms", lut3d.PerPixelFrameMs() / lut4d.PerPixelFrameMs()},
+         {"per_pixel_frame_ms", OrNull(PerPixelFrameRatio(lut3d, lut4d))},
          {"table_difference_frame_ms", lut3d.TableDifferenceFrameMs() / lut4d.TableDifferenceFrameMs()}});
   }
   doc["reference"] = nlohmann::json::array();
@@ -145,7 +148,7 @@ std::string ResultsCsv(const BenchResults& b) {
     std::string head = ToString(r.variant()) + "," + r.tier + "," +
                        ScatteringSize(r.precompute.options.resolution) + "," +
                        std::to_string(r.precompute.table_bytes) + "," + CsvNumber(r.PrecomputeMs()) + "," +
-                       CsvNumber(r.FrameMs()) + "," + CsvNumber(r.PerPixelFrameMs()) + "," +
+                       CsvNumber(r.FrameMs()) + "," + (r.PerPixelFrameMs() ? CsvNumber(*r.PerPixelFrameMs()) : "") + "," +
                        CsvNumber(r.TableDifferenceFrameMs()) + "," +
                        CsvNumber(r.FroxelBuildMs()) + "," + CsvNumber(r.FrameWallMs());
     for (const ViewAccuracy& view : r.accuracy)

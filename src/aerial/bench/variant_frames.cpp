@@ -10,7 +10,7 @@ namespace aerial::bench {
 
 void MeasureVariantFrames(VariantResult& lut4d, const Tables& tables4d, VariantResult& lut3d,
                           const Tables& tables3d, const Scene& scene, const BenchPlan& plan,
-                          const std::function<void()>& on_frame) {
+                          int per_pixel_frames, const std::function<void()>& on_frame) {
   using Frames = std::vector<RunResult> VariantResult::*;
   constexpr std::array<std::pair<AerialMode, Frames>, 3> kPaths = {{
       {AerialMode::kFroxel, &VariantResult::froxel_frames},
@@ -19,18 +19,21 @@ void MeasureVariantFrames(VariantResult& lut4d, const Tables& tables4d, VariantR
   }};
   std::vector<std::unique_ptr<SceneRenderer>> renderers;
   std::vector<FrameSource> order;
-  for (const Tables* tables : {&tables4d, &tables3d})
+  std::vector<std::vector<RunResult>*> destinations;
+  for (auto [tables, result] : {std::pair{&tables4d, &lut4d}, std::pair{&tables3d, &lut3d}})
     for (const auto& [mode, frames] : kPaths) {
+      int max_frames = mode == AerialMode::kPerPixel ? per_pixel_frames : plan.frames;
+      (result->*frames).clear();
+      if (max_frames == 0) continue;
       RenderOptions options{.width = plan.frame_width, .height = plan.frame_height, .mode = mode,
                             .shadows = plan.shadows};
       options.Validate();
       renderers.push_back(std::make_unique<SceneRenderer>(*tables, scene, options));
-      order.push_back({renderers.back().get()});
+      order.push_back({.renderer = renderers.back().get(), .max_frames = max_frames});
+      destinations.push_back(&(result->*frames));
     }
   std::vector<std::vector<RunResult>> measured = MeasureFrames(order, scene, plan.frame_warmup, plan.frames, on_frame);
-  size_t next = 0;
-  for (VariantResult* result : {&lut4d, &lut3d})
-    for (const auto& path : kPaths) result->*path.second = std::move(measured[next++]);
+  for (size_t i = 0; i < measured.size(); ++i) *destinations[i] = std::move(measured[i]);
 }
 
 }  // namespace aerial::bench

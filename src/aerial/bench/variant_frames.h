@@ -11,9 +11,11 @@
 
 namespace aerial::bench {
 
-// Fills the froxel, per-pixel and table-difference frames of both results, at plan.frame_width x height.
+// Fills the froxel, per-pixel and table-difference frames of both results, at plan.frame_width x
+// height; the per-pixel path with at most per_pixel_frames frames (0: not rendered, its frames left
+// empty).
 void MeasureVariantFrames(VariantResult& lut4d, const Tables& tables4d, VariantResult& lut3d,
                           const Tables& tables3d, const Scene& scene, const BenchPlan& plan,
-                          const std::function<void()>& on_frame);
+                          int per_pixel_frames, const std::function<void()>& on_frame);
 
 }  // namespace aerial::bench
