@@ -31,7 +31,7 @@ std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<FrameSource>
   std::vector<std::vector<RunResult>> measured(sources.size());
   for (int i = 0; i < warmup + frames; ++i)
     for (size_t r = 0; r < sources.size(); ++r) {
-      if (i >= warmup + sources[r].max_frames) continue;
+      if (i - warmup >= sources[r].max_frames) continue;
       Scene frame_scene = Moved(scene, sources[r].motion, i);
       auto start = std::chrono::steady_clock::now();
       double cpu_start = ProcessCpuMs();
