@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
+#include <string>
+#include <vector>
+
 #include "aerial/bench/bench_results.h"
 #include "aerial/bench/number_text.h"
 #include "aerial/bench/report_markdown.h"
@@ -34,6 +38,7 @@ BenchResults QuickResults() {
       r.precompute.runs = {Frame(100.0)};
       r.froxel_frames = {{.passes = {{"froxel build", 10.0}, {"frame", 70.0}}}};
       r.table_difference_frames = {Frame(150.0)};
+      r.accuracy = {{.view = "noon"}};
       if (b.plan.PerPixelFrames(t) > 0) r.per_pixel_frames = {Frame(variant == LutVariant::k4D ? 4000.0 : 3000.0)};
       b.results.push_back(r);
     }
@@ -60,6 +65,25 @@ TEST(BenchPlan, AFrameNotTimedIsReportedAsNotMeasured) {
   }
   for (const auto& ratios : json["ratios_3d_over_4d"])
     EXPECT_EQ(ratios["per_pixel_frame_ms"].is_null(), ratios["tier"] == tiny) << ratios["tier"];
+
+  // The CSV's seventh field, per_pixel_frame_ms: empty for the tiny tables, a time for the small.
+  std::istringstream csv(ResultsCsv(b));
+  std::string line;
+  std::getline(csv, line);  // the header
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> fields;
+    std::istringstream row(line);
+    for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
+    ASSERT_GT(fields.size(), 6u) << line;
+    bool timed = fields[1] == small;
+    EXPECT_EQ(fields[6].empty(), !timed) << line;
+    if (timed) {
+      EXPECT_EQ(fields[6], fields[0] == "4d" ? "4000" : "3000") << line;
+    }
+    ++rows;
+  }
+  EXPECT_GT(rows, 0);
 
   // The speed table's rows: the tiny ones say "—" in the per-pixel column, the small ones a time.
   std::string table = SpeedTable(b);

@@ -67,6 +67,9 @@ std::string CsvNumber(double v) {
   return text;
 }
 
+// A figure that was not measured is an empty field.
+std::string CsvNumber(std::optional<double> v) { return v ? CsvNumber(*v) : ""; }
+
 }  // namespace
 
 std::vector<std::pair<std::string, const ClassErrors*>> NamedComparisons(const ViewAccuracy& a) {
@@ -148,7 +151,7 @@ std::string ResultsCsv(const BenchResults& b) {
     std::string head = ToString(r.variant()) + "," + r.tier + "," +
                        ScatteringSize(r.precompute.options.resolution) + "," +
                        std::to_string(r.precompute.table_bytes) + "," + CsvNumber(r.PrecomputeMs()) + "," +
-                       CsvNumber(r.FrameMs()) + "," + (r.PerPixelFrameMs() ? CsvNumber(*r.PerPixelFrameMs()) : "") + "," +
+                       CsvNumber(r.FrameMs()) + "," + CsvNumber(r.PerPixelFrameMs()) + "," +
                        CsvNumber(r.TableDifferenceFrameMs()) + "," +
                        CsvNumber(r.FroxelBuildMs()) + "," + CsvNumber(r.FrameWallMs());
     for (const ViewAccuracy& view : r.accuracy)
