@@ -31,7 +31,8 @@ std::string ScatteringSize(const TableResolution& r) {
 }
 
 int BenchPlan::PerPixelFrames(size_t tier) const {
-  return per_pixel_in_figure_tier_only && tier != figure_tier ? 0 : per_pixel_frames;
+  if (!per_pixel_frames_figure_tier_only) return frames;
+  return tier == figure_tier ? *per_pixel_frames_figure_tier_only : 0;
 }
 
 BenchPlan BenchPlan::Full() {
@@ -55,8 +56,7 @@ BenchPlan BenchPlan::Quick() {
   plan.precompute_runs = 2;
   plan.frame_warmup = 1;
   plan.frames = 3;
-  plan.per_pixel_frames = 1;
-  plan.per_pixel_in_figure_tier_only = true;
+  plan.per_pixel_frames_figure_tier_only = 1;
   plan.image_width = 320;
   plan.image_height = 180;
   plan.reference_columns = 8;

@@ -3,6 +3,7 @@
 // the number of runs and frames, and the reference sampling; in full mode or in quick mode (small
 // tables, fewer frames, smaller images, fewer and noisier reference pixels: under 2 minutes on 2
 // cores with lavapipe).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,9 +31,9 @@ struct BenchPlan {
   int precompute_warmup = 1, precompute_runs = 3;
   int frame_width = 1280, frame_height = 720, frame_warmup = 2, frames = 7;
   // The marched per-pixel path costs seconds a frame on lavapipe (the reference path, not a
-  // real-time one): quick mode times it once after its warm-up, in the figure tier only.
-  int per_pixel_frames = 7;
-  bool per_pixel_in_figure_tier_only = false;
+  // real-time one). Unset, it is timed like the other paths (`frames`, in every tier); set, over
+  // this many frames in the figure tier and not at all in the others (quick mode: one).
+  std::optional<int> per_pixel_frames_figure_tier_only;
   // The sun's shadow map in the timed frames (--shadows). The accuracy renders never have it:
   // their CPU reference lights every surface point as if nothing stood between it and the sun.
   bool shadows = true;
