@@ -202,6 +202,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"probe --altitude-m 0 --view-zenith-deg 45 --sun-zenith-deg 30 --azimuth-deg 0 --atmosphere /nonexistent/earth.toml", "/nonexistent/earth.toml"},
         BadInput{"precompute --orders 0", "--orders"},
         BadInput{"precompute --precision float64", "--precision"},
+        BadInput{"precompute --colour spectral --wavelengths 9", "wavelengths = 9 is invalid; expected a multiple of 6"},
         BadInput{"precompute --half --precision float32", "--precision = float32 with --half is invalid"},
         BadInput{"precompute --small-tables --quiet --cache-dir /proc/aerial-cannot-write", "/proc/aerial-cannot-write"},
         BadInput{"precompute --atmosphere " AERIAL_SOURCE_DIR "/tests/data/bad_mie_g.toml", "mie.phase_g"},

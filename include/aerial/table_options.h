@@ -72,7 +72,8 @@ struct PrecomputeOptions {
   // stand for the whole series); off: exactly orders 1..N. Needs orders >= 3.
   bool close_series = true;
   ColourMode colour = ColourMode::kRgb;
-  // Wavelengths of the spectral mode, a multiple of 3 (one precompute per three): 12 put the
+  // Wavelengths of the spectral mode, a multiple of 6: each has its single scattering, every other
+  // one its orders >= 2 (the others read theirs between them), in precomputes of three. 12 put the
   // direct sun within 0.0015 of the 1 nm integral's chromaticity u'v', 9 within 0.006, 6 within
   // 0.023 (docs/colour.md).
   int spectral_wavelengths = 12;

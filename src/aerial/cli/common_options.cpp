@@ -19,7 +19,7 @@ void TableOptions::AddTo(CLI::App& command) {
                      "the CIE 1931 observer)")
       ->check(CLI::IsMember({"rgb", "spectral"}));
   command.add_option("--wavelengths", wavelengths,
-                     "Wavelengths of --colour spectral: a multiple of 3 in [3, 48] (default 12)");
+                     "Wavelengths of --colour spectral: a multiple of 6 in [6, 48] (default 12; every other one gets its own orders >= 2)");
   command.add_option("--orders", orders, "Scattering orders to precompute (1-16)")->check(CLI::Range(1, 16));
   command.add_option("--series-tail", series_tail,
                      "After the last order, add the orders beyond it as a geometric series: on (default; "

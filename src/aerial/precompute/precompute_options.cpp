@@ -131,10 +131,11 @@ void CheckNuAxis(const std::string& field, int value, LutVariant variant) {
 
 void PrecomputeOptions::Validate() const {
   CheckRange("orders", orders, 1, 16);
-  // 48 is one wavelength per 10 nm of the solar and ozone data; each group of 3 is a precompute.
-  if (colour == ColourMode::kSpectral && (spectral_wavelengths % 3 != 0 || spectral_wavelengths < 3 ||
+  // 48 is one wavelength per 10 nm of the solar and ozone data; each group of 3 is a precompute,
+  // and every other wavelength has its own higher orders, in groups of 3 too.
+  if (colour == ColourMode::kSpectral && (spectral_wavelengths % 6 != 0 || spectral_wavelengths < 6 ||
                                           spectral_wavelengths > 48))
-    throw Error("wavelengths", std::to_string(spectral_wavelengths), "a multiple of 3 in [3, 48]");
+    throw Error("wavelengths", std::to_string(spectral_wavelengths), "a multiple of 6 in [6, 48]");
   const TableResolution& r = resolution;
   CheckRange("transmittance width (mu)", r.transmittance_mu, 4, 4096);
   CheckRange("transmittance height (r)", r.transmittance_r, 4, 4096);

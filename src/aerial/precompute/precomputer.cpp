@@ -178,8 +178,11 @@ TableBytes PrecomputeScratchMemory(const PrecomputeOptions& options) {
 }
 
 int PrecomputePassCount(const PrecomputeOptions& options) {
-  if (options.colour == ColourMode::kSpectral)
-    return SpectralGroupCount(options) * PrecomputePassCount(SpectralGroupOptions(options)) + 1;
+  if (options.colour == ColourMode::kSpectral) {
+    const int all_order_groups = SpectralAllOrderGroupCount(options);
+    return (SpectralGroupCount(options) - all_order_groups) * PrecomputePassCount(SpectralGroupOptions(options, false)) +
+           all_order_groups * PrecomputePassCount(SpectralGroupOptions(options, true)) + 1;
+  }
   // transmittance, sun band, direct irradiance, single scattering, 6 passes per order >= 2, the
   // ground irradiance of the last order, and for half floats the conversion.
   return 4 + 6 * (options.orders - 1) + 1 + (options.precision == TablePrecision::kFloat16 ? 1 : 0);
@@ -208,7 +211,8 @@ vk::PassTime ComputeTransmittance(AtmosphereTables& tables) {
   return timer.Collect().front();
 }
 
-std::vector<vk::PassTime> PrecomputeRadiance(AtmosphereTables& tables, Progress* progress) {
+std::vector<vk::PassTime> PrecomputeRadiance(AtmosphereTables& tables, Progress* progress,
+                                             const std::function<void()>& after_single_scattering) {
   const vk::Context& context = tables.context();
   Pipelines pipelines(context);
   Scratch scratch(context, tables);
@@ -324,6 +328,8 @@ std::vector<vk::PassTime> PrecomputeRadiance(AtmosphereTables& tables, Progress*
           {density_threads.height, density_threads.width, density_threads.depth}, {64, 1, 1});
     });
     add_ground_irradiance(order - 1);
+    // Nothing of order 2 has reached the tables yet: the accumulations come below.
+    if (order == 2 && after_single_scattering) after_single_scattering();
     // The 3D tables have no Earth's shadow (GetDensityBlended is linear there), and lavapipe
     // would pay for the exponential branch all the same (3D order 2: 56 -> 124 ms).
     const vk::ComputePipeline& multiple_scattering =

@@ -2,6 +2,7 @@
 // Runs the precomputation passes on the GPU (Bruneton & Neyret 2008, Algorithm 4.1), with the
 // scattering density split in two passes (incident radiance per (r, mu_s), then its convolution
 // with the phase functions per texel). Each pass is timed with GPU timestamps.
+#include <functional>
 #include <vector>
 
 #include "aerial/precompute/atmosphere_tables.h"
@@ -16,8 +17,11 @@ class Progress;
 std::vector<vk::PassTime> Precompute(AtmosphereTables& tables, Progress* progress);
 
 // Fills `tables` with radiance at the three wavelengths of tables.uniforms() (the rgb mode, and each
-// group of the spectral one); leaves `progress` unfinished.
-std::vector<vk::PassTime> PrecomputeRadiance(AtmosphereTables& tables, Progress* progress);
+// group of the spectral one); leaves `progress` unfinished. With orders > 1, calls
+// `after_single_scattering` (if given) when float32 tables hold single scattering and the ground
+// irradiance it gives, as tables of orders = 1 would: the spectral mode reads them there.
+std::vector<vk::PassTime> PrecomputeRadiance(AtmosphereTables& tables, Progress* progress,
+                                             const std::function<void()>& after_single_scattering = {});
 
 // Only the transmittance table T(r, mu), from tables.uniforms().
 vk::PassTime ComputeTransmittance(AtmosphereTables& tables);

@@ -3,17 +3,18 @@
 #include <Imath/half.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "aerial/core/progress.h"
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/precompute/precomputer.h"
+#include "aerial/spectrum/higher_orders.h"
 #include "aerial/spectrum/spectral_atmosphere.h"
 
 namespace aerial {
 namespace {
 
-using spectrum::Matrix3;
 using spectrum::SpectralAtmosphere;
 using spectrum::SpectralSampling;
 
@@ -36,14 +37,46 @@ std::vector<std::byte> ToBytes(const std::vector<float>& rgba, TexelFormat forma
   return bytes;
 }
 
-// sum.rgb += m * group.rgb, texel by texel.
-void AddConverted(std::vector<float>& sum, const std::vector<float>& group, const Matrix3& m) {
-  for (size_t i = 0; i + 3 < group.size(); i += 4) {
-    Spectrum value = {group[i], group[i + 1], group[i + 2]};
-    Spectrum colour = spectrum::Multiply(m, value);
-    for (int c = 0; c < 3; ++c) sum[i + c] += float(colour[c]);
-  }
+// One wavelength's values of a table (one channel of a group's RGBA texels).
+std::vector<float> Channel(const std::vector<float>& rgba, int channel) {
+  std::vector<float> values(rgba.size() / 4);
+  for (size_t i = 0; i < values.size(); ++i) values[i] = rgba[4 * i + channel];
+  return values;
 }
+
+// sum.rgb += colour * values, texel by texel.
+void AddColour(std::vector<float>& sum, const std::vector<float>& values, const Spectrum& colour) {
+  for (size_t i = 0; i < values.size(); ++i)
+    for (int c = 0; c < 3; ++c) sum[4 * i + c] += float(colour[c] * values[i]);
+}
+
+// A wavelength's orders >= 2 from those of its stencil's wavelengths (higher_orders.h), given as
+// their log response, log(value / sun) (-infinity where the value is 0): the weighted sum of those
+// logs, or, where one is -infinity, the weighted sum of the responses themselves.
+std::vector<float> HigherOrdersFrom(const spectrum::HigherOrderStencil& stencil,
+                                    const std::vector<const std::vector<float>*>& log_responses, double sun) {
+  std::vector<float> result(log_responses[0]->size());
+  for (size_t i = 0; i < result.size(); ++i) {
+    double log_response = 0.0;
+    for (size_t j = 0; j < log_responses.size(); ++j) log_response += stencil.weights[j] * (*log_responses[j])[i];
+    if (std::isfinite(log_response)) {
+      result[i] = float(sun * std::exp(log_response));
+      continue;
+    }
+    double response = 0.0;
+    for (size_t j = 0; j < log_responses.size(); ++j) response += stencil.weights[j] * std::exp((*log_responses[j])[i]);
+    result[i] = float(sun * response);
+  }
+  return result;
+}
+
+// values -> log(max(value, 0) / sun), in place.
+void ToLogResponse(std::vector<float>& values, double sun) {
+  for (float& v : values) v = std::log(std::max(v, 0.0f) / float(sun));
+}
+
+// A table's texel count (its RGBA floats / 4).
+size_t TexelCount(const CachedTable& table) { return size_t(table.width) * table.height * table.depth; }
 
 }  // namespace
 
@@ -55,36 +88,88 @@ AtmosphereParameters ShaderAtmosphere(const AtmosphereParameters& atmosphere, co
 
 int SpectralGroupCount(const PrecomputeOptions& options) { return options.spectral_wavelengths / 3; }
 
-PrecomputeOptions SpectralGroupOptions(const PrecomputeOptions& options) {
+int SpectralAllOrderGroupCount(const PrecomputeOptions& options) {
+  return options.orders > 1 ? options.spectral_wavelengths / 6 : 0;
+}
+
+PrecomputeOptions SpectralGroupOptions(const PrecomputeOptions& options, bool all_orders) {
   PrecomputeOptions group = options;
   group.colour = ColourMode::kRgb;
   group.precision = TablePrecision::kFloat32;  // rounded once, after the sum
+  if (!all_orders) group.orders = 1;
   return group;
 }
 
 std::vector<vk::PassTime> PrecomputeSpectral(AtmosphereTables& tables, Progress* progress) {
-  const SpectralSampling sampling(tables.options().spectral_wavelengths);
+  const PrecomputeOptions& options = tables.options();
+  const SpectralSampling sampling(options.spectral_wavelengths);
+  const std::vector<double>& nm = sampling.wavelengths_nm();
+  const int count = int(nm.size());
   const SpectralAtmosphere spectral(tables.atmosphere());
-  const PrecomputeOptions group_options = SpectralGroupOptions(tables.options());
+  const bool higher_orders = options.orders > 1;
   // The final tables' layout; their contents are replaced below.
   TableCache result = tables.Download();
+  const size_t table_count = result.tables.size();
+  auto skipped = [&](size_t table) { return result.tables[table].name == std::string("transmittance"); };
   std::vector<std::vector<float>> sums;
-  for (const CachedTable& table : result.tables)
-    sums.emplace_back(size_t(table.width) * table.height * table.depth * 4, 0.0f);
+  for (const CachedTable& table : result.tables) sums.emplace_back(TexelCount(table) * 4, 0.0f);
+  // higher[w][table]: what the orders >= 2 add at wavelength w, where it has all orders.
+  std::vector<std::vector<std::vector<float>>> higher(count);
 
   std::vector<vk::PassTime> times;
-  for (int g = 0; g < sampling.groups(); ++g) {
-    AtmosphereParameters group_atmosphere = spectral.At(sampling.Group(g));
-    AtmosphereTables group(tables.context(), group_atmosphere, group_options);
-    for (vk::PassTime& t : PrecomputeRadiance(group, progress)) {
-      t.pass = "[" + std::to_string(g + 1) + "/" + std::to_string(sampling.groups()) + "] " + t.pass;
+  int group_index = 0;
+  // Precomputes the tables at three wavelengths: single scattering, added to the sums, and if
+  // all_orders, what the other orders add, kept in `higher`.
+  auto run_group = [&](const std::array<int, 3>& indices, bool all_orders) {
+    AtmosphereTables group(tables.context(), spectral.At({nm[indices[0]], nm[indices[1]], nm[indices[2]]}),
+                           SpectralGroupOptions(options, all_orders));
+    TableCache single;
+    const std::string label = std::to_string(++group_index) + "/" + std::to_string(SpectralGroupCount(options));
+    for (vk::PassTime& t : PrecomputeRadiance(group, progress, [&] { single = group.Download(); })) {
+      t.pass = "[" + label + "] " + t.pass;
       times.push_back(t);
     }
-    const Matrix3 to_srgb = sampling.GroupToLinearSrgb(g);
-    TableCache downloaded = group.Download();
-    for (size_t i = 0; i < result.tables.size(); ++i)
-      if (result.tables[i].name != std::string("transmittance"))
-        AddConverted(sums[i], AsFloats(downloaded.tables[i]), to_srgb);
+    TableCache whole = group.Download();
+    if (!all_orders) single = std::move(whole);
+    for (size_t i = 0; i < table_count; ++i) {
+      if (skipped(i)) continue;
+      const std::vector<float> single_texels = AsFloats(single.tables[i]);
+      const std::vector<float> whole_texels = all_orders ? AsFloats(whole.tables[i]) : std::vector<float>{};
+      for (int k = 0; k < 3; ++k) {
+        std::vector<float> values = Channel(single_texels, k);
+        AddColour(sums[i], values, sampling.WavelengthToLinearSrgb(indices[k]));
+        if (!all_orders) continue;
+        const std::vector<float> all = Channel(whole_texels, k);
+        for (size_t t = 0; t < values.size(); ++t) values[t] = all[t] - values[t];
+        higher[indices[k]].resize(table_count);
+        higher[indices[k]][i] = std::move(values);
+      }
+    }
+  };
+  // The wavelengths with all orders, then the others' single scattering, three at a time.
+  std::vector<int> with_all, single_only;
+  for (int w = 0; w < count; ++w) (higher_orders && spectrum::HasAllOrders(w) ? with_all : single_only).push_back(w);
+  for (size_t g = 0; g < with_all.size(); g += 3) run_group({with_all[g], with_all[g + 1], with_all[g + 2]}, true);
+  for (size_t g = 0; g < single_only.size(); g += 3)
+    run_group({single_only[g], single_only[g + 1], single_only[g + 2]}, false);
+
+  // The orders >= 2 at every wavelength: as computed, then read between those.
+  if (higher_orders) {
+    for (int w = 0; w < count; ++w)
+      for (size_t i = 0; i < table_count; ++i) {
+        if (skipped(i) || !spectrum::HasAllOrders(w)) continue;
+        AddColour(sums[i], higher[w][i], sampling.WavelengthToLinearSrgb(w));
+        ToLogResponse(higher[w][i], spectral.SolarIrradiance(nm[w]));
+      }
+    const std::vector<spectrum::HigherOrderStencil> stencils = spectrum::HigherOrderStencils(sampling, spectral);
+    for (int w = 0; w < count; ++w)
+      for (size_t i = 0; i < table_count; ++i) {
+        if (skipped(i) || spectrum::HasAllOrders(w)) continue;
+        std::vector<const std::vector<float>*> log_responses;
+        for (int k : stencils[w].from) log_responses.push_back(&higher[k][i]);
+        AddColour(sums[i], HigherOrdersFrom(stencils[w], log_responses, spectral.SolarIrradiance(nm[w])),
+                  sampling.WavelengthToLinearSrgb(w));
+      }
   }
 
   for (size_t i = 0; i < result.tables.size(); ++i) {

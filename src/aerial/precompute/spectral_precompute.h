@@ -1,10 +1,12 @@
 #pragma once
 // The spectral precompute (Bruneton 2017, "precomputed luminance"): the radiance tables are
-// precomputed once per group of three wavelengths (SpectralAtmosphere::At), each group in float32,
-// and folded into linear sRGB by the CIE 1931 observer (SpectralSampling::GroupToLinearSrgb).
-// Scattering, Mie, J_ms and the ground irradiance are linear in the spectrum, so their colour is
-// exact up to the sampling of the spectrum (values that fall outside sRGB's gamut are clamped to
-// 0). Transmittance is not linear in the spectrum: its table is computed from LinearSrgbAtmosphere's
+// precomputed in groups of three wavelengths (SpectralAtmosphere::At), each group in float32, and
+// folded into linear sRGB by the CIE 1931 observer (SpectralSampling::WavelengthToLinearSrgb).
+// Single scattering is computed at every wavelength, the orders >= 2 at every other one and read
+// between them (spectrum/higher_orders.h): half the groups stop after single scattering, which is
+// a fifth of a precompute. Scattering, Mie, J_ms and the ground irradiance are linear in the
+// spectrum, so their colour is exact up to the sampling of the spectrum (values that fall outside
+// sRGB's gamut are clamped to 0). Transmittance is not linear in the spectrum: its table is computed from LinearSrgbAtmosphere's
 // coefficients, the sunlight-weighted mean extinction per channel, exact for thin air and additive
 // along a ray as the lookups that divide two of its values need. A table converted from the
 // spectral transmittance instead (LinearSrgb(E T) / LinearSrgb(E)) made the sun exact at every
@@ -25,9 +27,11 @@ class Progress;
 // linear sRGB counterpart in spectral mode.
 AtmosphereParameters ShaderAtmosphere(const AtmosphereParameters& atmosphere, const PrecomputeOptions& options);
 
-// The number of three-wavelength precomputes, and their options (float32, rgb).
+// The number of three-wavelength precomputes, of them those with all the orders of `options` (the
+// others compute single scattering only), and their options (float32, rgb).
 int SpectralGroupCount(const PrecomputeOptions& options);
-PrecomputeOptions SpectralGroupOptions(const PrecomputeOptions& options);
+int SpectralAllOrderGroupCount(const PrecomputeOptions& options);
+PrecomputeOptions SpectralGroupOptions(const PrecomputeOptions& options, bool all_orders);
 
 // Fills spectral `tables` (options().colour == kSpectral); leaves `progress` unfinished.
 std::vector<vk::PassTime> PrecomputeSpectral(AtmosphereTables& tables, Progress* progress);

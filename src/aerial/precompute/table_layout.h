@@ -5,6 +5,6 @@
 
 namespace aerial {
 
-inline constexpr int kTableLayout = 17;
+inline constexpr int kTableLayout = 18;
 
 }  // namespace aerial

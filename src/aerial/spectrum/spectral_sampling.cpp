@@ -33,15 +33,19 @@ Spectrum SpectralSampling::LinearSrgb(const std::vector<double>& values) const {
   return Multiply(LinearSrgbFromXyz(), Xyz(values));
 }
 
+Spectrum SpectralSampling::WavelengthToLinearSrgb(int index) const {
+  std::vector<double> unit(wavelengths_nm_.size(), 0.0);
+  unit[index] = 1.0;
+  return LinearSrgb(unit);
+}
+
 Matrix3 SpectralSampling::GroupToLinearSrgb(int group) const {
-  Matrix3 xyz_from_group{};
+  Matrix3 from_group{};
   for (int k = 0; k < 3; ++k) {
-    std::vector<double> unit(wavelengths_nm_.size(), 0.0);
-    unit[3 * group + k] = 1.0;
-    Spectrum column = Xyz(unit);
-    for (int c = 0; c < 3; ++c) xyz_from_group[c][k] = column[c];
+    Spectrum column = WavelengthToLinearSrgb(3 * group + k);
+    for (int c = 0; c < 3; ++c) from_group[c][k] = column[c];
   }
-  return Multiply(LinearSrgbFromXyz(), xyz_from_group);
+  return from_group;
 }
 
 }  // namespace aerial::spectrum

@@ -15,7 +15,8 @@ inline constexpr double kVisibleMinNm = 360.0, kVisibleMaxNm = 830.0;
 
 class SpectralSampling {
  public:
-  // count: a multiple of 3 in [3, 48] (checked by PrecomputeOptions::Validate).
+  // count: a multiple of 3 in [3, 48] (PrecomputeOptions::Validate asks the tables for a multiple
+  // of 6).
   explicit SpectralSampling(int count);
 
   const std::vector<double>& wavelengths_nm() const { return wavelengths_nm_; }
@@ -28,6 +29,8 @@ class SpectralSampling {
   // XYZ and linear sRGB (colour.h's units) of a spectrum given at the wavelengths.
   Spectrum Xyz(const std::vector<double>& values) const;
   Spectrum LinearSrgb(const std::vector<double>& values) const;
+  // What one unit at wavelength `index` (and zero elsewhere) adds to LinearSrgb.
+  Spectrum WavelengthToLinearSrgb(int index) const;
   // The matrix that takes a group's three values to its part of LinearSrgb (summed over groups).
   Matrix3 GroupToLinearSrgb(int group) const;
 
