@@ -78,6 +78,11 @@ std::map<std::string, long> CppOffsets() {
   AERIAL_MEMBER(AtmosphereBlock, AtmosphereUniforms, sample_counts);
   AERIAL_MEMBER(AtmosphereBlock, AtmosphereUniforms, multiple_scattering_steps);
   AERIAL_MEMBER(AtmosphereBlock, AtmosphereUniforms, multiple_density_size);
+  AERIAL_MEMBER(AtmosphereBlock, AtmosphereUniforms, spectral_sunlight_terms);
+  AERIAL_MEMBER(AtmosphereBlock, AtmosphereUniforms, spectral_sunlight_exponent);
+  AERIAL_MEMBER(AtmosphereBlock, AtmosphereUniforms, spectral_sunlight_rayleigh);
+  AERIAL_MEMBER(AtmosphereBlock, AtmosphereUniforms, spectral_sunlight_mie);
+  AERIAL_MEMBER(AtmosphereBlock, AtmosphereUniforms, spectral_sunlight_direct);
   AERIAL_MEMBER(FrameBlock, FrameUniforms, view_projection);
   AERIAL_MEMBER(FrameBlock, FrameUniforms, inverse_view_projection);
   AERIAL_MEMBER(FrameBlock, FrameUniforms, camera_scene_position);
@@ -119,8 +124,8 @@ std::map<std::string, long> CppOffsets() {
 TEST(UniformLayout, GlslBlocksMatchTheCppStructs) {
   Reflection reflection = ReflectFroxelShader();
   std::map<std::string, long> cpp = CppOffsets();
-  ASSERT_EQ(cpp.size(), 37u + 3 * 2 * 8);  // every member of the three blocks, once
-  // Every member on each side, at the same offset: 85 members.
+  ASSERT_EQ(cpp.size(), 42u + 3 * 2 * 8);  // every member of the three blocks, once
+  // Every member on each side, at the same offset: 90 members.
   EXPECT_EQ(reflection.member_offsets.size(), cpp.size());
   for (const auto& [name, offset] : cpp) {
     auto it = reflection.member_offsets.find(name);

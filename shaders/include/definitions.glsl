@@ -24,6 +24,9 @@ struct DensityProfile {
   DensityProfileLayer layers[2];
 };
 
+// kMaxSpectralSunlightTerms in aerial/shader_abi/atmosphere_block.h.
+#define SPECTRAL_SUNLIGHT_MAX_TERMS 48
+
 // Mirrored by aerial::AtmosphereUniforms (aerial/shader_abi/atmosphere_block.h);
 // tests/uniform_layout_test.cpp checks every member's offset against the compiler's layout.
 layout(std140, set = 0, binding = 0) uniform AtmosphereBlock {
@@ -53,6 +56,13 @@ layout(std140, set = 0, binding = 0) uniform AtmosphereBlock {
                                 // z: irradiance zenith samples, w: irradiance azimuth samples.
   ivec4 multiple_scattering_steps;  // x: steps per ray of the multiple scattering pass.
   ivec4 multiple_density_size;  // the scattering axes, for the density of orders >= 2 (J_ms).
+  // Spectral tables: the sunlight through a path, per wavelength (GetPathSunlight); x: the
+  // wavelengths, 0 for rgb tables.
+  ivec4 spectral_sunlight_terms;
+  vec4 spectral_sunlight_exponent[SPECTRAL_SUNLIGHT_MAX_TERMS];
+  vec4 spectral_sunlight_rayleigh[SPECTRAL_SUNLIGHT_MAX_TERMS];
+  vec4 spectral_sunlight_mie[SPECTRAL_SUNLIGHT_MAX_TERMS];
+  vec4 spectral_sunlight_direct[SPECTRAL_SUNLIGHT_MAX_TERMS];
 } atmosphere;
 
 float ClampCosine(float mu) { return clamp(mu, -1.0, 1.0); }

@@ -43,11 +43,12 @@ void SampleInscatterIntegrands(sampler2D transmittance_texture, sampler3D multip
   float mu_d = MuAtDistance(march.r, march.mu, d, r_d);
   float mu_s_d = SunCosineAlongRay(march.r, march.mu_s, march.nu, d, r_d);
   march.distance = d;
-  march.transmittance = GetTransmittanceFromOrigin(transmittance_texture, march.origin, march.r,
-                                                   march.mu, d, march.ray_r_mu_intersects_ground);
-  ComputeSingleScatteringIntegrandAt(
-      r_d, march.transmittance * GetTransmittanceToSun(transmittance_texture, r_d, mu_s_d),
-      march.rayleigh_integrand, march.mie_integrand);
+  vec3 view = GetOpticalDepthFromOrigin(transmittance_texture, march.origin, march.r, march.mu, d,
+                                        march.ray_r_mu_intersects_ground);
+  march.transmittance = exp(-view);
+  SunDiscLight sun = GetSunLightAt(transmittance_texture, r_d, mu_s_d);
+  ComputeSingleScatteringIntegrandAt(r_d, view + sun.optical_depth, sun.spread,
+                                     march.rayleigh_integrand, march.mie_integrand);
   march.multiple_integrand =
       march.transmittance * GetMultipleScatteringDensity(multiple_density_texture, r_d, mu_d,
                                                          mu_s_d, march.nu,

@@ -55,14 +55,15 @@ float GetStepDistance(float ray_length, int i, int steps, float spacing_exponent
   return ray_length * pow(float(i) / float(steps), spacing_exponent);
 }
 
-// Integrand of single scattering at radius r_d, given the transmittance of the light's path: from
-// the sun's disc (GetTransmittanceToSun) to r_d, times from there to the camera. That
-// transmittance, times the density of each species there.
-void ComputeSingleScatteringIntegrandAt(float r_d, vec3 transmittance, out vec3 rayleigh,
-                                        out vec3 mie) {
+// Integrand of single scattering at radius r_d, given the light's path from the sun's disc to r_d
+// and from there to the camera: its optical depth, and the disc's spread (SunDiscLight). The
+// sunlight that path lets through (GetPathSunlight), times the density of each species there.
+void ComputeSingleScatteringIntegrandAt(float r_d, vec3 optical_depth, vec3 spread,
+                                        out vec3 rayleigh, out vec3 mie) {
   float altitude = r_d - atmosphere.bottom_radius;
-  rayleigh = transmittance * GetProfileDensity(atmosphere.rayleigh_density, altitude);
-  mie = transmittance * GetProfileDensity(atmosphere.mie_density, altitude);
+  PathSunlight sunlight = GetPathSunlight(optical_depth);
+  rayleigh = sunlight.rayleigh * spread * GetProfileDensity(atmosphere.rayleigh_density, altitude);
+  mie = sunlight.mie * spread * GetProfileDensity(atmosphere.mie_density, altitude);
 }
 
 // The same at distance d along the ray (r, mu), with the sunlight read from the sun band.
@@ -71,13 +72,11 @@ void ComputeSingleScatteringIntegrand(sampler2D transmittance_texture, sampler2D
                                       float d, bool ray_r_mu_intersects_ground, out vec3 rayleigh,
                                       out vec3 mie) {
   float r_d = RadiusAtDistance(r, mu, d);
-  vec3 sunlight = GetTransmittanceToSunFromBand(transmittance_texture, sun_band_texture, r_d,
-                                                SunCosineAlongRay(r, mu_s, nu, d, r_d));
-  ComputeSingleScatteringIntegrandAt(
-      r_d,
-      sunlight * GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
-                                            ray_r_mu_intersects_ground),
-      rayleigh, mie);
+  SunDiscLight sun = GetSunLightFromBand(transmittance_texture, sun_band_texture, r_d,
+                                         SunCosineAlongRay(r, mu_s, nu, d, r_d));
+  vec3 view = GetOpticalDepthFromOrigin(transmittance_texture, origin, r, mu, d,
+                                        ray_r_mu_intersects_ground);
+  ComputeSingleScatteringIntegrandAt(r_d, view + sun.optical_depth, sun.spread, rayleigh, mie);
 }
 
 // Single scattering (Bruneton 2008 eq. 11 without the phase function), integrated over the

@@ -140,14 +140,14 @@ void MarchSingleScatteringSuns(sampler2D transmittance_texture, float r, float m
     float dx = d - d_previous;
     d_previous = d;
     float r_d = RadiusAtDistance(r, mu, d);
-    vec3 view_transmittance = GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
-                                                         ray_r_mu_intersects_ground);
+    vec3 view = GetOpticalDepthFromOrigin(transmittance_texture, origin, r, mu, d,
+                                          ray_r_mu_intersects_ground);
     for (int k = first_sun; k < end_sun; ++k) {
       vec3 rayleigh_i, mie_i;
       float mu_s_d = SunCosineAlongRay(r, suns.mu_s[k], suns.nu[k], d, r_d);
-      ComputeSingleScatteringIntegrandAt(
-          r_d, view_transmittance * GetTransmittanceToSun(transmittance_texture, r_d, mu_s_d),
-          rayleigh_i, mie_i);
+      SunDiscLight sun = GetSunLightAt(transmittance_texture, r_d, mu_s_d);
+      ComputeSingleScatteringIntegrandAt(r_d, view + sun.optical_depth, sun.spread, rayleigh_i,
+                                         mie_i);
       if (i > 0) {
         rayleigh[k] += ExponentialStepIntegral(rayleigh_previous[k], rayleigh_i) * dx;
         mie[k] += ExponentialStepIntegral(mie_previous[k], mie_i) * dx;

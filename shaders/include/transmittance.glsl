@@ -32,6 +32,36 @@ vec3 ComputeOpticalDepthToTopAtmosphereBoundary(float r, float mu) {
   return optical_depth;
 }
 
+// The sunlight a path of optical depth tau (per channel) lets through, per unit of sunlight, as
+// Rayleigh and Mie scatter it and as it falls on a surface. For rgb tables that is exp(-tau). The
+// channels of spectral tables are colours, and each wavelength is attenuated by its own optical
+// depth, a linear function of the channels' (g_j . tau, the three constituents' column densities
+// being common to all): the light is summed over the precompute's wavelengths,
+// sum_j w_j exp(-g_j . tau) (aerial/spectrum/spectral_sunlight.h).
+struct PathSunlight {
+  vec3 rayleigh;
+  vec3 mie;
+  vec3 direct;
+};
+
+PathSunlight GetPathSunlight(vec3 optical_depth) {
+  // The count is a uniform, but the loop's bound must not depend on uniforms alone: lavapipe 22.3
+  // inlines such uniforms and compiles the pipeline anew at each bind, which cost rgb frames
+  // 20 ms (docs/speed.md, "No branch on uniforms alone"). optical_depth is never negative.
+  int terms = optical_depth.x >= 0.0 ? atmosphere.spectral_sunlight_terms.x : 0;
+  vec3 rgb_tables = exp(-optical_depth) * float(terms == 0);
+  PathSunlight light = PathSunlight(rgb_tables, rgb_tables, rgb_tables);
+  vec3 log2_transmittance = optical_depth * -1.4426950409;
+  for (int j = 0; j < terms; ++j) {
+    // min: a wavelength's optical depth is >= 0 (rounding in the tables could make it < 0).
+    float t = exp2(min(dot(atmosphere.spectral_sunlight_exponent[j].xyz, log2_transmittance), 0.0));
+    light.rayleigh += atmosphere.spectral_sunlight_rayleigh[j].xyz * t;
+    light.mie += atmosphere.spectral_sunlight_mie[j].xyz * t;
+    light.direct += atmosphere.spectral_sunlight_direct[j].xyz * t;
+  }
+  return light;
+}
+
 vec3 GetOpticalDepthToTopAtmosphereBoundary(sampler2D transmittance_texture, float r, float mu) {
   return ReadTable(transmittance_texture, GetTransmittanceTextureUvFromRMu(r, mu)).rgb;
 }
@@ -54,16 +84,22 @@ vec3 GetRayOpticalDepthOrigin(sampler2D transmittance_texture, float r, float mu
                                                 ray_r_mu_intersects_ground ? -mu : mu);
 }
 
-vec3 GetTransmittanceFromOrigin(sampler2D transmittance_texture, vec3 origin, float r, float mu,
-                                float d, bool ray_r_mu_intersects_ground) {
+vec3 GetOpticalDepthFromOrigin(sampler2D transmittance_texture, vec3 origin, float r, float mu,
+                               float d, bool ray_r_mu_intersects_ground) {
   float r_d = RadiusAtDistance(r, mu, d);
   float mu_d = MuAtDistance(r, mu, d, r_d);
   if (ray_r_mu_intersects_ground) {
     vec3 tau_d = GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r_d, -mu_d);
-    return exp(-max(tau_d - origin, vec3(0.0)));
+    return max(tau_d - origin, vec3(0.0));
   }
   vec3 tau_d = GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r_d, mu_d);
-  return exp(-max(origin - tau_d, vec3(0.0)));
+  return max(origin - tau_d, vec3(0.0));
+}
+
+vec3 GetTransmittanceFromOrigin(sampler2D transmittance_texture, vec3 origin, float r, float mu,
+                                float d, bool ray_r_mu_intersects_ground) {
+  return exp(-GetOpticalDepthFromOrigin(transmittance_texture, origin, r, mu, d,
+                                        ray_r_mu_intersects_ground));
 }
 
 vec3 GetTransmittance(sampler2D transmittance_texture, float r, float mu, float d,
@@ -98,12 +134,6 @@ float GetDiscPointCosine(float mu_s, float sin_s, float y) {
   return mu_s * (1.0 - 0.5 * y_alpha * y_alpha) + sin_s * y_alpha;
 }
 
-vec3 GetTransmittanceAtDiscPoint(sampler2D transmittance_texture, float r, float mu_s, float sin_s,
-                                 float y) {
-  return GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r,
-                                                 GetDiscPointCosine(mu_s, sin_s, y));
-}
-
 // Elevation of the disc centre above the cut-off, in disc radii (to first order in the angle).
 float GetSunElevationInDiscRadii(float mu_s, float cut_off_cosine) {
   float sin_cut_off = sqrt(max(1.0 - cut_off_cosine * cut_off_cosine, 0.0));
@@ -115,46 +145,76 @@ float GetSunDiscVisibleFraction(float x) {
   return x >= 1.0 ? 1.0 : clamp(0.5 + (x * sqrt(1.0 - x * x) + asin(x)) / PI, 0.0, 1.0);
 }
 
-vec3 GetSunDiscAverage(sampler2D transmittance_texture, float r, float mu_s, float cut_off_cosine,
-                       bool cosine_weighted) {
+// The disc's average transmittance, as exp(-optical_depth) * spread: optical_depth the mean of its
+// taps' (by the same weights), spread what the taps' spread around that mean and the visible
+// fraction make of it (1 for one tap). GetPathSunlight takes the first: the taps' optical depths
+// are each a linear function of the constituents' column densities, their mean too, and the
+// spread is nearly grey.
+struct SunDiscLight {
+  vec3 optical_depth;
+  vec3 spread;
+};
+
+SunDiscLight GetSunDiscLight(sampler2D transmittance_texture, float r, float mu_s,
+                             float cut_off_cosine, bool cosine_weighted) {
   float alpha = atmosphere.sun_angular_radius;
   float x = GetSunElevationInDiscRadii(mu_s, cut_off_cosine);
-  if (x <= -1.0) return vec3(0.0);
+  if (x <= -1.0) return SunDiscLight(vec3(0.0), vec3(0.0));
   if (x * alpha > SUN_DISC_ONE_TAP_ELEVATION)
-    return GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, mu_s) *
-           (cosine_weighted ? mu_s : 1.0);
+    return SunDiscLight(GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r, mu_s),
+                        vec3(cosine_weighted ? mu_s : 1.0));
   float sin_s = sqrt(max(1.0 - mu_s * mu_s, 0.0));
+  // Two to four taps: zenith cosines, weights (summing to 1) and the visible fraction.
+  int taps = 4;
+  float mu[4];
+  float w[4];
+  float visible = 1.0;
   if (x >= 1.0 && !cosine_weighted) {
-    if (x > 5.0)
-      return 0.5 * (GetTransmittanceAtDiscPoint(transmittance_texture, r, mu_s, sin_s, 0.5) +
-                    GetTransmittanceAtDiscPoint(transmittance_texture, r, mu_s, sin_s, -0.5));
-    return 0.25 * (GetTransmittanceAtDiscPoint(transmittance_texture, r, mu_s, sin_s, 0.70710678) +
-                   GetTransmittanceAtDiscPoint(transmittance_texture, r, mu_s, sin_s, -0.70710678)) +
-           0.5 * GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, mu_s);
+    taps = x > 5.0 ? 2 : 3;
+    float y = taps == 2 ? 0.5 : 0.70710678;
+    mu[0] = GetDiscPointCosine(mu_s, sin_s, y);
+    mu[1] = GetDiscPointCosine(mu_s, sin_s, -y);
+    mu[2] = mu_s;
+    w[0] = taps == 2 ? 0.5 : 0.25;
+    w[1] = w[0];
+    w[2] = 0.5;
+  } else {
+    visible = GetSunDiscVisibleFraction(x);
+    float t_h = acos(max(-x, -1.0));
+    const vec2 node = vec2(0.3399810436, 0.8611363116);  // Gauss-Legendre, 4 points on [-1, 1]
+    const vec2 weight = vec2(0.6521451549, 0.3478548451);
+    float weights = 0.0;
+    for (int i = 0; i < 4; ++i) {
+      float t = 0.5 * t_h * (1.0 + (i < 2 ? -node[i] : node[i - 2]));
+      w[i] = weight[i % 2] * sin(t) * sin(t);
+      mu[i] = GetDiscPointCosine(mu_s, sin_s, cos(t));
+      weights += w[i];
+    }
+    for (int i = 0; i < 4; ++i) w[i] /= weights;
   }
-  float visible = GetSunDiscVisibleFraction(x);
-  float t_h = acos(max(-x, -1.0));
-  const vec2 node = vec2(0.3399810436, 0.8611363116);  // Gauss-Legendre, 4 points on [-1, 1]
-  const vec2 weight = vec2(0.6521451549, 0.3478548451);
-  vec3 sum = vec3(0.0);
-  float weights = 0.0;
-  for (int i = 0; i < 4; ++i) {
-    float t = 0.5 * t_h * (1.0 + (i < 2 ? -node[i] : node[i - 2]));
-    float w = weight[i % 2] * sin(t) * sin(t);
-    float mu = GetDiscPointCosine(mu_s, sin_s, cos(t));
-    sum += w * GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, mu) *
-           (cosine_weighted ? max(mu, 0.0) : 1.0);
-    weights += w;
+  vec3 tau[4];
+  vec3 mean = vec3(0.0);
+  for (int i = 0; i < taps; ++i) {
+    tau[i] = GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r, mu[i]);
+    mean += w[i] * tau[i];
   }
-  return sum / weights * visible;
+  vec3 spread = vec3(0.0);
+  for (int i = 0; i < taps; ++i)
+    spread += w[i] * exp(mean - tau[i]) * (cosine_weighted ? max(mu[i], 0.0) : 1.0);
+  return SunDiscLight(mean, spread * visible);
 }
 
 // -sqrt(1 - (R / r)^2), from the horizon distance without cancellation.
 float GetHorizonCosine(float r) { return -sqrt(SquaredHorizonDistance(r)) / r; }
 
 // Transmittance of sunlight to radius r, over the part of the disc above the horizon.
+SunDiscLight GetSunLightAt(sampler2D transmittance_texture, float r, float mu_s) {
+  return GetSunDiscLight(transmittance_texture, r, mu_s, GetHorizonCosine(r), false);
+}
+
 vec3 GetTransmittanceToSun(sampler2D transmittance_texture, float r, float mu_s) {
-  return GetSunDiscAverage(transmittance_texture, r, mu_s, GetHorizonCosine(r), false);
+  SunDiscLight sun = GetSunLightAt(transmittance_texture, r, mu_s);
+  return exp(-sun.optical_depth) * sun.spread;
 }
 
 // ---- The sun band: GetTransmittanceToSun tabulated for the precomputation. ----
@@ -189,15 +249,16 @@ void GetRMuSFromSunBandTextureUv(ivec2 size, vec2 uv, out float r, out float mu_
   mu_s = cut_off + x * sqrt(1.0 - cut_off * cut_off) * atmosphere.sun_angular_radius;
 }
 
-// GetTransmittanceToSun, read from the sun band where the disc takes more than its centre.
-vec3 GetTransmittanceToSunFromBand(sampler2D transmittance_texture, sampler2D sun_band_texture,
-                                   float r, float mu_s) {
+// GetSunLightAt, read from the sun band where the disc takes more than its centre.
+SunDiscLight GetSunLightFromBand(sampler2D transmittance_texture, sampler2D sun_band_texture,
+                                float r, float mu_s) {
   float x = GetSunElevationInDiscRadii(mu_s, GetHorizonCosine(r));
-  if (x <= -1.0) return vec3(0.0);
+  if (x <= -1.0) return SunDiscLight(vec3(0.0), vec3(0.0));
   if (x > GetSunBandMaxElevationInDiscRadii())
-    return GetTransmittanceToTopAtmosphereBoundary(transmittance_texture, r, mu_s);
+    return SunDiscLight(GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r, mu_s),
+                        vec3(1.0));
   vec2 uv = GetSunBandTextureUv(textureSize(sun_band_texture, 0), r, x);
-  return exp(-ReadTable(sun_band_texture, uv).rgb) * GetSunDiscVisibleFraction(x);
+  return SunDiscLight(ReadTable(sun_band_texture, uv).rgb, vec3(GetSunDiscVisibleFraction(x)));
 }
 
 #endif

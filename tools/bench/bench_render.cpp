@@ -48,7 +48,7 @@ constexpr double kFrameGoalMs = 33.0, kFrameWallGoalMs = 40.0;
 
 struct BenchOptions {
   int width = 1280, height = 720, frames = 9, warmup = 2;
-  std::string lut = "4d", froxels = "32x32x32", preset = "noon", json_file;
+  std::string lut = "4d", froxels = "32x32x32", preset = "noon", colour = "rgb", json_file;
   std::string precision;  // empty: the variant's default
   double terrain_error_px = aerial::kDefaultTerrainErrorPx;
 };
@@ -79,6 +79,7 @@ void Bench(const BenchOptions& cli) {
   aerial::PrecomputeOptions precompute =
       aerial::PrecomputeOptions::Default(aerial::ParseLutVariant(cli.lut, "--lut"));
   if (!cli.precision.empty()) precompute.precision = aerial::ParseTablePrecision(cli.precision, "--precision");
+  precompute.colour = aerial::ParseColourMode(cli.colour, "--colour");
   if (!cli.json_file.empty()) aerial::CheckWritable(cli.json_file);
 
   aerial::AtmosphereParameters atmosphere = aerial::AtmosphereParameters::Earth();
@@ -132,15 +133,15 @@ void Bench(const BenchOptions& cli) {
   const Configuration& frame = configurations[0];
   const aerial::FrameInfo& terrain = renderers[0]->frame_info();
 
-  std::printf("device: %s\n%dx%d, froxels %s, %s tables, preset %s, terrain error <= %.2f px "
+  std::printf("device: %s\n%dx%d, froxels %s, %s %s tables, preset %s, terrain error <= %.2f px "
               "(%zu chunks, %zu triangles)\n",
               context.device_name().c_str(), cli.width, cli.height, base.froxels.Describe().c_str(),
-              cli.lut.c_str(), cli.preset.c_str(), base.terrain_error_px, terrain.chunks, terrain.triangles);
+              cli.lut.c_str(), cli.colour.c_str(), cli.preset.c_str(), base.terrain_error_px, terrain.chunks, terrain.triangles);
   std::printf("frames: %d measured per configuration (interleaved) after %d warm-up\n", cli.frames, cli.warmup);
   std::printf("\n=== whole frame, GPU (sum of the passes' timestamps) ===\n  %-34s %9s %9s %9s\n", "",
               "median ms", "min ms", "max ms");
   nlohmann::json doc = {{"device", context.device_name()}, {"width", cli.width}, {"height", cli.height},
-                        {"froxels", cli.froxels}, {"lut", cli.lut}, {"preset", cli.preset},
+                        {"froxels", cli.froxels}, {"lut", cli.lut}, {"colour", cli.colour}, {"preset", cli.preset},
                         {"frames", cli.frames}, {"warmup", cli.warmup},
                         {"terrain", {{"error_px", base.terrain_error_px}, {"chunks", terrain.chunks},
                                      {"triangles", terrain.triangles}}}};
@@ -238,6 +239,8 @@ int main(int argc, char** argv) {
                  "Scattering tables' floats: float16 or float32 (default: the variant's)")
       ->check(CLI::IsMember({"float16", "float32"}));
   app.add_option("--froxels", cli.froxels, "Froxel grid WxHxD");
+  app.add_option("--colour", cli.colour, "What the tables' channels hold: rgb or spectral (12 wavelengths)")
+      ->check(CLI::IsMember({"rgb", "spectral"}));
   app.add_option("--preset", cli.preset, "Built-in scene")->check(CLI::IsMember(aerial::PresetNames()));
   app.add_option("--terrain-error-px", cli.terrain_error_px, "Terrain level of detail's error bound (px)");
   app.add_option("--json", cli.json_file, "Also write the results as JSON to this file");

@@ -13,6 +13,9 @@ struct alignas(16) GpuDensityLayer {
   float width, exp_term, exp_scale, linear_term, constant_term, pad0, pad1, pad2;
 };
 
+// The most wavelengths a spectral precompute runs at (PrecomputeOptions::spectral_wavelengths).
+inline constexpr int kMaxSpectralSunlightTerms = 48;
+
 struct alignas(16) AtmosphereUniforms {
   std::array<float, 4> solar_irradiance;
   std::array<float, 4> rayleigh_scattering;
@@ -33,10 +36,21 @@ struct alignas(16) AtmosphereUniforms {
   std::array<int, 4> sample_counts;       // transmittance, ray, irradiance zenith, azimuth
   std::array<int, 4> multiple_scattering_steps;
   std::array<int, 4> multiple_density_size;  // r, mu, mu_s, nu
+  // Spectral tables: the sunlight a path lets through, summed over the precompute's wavelengths
+  // (spectrum/spectral_sunlight.h; GetPathSunlight in transmittance.glsl). x: the wavelengths
+  // summed, 0 for rgb tables (the path's transmittance is then used as it is).
+  std::array<int, 4> spectral_sunlight_terms;
+  // Per wavelength j: xyz the weights g_j of its optical depth, tau_j = g_j . channels' optical
+  // depths; and its share of each channel of the sunlight that Rayleigh and Mie scatter and of the
+  // direct sunlight (each sums to 1 per channel over j).
+  std::array<std::array<float, 4>, kMaxSpectralSunlightTerms> spectral_sunlight_exponent;
+  std::array<std::array<float, 4>, kMaxSpectralSunlightTerms> spectral_sunlight_rayleigh;
+  std::array<std::array<float, 4>, kMaxSpectralSunlightTerms> spectral_sunlight_mie;
+  std::array<std::array<float, 4>, kMaxSpectralSunlightTerms> spectral_sunlight_direct;
 };
 static_assert(offsetof(AtmosphereUniforms, rayleigh_density) == 96);
 static_assert(offsetof(AtmosphereUniforms, bottom_radius) == 96 + 3 * 64);
 static_assert(offsetof(AtmosphereUniforms, transmittance_size) == 96 + 3 * 64 + 32);
-static_assert(sizeof(AtmosphereUniforms) == 96 + 3 * 64 + 32 + 8 * 16);
+static_assert(sizeof(AtmosphereUniforms) == 96 + 3 * 64 + 32 + 9 * 16 + 4 * kMaxSpectralSunlightTerms * 16);
 
 }  // namespace aerial

@@ -5,7 +5,6 @@
 
 #include "aerial/core/checksum.h"
 #include "aerial/error.h"
-#include "aerial/precompute/spectral_precompute.h"
 #include "aerial/vk/shader_registry.h"
 
 namespace aerial {
@@ -53,7 +52,7 @@ AtmosphereTables::AtmosphereTables(const vk::Context& context,
     : context_(context),
       atmosphere_(atmosphere),
       options_(options),
-      uniforms_(MakeAtmosphereUniforms(ShaderAtmosphere(atmosphere, options), options)),
+      uniforms_(MakeAtmosphereUniforms(atmosphere, options)),
       uniform_buffer_(context, vk::UniformBufferInfo(sizeof(AtmosphereUniforms))),
       sampler_(vk::CreateLinearClampSampler(context)),
       // Transmittance and irradiance stay float32 in every precision: they are tiny, and half

@@ -1,6 +1,11 @@
 #include "aerial/precompute/atmosphere_uniforms.h"
 
+#include <string>
+
+#include "aerial/error.h"
 #include "aerial/precompute/sample_counts.h"
+#include "aerial/precompute/spectral_precompute.h"
+#include "aerial/spectrum/spectral_sunlight.h"
 
 namespace aerial {
 namespace {
@@ -19,10 +24,26 @@ std::array<GpuDensityLayer, 2> ToGpu(const DensityProfile& profile) {
   return layers;
 }
 
+void SetSpectralSunlight(const AtmosphereParameters& atmosphere, const AtmosphereParameters& linear_srgb,
+                         const PrecomputeOptions& options, AtmosphereUniforms& u) {
+  const spectrum::SpectralSunlight sunlight = spectrum::MakeSpectralSunlight(
+      spectrum::SpectralAtmosphere(atmosphere), linear_srgb, spectrum::SpectralSampling(options.spectral_wavelengths));
+  const int terms = int(sunlight.exponents.size());
+  if (terms > kMaxSpectralSunlightTerms) throw Error("wavelengths", std::to_string(terms), "at most 48");
+  u.spectral_sunlight_terms = {terms, 0, 0, 0};
+  for (int j = 0; j < terms; ++j) {
+    u.spectral_sunlight_exponent[j] = ToFloat4(sunlight.exponents[j]);
+    u.spectral_sunlight_rayleigh[j] = ToFloat4(sunlight.rayleigh_shares[j]);
+    u.spectral_sunlight_mie[j] = ToFloat4(sunlight.mie_shares[j]);
+    u.spectral_sunlight_direct[j] = ToFloat4(sunlight.direct_shares[j]);
+  }
+}
+
 }  // namespace
 
-AtmosphereUniforms MakeAtmosphereUniforms(const AtmosphereParameters& a,
+AtmosphereUniforms MakeAtmosphereUniforms(const AtmosphereParameters& atmosphere,
                                           const PrecomputeOptions& options) {
+  const AtmosphereParameters a = ShaderAtmosphere(atmosphere, options);
   const TableResolution& r = options.resolution;
   const SampleCounts s = SampleCountsOf(options);
   AtmosphereUniforms u{};
@@ -49,6 +70,7 @@ AtmosphereUniforms MakeAtmosphereUniforms(const AtmosphereParameters& a,
   u.multiple_scattering_steps = {s.multiple_scattering_steps, 0, 0, 0};
   u.multiple_density_size = {r.multiple_density_r, r.multiple_density_mu, r.multiple_density_mu_s,
                              r.multiple_density_nu};
+  if (options.colour == ColourMode::kSpectral) SetSpectralSunlight(atmosphere, a, options, u);
   return u;
 }
 
