@@ -17,8 +17,10 @@
 namespace aerial::testing {
 namespace {
 
+// rgb tables: the probe prints their three wavelengths (spectral ones print colours only).
 const std::string kProbe =
-    "probe --small-tables --quiet --altitude-m 1 --view-zenith-deg 45 --sun-zenith-deg 30 --azimuth-deg 0";
+    "probe --small-tables --quiet --colour rgb --altitude-m 1 --view-zenith-deg 45 --sun-zenith-deg 30 "
+    "--azimuth-deg 0";
 
 TEST(Cli, ProbePrintsEveryKeyForEachWavelength) {
   CommandRun run = RunAerial(kProbe + " --distance-m 10000");

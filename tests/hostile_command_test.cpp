@@ -95,7 +95,8 @@ TEST_F(HostileCommandRound2, WithoutHomePrecomputeFailsNamingIt) {
 TEST_F(HostileCommandRound2, FifoAtTheCacheFileFailsPrecomputeNamingIt) {
   fs::path cache = CacheFilePath(dir_.path(), AtmosphereParameters::Earth(), PrecomputeOptions::Small());
   ASSERT_EQ(::mkfifo(cache.c_str(), 0600), 0);
-  Expect("precompute --small-tables --quiet --cache-dir " + dir_.path().string(), 1,
+  // --colour rgb: the cache file of the library's default (rgb) small tables.
+  Expect("precompute --small-tables --quiet --colour rgb --cache-dir " + dir_.path().string(), 1,
          {cache.string(), "not a FIFO (named pipe)"});
 }
 

@@ -25,9 +25,10 @@ AERIAL_VALIDATION=1 "$work/embed/embed" "$here/scene.toml" "$work/embed.exr" "$c
 # froxel mode on aerial::Froxels' default grid (32x32x32, quadratic to 128 km) and no shadow map,
 # like the example. Only the sky is drawn another way: in froxel mode aerial's sky pass reads a
 # per-frame sky-view table (192x108, shaders/include/sky_view.glsl), where the example evaluates
-# GetSkyRadianceAlongRay on the tables per pixel.
+# GetSkyRadianceAlongRay on the tables per pixel. The example takes the library's default tables
+# (rgb), the commands default to spectral ones: --colour rgb.
 "$build/aerial" render --scene "$here/scene.toml" --width 320 --height 180 --aerial froxel --froxels 32x32x32 \
-  --froxel-far-m 128000 --shadows off --cache-dir "$cache" --quiet --out "$work/aerial.exr"
+  --colour rgb --froxel-far-m 128000 --shadows off --cache-dir "$cache" --quiet --out "$work/aerial.exr"
 
 # Bounds on the largest per-pixel relative error, max_c |a_c - b_c| / max_c b_c:
 #  - mesh pixels, 1e-5: both sides run the same code on the same data. The froxel volume is one

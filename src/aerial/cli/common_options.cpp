@@ -14,9 +14,9 @@ void TableOptions::AddTo(CLI::App& command) {
   command.add_option("--lut", lut, "Scattering table variant: 4d (r, mu, mu_s, nu) or 3d (nu dropped)")
       ->check(CLI::IsMember({"4d", "3d"}));
   command.add_option("--colour", colour,
-                     "What the tables' channels hold: rgb (radiance at the atmosphere's three wavelengths, "
-                     "default) or spectral (--wavelengths over 360-830 nm, converted to linear sRGB with "
-                     "the CIE 1931 observer)")
+                     "What the tables' channels hold: rgb (radiance at the atmosphere's three wavelengths) "
+                     "or spectral (--wavelengths over 360-830 nm, converted to linear sRGB with the CIE "
+                     "1931 observer); default " + colour)
       ->check(CLI::IsMember({"rgb", "spectral"}));
   command.add_option("--wavelengths", wavelengths,
                      "Wavelengths of --colour spectral: a multiple of 6 in [6, 48] (default 12; every other one gets its own orders >= 2)");

@@ -6,12 +6,14 @@
 // between them (spectrum/higher_orders.h): half the groups stop after single scattering, which is
 // a fifth of a precompute. Scattering, Mie, J_ms and the ground irradiance are linear in the
 // spectrum, so their colour is exact up to the sampling of the spectrum (values that fall outside
-// sRGB's gamut are clamped to 0). Transmittance is not linear in the spectrum: its table is computed from LinearSrgbAtmosphere's
-// coefficients, the sunlight-weighted mean extinction per channel, exact for thin air and additive
-// along a ray as the lookups that divide two of its values need. A table converted from the
-// spectral transmittance instead (LinearSrgb(E T) / LinearSrgb(E)) made the sun exact at every
-// elevation but is not additive: dividing two of its values near the horizon took 40% of the blue
-// out of a band of the ground at noon. docs/colour.md measures both.
+// sRGB's gamut are clamped to 0). Transmittance is not linear in the spectrum: its table is
+// computed from LinearSrgbAtmosphere's coefficients, the sunlight-weighted mean extinction per
+// channel, exact for thin air and additive along a ray as the lookups that divide two of its
+// values need. A table converted from the spectral transmittance instead (LinearSrgb(E T) /
+// LinearSrgb(E)) made the sun exact at every elevation but is not additive: dividing two of its
+// values near the horizon took 40% of the blue out of a band of the ground at noon. Where sunlight
+// crosses the air at render time, it is summed wavelength by wavelength from the channels' optical
+// depths (spectrum/spectral_sunlight.h). docs/colour.md measures all three.
 #include <vector>
 
 #include "aerial/atmosphere.h"
