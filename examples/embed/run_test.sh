@@ -25,8 +25,8 @@ AERIAL_VALIDATION=1 "$work/embed/embed" "$here/scene.toml" "$work/embed.exr" "$c
 # froxel mode on aerial::Froxels' default grid (32x32x32, quadratic to 128 km) and no shadow map,
 # like the example. Only the sky is drawn another way: in froxel mode aerial's sky pass reads a
 # per-frame sky-view table (192x108, shaders/include/sky_view.glsl), where the example evaluates
-# GetSkyRadianceAlongRay on the tables per pixel. The example takes the library's default tables
-# (rgb), the commands default to spectral ones: --colour rgb.
+# GetSkyRadianceAlongRay on the tables per pixel. --colour rgb: the example takes the library's
+# default tables, whatever the commands' default.
 "$build/aerial" render --scene "$here/scene.toml" --width 320 --height 180 --aerial froxel --froxels 32x32x32 \
   --colour rgb --froxel-far-m 128000 --shadows off --cache-dir "$cache" --quiet --out "$work/aerial.exr"
 

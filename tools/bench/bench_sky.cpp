@@ -21,7 +21,7 @@ namespace {
 namespace validation = aerial::validation;
 
 struct BenchOptions {
-  aerial::cli::TableOptions tables{.colour = "rgb"};  // the reference is at three wavelengths
+  aerial::cli::TableOptions tables;
   std::string grid = "full";
   int paths = 16384;
   std::string reference_file;

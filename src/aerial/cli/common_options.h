@@ -22,9 +22,8 @@ inline constexpr const char* kTableOptionsGroup = "Tables, device and memory";
 struct TableOptions {
   std::filesystem::path atmosphere_file;
   std::string lut = "4d";
-  // Spectral by default: it meets issue 40's colour targets (docs/colour.md). The library's
-  // PrecomputeOptions keep rgb, so that embedders' tables do not change within 1.x.
-  std::string colour = "spectral";
+  // rgb by default: docs/colour.md, "Why rgb is still the default".
+  std::string colour = "rgb";
   std::optional<int> wavelengths;
   int orders = 4;
   std::string series_tail = "on";
