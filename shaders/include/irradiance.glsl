@@ -8,9 +8,8 @@
 // surface's plane, each part with its own transmittance and cosine (GetSunDiscLight; this
 // replaces Bruneton 2017's average cosine (mu_s + alpha)^2 / (4 alpha) of "ComputeDirectIrradiance").
 vec3 ComputeDirectIrradiance(sampler2D transmittance_texture, float r, float mu_s) {
-  SunDiscLight disc =
-      GetSunDiscLight(transmittance_texture, r, mu_s, max(GetHorizonCosine(r), 0.0), true);
-  return atmosphere.solar_irradiance.rgb * GetPathSunlight(disc.optical_depth).direct * disc.spread;
+  return GetDirectSunlight(
+      GetSunDiscLight(transmittance_texture, r, mu_s, max(GetHorizonCosine(r), 0.0), true));
 }
 
 // The radiance of order `order` arriving at (r, mu_s) from direction omega (zenith cosine

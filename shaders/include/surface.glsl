@@ -25,8 +25,7 @@ LambertianRadiance GetLambertianRadiance(sampler2D transmittance_texture, sample
   vec3 up = point / r;
   vec3 sun = frame.sun_direction.xyz;
   float mu_s = dot(up, sun);
-  SunDiscLight sun_disc = GetSunLightAt(transmittance_texture, r, mu_s);
-  vec3 sun_irradiance = atmosphere.solar_irradiance.rgb * GetPathSunlight(sun_disc.optical_depth).direct * sun_disc.spread;
+  vec3 sun_irradiance = GetDirectSunlight(GetSunLightAt(transmittance_texture, r, mu_s));
   vec3 sky_irradiance = GetIrradiance(irradiance_texture, r, mu_s) * (1.0 + dot(normal, up)) * 0.5;
   return LambertianRadiance(albedo * (1.0 / PI) * sun_irradiance, albedo * (1.0 / PI) * sky_irradiance);
 }

@@ -47,7 +47,7 @@ struct PathSunlight {
 PathSunlight GetPathSunlight(vec3 optical_depth) {
   // The count is a uniform, but the loop's bound must not depend on uniforms alone: lavapipe 22.3
   // inlines such uniforms and compiles the pipeline anew at each bind, which cost rgb frames
-  // 20 ms (docs/speed.md, "No branch on uniforms alone"). optical_depth is never negative.
+  // 20 ms (docs/colour.md, "What it costs"). optical_depth is never negative.
   int terms = optical_depth.x >= 0.0 ? atmosphere.spectral_sunlight_terms.x : 0;
   vec3 rgb_tables = exp(-optical_depth) * float(terms == 0);
   PathSunlight light = PathSunlight(rgb_tables, rgb_tables, rgb_tables);
@@ -210,6 +210,12 @@ float GetHorizonCosine(float r) { return -sqrt(SquaredHorizonDistance(r)) / r; }
 // Transmittance of sunlight to radius r, over the part of the disc above the horizon.
 SunDiscLight GetSunLightAt(sampler2D transmittance_texture, float r, float mu_s) {
   return GetSunDiscLight(transmittance_texture, r, mu_s, GetHorizonCosine(r), false);
+}
+
+// The sun's direct irradiance (W/m^2/nm) through the disc's average, per unit area normal to the
+// sun (times its cosine where the disc was averaged with cosine_weighted).
+vec3 GetDirectSunlight(SunDiscLight disc) {
+  return atmosphere.solar_irradiance.rgb * GetPathSunlight(disc.optical_depth).direct * disc.spread;
 }
 
 vec3 GetTransmittanceToSun(sampler2D transmittance_texture, float r, float mu_s) {
