@@ -17,7 +17,8 @@
 namespace aerial::testing {
 namespace {
 
-// rgb tables: the probe prints their three wavelengths (spectral ones print colours only).
+// rgb tables: the probe prints their three wavelengths (spectral ones print colours only). rgb is
+// the probe's default; it is named so that these tests mean rgb whatever the default.
 const std::string kProbe =
     "probe --small-tables --quiet --colour rgb --altitude-m 1 --view-zenith-deg 45 --sun-zenith-deg 30 "
     "--azimuth-deg 0";
@@ -55,6 +56,48 @@ TEST(Cli, ProbeReferencePrintsItsStandardErrors) {
   CommandRun tables = RunAerial(kProbe);
   ASSERT_EQ(tables.exit_code, 0) << tables.err;
   EXPECT_FALSE(nlohmann::json::parse(tables.out).contains("sky_radiance_std_error"));
+}
+
+// The probe without --colour reads rgb tables (its JSON is per wavelength), unlike the other commands.
+TEST(Cli, ProbeDefaultsToRgb) {
+  CommandRun run = RunAerial("probe --small-tables --quiet --altitude-m 1 --view-zenith-deg 45 --sun-zenith-deg 30 "
+                             "--azimuth-deg 0");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  auto json = nlohmann::json::parse(run.out);
+  EXPECT_EQ(json["colour"], "rgb");
+  EXPECT_EQ(json["channels"], "wavelengths_nm");
+  EXPECT_EQ(json["wavelengths_nm"], nlohmann::json::array({680.0, 550.0, 440.0}));
+}
+
+// Spectral channels are linear sRGB, not wavelengths: the JSON says so and lists no
+// wavelengths_nm a script could pair them with. The spectral reference adds its values per
+// wavelength (single scattering here, a quadrature: quick), one per listed wavelength, in order:
+// on this daylight ray the transmittance grows with the wavelength (Rayleigh's 1/lambda^4 outweighs
+// ozone's Chappuis band), which a wrong order of the groups would break.
+TEST(Cli, SpectralProbeNamesItsChannels) {
+  const std::string probe = "probe --small-tables --quiet --colour spectral --orders 1 --series-tail off "
+                            "--altitude-m 1 --view-zenith-deg 45 --sun-zenith-deg 30 --azimuth-deg 0 "
+                            "--distance-m 10000";
+  for (const std::string& source : {std::string(""), std::string(" --reference")}) {
+    CommandRun run = RunAerial(probe + source);
+    ASSERT_EQ(run.exit_code, 0) << source << run.err;
+    auto json = nlohmann::json::parse(run.out);
+    EXPECT_EQ(json["channels"], "linear_srgb") << source;
+    EXPECT_FALSE(json.contains("wavelengths_nm")) << source;
+    ASSERT_EQ(json["spectral_wavelengths_nm"].size(), 12u) << source;
+    EXPECT_EQ(json["sky_radiance"].size(), 3u) << source;
+    EXPECT_EQ(json.contains("at_wavelengths"), !source.empty()) << source;
+    if (source.empty()) continue;
+    const auto& spectral = json["at_wavelengths"];
+    EXPECT_EQ(spectral["wavelengths_nm"], json["spectral_wavelengths_nm"]);
+    for (const char* key : {"sky_radiance", "transmittance", "sun_irradiance", "sky_irradiance",
+                            "solar_radiance", "radiance_to_point", "transmittance_to_point"}) {
+      ASSERT_EQ(spectral[key].size(), 12u) << key;
+      for (double v : spectral[key]) EXPECT_TRUE(std::isfinite(v) && v > 0.0) << key;
+    }
+    for (size_t i = 1; i < 12; ++i)
+      EXPECT_GT(spectral["transmittance"][i].get<double>(), spectral["transmittance"][i - 1].get<double>()) << i;
+  }
 }
 
 // Steps along the frustum grid's columns (k: farther from the camera) where a value moves against

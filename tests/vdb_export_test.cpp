@@ -561,6 +561,37 @@ TEST_F(VdbExport, MetadataRoundTrips) {
   using Int3 = std::array<int32_t, 3>;
   EXPECT_EQ(Meta<Int3>(meta, "froxel_resolution"), (Int3{16, 8, 12}));
   EXPECT_EQ(Meta<std::string>(meta, "atmosphere_hash"), Hex(AtmosphereParameters::Earth().Hash()));
+  // rgb tables: the channels are the atmosphere's wavelengths.
+  EXPECT_EQ(Meta<std::string>(meta, "colour"), "rgb");
+  EXPECT_EQ(Meta<std::string>(meta, "channels"), "the values at wavelengths_nm, in order");
+  EXPECT_EQ(Meta<Double3>(meta, "wavelengths_nm"), (Double3{680.0, 550.0, 440.0}));
+  EXPECT_EQ(meta.count("spectral_wavelengths_nm"), 0u);
+}
+
+// Spectral tables' channels are linear sRGB, not wavelengths: the file says so, lists the
+// spectral sampling it was converted from, and has no `wavelengths_nm` that a reader could take
+// for the channels' (nor does any grid's description point at one).
+TEST_F(VdbExport, SpectralChannelsAreNamedLinearSrgb) {
+  PrecomputeOptions options = PrecomputeOptions::Small();
+  options.orders = 1;
+  options.close_series = false;
+  options.colour = ColourMode::kSpectral;
+  const AtmosphereTables& spectral = CachedTables(options);
+  VdbVolume volume = MakeFrustumVolume(CaptureFroxels(spectral, TestScene(spectral), TestGrid(), kTestSize));
+  WriteVdb(dir_ / "s.vdb", volume);
+  VdbFileData file = ReadVdb(dir_ / "s.vdb");
+  EXPECT_EQ(Meta<std::string>(file.metadata, "colour"), "spectral");
+  EXPECT_EQ(Meta<std::string>(file.metadata, "channels").rfind("linear sRGB (Rec. 709 primaries, D65 white)", 0), 0u);
+  EXPECT_EQ(file.metadata.count("wavelengths_nm"), 0u);
+  std::string sampling = Meta<std::string>(file.metadata, "spectral_wavelengths_nm");
+  EXPECT_EQ(std::count(sampling.begin(), sampling.end(), ','), options.spectral_wavelengths - 1) << sampling;
+  EXPECT_EQ(sampling.substr(0, sampling.find(',')), "379.583333") << sampling;  // 360 nm + half a 39.17 nm bin
+  for (const char* name : {"rayleigh_inscatter", "mie_inscatter", "transmittance"}) {
+    const VdbGridData* grid = file.Find(name);
+    ASSERT_NE(grid, nullptr) << name;
+    EXPECT_EQ(Meta<std::string>(grid->metadata, "description").find("wavelengths_nm"), std::string::npos) << name;
+    EXPECT_EQ(Meta<std::string>(grid->metadata, "colour"), "spectral") << name;
+  }
 }
 
 // Debian's python3-openvdb, a reader that shares no code with aerial, on a frustum file and a

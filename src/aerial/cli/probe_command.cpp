@@ -42,6 +42,33 @@ nlohmann::json ColourJson(const Spectrum& linear_srgb, const char* luminance_key
           {luminance_key, spectrum::LuminanceCdM2(xyz)}};
 }
 
+// The quantities every probe reports, each as its three channels.
+void AddQuantities(nlohmann::json& json, const ProbeResult& result, bool to_point) {
+  json["sky_radiance"] = ToJson(result.sky_radiance);
+  json["transmittance"] = ToJson(result.transmittance);
+  json["sun_irradiance"] = ToJson(result.sun_irradiance);
+  json["sky_irradiance"] = ToJson(result.sky_irradiance);
+  json["solar_radiance"] = ToJson(result.solar_radiance);
+  if (!to_point) return;
+  json["radiance_to_point"] = ToJson(result.radiance_to_point);
+  json["transmittance_to_point"] = ToJson(result.transmittance_to_point);
+}
+
+// The spectral reference's quantities before their conversion: one value per wavelength, over
+// `wavelengths_nm`, from each group's three.
+nlohmann::json SpectralJson(const std::vector<ProbeResult>& groups, const spectrum::SpectralSampling& sampling,
+                            bool to_point) {
+  nlohmann::json spectral;
+  spectral["wavelengths_nm"] = sampling.wavelengths_nm();
+  for (const ProbeResult& group : groups) {
+    nlohmann::json channels;
+    AddQuantities(channels, group, to_point);
+    for (auto& [key, values] : channels.items())
+      for (const auto& value : values) spectral[key].push_back(value);
+  }
+  return spectral;
+}
+
 void RunProbe(const ProbeOptions& options) {
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
   ValidateViewAngles(options.view, atmosphere);
@@ -52,12 +79,13 @@ void RunProbe(const ProbeOptions& options) {
   PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
   RayParameters ray = ToRayParameters(options.view, atmosphere);
 
+  const bool spectral = precompute.colour == ColourMode::kSpectral;
   ProbeResult result;
+  std::vector<ProbeResult> at_wavelengths;  // the spectral reference's, group by group
   if (options.reference) {
-    result = precompute.colour == ColourMode::kSpectral
-                 ? ProbeReferenceSpectral(atmosphere, ray, options.distance_m, precompute.RepresentedOrders(),
-                                          precompute.spectral_wavelengths)
-                 : ProbeReference(atmosphere, ray, options.distance_m, precompute.RepresentedOrders());
+    result = spectral ? ProbeReferenceSpectral(atmosphere, ray, options.distance_m, precompute.RepresentedOrders(),
+                                               precompute.spectral_wavelengths, {}, &at_wavelengths)
+                      : ProbeReference(atmosphere, ray, options.distance_m, precompute.RepresentedOrders());
   } else {
     Device device(options.tables.MakeDeviceOptions());
     options.tables.MakeMemoryBudget(device.largest_heap_bytes()).Check(TableMemoryUses(precompute));
@@ -71,32 +99,33 @@ void RunProbe(const ProbeOptions& options) {
   json["lut"] = options.tables.lut;
   json["atmosphere"] = atmosphere.name;
   json["colour"] = options.tables.colour;
-  if (precompute.colour == ColourMode::kSpectral)
-    json["wavelengths_nm"] = spectrum::SpectralSampling(precompute.spectral_wavelengths).wavelengths_nm();
-  else
+  // What the quantities' three channels are: the atmosphere's wavelengths, or for spectral tables
+  // linear sRGB converted from the precompute's wavelengths (which the tables do not keep apart).
+  if (spectral) {
+    json["channels"] = "linear_srgb";
+    json["spectral_wavelengths_nm"] = spectrum::SpectralSampling(precompute.spectral_wavelengths).wavelengths_nm();
+  } else {
+    json["channels"] = "wavelengths_nm";
     json["wavelengths_nm"] = ToJson(atmosphere.wavelengths_nm);
+  }
   json["altitude_m"] = options.view.altitude_m;
   json["view_zenith_deg"] = options.view.view_zenith_deg;
   json["sun_zenith_deg"] = options.view.sun_zenith_deg;
   json["azimuth_deg"] = options.view.azimuth_deg;
-  json["sky_radiance"] = ToJson(result.sky_radiance);
-  json["transmittance"] = ToJson(result.transmittance);
-  json["sun_irradiance"] = ToJson(result.sun_irradiance);
-  json["sky_irradiance"] = ToJson(result.sky_irradiance);
-  json["solar_radiance"] = ToJson(result.solar_radiance);
+  if (options.distance_m) json["distance_m"] = *options.distance_m;
+  AddQuantities(json, result, options.distance_m.has_value());
   json["sky_radiance_colour"] = ColourJson(result.sky_radiance, "luminance_cd_m2");
   json["sun_irradiance_colour"] = ColourJson(result.sun_irradiance, "illuminance_lux");
   json["sky_irradiance_colour"] = ColourJson(result.sky_irradiance, "illuminance_lux");
-  if (options.distance_m) {
-    json["distance_m"] = *options.distance_m;
-    json["radiance_to_point_colour"] = ColourJson(result.radiance_to_point, "luminance_cd_m2");
-    json["radiance_to_point"] = ToJson(result.radiance_to_point);
-    json["transmittance_to_point"] = ToJson(result.transmittance_to_point);
-  }
+  if (options.distance_m) json["radiance_to_point_colour"] = ColourJson(result.radiance_to_point, "luminance_cd_m2");
   if (options.reference) {  // the Monte Carlo noise of the orders >= 2
     json["sky_radiance_std_error"] = ToJson(result.sky_radiance_std_error);
     json["sky_irradiance_std_error"] = ToJson(result.sky_irradiance_std_error);
     if (options.distance_m) json["radiance_to_point_std_error"] = ToJson(result.radiance_to_point_std_error);
+  }
+  if (!at_wavelengths.empty()) {
+    json["at_wavelengths"] = SpectralJson(at_wavelengths, spectrum::SpectralSampling(precompute.spectral_wavelengths),
+                                          options.distance_m.has_value());
   }
   std::printf("%s\n", json.dump(2).c_str());
 }
@@ -105,6 +134,9 @@ void RunProbe(const ProbeOptions& options) {
 
 void AddProbeCommand(CLI::App& app) {
   auto options = std::make_shared<ProbeOptions>();
+  // rgb unless asked: the probe reports quantities over wavelengths (`wavelengths_nm`), which
+  // the rgb tables' channels are and the spectral tables' linear sRGB channels are not.
+  options->tables.colour = "rgb";
   CLI::App* command = app.add_subcommand("probe", "Print the sky seen by one camera along one ray, as JSON");
   command->add_option("--altitude-m", options->view.altitude_m, "Camera altitude above the ground (m)")
       ->required();

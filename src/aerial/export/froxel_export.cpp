@@ -13,8 +13,10 @@
 #include "aerial/export/fog_density.h"
 #include "aerial/export/ground.h"
 #include "aerial/export/volume_grids.h"
+#include "aerial/precompute/spectral_precompute.h"
 #include "aerial/render/renderer.h"
 #include "aerial/scene/camera.h"
+#include "aerial/spectrum/spectral_sampling.h"
 #include "aerial/version.h"
 
 namespace aerial {
@@ -32,6 +34,24 @@ std::string Number(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.9g", value);
   return text;
+}
+
+// What the R, G and B channels of the three-channel grids hold.
+std::string ChannelsText(const FroxelFrame& frame) {
+  if (frame.colour == ColourMode::kSpectral)
+    return "linear sRGB (Rec. 709 primaries, D65 white), converted from spectral_wavelengths_nm with the "
+           "CIE 1931 2-degree observer; Y is the y-bar-weighted mean spectral value";
+  return "the values at wavelengths_nm, in order";
+}
+
+// The wavelengths the channels come from: the atmosphere's three, or the spectral sampling's.
+std::pair<const std::string, VdbMetaValue> WavelengthsMetadata(const FroxelFrame& frame) {
+  if (frame.colour != ColourMode::kSpectral) return {"wavelengths_nm", frame.atmosphere.wavelengths_nm};
+  const spectrum::SpectralSampling sampling(frame.spectral_wavelengths);
+  std::string list;
+  for (double nm : sampling.wavelengths_nm())
+    list += (list.empty() ? "" : ",") + Number(nm);
+  return {"spectral_wavelengths_nm", list};
 }
 
 // What the file says about the frame, on the file and on every grid.
@@ -63,9 +83,11 @@ VdbMetadata FrameMetadata(const FroxelFrame& frame, const std::string& grid_spac
       {"sun_zenith_deg", frame.sun.zenith_deg},
       {"sun_azimuth_deg", frame.sun.azimuth_deg},
       {"lut", ToString(frame.lut)},
-      {"atmosphere_hash", Hex(frame.atmosphere.Hash())},
+      {"atmosphere_hash", Hex(frame.atmosphere_hash)},
       {"table_options_hash", Hex(frame.table_options_hash)},
-      {"wavelengths_nm", frame.atmosphere.wavelengths_nm},
+      {"colour", std::string(frame.colour == ColourMode::kSpectral ? "spectral" : "rgb")},
+      {"channels", ChannelsText(frame)},
+      WavelengthsMetadata(frame),
       {"planet_radius_m", frame.atmosphere.bottom_radius_m},
       {"froxel_resolution", std::array<int32_t, 3>{grid.width, grid.height, grid.depth}},
       {"froxel_depth_distribution", std::string("quadratic")},
@@ -95,8 +117,11 @@ FroxelFrame ReadFroxelFrame(const Renderer& renderer, const Scene& scene) {
   frame.camera = scene.camera;
   frame.sun = scene.sun;
   frame.lut = tables.options().variant;
-  frame.atmosphere = tables.atmosphere();
+  frame.atmosphere = ShaderAtmosphere(tables.atmosphere(), tables.options());
+  frame.atmosphere_hash = tables.atmosphere().Hash();
   frame.table_options_hash = tables.options().Hash();
+  frame.colour = tables.options().colour;
+  frame.spectral_wavelengths = tables.options().spectral_wavelengths;
   frame.terrain = scene.terrain;
   return frame;
 }

@@ -44,8 +44,13 @@ struct FroxelFrame {
   Camera camera;
   Sun sun;
   LutVariant lut = LutVariant::k4D;
-  AtmosphereParameters atmosphere;  // the tables' (the density grid's, fog_density.h)
+  // The tables' atmosphere in their channels' terms (ShaderAtmosphere: linear sRGB coefficients
+  // for spectral tables): the density grid's (fog_density.h).
+  AtmosphereParameters atmosphere;
+  uint64_t atmosphere_hash = 0;     // the tables' AtmosphereParameters::Hash(), the cache key's
   uint64_t table_options_hash = 0;  // PrecomputeOptions::Hash()
+  ColourMode colour = ColourMode::kRgb;  // what the three channels hold (PrecomputeOptions::colour)
+  int spectral_wavelengths = 0;          // PrecomputeOptions::spectral_wavelengths, when spectral
   bool terrain = false;             // the scene's built-in terrain: the ground (ground.h)
 
   FroxelPlacement placement() const { return FroxelPlacement(uniforms, texels.grid); }

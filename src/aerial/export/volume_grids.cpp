@@ -14,14 +14,14 @@ struct GridText {
 constexpr GridText kRayleigh{"rayleigh_inscatter", "W/m^2/nm",
                              "Rayleigh inscatter from the camera to the point, without phase: times "
                              "the Rayleigh phase function (1/sr) it is radiance (W/m^2/sr/nm); "
-                             "channels are wavelengths_nm"};
+                             "channels as `channels` says"};
 constexpr GridText kMie{"mie_inscatter", "W/m^2/nm",
                         "Mie inscatter from the camera to the point, without phase: times the Mie "
-                        "phase function (1/sr) it is radiance (W/m^2/sr/nm); channels are "
-                        "wavelengths_nm"};
+                        "phase function (1/sr) it is radiance (W/m^2/sr/nm); channels as "
+                        "`channels` says"};
 constexpr GridText kTransmittance{"transmittance", "1",
-                                  "transmittance from the camera to the point; channels are "
-                                  "wavelengths_nm; background 1 (clear air)"};
+                                  "transmittance from the camera to the point; channels as "
+                                  "`channels` says; background 1 (clear air)"};
 constexpr GridText kLuminance{"inscatter_luminance", "W/m^2/nm",
                               "0.2126 R + 0.7152 G + 0.0722 B of rayleigh_inscatter + "
                               "mie_inscatter (phase taken as 1): a scalar to look at the volume "

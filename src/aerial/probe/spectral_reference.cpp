@@ -30,7 +30,8 @@ Spectrum Over(const Spectrum& a, const Spectrum& b) { return {a[0] / b[0], a[1] 
 
 ProbeResult ProbeReferenceSpectral(const AtmosphereParameters& atmosphere, const RayParameters& ray,
                                    std::optional<double> distance_m, int orders, int wavelengths,
-                                   const reference::MonteCarloOptions& monte_carlo) {
+                                   const reference::MonteCarloOptions& monte_carlo,
+                                   std::vector<ProbeResult>* at_wavelengths) {
   const spectrum::SpectralSampling sampling(wavelengths);
   const spectrum::SpectralAtmosphere spectral(atmosphere);
   Accumulator sky, sky_variance, irradiance, irradiance_variance, to_point, to_point_variance;
@@ -38,6 +39,7 @@ ProbeResult ProbeReferenceSpectral(const AtmosphereParameters& atmosphere, const
   for (int g = 0; g < sampling.groups(); ++g) {
     AtmosphereParameters group = spectral.At(sampling.Group(g));
     ProbeResult r = ProbeReference(group, ray, distance_m, orders, monte_carlo);
+    if (at_wavelengths) at_wavelengths->push_back(r);
     const Matrix3 m = sampling.GroupToLinearSrgb(g);
     sky.Add(m, r.sky_radiance);
     sky_variance.AddVariance(m, r.sky_radiance_std_error);

@@ -3,6 +3,7 @@
 // atmosphere extended as the spectral precompute extends it, SpectralAtmosphere), converted to
 // linear sRGB by the same CIE tables as the spectral tables. It shares no code with the shaders.
 #include <optional>
+#include <vector>
 
 #include "aerial/probe.h"
 
@@ -10,9 +11,11 @@ namespace aerial {
 
 // Radiances and irradiances are converted linearly; the two transmittances as the spectral
 // transmittance table is, weighted by sunlight (LinearSrgb(E * T) / LinearSrgb(E)); standard errors
-// propagate through the conversion's weights as independent errors.
+// propagate through the conversion's weights as independent errors. at_wavelengths (may be null)
+// receives the unconverted results, one per group of three wavelengths (SpectralSampling::Group).
 ProbeResult ProbeReferenceSpectral(const AtmosphereParameters& atmosphere, const RayParameters& ray,
                                    std::optional<double> distance_m, int orders, int wavelengths,
-                                   const reference::MonteCarloOptions& monte_carlo = {});
+                                   const reference::MonteCarloOptions& monte_carlo = {},
+                                   std::vector<ProbeResult>* at_wavelengths = nullptr);
 
 }  // namespace aerial
