@@ -14,6 +14,7 @@ using validation::PixelClass;
 using validation::ReferenceSamples;
 using validation::ReferenceSampling;
 using validation::SampleReference;
+using validation::SampleSpectralReference;
 using validation::ViewReference;
 namespace {
 
@@ -71,11 +72,12 @@ ViewAccuracy Measure(const std::string& view, const VariantImages& images, const
 std::vector<ViewReference> SampleViews(const Tables& tables, Scene& scene, const BenchPlan& plan,
                                        const std::function<void()>& on_pixel) {
   const AtmosphereParameters& atmosphere = tables.atmosphere();
+  const PrecomputeOptions& options = tables.options();
   reference::Reference model(atmosphere);
   std::unique_ptr<SceneRenderer> renderer = ImageRenderer(tables, scene, plan, AerialMode::kFroxel);
   ReferenceSampling sampling{.columns = plan.reference_columns,
                              .rows = plan.reference_rows,
-                             .orders = tables.options().RepresentedOrders(),
+                             .orders = options.RepresentedOrders(),
                              .monte_carlo = {.paths_per_query = plan.reference_paths},
                              .terrain_error_px = renderer->options().terrain_error_px};
   std::vector<ViewReference> references;
@@ -83,7 +85,11 @@ std::vector<ViewReference> SampleViews(const Tables& tables, Scene& scene, const
     ApplyPresetView(scene, view, atmosphere.bottom_radius_m);
     renderer->Render(scene);
     const Renderer& frame = ImplOf(*renderer).renderer;
-    references.push_back(SampleReference(model, scene, frame.frame_uniforms(), frame.ReadSurface(), sampling, on_pixel));
+    references.push_back(options.colour == ColourMode::kSpectral
+                             ? SampleSpectralReference(atmosphere, options.spectral_wavelengths, scene,
+                                                       frame.frame_uniforms(), frame.ReadSurface(), sampling, on_pixel)
+                             : SampleReference(model, scene, frame.frame_uniforms(), frame.ReadSurface(), sampling,
+                                               on_pixel));
   }
   return references;
 }

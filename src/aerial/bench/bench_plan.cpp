@@ -17,9 +17,10 @@ std::vector<std::string> AccuracyViews() {
 
 }  // namespace
 
-PrecomputeOptions TableTier::Options(LutVariant variant) const {
+PrecomputeOptions TableTier::Options(LutVariant variant, ColourMode colour) const {
   PrecomputeOptions options =
       small_base ? PrecomputeOptions::Small(variant) : PrecomputeOptions::Default(variant);
+  options.colour = colour;
   options.SetScatteringSize(r, mu, mu_s, variant == LutVariant::k4D ? nu : 1);
   options.Validate();
   return options;

@@ -45,6 +45,20 @@ BenchResults QuickResults() {
   return b;
 }
 
+// --colour reaches every table the bench precomputes, and the results say which they were.
+TEST(BenchPlan, ColourReachesTheTablesAndTheResults) {
+  BenchPlan plan = BenchPlan::Quick();
+  EXPECT_EQ(plan.colour, ColourMode::kRgb);  // the default: bench's reference time (docs/colour.md)
+  plan.colour = ColourMode::kSpectral;
+  for (const TableTier& tier : plan.tiers)
+    for (LutVariant variant : {LutVariant::k4D, LutVariant::k3D})
+      EXPECT_EQ(tier.Options(variant, plan.colour).colour, ColourMode::kSpectral) << tier.name;
+  BenchResults results = QuickResults();
+  EXPECT_EQ(ResultsJson(results)["settings"]["colour"], "rgb");
+  results.plan.colour = ColourMode::kSpectral;
+  EXPECT_EQ(ResultsJson(results)["settings"]["colour"], "spectral");
+}
+
 TEST(BenchPlan, AFrameNotTimedIsReportedAsNotMeasured) {
   BenchResults b = QuickResults();
   const std::string tiny = b.plan.tiers[0].name, small = b.plan.tiers[1].name;

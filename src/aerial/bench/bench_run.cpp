@@ -48,7 +48,7 @@ BenchResults RunBench(const BenchPlan& plan, const Device& device, const Machine
 
   std::vector<PrecomputeOptions> options;
   for (const TableTier& tier : plan.tiers)
-    for (LutVariant variant : {LutVariant::k4D, LutVariant::k3D}) options.push_back(tier.Options(variant));
+    for (LutVariant variant : {LutVariant::k4D, LutVariant::k3D}) options.push_back(tier.Options(variant, plan.colour));
   std::vector<PrecomputeMeasurement> tables =
       MeasurePrecompute(device, atmosphere, options, plan.precompute_warmup, plan.precompute_runs,
                         [&](const BenchResult& r, const RunResult&, bool, int) {

@@ -76,8 +76,10 @@ Series SumOfPasses(const std::vector<RunResult>& runs, const std::vector<std::st
 }
 
 std::string PassKind(const std::string& pass) {
+  // A spectral precompute's group label, "[2/4] ", leads the pass's name.
+  size_t start = pass.starts_with("[") && pass.find("] ") != std::string::npos ? pass.find("] ") + 2 : 0;
   size_t suffix = pass.find(" (order ");
-  return suffix == std::string::npos ? pass : pass.substr(0, suffix);
+  return pass.substr(start, suffix == std::string::npos ? std::string::npos : suffix - start);
 }
 
 }  // namespace aerial::bench

@@ -54,7 +54,8 @@ std::vector<Series> GroupPasses(const std::vector<RunResult>& runs,
 Series SumOfPasses(const std::vector<RunResult>& runs, const std::vector<std::string>& passes,
                    const std::string& label);
 
-// "scattering density (order 3)" -> "scattering density": the kind of pass, whatever the order.
+// "scattering density (order 3)" -> "scattering density": the kind of pass, whatever the order
+// (and whatever the spectral precompute's group: "[2/4] scattering density (order 3)" too).
 std::string PassKind(const std::string& pass);
 
 }  // namespace aerial::bench

@@ -41,6 +41,11 @@ void MachineSection(std::ostringstream& md, const BenchResults& b) {
      << " |\n";
   md << "| sun shadows in the timed frames | " << (b.plan.shadows ? "on" : "off")
      << " (never in the accuracy renders: the reference has none) |\n";
+  md << "| colour | "
+     << (b.plan.colour == ColourMode::kSpectral
+             ? "spectral (the tables and the reference at every wavelength, converted to linear sRGB)"
+             : "rgb (the atmosphere's three wavelengths)")
+     << " |\n";
   md << "| validation layers | " << (m.validation ? "on (every time below is inflated by them)" : "off")
      << " |\n";
   md << "| load average (1, 5, 15 min) | " << m.load_before << " before, " << m.load_after << " after |\n";

@@ -103,6 +103,7 @@ nlohmann::json ResultsJson(const BenchResults& b) {
                      {"frame_warmup", plan.frame_warmup},
                      {"frames", plan.frames},
                      {"frame_shadows", plan.shadows},
+                     {"colour", ToString(plan.colour)},
                      {"frame_scene", "built-in default scene, preset noon"},
                      {"precompute_warmup", plan.precompute_warmup},
                      {"precompute_runs", plan.precompute_runs},

@@ -27,6 +27,7 @@ struct BenchCommandOptions {
   bool validation = false;
   bool quiet = false;
   std::string shadows = "on";
+  std::string colour = "rgb";
 
   // The command line that reproduces this run.
   std::string Command() const {
@@ -36,6 +37,7 @@ struct BenchCommandOptions {
     if (!device.empty()) command += " --device \"" + device + "\"";
     if (validation) command += " --validation";
     if (shadows != "on") command += " --shadows " + shadows;
+    if (colour != "rgb") command += " --colour " + colour;
     return command;
   }
 };
@@ -61,6 +63,7 @@ void RunBenchCommand(const BenchCommandOptions& options) {
   // Values first: a bad one must not leave the --out directory chain behind.
   bench::BenchPlan plan = options.quick ? bench::BenchPlan::Quick() : bench::BenchPlan::Full();
   plan.shadows = ParseShadows(options.shadows);
+  plan.colour = ParseColourMode(options.colour, "--colour");
   bench::CheckOutputDirectory(options.out);
   Device device(DeviceOptions{.device_name = options.device, .validation = options.validation});
   bench::MachineInfo machine{.device = device.name(),
@@ -95,6 +98,11 @@ void AddBenchCommand(CLI::App& app) {
   command->add_option("--shadows", options->shadows,
                       "The sun's shadow map in the timed frames: on (default) or off (the accuracy renders "
                       "never have it: the CPU reference has no shadows)");
+  command->add_option("--colour", options->colour,
+                      "What the tables' channels hold: rgb (default: the three wavelengths) or spectral (12 "
+                      "wavelengths converted with the CIE 1931 observer, against the spectral reference: its "
+                      "accuracy part takes about four times as long)")
+      ->check(CLI::IsMember({"rgb", "spectral"}));
   command->callback([options] { RunBenchCommand(*options); });
 }
 

@@ -68,14 +68,16 @@ double SpectralAtmosphere::AbsorptionExtinction(double nm) const {
   return ozone_density_ * OzoneCrossSection().At(nm);
 }
 
-double SpectralAtmosphere::GroundAlbedo(double nm) const {
+double SpectralAtmosphere::GroundAlbedo(double nm) const { return ReflectanceAt(base_.ground_albedo, nm); }
+
+double SpectralAtmosphere::ReflectanceAt(const Spectrum& at_three_wavelengths, double nm) const {
   std::array<int, 3> order = {0, 1, 2};
   std::sort(order.begin(), order.end(),
             [&](int i, int j) { return base_.wavelengths_nm[i] < base_.wavelengths_nm[j]; });
   TabulatedSpectrum albedo;
   for (int i : order) {
     albedo.wavelengths_nm.push_back(base_.wavelengths_nm[i]);
-    albedo.values.push_back(base_.ground_albedo[i]);
+    albedo.values.push_back(at_three_wavelengths[i]);
   }
   nm = std::clamp(nm, albedo.wavelengths_nm.front(), albedo.wavelengths_nm.back());
   return albedo.At(nm);

@@ -31,6 +31,9 @@ class SpectralAtmosphere {
   double MieExtinction(double nm) const;
   double AbsorptionExtinction(double nm) const;
   double GroundAlbedo(double nm) const;
+  // A reflectance given at the atmosphere's three wavelengths (a ground or surface albedo), as a
+  // spectrum: linear between them, constant beyond.
+  double ReflectanceAt(const Spectrum& at_three_wavelengths, double nm) const;
 
  private:
   struct PowerLaw {

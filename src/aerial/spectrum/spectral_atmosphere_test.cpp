@@ -48,5 +48,19 @@ TEST(SpectralAtmosphere, LinearSrgbCoefficientsWeightTheSunlight) {
   for (double c : srgb.solar_irradiance) EXPECT_NEAR(c / srgb.solar_irradiance[1], 1.0, 0.2);
 }
 
+// A surface's three-channel albedo as a spectrum: its own values at 680, 550 and 440 nm, the mean
+// of two neighbours half-way between them, and the end values beyond them.
+TEST(SpectralAtmosphere, ReflectanceIsLinearBetweenTheThreeWavelengths) {
+  SpectralAtmosphere earth(AtmosphereParameters::Earth());
+  const Spectrum albedo = {0.3, 0.5, 0.1};  // at 680, 550, 440 nm
+  EXPECT_DOUBLE_EQ(earth.ReflectanceAt(albedo, 680.0), 0.3);
+  EXPECT_DOUBLE_EQ(earth.ReflectanceAt(albedo, 550.0), 0.5);
+  EXPECT_DOUBLE_EQ(earth.ReflectanceAt(albedo, 440.0), 0.1);
+  EXPECT_NEAR(earth.ReflectanceAt(albedo, 615.0), 0.4, 1e-12);
+  EXPECT_NEAR(earth.ReflectanceAt(albedo, 495.0), 0.3, 1e-12);
+  EXPECT_DOUBLE_EQ(earth.ReflectanceAt(albedo, 380.0), 0.1);
+  EXPECT_DOUBLE_EQ(earth.ReflectanceAt(albedo, 800.0), 0.3);
+}
+
 }  // namespace
 }  // namespace aerial::spectrum

@@ -5,6 +5,8 @@
 #include <optional>
 
 #include "aerial/scene_surface.h"
+#include "aerial/spectrum/spectral_atmosphere.h"
+#include "aerial/spectrum/spectral_sampling.h"
 #include "aerial/validation/lambertian_radiance.h"
 
 namespace aerial::validation {
@@ -67,6 +69,7 @@ ViewReference SampleReference(const reference::Reference& model, const Scene& sc
     std::optional<LambertianSurface> end;
     if (!pixel.sky) {
       end = SurfaceAtDepth(scene, atmosphere.bottom_radius_m, ray, distance, terrain_tolerance);
+      if (end && sampling.scene_albedo) end->albedo = sampling.scene_albedo(end->albedo);
     } else if (ground) {
       glm::dvec3 point = camera + distance * ray;
       end = LambertianSurface{.point = point, .normal = glm::normalize(point), .albedo = atmosphere.ground_albedo};
@@ -88,6 +91,65 @@ ViewReference SampleReference(const reference::Reference& model, const Scene& sc
       pixel.std_error[c] = std::hypot(s.std_error[c], pixel.transmittance[c] * lit.std_error[c]);
     view.pixels.push_back(pixel);
     if (on_pixel) on_pixel();
+  }
+  view.median_relative_std_error = MedianRelativeStdError(view);
+  return view;
+}
+
+ViewReference SampleSpectralReference(const AtmosphereParameters& atmosphere, int wavelengths, const Scene& scene,
+                                      const FrameUniforms& frame, const ImageRgbF& surface,
+                                      const ReferenceSampling& sampling, const std::function<void()>& on_pixel) {
+  const spectrum::SpectralSampling spectral_sampling(wavelengths);
+  const spectrum::SpectralAtmosphere spectral(atmosphere);
+  ViewReference view;
+  // Per pixel: the converted inscatter, S + T L_surface, sunlit transmittance and sunlight, and
+  // the variance.
+  struct Sums {
+    Spectrum inscatter{}, expected{}, sunlit{}, sun{}, variance{};
+  };
+  std::vector<Sums> sums;
+  for (int g = 0; g < spectral_sampling.groups(); ++g) {
+    const std::array<double, 3> nm = spectral_sampling.Group(g);
+    const AtmosphereParameters group = spectral.At(nm);
+    ReferenceSampling at_group = sampling;
+    at_group.scene_albedo = [&](const Spectrum& albedo) {
+      Spectrum rgb = sampling.scene_albedo ? sampling.scene_albedo(albedo) : albedo;
+      return Spectrum{spectral.ReflectanceAt(rgb, nm[0]), spectral.ReflectanceAt(rgb, nm[1]),
+                      spectral.ReflectanceAt(rgb, nm[2])};
+    };
+    // One pixel in the progress per pixel of the whole spectrum: the last group reports them.
+    const bool last = g + 1 == spectral_sampling.groups();
+    ViewReference part = SampleReference(reference::Reference(group), scene, frame, surface, at_group,
+                                         last ? on_pixel : std::function<void()>());
+    if (g == 0) {
+      view = part;
+      sums.resize(part.pixels.size());
+    }
+    const spectrum::Matrix3 m = spectral_sampling.GroupToLinearSrgb(g);
+    auto add = [&](Spectrum& sum, const Spectrum& values) {
+      Spectrum colour = spectrum::Multiply(m, values);
+      for (int c = 0; c < 3; ++c) sum[c] += colour[c];
+    };
+    for (size_t i = 0; i < part.pixels.size(); ++i) {
+      const ReferencePixel& p = part.pixels[i];
+      Spectrum sunlit;
+      for (int k = 0; k < 3; ++k) sunlit[k] = group.solar_irradiance[k] * p.transmittance[k];
+      add(sums[i].inscatter, p.inscatter);
+      add(sums[i].expected, p.Expected());
+      add(sums[i].sunlit, sunlit);
+      add(sums[i].sun, group.solar_irradiance);
+      for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k) sums[i].variance[c] += std::pow(m[c][k] * p.std_error[k], 2.0);
+    }
+  }
+  for (size_t i = 0; i < view.pixels.size(); ++i) {
+    ReferencePixel& p = view.pixels[i];
+    for (int c = 0; c < 3; ++c) {
+      p.inscatter[c] = sums[i].inscatter[c];
+      p.transmittance[c] = sums[i].sunlit[c] / sums[i].sun[c];
+      p.surface[c] = p.transmittance[c] > 0.0 ? (sums[i].expected[c] - p.inscatter[c]) / p.transmittance[c] : 0.0;
+      p.std_error[c] = std::sqrt(sums[i].variance[c]);
+    }
   }
   view.median_relative_std_error = MedianRelativeStdError(view);
   return view;

@@ -47,6 +47,9 @@ struct ReferenceSampling {
   // The renderer's terrain error bound (RenderOptions::terrain_error_px): how far its terrain may
   // lie from the height function's surface (aerial/scene_surface.h).
   double terrain_error_px = 0.0;
+  // The scene surfaces' albedo as the reference lights them, from the scene's (empty: as given).
+  // The spectral reference maps it to each group's wavelengths.
+  std::function<Spectrum(const Spectrum&)> scene_albedo;
 };
 
 struct ViewReference {
@@ -78,6 +81,17 @@ std::vector<std::array<int, 2>> GridPixels(int width, int height, int columns, i
 ViewReference SampleReference(const reference::Reference& model, const Scene& scene, const FrameUniforms& frame,
                               const ImageRgbF& surface, const ReferenceSampling& sampling,
                               const std::function<void()>& on_pixel);
+
+// SampleReference in colour: at every group of three wavelengths of a spectral sampling of
+// `wavelengths` (the atmosphere extended as the spectral precompute extends it,
+// SpectralAtmosphere), each scene surface's albedo taken as a spectrum through its three channels
+// (SpectralAtmosphere::ReflectanceAt), converted to linear sRGB by the same CIE tables as the
+// spectral tables and summed. A pixel's `transmittance` is then the sunlight-weighted one
+// (LinearSrgb(E T) / LinearSrgb(E), as spectral_reference.h's) and its `surface` what makes
+// Expected() the converted S + T L_surface; standard errors propagate as independent errors.
+ViewReference SampleSpectralReference(const AtmosphereParameters& atmosphere, int wavelengths, const Scene& scene,
+                                      const FrameUniforms& frame, const ImageRgbF& surface,
+                                      const ReferenceSampling& sampling, const std::function<void()>& on_pixel);
 
 // The reference's pixels of one class against a rendered image.
 std::vector<PixelSample> ReferenceSamples(const ViewReference& reference, const ImageRgbF& rendered,

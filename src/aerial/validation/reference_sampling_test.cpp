@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "aerial/probe/spectral_reference.h"
 #include "aerial/render/frame_uniforms.h"
 #include "aerial/scene/camera.h"
 
@@ -47,6 +48,46 @@ TEST(GridPixels, CellCentersInRowOrder) {
   EXPECT_EQ(pixels.front(), (std::array<int, 2>{20, 18}));  // (0.5 * 320 / 8, 0.5 * 180 / 5)
   EXPECT_EQ(pixels[1], (std::array<int, 2>{60, 18}));
   EXPECT_EQ(pixels.back(), (std::array<int, 2>{300, 162}));
+}
+
+// The spectral reference of a sky pixel is the spectral probe's along the same ray: two paths to
+// the same sum over the groups (SampleReference with the ray's distance to the atmosphere's top,
+// ProbeReference with none), both deterministic quadratures with single scattering, so they agree
+// to rounding (1e-9). A ray that meets the bare planet adds the lit ground seen through the air
+// (the ground's albedo at each group's wavelengths), above the probe's inscatter alone; the
+// transmittance is the sunlit one, like the probe's.
+TEST(SampleSpectralReference, SkyPixelsAreTheSpectralProbesRadiance) {
+  const AtmosphereParameters earth = AtmosphereParameters::Earth();
+  Scene scene;
+  scene.camera = {.position = {0, 0, 500}, .yaw_deg = 20, .pitch_deg = -3, .vertical_fov_deg = 40};
+  scene.sun = {.zenith_deg = 70, .azimuth_deg = 60};
+  FrameUniforms frame = MakeFrameUniforms(scene, earth.bottom_radius_m, 32, 18, FroxelGrid{});
+  ImageRgbF all_sky{.width = 32, .height = 18, .rgba = std::vector<float>(32 * 18 * 4, -1.0f)};
+  ViewReference view =
+      SampleSpectralReference(earth, 12, scene, frame, all_sky, {.columns = 3, .rows = 2, .orders = 1}, {});
+  ASSERT_EQ(view.pixels.size(), 6u);
+  const glm::dvec3 camera(frame.camera_planet_position[0], frame.camera_planet_position[1],
+                          frame.camera_planet_position[2]);
+  const glm::dvec3 sun(frame.sun_direction[0], frame.sun_direction[1], frame.sun_direction[2]);
+  const double r = glm::length(camera);
+  int ground_pixels = 0;
+  for (const ReferencePixel& pixel : view.pixels) {
+    glm::dvec3 ray = PixelRay(frame, pixel.x, pixel.y);
+    RayParameters parameters{r, glm::dot(camera, ray) / r, glm::dot(camera, sun) / r, glm::dot(ray, sun)};
+    ProbeResult probe = ProbeReferenceSpectral(earth, parameters, std::nullopt, 1, 12);
+    const bool ground = parameters.mu < -std::sqrt(1.0 - std::pow(earth.bottom_radius_m / r, 2.0));
+    ground_pixels += ground;
+    Spectrum expected = pixel.Expected();
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(pixel.transmittance[c], probe.transmittance[c], 1e-9) << pixel.x << "," << pixel.y;
+      if (ground)
+        EXPECT_GT(expected[c], 1.05 * probe.sky_radiance[c]) << pixel.x << "," << pixel.y;
+      else
+        EXPECT_NEAR(expected[c], probe.sky_radiance[c], 1e-9 * probe.sky_radiance[c]) << pixel.x << "," << pixel.y;
+    }
+  }
+  EXPECT_GT(ground_pixels, 0);
+  EXPECT_LT(ground_pixels, 6);
 }
 
 }  // namespace
