@@ -49,8 +49,10 @@ std::pair<const std::string, VdbMetaValue> WavelengthsMetadata(const FroxelFrame
   if (frame.colour != ColourMode::kSpectral) return {"wavelengths_nm", frame.atmosphere.wavelengths_nm};
   const spectrum::SpectralSampling sampling(frame.spectral_wavelengths);
   std::string list;
-  for (double nm : sampling.wavelengths_nm())
-    list += (list.empty() ? "" : ",") + Number(nm);
+  for (double nm : sampling.wavelengths_nm()) {
+    if (!list.empty()) list += ',';
+    list += Number(nm);
+  }
   return {"spectral_wavelengths_nm", list};
 }
 

@@ -26,21 +26,22 @@ const Matrix3& LinearSrgbFromXyz() {
   return m;
 }
 
+Matrix3 Inverse(const Matrix3& m) {
+  double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+               m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+               m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  Matrix3 inv{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      // Cofactor of m[j][i] over the determinant.
+      int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
+      inv[i][j] = (m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0]) / det;
+    }
+  return inv;
+}
+
 const Matrix3& XyzFromLinearSrgb() {
-  static const Matrix3 inverse = [] {
-    const Matrix3& m = LinearSrgbFromXyz();
-    double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                 m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                 m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    Matrix3 inv{};
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        // Cofactor of m[j][i] over the determinant.
-        int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
-        inv[i][j] = (m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0]) / det;
-      }
-    return inv;
-  }();
+  static const Matrix3 inverse = Inverse(LinearSrgbFromXyz());
   return inverse;
 }
 

@@ -15,6 +15,7 @@ using Matrix3 = std::array<std::array<double, 3>, 3>;  // row-major
 
 Spectrum Multiply(const Matrix3& m, const Spectrum& v);
 Matrix3 Multiply(const Matrix3& a, const Matrix3& b);
+Matrix3 Inverse(const Matrix3& m);  // m must be invertible
 
 // IEC 61966-2-1 (sRGB), the matrix Bruneton 2017 uses too.
 const Matrix3& LinearSrgbFromXyz();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "aerial/spectrum/colour.h"
 #include "aerial/spectrum/spectral_data.h"
 
 namespace aerial::spectrum {
@@ -81,6 +82,25 @@ double SpectralAtmosphere::ReflectanceAt(const Spectrum& at_three_wavelengths, d
   }
   nm = std::clamp(nm, albedo.wavelengths_nm.front(), albedo.wavelengths_nm.back());
   return albedo.At(nm);
+}
+
+Spectrum SpectralAtmosphere::ReflectanceForSunlight(const Spectrum& linear_srgb_albedo,
+                                                    const SpectralSampling& sampling) const {
+  std::vector<double> sun = sampling.Sample([&](double nm) { return SolarIrradiance(nm); });
+  // reflected[c][k]: channel c of the sunlight reflected by the spectrum that is 1 at wavelength
+  // k of the three, 0 at the others (linear in those three values).
+  Matrix3 reflected{};
+  for (int k = 0; k < 3; ++k) {
+    Spectrum unit{};
+    unit[k] = 1.0;
+    std::vector<double> light = sun;
+    for (size_t i = 0; i < light.size(); ++i) light[i] *= ReflectanceAt(unit, sampling.wavelengths_nm()[i]);
+    Spectrum colour = sampling.LinearSrgb(light);
+    for (int c = 0; c < 3; ++c) reflected[c][k] = colour[c];
+  }
+  Spectrum wanted = sampling.LinearSrgb(sun);
+  for (int c = 0; c < 3; ++c) wanted[c] *= linear_srgb_albedo[c];
+  return Multiply(Inverse(reflected), wanted);
 }
 
 AtmosphereParameters SpectralAtmosphere::At(const std::array<double, 3>& wavelengths_nm) const {

@@ -34,6 +34,11 @@ class SpectralAtmosphere {
   // A reflectance given at the atmosphere's three wavelengths (a ground or surface albedo), as a
   // spectrum: linear between them, constant beyond.
   double ReflectanceAt(const Spectrum& at_three_wavelengths, double nm) const;
+  // The reflectance spectrum of that form (its values at the three wavelengths) that does to the
+  // sun's light what a linear sRGB albedo does to its colour: LinearSrgb(E rho) = albedo *
+  // LinearSrgb(E), channel by channel, E the solar irradiance over `sampling`. A renderer that
+  // multiplies linear sRGB light by an albedo treats the albedo so, exactly under sunlight.
+  Spectrum ReflectanceForSunlight(const Spectrum& linear_srgb_albedo, const SpectralSampling& sampling) const;
 
  private:
   struct PowerLaw {

@@ -62,5 +62,24 @@ TEST(SpectralAtmosphere, ReflectanceIsLinearBetweenTheThreeWavelengths) {
   EXPECT_DOUBLE_EQ(earth.ReflectanceAt(albedo, 800.0), 0.3);
 }
 
+// The reflectance for sunlight does to the sun's light what the albedo does to its colour,
+// channel by channel (the definition, checked from the spectra: to rounding), for a green albedo
+// as saturated as a lawn's; a grey albedo is a flat spectrum of the same value.
+TEST(SpectralAtmosphere, ReflectanceForSunlightReflectsItAsTheAlbedoDoes) {
+  SpectralAtmosphere earth(AtmosphereParameters::Earth());
+  SpectralSampling sampling(12);
+  std::vector<double> sun = sampling.Sample([&](double nm) { return earth.SolarIrradiance(nm); });
+  const Spectrum green = {0.08, 0.25, 0.04};
+  Spectrum rho = earth.ReflectanceForSunlight(green, sampling);
+  std::vector<double> reflected = sun;
+  for (size_t i = 0; i < sun.size(); ++i) reflected[i] *= earth.ReflectanceAt(rho, sampling.wavelengths_nm()[i]);
+  Spectrum colour = sampling.LinearSrgb(reflected), white = sampling.LinearSrgb(sun);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(colour[c], green[c] * white[c], 1e-12 * white[c]) << c;
+  // Not the albedo's own values at the three wavelengths: the sRGB channels overlap in wavelength.
+  EXPECT_GT(std::abs(rho[1] / green[1] - 1.0), 0.05);
+  Spectrum grey = earth.ReflectanceForSunlight({0.3, 0.3, 0.3}, sampling);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(grey[k], 0.3, 1e-12) << k;
+}
+
 }  // namespace
 }  // namespace aerial::spectrum

@@ -113,9 +113,10 @@ ViewReference SampleSpectralReference(const AtmosphereParameters& atmosphere, in
     const AtmosphereParameters group = spectral.At(nm);
     ReferenceSampling at_group = sampling;
     at_group.scene_albedo = [&](const Spectrum& albedo) {
-      Spectrum rgb = sampling.scene_albedo ? sampling.scene_albedo(albedo) : albedo;
-      return Spectrum{spectral.ReflectanceAt(rgb, nm[0]), spectral.ReflectanceAt(rgb, nm[1]),
-                      spectral.ReflectanceAt(rgb, nm[2])};
+      Spectrum rho = spectral.ReflectanceForSunlight(sampling.scene_albedo ? sampling.scene_albedo(albedo) : albedo,
+                                                     spectral_sampling);
+      return Spectrum{spectral.ReflectanceAt(rho, nm[0]), spectral.ReflectanceAt(rho, nm[1]),
+                      spectral.ReflectanceAt(rho, nm[2])};
     };
     // One pixel in the progress per pixel of the whole spectrum: the last group reports them.
     const bool last = g + 1 == spectral_sampling.groups();

@@ -84,8 +84,9 @@ ViewReference SampleReference(const reference::Reference& model, const Scene& sc
 
 // SampleReference in colour: at every group of three wavelengths of a spectral sampling of
 // `wavelengths` (the atmosphere extended as the spectral precompute extends it,
-// SpectralAtmosphere), each scene surface's albedo taken as a spectrum through its three channels
-// (SpectralAtmosphere::ReflectanceAt), converted to linear sRGB by the same CIE tables as the
+// SpectralAtmosphere), each scene surface's linear sRGB albedo taken as the reflectance spectrum
+// that reflects sunlight as the albedo does its colour (SpectralAtmosphere::ReflectanceForSunlight,
+// as the renderer multiplies light by it), converted to linear sRGB by the same CIE tables as the
 // spectral tables and summed. A pixel's `transmittance` is then the sunlight-weighted one
 // (LinearSrgb(E T) / LinearSrgb(E), as spectral_reference.h's) and its `surface` what makes
 // Expected() the converted S + T L_surface; standard errors propagate as independent errors.
