@@ -2,26 +2,14 @@
 
 #include <cmath>
 
+#include "aerial/spectrum/linear_srgb_sum.h"
 #include "aerial/spectrum/spectral_atmosphere.h"
 
 namespace aerial {
 namespace {
 
+using spectrum::LinearSrgbSum;
 using spectrum::Matrix3;
-
-struct Accumulator {
-  Spectrum value{};
-  void Add(const Matrix3& m, const Spectrum& group) {
-    Spectrum colour = spectrum::Multiply(m, group);
-    for (int c = 0; c < 3; ++c) value[c] += colour[c];
-  }
-  // Independent errors: the sum of the squares of each weighted error.
-  void AddVariance(const Matrix3& m, const Spectrum& std_error) {
-    for (int c = 0; c < 3; ++c)
-      for (int k = 0; k < 3; ++k) value[c] += std::pow(m[c][k] * std_error[k], 2.0);
-  }
-  Spectrum Sqrt() const { return {std::sqrt(value[0]), std::sqrt(value[1]), std::sqrt(value[2])}; }
-};
 
 Spectrum Times(const Spectrum& a, const Spectrum& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
 Spectrum Over(const Spectrum& a, const Spectrum& b) { return {a[0] / b[0], a[1] / b[1], a[2] / b[2]}; }
@@ -34,8 +22,8 @@ ProbeResult ProbeReferenceSpectral(const AtmosphereParameters& atmosphere, const
                                    std::vector<ProbeResult>* at_wavelengths) {
   const spectrum::SpectralSampling sampling(wavelengths);
   const spectrum::SpectralAtmosphere spectral(atmosphere);
-  Accumulator sky, sky_variance, irradiance, irradiance_variance, to_point, to_point_variance;
-  Accumulator sun_irradiance, solar_radiance, sun, sunlit, sunlit_to_point;
+  LinearSrgbSum sky, sky_variance, irradiance, irradiance_variance, to_point, to_point_variance;
+  LinearSrgbSum sun_irradiance, solar_radiance, sun, sunlit, sunlit_to_point;
   for (int g = 0; g < sampling.groups(); ++g) {
     AtmosphereParameters group = spectral.At(sampling.Group(g));
     ProbeResult r = ProbeReference(group, ray, distance_m, orders, monte_carlo);

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "aerial/scene_surface.h"
+#include "aerial/spectrum/linear_srgb_sum.h"
 #include "aerial/spectrum/spectral_atmosphere.h"
 #include "aerial/spectrum/spectral_sampling.h"
 #include "aerial/validation/lambertian_radiance.h"
@@ -105,7 +106,7 @@ ViewReference SampleSpectralReference(const AtmosphereParameters& atmosphere, in
   // Per pixel: the converted inscatter, S + T L_surface, sunlit transmittance and sunlight, and
   // the variance.
   struct Sums {
-    Spectrum inscatter{}, expected{}, sunlit{}, sun{}, variance{};
+    spectrum::LinearSrgbSum inscatter, expected, sunlit, sun, variance;
   };
   std::vector<Sums> sums;
   for (int g = 0; g < spectral_sampling.groups(); ++g) {
@@ -127,29 +128,25 @@ ViewReference SampleSpectralReference(const AtmosphereParameters& atmosphere, in
       sums.resize(part.pixels.size());
     }
     const spectrum::Matrix3 m = spectral_sampling.GroupToLinearSrgb(g);
-    auto add = [&](Spectrum& sum, const Spectrum& values) {
-      Spectrum colour = spectrum::Multiply(m, values);
-      for (int c = 0; c < 3; ++c) sum[c] += colour[c];
-    };
     for (size_t i = 0; i < part.pixels.size(); ++i) {
       const ReferencePixel& p = part.pixels[i];
       Spectrum sunlit;
       for (int k = 0; k < 3; ++k) sunlit[k] = group.solar_irradiance[k] * p.transmittance[k];
-      add(sums[i].inscatter, p.inscatter);
-      add(sums[i].expected, p.Expected());
-      add(sums[i].sunlit, sunlit);
-      add(sums[i].sun, group.solar_irradiance);
-      for (int c = 0; c < 3; ++c)
-        for (int k = 0; k < 3; ++k) sums[i].variance[c] += std::pow(m[c][k] * p.std_error[k], 2.0);
+      sums[i].inscatter.Add(m, p.inscatter);
+      sums[i].expected.Add(m, p.Expected());
+      sums[i].sunlit.Add(m, sunlit);
+      sums[i].sun.Add(m, group.solar_irradiance);
+      sums[i].variance.AddVariance(m, p.std_error);
     }
   }
   for (size_t i = 0; i < view.pixels.size(); ++i) {
     ReferencePixel& p = view.pixels[i];
+    p.inscatter = sums[i].inscatter.value;
+    p.std_error = sums[i].variance.Sqrt();
     for (int c = 0; c < 3; ++c) {
-      p.inscatter[c] = sums[i].inscatter[c];
-      p.transmittance[c] = sums[i].sunlit[c] / sums[i].sun[c];
-      p.surface[c] = p.transmittance[c] > 0.0 ? (sums[i].expected[c] - p.inscatter[c]) / p.transmittance[c] : 0.0;
-      p.std_error[c] = std::sqrt(sums[i].variance[c]);
+      p.transmittance[c] = sums[i].sunlit.value[c] / sums[i].sun.value[c];
+      p.surface[c] =
+          p.transmittance[c] > 0.0 ? (sums[i].expected.value[c] - p.inscatter[c]) / p.transmittance[c] : 0.0;
     }
   }
   view.median_relative_std_error = MedianRelativeStdError(view);
