@@ -3,8 +3,8 @@
 // all see the same machine noise, after warm-up frames: lavapipe compiles each pipeline on its
 // first use, so the first frame of a renderer costs far more than the next ones. Each frame has
 // its GPU pass times, its wall-clock time (SceneRenderer::Render from the call to the end of the wait,
-// the CPU's part: terrain selection, sorting, recording, submitting, included) and the process's
-// CPU time over it.
+// the CPU's part: terrain selection, sorting, recording, submitting, included), the process's
+// CPU time over it, and the calling thread's (that CPU part alone).
 #include <functional>
 #include <limits>
 #include <vector>

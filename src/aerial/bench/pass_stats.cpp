@@ -31,6 +31,12 @@ std::vector<double> CpuTotals(const std::vector<RunResult>& runs) {
   return values;
 }
 
+std::vector<double> CallerCpuTotals(const std::vector<RunResult>& runs) {
+  std::vector<double> values;
+  for (const auto& run : runs) values.push_back(run.caller_cpu_ms);
+  return values;
+}
+
 double MeanShadowTilesRedrawn(const std::vector<RunResult>& runs) {
   if (runs.empty()) return 0.0;
   double tiles = 0.0;
