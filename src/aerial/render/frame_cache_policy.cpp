@@ -87,8 +87,31 @@ std::array<bool, kShadowCascades> ShadowWindowsMoved(const std::optional<ShadowK
   return moved;
 }
 
+bool TerrainSelectionKept(bool still_view, bool selection_whole) { return still_view && selection_whole; }
+
 bool ShadowMapKept(bool still_view, bool selection_whole, const std::array<bool, kShadowCascades>& moved) {
   return still_view && selection_whole && std::find(moved.begin(), moved.end(), true) == moved.end();
+}
+
+ShadowCasterSelection MakeShadowCasterSelection(const terrain::LodView& view, const ShadowCascades& cascades,
+                                                double camera_slack_m) {
+  ShadowCasterSelection selection{.camera = view.camera,
+                                  .pixels_per_radian = view.pixels_per_radian,
+                                  .max_error_px = view.max_error_px,
+                                  .camera_slack_m = camera_slack_m};
+  for (int i = 0; i < kShadowCascades; ++i) selection.planes[i] = cascades[i].planes;
+  return selection;
+}
+
+bool ShadowCastersKept(const ShadowKey& drawn, const terrain::LodView& now, const ShadowCascades& cascades,
+                       bool selection_whole, const std::array<bool, kShadowCascades>& moved) {
+  if (!selection_whole || !drawn.selection || std::find(moved.begin(), moved.end(), true) != moved.end())
+    return false;
+  const ShadowCasterSelection& made = *drawn.selection;
+  if (made.pixels_per_radian != now.pixels_per_radian || made.max_error_px != now.max_error_px) return false;
+  for (int i = 0; i < kShadowCascades; ++i)
+    if (made.planes[i] != cascades[i].planes) return false;
+  return glm::length(now.camera - made.camera) < made.camera_slack_m;
 }
 
 bool ShadowTileRedrawn(bool moved, const std::vector<terrain::SelectedChunk>& casters,

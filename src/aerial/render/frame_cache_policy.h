@@ -60,6 +60,12 @@ std::array<bool, kSkyViewLatticeBands> SkyViewLatticeBandsToRemake(const SkyView
 // Whether every band is within the table's tolerance of `now` (nothing is left for later frames).
 bool SkyViewLatticeCaughtUp(const SkyViewLatticeKeys& made_for, const SkyViewKey& now);
 
+// ---- The terrain's chunks ----
+// A still view keeps the chunks its last frame selected when that selection lacked none: the same
+// camera and level-of-detail rule over the same built chunks select the same ones, occlusion
+// culling included (terrain/lod_selection.h). A still frame then spends no CPU on the terrain.
+bool TerrainSelectionKept(bool still_view, bool selection_whole);
+
 // ---- The froxel volume ----
 // It depends on the camera, the sun, the shadow map and the tables only: a still view under an
 // unchanged shadow map keeps it.
@@ -84,10 +90,23 @@ bool SunVisibilityReusable(const std::optional<SunVisibilityKey>& written_for, c
 bool SunVisibilityWorthCaching(bool first_frame, bool still_view);
 
 // ---- The shadow map's tiles ----
+// The terrain selection that the tiles' casters came from (SelectShadowTerrain): what it depends
+// on (the camera, the level-of-detail rule, the cascades' boxes) and how far its camera may move
+// before it would pick other chunks.
+struct ShadowCasterSelection {
+  glm::dvec3 camera{0.0};
+  double pixels_per_radian = 0.0, max_error_px = 0.0;
+  std::array<std::array<glm::dvec4, 5>, kShadowCascades> planes{};
+  double camera_slack_m = 0.0;
+};
+ShadowCasterSelection MakeShadowCasterSelection(const terrain::LodView& view, const ShadowCascades& cascades,
+                                                double camera_slack_m);
+
 // What the tiles show: the cascades' windows and the terrain chunks drawn in them (CoarsenCasters).
 struct ShadowKey {
   ShadowCascades cascades;
   ShadowTerrain casters;
+  std::optional<ShadowCasterSelection> selection;  // none without terrain
 };
 // The windows a frame's fit keeps (shadow_cascades.h): those the map holds, except for an exact
 // frame, which fits its windows afresh as a new renderer would.
@@ -98,6 +117,13 @@ std::array<bool, kShadowCascades> ShadowWindowsMoved(const std::optional<ShadowK
 // A still view whose terrain selection lacked no chunk, with no window moved, draws what the map
 // holds without selecting its casters again.
 bool ShadowMapKept(bool still_view, bool selection_whole, const std::array<bool, kShadowCascades>& moved);
+// A frame of a moving camera whose windows did not move keeps the tiles too, without selecting
+// their terrain casters again, when that selection lacked no chunk and would pick the same chunks
+// for this frame: the same cascades' boxes and level-of-detail rule, and the camera closer than the
+// selection's slack (terrain::Selection::camera_slack_m) to where it was made. CoarsenCasters would
+// then give every tile its drawn casters, so no tile would be redrawn.
+bool ShadowCastersKept(const ShadowKey& drawn, const terrain::LodView& now, const ShadowCascades& cascades,
+                       bool selection_whole, const std::array<bool, kShadowCascades>& moved);
 // A tile is redrawn when its window moved or its terrain casters changed (the camera's level of
 // detail changed, or chunks deferred for the build budget arrived). The scene's meshes are fixed
 // for the renderer's life.

@@ -183,6 +183,41 @@ TEST(FrameCachePolicy, ShadowMapKeptByAStillWholeViewWithNoWindowMoved) {
   EXPECT_FALSE(ShadowMapKept(true, true, one)) << "a window moved";
 }
 
+TEST(FrameCachePolicy, ShadowCastersKeptWithinTheSelectionsSlack) {
+  terrain::LodView view;
+  view.camera = {10.0, 20.0, 300.0};
+  view.pixels_per_radian = 870.0;
+  view.max_error_px = 4.0;
+  ShadowCascades cascades{};
+  cascades[2].planes[0] = {1.0, 0.0, 0.0, -5.0};
+  ShadowKey drawn{.selection = MakeShadowCasterSelection(view, cascades, /*camera_slack_m=*/2.0)};
+  std::array<bool, kShadowCascades> none{}, one{};
+  one[0] = true;
+  terrain::LodView now = view;
+  now.camera += glm::dvec3(1.2, -1.2, 0.9);  // 1.9 m away
+  EXPECT_TRUE(ShadowCastersKept(drawn, now, cascades, /*selection_whole=*/true, none));
+  EXPECT_FALSE(ShadowCastersKept(drawn, now, cascades, true, one)) << "a window moved";
+  EXPECT_FALSE(ShadowCastersKept(drawn, now, cascades, false, none)) << "chunks were missing from the selection";
+  EXPECT_FALSE(ShadowCastersKept(ShadowKey{}, now, cascades, true, none)) << "no terrain was selected";
+  now.camera = view.camera + glm::dvec3(0.0, 0.0, 2.0);
+  EXPECT_FALSE(ShadowCastersKept(drawn, now, cascades, true, none)) << "as far as the slack";
+  now = view;
+  now.pixels_per_radian = 900.0;
+  EXPECT_FALSE(ShadowCastersKept(drawn, now, cascades, true, none)) << "another field of view";
+  now = view;
+  now.max_error_px = 2.0;
+  EXPECT_FALSE(ShadowCastersKept(drawn, now, cascades, true, none)) << "another error bound";
+  ShadowCascades other = cascades;
+  other[2].planes[0].w = -6.0;
+  EXPECT_FALSE(ShadowCastersKept(drawn, view, other, true, none)) << "another cascade box";
+}
+
+TEST(FrameCachePolicy, TerrainSelectionKeptByAStillViewThatLackedNoChunk) {
+  EXPECT_TRUE(TerrainSelectionKept(/*still_view=*/true, /*selection_whole=*/true));
+  EXPECT_FALSE(TerrainSelectionKept(false, true)) << "the view moved";
+  EXPECT_FALSE(TerrainSelectionKept(true, false)) << "chunks were missing from the selection";
+}
+
 TEST(FrameCachePolicy, ShadowTileRedrawnWhenItsWindowOrCastersChanged) {
   EXPECT_FALSE(ShadowTileRedrawn(false, Chunks(2), Chunks(2)));
   EXPECT_TRUE(ShadowTileRedrawn(true, Chunks(2), Chunks(2))) << "its window moved";

@@ -260,22 +260,32 @@ terrain::LodView Renderer::FrameLodView(const Scene& scene) const {
                               tables_.atmosphere().bottom_radius_m);
 }
 
-// The chunks to draw, nearest first (terrain/lod_selection.h), built as needed.
+// The chunks to draw, nearest first (terrain/lod_selection.h), built as needed; a still view keeps
+// its last frame's (TerrainSelectionKept).
 void Renderer::SelectTerrain(const Scene& scene, bool complete) {
-  terrain_chunks_.clear();
-  if (!terrain_ || !options_.passes.terrain) return;
+  if (!terrain_ || !options_.passes.terrain) {
+    terrain_chunks_.clear();
+    return;
+  }
   // The first frame builds all it needs, so that a window opens on the whole terrain.
   terrain_->BeginFrame(complete || frames_recorded_ == 0 ? 0.0 : options_.terrain_build_budget_ms);
-  terrain::LodView view = FrameLodView(scene);
-  view.occlusion_culling = options_.terrain_occlusion_culling;
-  terrain::Selection selection = terrain::SelectChunks(view, *terrain_);
-  terrain_chunks_ = std::move(selection.chunks);
+  if (TerrainSelectionKept(still_view_, terrain_deferred_ == 0)) {
+    // Found again so that the cache, which evicts the chunk used longest ago, keeps them.
+    for (const terrain::SelectedChunk& chunk : terrain_chunks_) terrain_->Find(chunk.id);
+  } else {
+    terrain::LodView view = FrameLodView(scene);
+    view.occlusion_culling = options_.terrain_occlusion_culling;
+    terrain::Selection selection = terrain::SelectChunks(view, *terrain_);
+    terrain_chunks_ = std::move(selection.chunks);
+    terrain_hidden_ = selection.hidden;
+    terrain_deferred_ = selection.deferred;
+  }
   size_t indices = 0;
   for (const terrain::SelectedChunk& chunk : terrain_chunks_) indices += terrain::ChunkIndexRange(chunk.skirts).count;
   frame_info_.chunks = terrain_chunks_.size();
   frame_info_.triangles = indices / 3;
-  frame_info_.deferred = selection.deferred;
-  frame_info_.hidden = selection.hidden;
+  frame_info_.deferred = terrain_deferred_;
+  frame_info_.hidden = terrain_hidden_;
   frame_info_.built = terrain_->built_this_frame();
 }
 
@@ -354,11 +364,14 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
   if (!shadow_key_) shadow_key_.emplace();
   ShadowKey& key = *shadow_key_;
   if (ShadowMapKept(still_view_, shadow_selection_whole_, moved)) return;
+  const terrain::LodView lod_view = FrameLodView(scene);
+  if (ShadowCastersKept(key, lod_view, shadow_cascades_, shadow_selection_whole_, moved)) return;
   ShadowTerrain chunks;
   if (terrain_ && options_.passes.terrain) {
-    int deferred = 0;
-    chunks = SelectShadowTerrain(FrameLodView(scene), shadow_cascades_, MakeLightBasis(sun), *terrain_, deferred);
-    shadow_selection_whole_ = deferred == 0;
+    ShadowTerrainSelection selection = SelectShadowTerrain(lod_view, shadow_cascades_, MakeLightBasis(sun), *terrain_);
+    chunks = std::move(selection.chunks);
+    shadow_selection_whole_ = selection.deferred == 0;
+    key.selection = MakeShadowCasterSelection(lod_view, shadow_cascades_, selection.camera_slack_m);
   }
   std::array<bool, kShadowCascades> redraw{};
   for (int i = 0; i < kShadowCascades; ++i) {

@@ -105,6 +105,9 @@ class Renderer {
   SceneGeometry geometry_;
   std::unique_ptr<TerrainChunkCache> terrain_;  // null without a terrain or with the fixed mesh
   std::vector<terrain::SelectedChunk> terrain_chunks_;
+  // What the selection of terrain_chunks_ left out as hidden, and drew in place of finer chunks not
+  // built yet (-1 before the first selection); the frames that keep it report the same.
+  int terrain_hidden_ = 0, terrain_deferred_ = -1;
   FrameInfo frame_info_;
   uint64_t frames_recorded_ = 0;
   uint32_t last_slot_ = 0;

@@ -4,19 +4,18 @@
 
 namespace aerial {
 
-ShadowTerrain SelectShadowTerrain(const terrain::LodView& frame_view, const ShadowCascades& cascades,
-                                  const LightBasis& basis, terrain::ChunkSource& source, int& deferred) {
+ShadowTerrainSelection SelectShadowTerrain(const terrain::LodView& frame_view, const ShadowCascades& cascades,
+                                           const LightBasis& basis, terrain::ChunkSource& source) {
   terrain::LodView view = frame_view;
   view.planes = CascadesUnionPlanes(cascades, basis);
   view.occlusion_culling = false;
   view.front_to_back = false;
   terrain::Selection selection = terrain::SelectChunks(view, source);
-  deferred = selection.deferred;
-  ShadowTerrain drawn;
+  ShadowTerrainSelection drawn{.deferred = selection.deferred, .camera_slack_m = selection.camera_slack_m};
   for (int i = 0; i < kShadowCascades; ++i) {
     view.planes = cascades[i].planes;
     for (const terrain::SelectedChunk& chunk : selection.chunks)
-      if (terrain::IntersectsFrustum(view, source.Find(chunk.id)->bounds)) drawn[i].push_back(chunk);
+      if (terrain::IntersectsFrustum(view, source.Find(chunk.id)->bounds)) drawn.chunks[i].push_back(chunk);
   }
   return drawn;
 }

@@ -29,9 +29,17 @@ using ShadowTerrain = std::array<std::vector<terrain::SelectedChunk>, kShadowCas
 std::vector<terrain::SelectedChunk> CoarsenCasters(const std::vector<terrain::SelectedChunk>& chunks,
                                                    double tolerance_m, terrain::ChunkSource& source);
 
-// deferred: set to the number of chunks drawn in place of finer ones not built yet (a later call
-// with the same view may then pick other chunks).
-ShadowTerrain SelectShadowTerrain(const terrain::LodView& frame_view, const ShadowCascades& cascades,
-                                  const LightBasis& basis, terrain::ChunkSource& source, int& deferred);
+struct ShadowTerrainSelection {
+  ShadowTerrain chunks;
+  // Chunks drawn in place of finer ones not built yet (a later call with the same view may then
+  // pick other chunks).
+  int deferred = 0;
+  // How far the camera may move before the same cascades select otherwise
+  // (terrain::Selection::camera_slack_m).
+  double camera_slack_m = 0.0;
+};
+
+ShadowTerrainSelection SelectShadowTerrain(const terrain::LodView& frame_view, const ShadowCascades& cascades,
+                                           const LightBasis& basis, terrain::ChunkSource& source);
 
 }  // namespace aerial

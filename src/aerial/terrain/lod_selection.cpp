@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <unordered_set>
 
@@ -129,6 +130,12 @@ double ScreenSpaceErrorPx(const LodView& view, double geometric_error_m, const B
   return geometric_error_m * view.pixels_per_radian / distance;
 }
 
+double RefinementSlackM(const LodView& view, double geometric_error_m, const Bounds& bounds) {
+  if (geometric_error_m <= 0.0) return std::numeric_limits<double>::infinity();  // never refined
+  double threshold_m = geometric_error_m * view.pixels_per_radian / view.max_error_px;
+  return std::fabs(DistanceToBounds(view.camera, bounds) - threshold_m);
+}
+
 bool IntersectsFrustum(const LodView& view, const Bounds& bounds) {
   for (const glm::dvec4& plane : view.planes) {
     // The box's corner furthest along the plane's normal.
@@ -150,6 +157,9 @@ Selection SelectChunks(const LodView& view, ChunkSource& source) {
     for (const ChunkId& id : level) {
       const ChunkInfo* info = source.Find(id);
       if (!info || !IntersectsFrustum(view, info->bounds)) continue;
+      if (id.level < kMaxChunkLevel)
+        selection.camera_slack_m = std::min(selection.camera_slack_m,
+                                            RefinementSlackM(view, info->geometric_error_m, info->bounds));
       if (id.level == kMaxChunkLevel ||
           ScreenSpaceErrorPx(view, info->geometric_error_m, info->bounds) <= view.max_error_px) {
         selection.chunks.push_back({id});

@@ -7,6 +7,7 @@
 // (Ulrich's equation 1 with the viewport's pixels per radian), so every drawn chunk is within
 // max_error_px of the surface on screen, wherever the camera is.
 #include <array>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -41,6 +42,10 @@ LodView MakeLodView(const Camera& camera, double aspect, int height_px, double m
 double DistanceToBounds(const glm::dvec3& p, const Bounds& bounds);
 double ScreenSpaceErrorPx(const LodView& view, double geometric_error_m, const Bounds& bounds);
 bool IntersectsFrustum(const LodView& view, const Bounds& bounds);
+// How far the camera may move before the chunk's refinement test (ScreenSpaceErrorPx against
+// max_error_px) can flip: it flips where the distance to the chunk's bounds crosses
+// error * K / max_error_px, and that distance changes no faster than the camera moves.
+double RefinementSlackM(const LodView& view, double geometric_error_m, const Bounds& bounds);
 
 // What the selection knows of a chunk once it is built.
 struct ChunkInfo {
@@ -77,6 +82,12 @@ struct Selection {
   // Chunks that should have replaced a drawn one but were not built yet: a chunk is drawn in its
   // children's place until all of them are built, so the view is never left with holes.
   int deferred = 0;
+  // How far the camera may move, in any direction, before a refinement test of this selection
+  // could come out otherwise (RefinementSlackM, the least over the chunks tested): a selection
+  // made again for a camera closer than this to this one, with the same planes, pixels per radian
+  // and error bound, every chunk built and no occlusion culling (which follows the view), picks
+  // the same chunks.
+  double camera_slack_m = std::numeric_limits<double>::infinity();
 };
 
 // The chunks of the terrain within kTerrainRadiusM of the origin (chunks entirely beyond it are

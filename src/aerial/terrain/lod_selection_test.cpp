@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -253,6 +254,55 @@ TEST(LodSelection, FrontToBack) {
 }
 
 // Behind the camera nothing is drawn: the frustum's planes cull it.
+std::vector<ChunkId> Ids(const Selection& selection) {
+  std::vector<ChunkId> ids;
+  for (const SelectedChunk& chunk : selection.chunks) ids.push_back(chunk.id);
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+// The slack both ways: any camera closer than it selects the same chunks, and a camera just past
+// it, moved along the distance's gradient of the chunk whose test is nearest to flipping, does not.
+// Without occlusion culling, as the shadow casters' selection, whose planes do not follow the camera.
+TEST(LodSelection, TheCameraSlackIsHowFarItMayMoveForTheSameChunks) {
+  CpuChunks chunks;
+  LodView view = MakeLodView(NoonCamera(), kAspect, 720, kErrorPx, kR);
+  view.occlusion_culling = false;
+  const Selection selected = SelectChunks(view, chunks);
+  const double slack = selected.camera_slack_m;
+  ASSERT_EQ(selected.deferred, 0);
+  ASSERT_GT(slack, 0.0);
+  ASSERT_LT(slack, 1e4) << "the noon view's chunks are refined up to metres from the camera";
+  std::mt19937 rng(7);
+  std::normal_distribution<double> normal;
+  for (int i = 0; i < 20; ++i) {
+    glm::dvec3 direction = glm::normalize(glm::dvec3(normal(rng), normal(rng), normal(rng)));
+    LodView moved = view;
+    moved.camera += 0.99 * slack * direction;
+    EXPECT_EQ(Ids(SelectChunks(moved, chunks)), Ids(selected)) << "moved along " << direction.x << ", "
+                                                               << direction.y << ", " << direction.z;
+  }
+  // The tested chunk nearest its threshold, among the drawn ones and all their ancestors.
+  std::optional<ChunkId> nearest;
+  for (const SelectedChunk& drawn : selected.chunks)
+    for (ChunkId id = drawn.id;; id = Parent(id)) {
+      const ChunkInfo& info = *chunks.Find(id);
+      if (id.level < kMaxChunkLevel &&
+          std::fabs(RefinementSlackM(view, info.geometric_error_m, info.bounds) - slack) < 1e-9)
+        nearest = id;
+      if (id.level == 0) break;
+    }
+  ASSERT_TRUE(nearest) << "the slack is some tested chunk's";
+  const ChunkInfo& info = *chunks.Find(*nearest);
+  glm::dvec3 closest = glm::clamp(view.camera, info.bounds.min, info.bounds.max);
+  ASSERT_GT(glm::length(view.camera - closest), 2.0 * slack) << "the camera is outside the chunk's bounds";
+  glm::dvec3 away = glm::normalize(view.camera - closest);
+  bool refined = ScreenSpaceErrorPx(view, info.geometric_error_m, info.bounds) > kErrorPx;
+  LodView moved = view;
+  moved.camera += (refined ? 1.01 : -1.01) * slack * away;  // across its threshold
+  EXPECT_NE(Ids(SelectChunks(moved, chunks)), Ids(selected));
+}
+
 TEST(LodSelection, NothingBehindTheCamera) {
   CpuChunks chunks;
   Camera camera = NoonCamera();  // looking north from the origin
