@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <optional>
 #include <vector>
 
 #include "aerial/scene/terrain.h"
@@ -27,33 +26,23 @@ constexpr double kDepthM = 20e3;
 // not projected: bounds or occluders reaching behind the camera are left alone.
 constexpr double kMinW = 1e-3;
 
-// The vertical extent [low, high] of a convex polygon at device x, if the line meets it.
-std::optional<std::array<double, 2>> ExtentAt(const std::vector<std::array<double, 2>>& polygon, double x) {
-  double low = INFINITY, high = -INFINITY;
-  auto add = [&](double up) {
-    low = std::min(low, up);
-    high = std::max(high, up);
-  };
-  for (size_t i = 0; i < polygon.size(); ++i) {
-    const auto& a = polygon[i];
-    const auto& b = polygon[(i + 1) % polygon.size()];
-    if (x < std::min(a[0], b[0]) || x > std::max(a[0], b[0])) continue;
-    if (a[0] == b[0]) {  // a vertical edge on the line
-      add(a[1]);
-      add(b[1]);
-    } else {
-      add(a[1] + (x - a[0]) / (b[0] - a[0]) * (b[1] - a[1]));
-    }
-  }
-  if (low > high) return std::nullopt;
-  return std::array<double, 2>{low, high};
+// The height of a polygon chain at device x, walking its vertices left to right from *at (kept
+// for the next, larger x): on the segment that reaches x, its lower end on a vertical one when
+// `lower`, else its upper end. vertex(i) is the chain's i-th vertex, count of them.
+template <typename Vertex>
+double ChainAt(const Vertex& vertex, size_t count, double x, size_t* at, bool lower) {
+  while (*at + 2 < count && vertex(*at + 1)[0] < x) ++*at;
+  const std::array<double, 2>&a = vertex(*at), &b = vertex(*at + 1);
+  if (a[0] == b[0]) return lower ? std::min(a[1], b[1]) : std::max(a[1], b[1]);
+  return a[1] + (x - a[0]) / (b[0] - a[0]) * (b[1] - a[1]);
 }
 
-// Andrew's monotone chain: the convex hull, counter-clockwise, without repeated points.
-// (points is sorted in place; hull receives the result.)
-void ConvexHull(std::vector<std::array<double, 2>>& points, std::vector<std::array<double, 2>>& hull) {
+// Andrew's monotone chain: the convex hull, counter-clockwise from its leftmost point, without
+// repeated points. Returns the index of its rightmost point, where the lower chain ends and the
+// upper one begins. (points is sorted in place; hull receives the result.)
+size_t ConvexHull(std::vector<std::array<double, 2>>& points, std::vector<std::array<double, 2>>& hull) {
   hull.clear();
-  if (points.size() < 3) return;
+  if (points.size() < 3) return 0;
   std::sort(points.begin(), points.end());
   auto cross = [](const auto& o, const auto& a, const auto& b) {
     return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
@@ -64,11 +53,13 @@ void ConvexHull(std::vector<std::array<double, 2>>& points, std::vector<std::arr
     while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
     hull[k++] = points[i];
   }
+  const size_t lower_end = k - 1;
   for (size_t i = points.size() - 1, lower = k + 1; i > 0; --i) {
     while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i - 1]) <= 0) --k;
     hull[k++] = points[i - 1];
   }
   hull.resize(k - 1);
+  return lower_end;
 }
 
 }  // namespace
@@ -78,6 +69,7 @@ ScreenHorizon::ScreenHorizon(const glm::dmat4& view_projection, const glm::dvec3
     : view_projection_(view_projection),
       camera_(camera),
       planet_radius_m_(planet_radius_m),
+      clip_center_(view_projection * glm::dvec4(0.0, 0.0, -planet_radius_m, 1.0)),
       horizon_(columns, -1.0) {}
 
 bool ScreenHorizon::Project(const glm::dvec3& p, Screen& s) const {
@@ -127,13 +119,23 @@ void ScreenHorizon::AddOccluders(const Footprint& f,
   double columns = (x_max - x_min) * 0.5 * double(horizon_.size());
   int block = 1;
   while (block < kChunkCells && columns * block / kChunkCells > kBlockColumns) block *= 2;
-  double cell = f.cell();
-  for (int j = 0; j < kChunkCells; j += block) {
-    for (int i = 0; i < kChunkCells; i += block) {
+  const int blocks = kChunkCells / block;
+  const double side = block * f.cell();
+  corners_.resize((blocks + 1) * (blocks + 1));
+  for (int j = 0; j <= blocks; ++j)
+    for (int i = 0; i <= blocks; ++i) {
+      glm::dvec3 up = SurfacePoint(f.x0 + i * side, f.y0 + j * side, 0.0, planet_radius_m_) -
+                      glm::dvec3(0.0, 0.0, -planet_radius_m_);
+      corners_[j * (blocks + 1) + i] = {up, view_projection_ * glm::dvec4(up, 0.0)};
+    }
+  for (int j = 0; j < blocks; ++j) {
+    for (int i = 0; i < blocks; ++i) {
       float lowest = INFINITY;
-      for (int jj = j; jj < j + block; ++jj)
-        for (int ii = i; ii < i + block; ++ii) lowest = std::min(lowest, cell_lowest_m[jj * kChunkCells + ii]);
-      AddOccluder(f.x0 + i * cell, f.y0 + j * cell, block * cell, lowest);
+      for (int jj = j * block; jj < (j + 1) * block; ++jj)
+        for (int ii = i * block; ii < (i + 1) * block; ++ii)
+          lowest = std::min(lowest, cell_lowest_m[jj * kChunkCells + ii]);
+      const Corner* south_west = &corners_[j * (blocks + 1) + i];
+      AddOccluder({south_west, south_west + 1, south_west + blocks + 2, south_west + blocks + 1}, lowest);
     }
   }
 }
@@ -141,20 +143,17 @@ void ScreenHorizon::AddOccluders(const Footprint& f,
 // The occluder is the box under the block from the height of its lowest corner (lowered by the
 // margin) down kDepthM: every ray through it is under the ground. Its projection is the convex
 // hull of its corners, cut where the box reaches behind the camera.
-void ScreenHorizon::AddOccluder(double x0, double y0, double size, double lowest_m) {
-  const std::array<std::array<double, 2>, 4> xy = {{{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}}};
+void ScreenHorizon::AddOccluder(const std::array<const Corner*, 4>& corners, double lowest_m) {
+  const glm::dvec3 center(0.0, 0.0, -planet_radius_m_);
   // One margin for the cell (at its first corner's distance; cells are small beside distances).
-  glm::dvec3 first = SurfacePoint(x0, y0, lowest_m, planet_radius_m_);
+  glm::dvec3 first = center + corners[0]->up * ((planet_radius_m_ + lowest_m) / planet_radius_m_);
   double top = lowest_m - kMarginM - kMarginPerM * glm::length(first - camera_);
   std::array<glm::dvec4, 8> clip;  // top corners, then the bottom ones
-  std::array<glm::dvec3, 4> up;
   bool all_in_front = true;
   double x_min = INFINITY, x_max = -INFINITY, top_up = -INFINITY;
   for (int i = 0; i < 4; ++i) {
     // Along the local vertical: the bottom corner is the top one pulled toward the planet's center.
-    up[i] = SurfacePoint(xy[i][0], xy[i][1], 0.0, planet_radius_m_) - glm::dvec3(0.0, 0.0, -planet_radius_m_);
-    glm::dvec3 corner = glm::dvec3(0.0, 0.0, -planet_radius_m_) + up[i] * ((planet_radius_m_ + top) / planet_radius_m_);
-    clip[i] = view_projection_ * glm::dvec4(corner, 1.0);
+    clip[i] = clip_center_ + corners[i]->clip_up * ((planet_radius_m_ + top) / planet_radius_m_);
     all_in_front = all_in_front && clip[i].w >= kMinW;
     if (all_in_front) {
       x_min = std::min(x_min, clip[i].x / clip[i].w);
@@ -165,7 +164,7 @@ void ScreenHorizon::AddOccluder(double x0, double y0, double size, double lowest
   // A block whose top stays under the horizon across its columns adds nothing.
   if (all_in_front && !RisesAbove(x_min, x_max, top_up)) return;
   for (int i = 0; i < 4; ++i) {
-    clip[i + 4] = clip[i] - view_projection_ * glm::dvec4(up[i] * (kDepthM / planet_radius_m_), 0.0);
+    clip[i + 4] = clip[i] - corners[i]->clip_up * (kDepthM / planet_radius_m_);
     all_in_front = all_in_front && clip[i + 4].w >= kMinW;
   }
   std::vector<std::array<double, 2>>& points = points_;
@@ -182,8 +181,8 @@ void ScreenHorizon::AddOccluder(double x0, double y0, double size, double lowest
     }
   }
   // The columns under the top face: beside it only the box's slanted sides, far lower, would count.
-  ConvexHull(points, hull_);
-  RaiseHorizon(hull_, all_in_front ? x_min : -INFINITY, all_in_front ? x_max : INFINITY);
+  size_t lower_end = ConvexHull(points, hull_);
+  RaiseHorizon(hull_, lower_end, all_in_front ? x_min : -INFINITY, all_in_front ? x_max : INFINITY);
 }
 
 bool ScreenHorizon::RisesAbove(double x_min, double x_max, double up) const {
@@ -201,8 +200,8 @@ bool ScreenHorizon::RisesAbove(double x_min, double x_max, double up) const {
 // Over a column [x0, x1] a convex polygon's lower edge is highest and its upper edge lowest at one
 // of the column's sides, so the band it covers across the whole column is [max of the two lows,
 // min of the two highs]. A band that reaches down to the horizon raises it.
-void ScreenHorizon::RaiseHorizon(const std::vector<std::array<double, 2>>& polygon, double x_min,
-                                 double x_max) {
+void ScreenHorizon::RaiseHorizon(const std::vector<std::array<double, 2>>& polygon, size_t lower_end,
+                                 double x_min, double x_max) {
   if (polygon.size() < 3) return;
   int columns = int(horizon_.size());
   double span_min = INFINITY, span_max = -INFINITY;
@@ -219,14 +218,22 @@ void ScreenHorizon::RaiseHorizon(const std::vector<std::array<double, 2>>& polyg
   int first = column_edge(std::ceil((x_min + 1.0) * 0.5 * columns));
   int last = column_edge(std::floor((x_max + 1.0) * 0.5 * columns));
   if (first >= last) return;
+  // The polygon's lower and upper edges at a device x, both chains walked left to right as the
+  // columns go (the upper chain is the polygon's tail read backwards, then its first point).
+  const size_t n = polygon.size();
+  auto lower = [&](size_t i) -> const std::array<double, 2>& { return polygon[i]; };
+  auto upper = [&](size_t i) -> const std::array<double, 2>& { return polygon[i == 0 ? 0 : n - i]; };
+  size_t lower_at = 0, upper_at = 0;
+  auto extent = [&](double x) {
+    return std::array<double, 2>{ChainAt(lower, lower_end + 1, x, &lower_at, true),
+                                 ChainAt(upper, n - lower_end + 1, x, &upper_at, false)};
+  };
   // A column's right side is the next one's left side: each side is measured once.
-  std::optional<std::array<double, 2>> left = ExtentAt(polygon, 2.0 * first / columns - 1.0);
+  std::array<double, 2> left = extent(2.0 * first / columns - 1.0);
   for (int column = first; column < last; ++column) {
-    std::optional<std::array<double, 2>> right = ExtentAt(polygon, 2.0 * (column + 1) / columns - 1.0);
-    if (left && right) {
-      double low = std::max((*left)[0], (*right)[0]), high = std::min((*left)[1], (*right)[1]);
-      if (low <= horizon_[column] && high > horizon_[column]) horizon_[column] = high;
-    }
+    std::array<double, 2> right = extent(2.0 * (column + 1) / columns - 1.0);
+    double low = std::max(left[0], right[0]), high = std::min(left[1], right[1]);
+    if (low <= horizon_[column] && high > horizon_[column]) horizon_[column] = high;
     left = right;
   }
 }

@@ -40,17 +40,30 @@ class ScreenHorizon {
   struct Screen {
     double x, up;  // normalized device x (-1 left, 1 right) and height (-1 bottom, 1 top)
   };
+  // A corner of the occluder blocks: its local vertical, scaled to the planet's radius (the point
+  // h above sea level there is the planet's centre + up (R + h) / R), and that vector in clip
+  // space, so that a block's corners at any height project with one multiply-add each.
+  struct Corner {
+    glm::dvec3 up;
+    glm::dvec4 clip_up;
+  };
   bool Project(const glm::dvec3& p, Screen& s) const;
-  void AddOccluder(double x0, double y0, double size, double lowest_m);
+  // The block over corners (counter-clockwise from its south-west one) at the height lowest_m.
+  void AddOccluder(const std::array<const Corner*, 4>& corners, double lowest_m);
   // Whether a height `up` would be above the horizon in any whole column within [x_min, x_max].
   bool RisesAbove(double x_min, double x_max, double up) const;
-  // Raises the horizon with a convex polygon over the columns within [x_min, x_max].
-  void RaiseHorizon(const std::vector<std::array<double, 2>>& polygon, double x_min, double x_max);
+  // Raises the horizon with a convex polygon over the columns within [x_min, x_max]; the polygon
+  // is counter-clockwise from its leftmost point, its lower chain first, through polygon[lower_end]
+  // (ConvexHull).
+  void RaiseHorizon(const std::vector<std::array<double, 2>>& polygon, size_t lower_end, double x_min,
+                    double x_max);
 
   glm::dmat4 view_projection_;
   glm::dvec3 camera_;
   double planet_radius_m_;
+  glm::dvec4 clip_center_;  // the planet's centre in clip space
   std::vector<double> horizon_;  // per column, in device height
+  std::vector<Corner> corners_;  // scratch, as points_ and hull_
   std::vector<std::array<double, 2>> points_, hull_;  // scratch, kept so that occluders do not allocate
 };
 
