@@ -102,7 +102,7 @@ struct ShadowCasterSelection {
 ShadowCasterSelection MakeShadowCasterSelection(const terrain::LodView& view, const ShadowCascades& cascades,
                                                 double camera_slack_m);
 
-// What the tiles show: the cascades' windows and the terrain chunks drawn in them (CoarsenCasters).
+// What the tiles show: the cascades' windows and the terrain chunks drawn in them (SelectShadowTerrain).
 struct ShadowKey {
   ShadowCascades cascades;
   ShadowTerrain casters;
@@ -120,8 +120,9 @@ bool ShadowMapKept(bool still_view, bool selection_whole, const std::array<bool,
 // A frame of a moving camera whose windows did not move keeps the tiles too, without selecting
 // their terrain casters again, when that selection lacked no chunk and would pick the same chunks
 // for this frame: the same cascades' boxes and level-of-detail rule, and the camera closer than the
-// selection's slack (terrain::Selection::camera_slack_m) to where it was made. CoarsenCasters would
-// then give every tile its drawn casters, so no tile would be redrawn.
+// selection's slack (terrain::Selection::camera_slack_m) to where it was made (a window that did not
+// move has the same texel, so each cascade resolves the same error). Every tile would then get its
+// drawn casters again, so none would be redrawn.
 bool ShadowCastersKept(const ShadowKey& drawn, const terrain::LodView& now, const ShadowCascades& cascades,
                        bool selection_whole, const std::array<bool, kShadowCascades>& moved);
 // A tile is redrawn when its window moved or its terrain casters changed (the camera's level of

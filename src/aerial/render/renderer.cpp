@@ -342,11 +342,6 @@ void Renderer::RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& fra
                      kSkyViewSize.data());
 }
 
-// A tile draws the terrain coarsened to this fraction of its texel (shadow_terrain.h,
-// CoarsenCasters): the casters then lie within half a texel of the receivers, inside the lookup's
-// normal offset (1.5 texels, shadow.glsl) less what a 45-degree slope needs of it (1 texel).
-constexpr double kCasterToleranceTexels = 0.25;
-
 // The cascades are fitted to every frame's camera (cheap), keeping the windows the shadow map holds
 // while their slices fit (shadow_cascades.h), and a tile of the shadow map is redrawn only when
 // what it shows changed (frame_cache_policy.h: its window, the sun, or its terrain casters as its
@@ -368,19 +363,17 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
   if (ShadowCastersKept(key, lod_view, shadow_cascades_, shadow_selection_whole_, moved)) return;
   ShadowTerrain chunks;
   if (terrain_ && options_.passes.terrain) {
-    ShadowTerrainSelection selection = SelectShadowTerrain(lod_view, shadow_cascades_, MakeLightBasis(sun), *terrain_);
+    ShadowTerrainSelection selection = SelectShadowTerrain(lod_view, shadow_cascades_, *terrain_);
     chunks = std::move(selection.chunks);
     shadow_selection_whole_ = selection.deferred == 0;
     key.selection = MakeShadowCasterSelection(lod_view, shadow_cascades_, selection.camera_slack_m);
   }
   std::array<bool, kShadowCascades> redraw{};
   for (int i = 0; i < kShadowCascades; ++i) {
-    std::vector<terrain::SelectedChunk> casters;
-    if (terrain_) casters = CoarsenCasters(chunks[i], kCasterToleranceTexels * shadow_cascades_[i].texel_m, *terrain_);
-    redraw[i] = ShadowTileRedrawn(moved[i], casters, key.casters[i]);
+    redraw[i] = ShadowTileRedrawn(moved[i], chunks[i], key.casters[i]);
     key.cascades[i] = shadow_cascades_[i];
     if (!redraw[i]) continue;
-    key.casters[i] = std::move(casters);
+    key.casters[i] = std::move(chunks[i]);
     ++frame_info_.shadow_tiles_redrawn;
   }
   if (frame_info_.shadow_tiles_redrawn == 0) return;

@@ -129,15 +129,4 @@ ShadowCascades FitShadowCascades(const CascadeFitInput& in, const HeldCascades& 
   return cascades;
 }
 
-std::array<glm::dvec4, 5> CascadesUnionPlanes(const ShadowCascades& cascades, const LightBasis& basis) {
-  glm::dvec2 lo(INFINITY), hi(-INFINITY);
-  double depth_min = INFINITY;
-  for (const ShadowCascade& c : cascades) {
-    lo = glm::min(lo, glm::dvec2(c.center_light) - c.radius_m);
-    hi = glm::max(hi, glm::dvec2(c.center_light) + c.radius_m);
-    depth_min = std::min(depth_min, c.depth_min_m);
-  }
-  return BoxPlanes(basis, lo, hi, depth_min);
-}
-
 }  // namespace aerial

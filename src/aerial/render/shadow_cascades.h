@@ -118,8 +118,4 @@ double ShadowSplitM(const Camera& camera, int i);
 // and its casters' rectangle (its drift updated), a new window around the slice elsewhere.
 ShadowCascades FitShadowCascades(const CascadeFitInput& input, const HeldCascades& held = {});
 
-// The planes of the box around all the cascades (extruded toward the sun like each of them):
-// what the shadow pass must draw.
-std::array<glm::dvec4, 5> CascadesUnionPlanes(const ShadowCascades& cascades, const LightBasis& basis);
-
 }  // namespace aerial

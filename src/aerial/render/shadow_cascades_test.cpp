@@ -190,14 +190,5 @@ TEST(ShadowCascades, KeptWindowsCoverTheirSlicesAlongAWalk) {
   EXPECT_GT(refits, 5);
 }
 
-TEST(ShadowCascades, UnionPlanesHoldEveryCascadesBox) {
-  CascadeFitInput in = NoonView();
-  ShadowCascades cascades = FitShadowCascades(in);
-  auto planes = CascadesUnionPlanes(cascades, MakeLightBasis(in.sun));
-  for (const ShadowCascade& c : cascades)
-    for (const glm::dvec3& corner : SliceCorners(in, c))
-      for (const glm::dvec4& plane : planes) EXPECT_GE(glm::dot(glm::dvec3(plane), corner) + plane.w, -1e-6);
-}
-
 }  // namespace
 }  // namespace aerial

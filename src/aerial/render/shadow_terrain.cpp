@@ -3,42 +3,33 @@
 #include <algorithm>
 
 namespace aerial {
+namespace {
+
+// A tile draws the terrain resolved to this fraction of its texel: the casters then lie within half
+// a texel of the receivers, inside the lookup's normal offset (1.5 texels, shadow.glsl) less what a
+// 45-degree slope needs of it (1 texel).
+constexpr double kCasterToleranceTexels = 0.25;
+
+}  // namespace
 
 ShadowTerrainSelection SelectShadowTerrain(const terrain::LodView& frame_view, const ShadowCascades& cascades,
-                                           const LightBasis& basis, terrain::ChunkSource& source) {
+                                           terrain::ChunkSource& source) {
   terrain::LodView view = frame_view;
-  view.planes = CascadesUnionPlanes(cascades, basis);
   view.occlusion_culling = false;
   view.front_to_back = false;
-  terrain::Selection selection = terrain::SelectChunks(view, source);
-  ShadowTerrainSelection drawn{.deferred = selection.deferred, .camera_slack_m = selection.camera_slack_m};
+  ShadowTerrainSelection drawn{.camera_slack_m = std::numeric_limits<double>::infinity()};
   for (int i = 0; i < kShadowCascades; ++i) {
     view.planes = cascades[i].planes;
-    for (const terrain::SelectedChunk& chunk : selection.chunks)
-      if (terrain::IntersectsFrustum(view, source.Find(chunk.id)->bounds)) drawn.chunks[i].push_back(chunk);
+    view.resolved_error_m = kCasterToleranceTexels * cascades[i].texel_m;
+    terrain::Selection selection = terrain::SelectChunks(view, source);
+    // Sorted, so that two selections of the same chunks compare equal (ShadowTileRedrawn).
+    std::sort(selection.chunks.begin(), selection.chunks.end(),
+              [](const terrain::SelectedChunk& a, const terrain::SelectedChunk& b) { return a.id < b.id; });
+    drawn.chunks[i] = std::move(selection.chunks);
+    drawn.deferred += selection.deferred;
+    drawn.camera_slack_m = std::min(drawn.camera_slack_m, selection.camera_slack_m);
   }
   return drawn;
-}
-
-std::vector<terrain::SelectedChunk> CoarsenCasters(const std::vector<terrain::SelectedChunk>& chunks,
-                                                   double tolerance_m, terrain::ChunkSource& source) {
-  std::vector<terrain::ChunkId> coarse;
-  coarse.reserve(chunks.size());
-  for (const terrain::SelectedChunk& chunk : chunks) {
-    terrain::ChunkId id = chunk.id;
-    // The selection built every ancestor of a drawn chunk before the chunk itself.
-    for (const terrain::ChunkInfo* parent; id.level > 0 && (parent = source.Find(terrain::Parent(id))) &&
-                                           parent->geometric_error_m <= tolerance_m;)
-      id = terrain::Parent(id);
-    coarse.push_back(id);
-  }
-  std::sort(coarse.begin(), coarse.end());
-  coarse.erase(std::unique(coarse.begin(), coarse.end()), coarse.end());
-  std::vector<terrain::SelectedChunk> casters;
-  casters.reserve(coarse.size());
-  for (const terrain::ChunkId& id : coarse) casters.push_back({id});
-  terrain::MarkSkirts(casters);
-  return casters;
 }
 
 }  // namespace aerial

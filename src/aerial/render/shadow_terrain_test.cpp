@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <set>
+
+#include "aerial/terrain/chunk_id.h"
 
 namespace aerial {
 namespace {
@@ -10,12 +13,15 @@ namespace {
 using terrain::ChunkId;
 using terrain::SelectedChunk;
 
-// Chunks whose geometric error halves with each level from 64 m at the root, all built.
+// Chunks 100 m tall over their footprint, whose geometric error halves with each level from 64 m
+// at the root, all built.
 class HalvingErrors : public terrain::ChunkSource {
  public:
   const terrain::ChunkInfo* Find(const ChunkId& id) override {
     terrain::ChunkInfo& info = infos_[id];
     info.geometric_error_m = 64.0 / double(1 << id.level);
+    terrain::Footprint f = terrain::FootprintOf(id);
+    info.bounds = {{f.x0, f.y0, 0.0}, {f.x0 + f.size, f.y0 + f.size, 100.0}};
     return &info;
   }
   void Build(std::span<const ChunkId>) override {}
@@ -24,40 +30,82 @@ class HalvingErrors : public terrain::ChunkSource {
   std::map<ChunkId, terrain::ChunkInfo> infos_;
 };
 
-std::vector<SelectedChunk> Selection(std::initializer_list<ChunkId> ids) {
-  std::vector<SelectedChunk> chunks;
-  for (const ChunkId& id : ids) chunks.push_back({id});
-  return chunks;
+// A camera 250 m over the middle of the terrain (150 m over its chunks), its rule at 4 px; every cascade's box holds the
+// whole terrain, the cascades differing only in their texel.
+terrain::LodView View() {
+  terrain::LodView view;
+  view.camera = {0.0, 0.0, 250.0};
+  view.planet_radius_m = 6360e3;
+  view.pixels_per_radian = 1000.0;
+  view.max_error_px = 4.0;
+  return view;
+}
+ShadowCascades WholeTerrainCascades(std::array<double, kShadowCascades> texel_m) {
+  ShadowCascades cascades;
+  for (int i = 0; i < kShadowCascades; ++i) {
+    cascades[i].texel_m = texel_m[i];
+    cascades[i].planes.fill(glm::dvec4(0.0, 0.0, 0.0, 1.0));  // every point inside
+  }
+  return cascades;
 }
 
-// With a tolerance of 4 m (the error of level 4), chunks of levels 5 and 6 become their level-4
-// ancestors, each listed once; chunks at level 4 or coarser stay as they are.
-TEST(CoarsenCasters, ChunksBecomeTheirCoarsestAncestorWithinTheTolerance) {
-  HalvingErrors source;
-  auto casters = CoarsenCasters(Selection({{6, 40, 12}, {6, 41, 13}, {5, 21, 7}, {4, 3, 3}, {2, 0, 0}}), 4.0, source);
+std::vector<ChunkId> Ids(const std::vector<SelectedChunk>& chunks) {
   std::vector<ChunkId> ids;
-  for (const SelectedChunk& c : casters) ids.push_back(c.id);
-  EXPECT_EQ(ids, (std::vector<ChunkId>{{2, 0, 0}, {4, 3, 3}, {4, 10, 3}})) << "sorted, each once";
-  // A finer tolerance keeps the level-5 chunk and merges the two level-6 ones into it.
-  casters = CoarsenCasters(Selection({{6, 40, 12}, {6, 41, 13}, {5, 21, 7}}), 2.0, source);
-  ASSERT_EQ(casters.size(), 2u);
-  EXPECT_EQ(casters[0].id, (ChunkId{5, 20, 6}));
-  EXPECT_EQ(casters[1].id, (ChunkId{5, 21, 7}));
-  // A tolerance below every error changes nothing.
-  EXPECT_EQ(CoarsenCasters(Selection({{6, 40, 12}}), 0.5, source).front().id, (ChunkId{6, 40, 12}));
+  for (const SelectedChunk& c : chunks) ids.push_back(c.id);
+  return ids;
 }
 
-// The coarsened list gets the skirts of its own neighbours: two chunks side by side at the same
-// level need none on the side they share, every other side keeps one.
-TEST(CoarsenCasters, SkirtsFollowTheCoarsenedNeighbours) {
+// Each chunk replaced by its coarsest ancestor whose error is within the tolerance: walked up
+// from the chunk, independently of the selection's walk down.
+std::vector<ChunkId> Coarsened(const std::vector<SelectedChunk>& chunks, double tolerance_m,
+                               terrain::ChunkSource& source) {
+  std::set<ChunkId> coarse;
+  for (const SelectedChunk& chunk : chunks) {
+    ChunkId id = chunk.id;
+    while (id.level > 0 && source.Find(terrain::Parent(id))->geometric_error_m <= tolerance_m) id = terrain::Parent(id);
+    coarse.insert(id);
+  }
+  return {coarse.begin(), coarse.end()};
+}
+
+// A texel of 16 m resolves 4 m, the error of level 4: the rule's chunks of levels 5 and finer
+// become their level-4 ancestors, each listed once, and those at level 4 or coarser stay. A texel
+// of 0 resolves nothing, so that cascade draws the rule's own chunks.
+TEST(ShadowTerrain, EachCascadeDrawsTheRulesChunksAsCoarseAsItsTexelsResolve) {
   HalvingErrors source;
-  auto casters = CoarsenCasters(Selection({{6, 40, 12}, {6, 42, 12}}), 4.0, source);  // -> (4,10,3), (4,10,3)
-  ASSERT_EQ(casters.size(), 1u);
-  EXPECT_EQ(casters[0].skirts, terrain::kAllSides);
-  casters = CoarsenCasters(Selection({{6, 40, 12}, {6, 44, 12}}), 4.0, source);  // -> (4,10,3), (4,11,3)
-  ASSERT_EQ(casters.size(), 2u);
-  EXPECT_EQ(casters[0].skirts, terrain::kAllSides & ~uint32_t(terrain::kEast));
-  EXPECT_EQ(casters[1].skirts, terrain::kAllSides & ~uint32_t(terrain::kWest));
+  ShadowTerrainSelection selection = SelectShadowTerrain(View(), WholeTerrainCascades({0.0, 4.0, 16.0, 64.0}), source);
+  const std::vector<SelectedChunk>& rule = selection.chunks[0];
+  int finest = 0;
+  for (const SelectedChunk& c : rule) finest = std::max(finest, c.id.level);
+  ASSERT_EQ(finest, 7) << "the camera's rule refines below the levels the texels resolve";
+  for (int i = 1; i < kShadowCascades; ++i) {
+    double tolerance_m = 0.25 * WholeTerrainCascades({0.0, 4.0, 16.0, 64.0})[i].texel_m;
+    EXPECT_EQ(Ids(selection.chunks[i]), Coarsened(rule, tolerance_m, source)) << "cascade " << i;
+    EXPECT_LT(selection.chunks[i].size(), selection.chunks[i - 1].size()) << "cascade " << i;
+    for (const SelectedChunk& c : selection.chunks[i])
+      EXPECT_LE(c.id.level, 8 - 2 * i) << "cascade " << i;  // 64 m / 2^level <= texel / 4
+  }
+  EXPECT_EQ(selection.deferred, 0);
+}
+
+// Each list gets the skirts of its own neighbours: none on a side where the chunk across it at the
+// same level is in the same list, one on every other side.
+TEST(ShadowTerrain, SkirtsFollowEachCascadesOwnChunks) {
+  HalvingErrors source;
+  ShadowTerrainSelection selection = SelectShadowTerrain(View(), WholeTerrainCascades({0.0, 4.0, 16.0, 64.0}), source);
+  for (const auto& chunks : selection.chunks) {
+    std::set<ChunkId> listed;
+    for (const SelectedChunk& c : chunks) listed.insert(c.id);
+    for (const SelectedChunk& c : chunks) {
+      const ChunkId& id = c.id;
+      uint32_t expected = 0;
+      if (!listed.contains({id.level, id.x, id.y - 1})) expected |= terrain::kSouth;
+      if (!listed.contains({id.level, id.x + 1, id.y})) expected |= terrain::kEast;
+      if (!listed.contains({id.level, id.x, id.y + 1})) expected |= terrain::kNorth;
+      if (!listed.contains({id.level, id.x - 1, id.y})) expected |= terrain::kWest;
+      EXPECT_EQ(c.skirts, expected) << "chunk " << id.level << " " << id.x << " " << id.y;
+    }
+  }
 }
 
 }  // namespace

@@ -31,6 +31,13 @@ Bounds EstimateChildBounds(const ChunkId& child, const ChunkInfo& parent) {
           {x[1], y[1], parent.bounds.max.z + parent.geometric_error_m}};
 }
 
+// Where a chunk's descendants may lie: its surface is within its geometric error of its triangles
+// (each finer mesh samples that surface), so within its bounds grown by that error.
+Bounds DescendantsBounds(const ChunkInfo& info) {
+  glm::dvec3 margin(info.geometric_error_m);
+  return {info.bounds.min - margin, info.bounds.max + margin};
+}
+
 bool WithinTerrain(const ChunkId& id) {
   Footprint f = FootprintOf(id);
   double dx = std::max({f.x0, 0.0, -(f.x0 + f.size)});
@@ -156,13 +163,20 @@ Selection SelectChunks(const LodView& view, ChunkSource& source) {
     std::vector<ChunkId> refine, missing;
     for (const ChunkId& id : level) {
       const ChunkInfo* info = source.Find(id);
-      if (!info || !IntersectsFrustum(view, info->bounds)) continue;
+      if (!info) continue;
+      // A chunk outside the frustum is not drawn, but a finer one below it may rise into it.
+      const bool inside = IntersectsFrustum(view, info->bounds);
+      if (!inside && !IntersectsFrustum(view, DescendantsBounds(*info))) continue;
+      if (info->geometric_error_m <= view.resolved_error_m) {
+        if (inside) selection.chunks.push_back({id});
+        continue;
+      }
       if (id.level < kMaxChunkLevel)
         selection.camera_slack_m = std::min(selection.camera_slack_m,
                                             RefinementSlackM(view, info->geometric_error_m, info->bounds));
       if (id.level == kMaxChunkLevel ||
           ScreenSpaceErrorPx(view, info->geometric_error_m, info->bounds) <= view.max_error_px) {
-        selection.chunks.push_back({id});
+        if (inside) selection.chunks.push_back({id});
         continue;
       }
       refine.push_back(id);

@@ -32,6 +32,11 @@ struct LodView {
   std::array<glm::dvec4, 5> planes{};
   double pixels_per_radian = 0.0;
   double max_error_px = 1.0;
+  // A chunk whose geometric error is at most this is drawn without its refinement test: the target
+  // resolves nothing finer (a shadow map's texel: render/shadow_terrain.h). Chunk errors never grow
+  // from parent to child, so each chunk the rule alone would draw is replaced by its coarsest
+  // ancestor within this error. 0: every chunk is tested.
+  double resolved_error_m = 0.0;
 };
 
 // The error bound is kept at least as fine as max_error_px at min_height_px rows, so that small
