@@ -93,25 +93,21 @@ bool ShadowMapKept(bool still_view, bool selection_whole, const std::array<bool,
   return still_view && selection_whole && std::find(moved.begin(), moved.end(), true) == moved.end();
 }
 
-ShadowCasterSelection MakeShadowCasterSelection(const terrain::LodView& view, const ShadowCascades& cascades,
-                                                double camera_slack_m) {
-  ShadowCasterSelection selection{.camera = view.camera,
-                                  .pixels_per_radian = view.pixels_per_radian,
-                                  .max_error_px = view.max_error_px,
-                                  .camera_slack_m = camera_slack_m};
-  for (int i = 0; i < kShadowCascades; ++i) selection.planes[i] = cascades[i].planes;
-  return selection;
+CasterSelection MakeCasterSelection(const terrain::LodView& view, const ShadowCascade& cascade,
+                                    const CascadeCasters& selected) {
+  return {.camera = view.camera,
+          .pixels_per_radian = view.pixels_per_radian,
+          .max_error_px = view.max_error_px,
+          .planes = cascade.planes,
+          .camera_slack_m = selected.camera_slack_m,
+          .whole = selected.deferred == 0};
 }
 
-bool ShadowCastersKept(const ShadowKey& drawn, const terrain::LodView& now, const ShadowCascades& cascades,
-                       bool selection_whole, const std::array<bool, kShadowCascades>& moved) {
-  if (!selection_whole || !drawn.selection || std::find(moved.begin(), moved.end(), true) != moved.end())
-    return false;
-  const ShadowCasterSelection& made = *drawn.selection;
-  if (made.pixels_per_radian != now.pixels_per_radian || made.max_error_px != now.max_error_px) return false;
-  for (int i = 0; i < kShadowCascades; ++i)
-    if (made.planes[i] != cascades[i].planes) return false;
-  return glm::length(now.camera - made.camera) < made.camera_slack_m;
+bool CastersKept(const std::optional<CasterSelection>& made, const terrain::LodView& now,
+                 const ShadowCascade& cascade, bool moved) {
+  if (moved || !made || !made->whole) return false;
+  if (made->pixels_per_radian != now.pixels_per_radian || made->max_error_px != now.max_error_px) return false;
+  return made->planes == cascade.planes && glm::length(now.camera - made->camera) < made->camera_slack_m;
 }
 
 bool ShadowTileRedrawn(bool moved, const std::vector<terrain::SelectedChunk>& casters,

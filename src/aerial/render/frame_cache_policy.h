@@ -90,23 +90,24 @@ bool SunVisibilityReusable(const std::optional<SunVisibilityKey>& written_for, c
 bool SunVisibilityWorthCaching(bool first_frame, bool still_view);
 
 // ---- The shadow map's tiles ----
-// The terrain selection that the tiles' casters came from (SelectShadowTerrain): what it depends
-// on (the camera, the level-of-detail rule, the cascades' boxes) and how far its camera may move
-// before it would pick other chunks.
-struct ShadowCasterSelection {
+// The terrain selection that a tile's casters came from (SelectCascadeCasters): what it depends on
+// (the camera, the level-of-detail rule, the cascade's box), how far its camera may move before
+// it would pick other chunks, and whether it lacked none.
+struct CasterSelection {
   glm::dvec3 camera{0.0};
   double pixels_per_radian = 0.0, max_error_px = 0.0;
-  std::array<std::array<glm::dvec4, 5>, kShadowCascades> planes{};
+  std::array<glm::dvec4, 5> planes{};
   double camera_slack_m = 0.0;
+  bool whole = false;
 };
-ShadowCasterSelection MakeShadowCasterSelection(const terrain::LodView& view, const ShadowCascades& cascades,
-                                                double camera_slack_m);
+CasterSelection MakeCasterSelection(const terrain::LodView& view, const ShadowCascade& cascade,
+                                    const CascadeCasters& selected);
 
-// What the tiles show: the cascades' windows and the terrain chunks drawn in them (SelectShadowTerrain).
+// What the tiles show: the cascades' windows and the terrain chunks drawn in them.
 struct ShadowKey {
   ShadowCascades cascades;
   ShadowTerrain casters;
-  std::optional<ShadowCasterSelection> selection;  // none without terrain
+  std::array<std::optional<CasterSelection>, kShadowCascades> selections;  // none without terrain
 };
 // The windows a frame's fit keeps (shadow_cascades.h): those the map holds, except for an exact
 // frame, which fits its windows afresh as a new renderer would.
@@ -117,14 +118,15 @@ std::array<bool, kShadowCascades> ShadowWindowsMoved(const std::optional<ShadowK
 // A still view whose terrain selection lacked no chunk, with no window moved, draws what the map
 // holds without selecting its casters again.
 bool ShadowMapKept(bool still_view, bool selection_whole, const std::array<bool, kShadowCascades>& moved);
-// A frame of a moving camera whose windows did not move keeps the tiles too, without selecting
-// their terrain casters again, when that selection lacked no chunk and would pick the same chunks
-// for this frame: the same cascades' boxes and level-of-detail rule, and the camera closer than the
-// selection's slack (terrain::Selection::camera_slack_m) to where it was made (a window that did not
-// move has the same texel, so each cascade resolves the same error). Every tile would then get its
-// drawn casters again, so none would be redrawn.
-bool ShadowCastersKept(const ShadowKey& drawn, const terrain::LodView& now, const ShadowCascades& cascades,
-                       bool selection_whole, const std::array<bool, kShadowCascades>& moved);
+// A frame of a moving camera keeps a tile too, without selecting its terrain casters again, when
+// its window did not move and its last selection lacked no chunk and would pick the same chunks for
+// this frame: the same box and level-of-detail rule, and the camera closer than the selection's
+// slack (terrain::Selection::camera_slack_m) to where it was made (a window that did not move has
+// the same texel, so the cascade resolves the same error). The tile would then get its drawn
+// casters again, so it would not be redrawn. The first cascade resolves every level and keeps its
+// casters for a metre or two of travel; the far ones, coarser, for tens of metres.
+bool CastersKept(const std::optional<CasterSelection>& made, const terrain::LodView& now,
+                 const ShadowCascade& cascade, bool moved);
 // A tile is redrawn when its window moved or its terrain casters changed (the camera's level of
 // detail changed, or chunks deferred for the build budget arrived). The scene's meshes are fixed
 // for the renderer's life.

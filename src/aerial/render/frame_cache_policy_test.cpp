@@ -183,33 +183,34 @@ TEST(FrameCachePolicy, ShadowMapKeptByAStillWholeViewWithNoWindowMoved) {
   EXPECT_FALSE(ShadowMapKept(true, true, one)) << "a window moved";
 }
 
-TEST(FrameCachePolicy, ShadowCastersKeptWithinTheSelectionsSlack) {
+TEST(FrameCachePolicy, CastersKeptWithinTheSelectionsSlack) {
   terrain::LodView view;
   view.camera = {10.0, 20.0, 300.0};
   view.pixels_per_radian = 870.0;
   view.max_error_px = 4.0;
-  ShadowCascades cascades{};
-  cascades[2].planes[0] = {1.0, 0.0, 0.0, -5.0};
-  ShadowKey drawn{.selection = MakeShadowCasterSelection(view, cascades, /*camera_slack_m=*/2.0)};
-  std::array<bool, kShadowCascades> none{}, one{};
-  one[0] = true;
+  ShadowCascade cascade;
+  cascade.planes[0] = {1.0, 0.0, 0.0, -5.0};
+  const std::optional<CasterSelection> made =
+      MakeCasterSelection(view, cascade, CascadeCasters{.deferred = 0, .camera_slack_m = 2.0});
   terrain::LodView now = view;
   now.camera += glm::dvec3(1.2, -1.2, 0.9);  // 1.9 m away
-  EXPECT_TRUE(ShadowCastersKept(drawn, now, cascades, /*selection_whole=*/true, none));
-  EXPECT_FALSE(ShadowCastersKept(drawn, now, cascades, true, one)) << "a window moved";
-  EXPECT_FALSE(ShadowCastersKept(drawn, now, cascades, false, none)) << "chunks were missing from the selection";
-  EXPECT_FALSE(ShadowCastersKept(ShadowKey{}, now, cascades, true, none)) << "no terrain was selected";
+  EXPECT_TRUE(CastersKept(made, now, cascade, /*moved=*/false));
+  EXPECT_FALSE(CastersKept(made, now, cascade, true)) << "the window moved";
+  EXPECT_FALSE(CastersKept(MakeCasterSelection(view, cascade, CascadeCasters{.deferred = 3, .camera_slack_m = 2.0}),
+                           now, cascade, false))
+      << "chunks were missing from the selection";
+  EXPECT_FALSE(CastersKept(std::nullopt, now, cascade, false)) << "no terrain was selected";
   now.camera = view.camera + glm::dvec3(0.0, 0.0, 2.0);
-  EXPECT_FALSE(ShadowCastersKept(drawn, now, cascades, true, none)) << "as far as the slack";
+  EXPECT_FALSE(CastersKept(made, now, cascade, false)) << "as far as the slack";
   now = view;
   now.pixels_per_radian = 900.0;
-  EXPECT_FALSE(ShadowCastersKept(drawn, now, cascades, true, none)) << "another field of view";
+  EXPECT_FALSE(CastersKept(made, now, cascade, false)) << "another field of view";
   now = view;
   now.max_error_px = 2.0;
-  EXPECT_FALSE(ShadowCastersKept(drawn, now, cascades, true, none)) << "another error bound";
-  ShadowCascades other = cascades;
-  other[2].planes[0].w = -6.0;
-  EXPECT_FALSE(ShadowCastersKept(drawn, view, other, true, none)) << "another cascade box";
+  EXPECT_FALSE(CastersKept(made, now, cascade, false)) << "another error bound";
+  ShadowCascade other = cascade;
+  other.planes[0].w = -6.0;
+  EXPECT_FALSE(CastersKept(made, view, other, false)) << "another cascade box";
 }
 
 TEST(FrameCachePolicy, TerrainSelectionKeptByAStillViewThatLackedNoChunk) {

@@ -360,22 +360,25 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
   ShadowKey& key = *shadow_key_;
   if (ShadowMapKept(still_view_, shadow_selection_whole_, moved)) return;
   const terrain::LodView lod_view = FrameLodView(scene);
-  if (ShadowCastersKept(key, lod_view, shadow_cascades_, shadow_selection_whole_, moved)) return;
-  ShadowTerrain chunks;
-  if (terrain_ && options_.passes.terrain) {
-    ShadowTerrainSelection selection = SelectShadowTerrain(lod_view, shadow_cascades_, *terrain_);
-    chunks = std::move(selection.chunks);
-    shadow_selection_whole_ = selection.deferred == 0;
-    key.selection = MakeShadowCasterSelection(lod_view, shadow_cascades_, selection.camera_slack_m);
-  }
+  const bool select_terrain = terrain_ && options_.passes.terrain;
   std::array<bool, kShadowCascades> redraw{};
   for (int i = 0; i < kShadowCascades; ++i) {
-    redraw[i] = ShadowTileRedrawn(moved[i], chunks[i], key.casters[i]);
     key.cascades[i] = shadow_cascades_[i];
+    if (CastersKept(key.selections[i], lod_view, shadow_cascades_[i], moved[i])) continue;
+    std::vector<terrain::SelectedChunk> casters;
+    if (select_terrain) {
+      CascadeCasters selected = SelectCascadeCasters(lod_view, shadow_cascades_[i], *terrain_);
+      key.selections[i] = MakeCasterSelection(lod_view, shadow_cascades_[i], selected);
+      casters = std::move(selected.chunks);
+    }
+    redraw[i] = ShadowTileRedrawn(moved[i], casters, key.casters[i]);
     if (!redraw[i]) continue;
-    key.casters[i] = std::move(chunks[i]);
+    key.casters[i] = std::move(casters);
     ++frame_info_.shadow_tiles_redrawn;
   }
+  shadow_selection_whole_ =
+      !select_terrain || std::all_of(key.selections.begin(), key.selections.end(),
+                                     [](const std::optional<CasterSelection>& s) { return s && s->whole; });
   if (frame_info_.shadow_tiles_redrawn == 0) return;
   shadow_map_.Record(cmd, shadow_cascades_, redraw, scene.camera.position, geometry_, terrain_.get(),
                      key.casters);

@@ -12,24 +12,18 @@ constexpr double kCasterToleranceTexels = 0.25;
 
 }  // namespace
 
-ShadowTerrainSelection SelectShadowTerrain(const terrain::LodView& frame_view, const ShadowCascades& cascades,
-                                           terrain::ChunkSource& source) {
+CascadeCasters SelectCascadeCasters(const terrain::LodView& frame_view, const ShadowCascade& cascade,
+                                    terrain::ChunkSource& source) {
   terrain::LodView view = frame_view;
   view.occlusion_culling = false;
   view.front_to_back = false;
-  ShadowTerrainSelection drawn{.camera_slack_m = std::numeric_limits<double>::infinity()};
-  for (int i = 0; i < kShadowCascades; ++i) {
-    view.planes = cascades[i].planes;
-    view.resolved_error_m = kCasterToleranceTexels * cascades[i].texel_m;
-    terrain::Selection selection = terrain::SelectChunks(view, source);
-    // Sorted, so that two selections of the same chunks compare equal (ShadowTileRedrawn).
-    std::sort(selection.chunks.begin(), selection.chunks.end(),
-              [](const terrain::SelectedChunk& a, const terrain::SelectedChunk& b) { return a.id < b.id; });
-    drawn.chunks[i] = std::move(selection.chunks);
-    drawn.deferred += selection.deferred;
-    drawn.camera_slack_m = std::min(drawn.camera_slack_m, selection.camera_slack_m);
-  }
-  return drawn;
+  view.planes = cascade.planes;
+  view.resolved_error_m = kCasterToleranceTexels * cascade.texel_m;
+  terrain::Selection selection = terrain::SelectChunks(view, source);
+  // Sorted, so that two selections of the same chunks compare equal (ShadowTileRedrawn).
+  std::sort(selection.chunks.begin(), selection.chunks.end(),
+            [](const terrain::SelectedChunk& a, const terrain::SelectedChunk& b) { return a.id < b.id; });
+  return {std::move(selection.chunks), selection.deferred, selection.camera_slack_m};
 }
 
 }  // namespace aerial

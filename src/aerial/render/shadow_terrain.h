@@ -18,13 +18,16 @@ namespace aerial {
 // The chunks each cascade draws, sorted, each once, with the skirts of its own list.
 using ShadowTerrain = std::array<std::vector<terrain::SelectedChunk>, kShadowCascades>;
 
-struct ShadowTerrainSelection {
-  ShadowTerrain chunks;
+// One cascade's casters.
+struct CascadeCasters {
+  std::vector<terrain::SelectedChunk> chunks;
   // Chunks drawn in place of finer ones not built yet (a later call with the same view may then
   // pick other chunks).
   int deferred = 0;
-  // How far the camera may move before the same cascades select otherwise (the least of the
-  // cascades' terrain::Selection::camera_slack_m).
+  // How far the camera may move before the cascade selects otherwise
+  // (terrain::Selection::camera_slack_m). Its chunks' errors are within a fixed fraction of its
+  // texel or tested against the camera, so the coarse far cascades' slack is tens of metres where
+  // the first one's is a metre or two.
   double camera_slack_m = 0.0;
 };
 
@@ -38,7 +41,7 @@ struct ShadowTerrainSelection {
 // most its parent's, as the terrain's are). Two selections that resolve alike draw the same tile:
 // the renderer redraws a cascade's tile when its casters change, not whenever the camera's level
 // of detail moves by a level somewhere in it.
-ShadowTerrainSelection SelectShadowTerrain(const terrain::LodView& frame_view, const ShadowCascades& cascades,
-                                           terrain::ChunkSource& source);
+CascadeCasters SelectCascadeCasters(const terrain::LodView& frame_view, const ShadowCascade& cascade,
+                                    terrain::ChunkSource& source);
 
 }  // namespace aerial

@@ -71,29 +71,38 @@ std::vector<ChunkId> Coarsened(const std::vector<SelectedChunk>& chunks, double 
 // A texel of 16 m resolves 4 m, the error of level 4: the rule's chunks of levels 5 and finer
 // become their level-4 ancestors, each listed once, and those at level 4 or coarser stay. A texel
 // of 0 resolves nothing, so that cascade draws the rule's own chunks.
+// Every cascade's casters, selected one by one.
+ShadowTerrain SelectAll(const ShadowCascades& cascades, terrain::ChunkSource& source) {
+  ShadowTerrain chunks;
+  for (int i = 0; i < kShadowCascades; ++i) {
+    CascadeCasters selected = SelectCascadeCasters(View(), cascades[i], source);
+    EXPECT_EQ(selected.deferred, 0);
+    chunks[i] = std::move(selected.chunks);
+  }
+  return chunks;
+}
+
 TEST(ShadowTerrain, EachCascadeDrawsTheRulesChunksAsCoarseAsItsTexelsResolve) {
   HalvingErrors source;
-  ShadowTerrainSelection selection = SelectShadowTerrain(View(), WholeTerrainCascades({0.0, 4.0, 16.0, 64.0}), source);
-  const std::vector<SelectedChunk>& rule = selection.chunks[0];
+  ShadowTerrain selection = SelectAll(WholeTerrainCascades({0.0, 4.0, 16.0, 64.0}), source);
+  const std::vector<SelectedChunk>& rule = selection[0];
   int finest = 0;
   for (const SelectedChunk& c : rule) finest = std::max(finest, c.id.level);
   ASSERT_EQ(finest, 7) << "the camera's rule refines below the levels the texels resolve";
   for (int i = 1; i < kShadowCascades; ++i) {
     double tolerance_m = 0.25 * WholeTerrainCascades({0.0, 4.0, 16.0, 64.0})[i].texel_m;
-    EXPECT_EQ(Ids(selection.chunks[i]), Coarsened(rule, tolerance_m, source)) << "cascade " << i;
-    EXPECT_LT(selection.chunks[i].size(), selection.chunks[i - 1].size()) << "cascade " << i;
-    for (const SelectedChunk& c : selection.chunks[i])
+    EXPECT_EQ(Ids(selection[i]), Coarsened(rule, tolerance_m, source)) << "cascade " << i;
+    EXPECT_LT(selection[i].size(), selection[i - 1].size()) << "cascade " << i;
+    for (const SelectedChunk& c : selection[i])
       EXPECT_LE(c.id.level, 8 - 2 * i) << "cascade " << i;  // 64 m / 2^level <= texel / 4
   }
-  EXPECT_EQ(selection.deferred, 0);
 }
 
 // Each list gets the skirts of its own neighbours: none on a side where the chunk across it at the
 // same level is in the same list, one on every other side.
 TEST(ShadowTerrain, SkirtsFollowEachCascadesOwnChunks) {
   HalvingErrors source;
-  ShadowTerrainSelection selection = SelectShadowTerrain(View(), WholeTerrainCascades({0.0, 4.0, 16.0, 64.0}), source);
-  for (const auto& chunks : selection.chunks) {
+  for (const auto& chunks : SelectAll(WholeTerrainCascades({0.0, 4.0, 16.0, 64.0}), source)) {
     std::set<ChunkId> listed;
     for (const SelectedChunk& c : chunks) listed.insert(c.id);
     for (const SelectedChunk& c : chunks) {
