@@ -35,7 +35,7 @@ struct CascadeCasters {
 // quarter of the cascade's texel (LodView::resolved_error_m): Ulrich's chunks are a hierarchy of
 // simplifications, so any ancestor is a valid coarser mesh of the same ground, and a finer one
 // would change no texel. The ridged mountains' errors are large, so at the default view this
-// merges about a tenth of the last tile's chunks (1780 to 1609), and its selection never walks
+// merges about a tenth of the last tile's chunks (1328 to 1186), and its selection never walks
 // the finer levels that the far cascades' hundred kilometres would otherwise take. The caster
 // stays within twice that of the receiver's own chunk where they differ (a chunk's error is at
 // most its parent's, as the terrain's are). Two selections that resolve alike draw the same tile:
