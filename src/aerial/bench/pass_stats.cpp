@@ -19,22 +19,21 @@ std::vector<double> GpuTotals(const std::vector<RunResult>& runs) {
   return values;
 }
 
-std::vector<double> WallTotals(const std::vector<RunResult>& runs) {
+namespace {
+
+// One field of every run.
+std::vector<double> Each(const std::vector<RunResult>& runs, double RunResult::*field) {
   std::vector<double> values;
-  for (const auto& run : runs) values.push_back(run.wall_ms);
+  for (const auto& run : runs) values.push_back(run.*field);
   return values;
 }
 
-std::vector<double> CpuTotals(const std::vector<RunResult>& runs) {
-  std::vector<double> values;
-  for (const auto& run : runs) values.push_back(run.cpu_ms);
-  return values;
-}
+}  // namespace
 
+std::vector<double> WallTotals(const std::vector<RunResult>& runs) { return Each(runs, &RunResult::wall_ms); }
+std::vector<double> CpuTotals(const std::vector<RunResult>& runs) { return Each(runs, &RunResult::cpu_ms); }
 std::vector<double> CallerCpuTotals(const std::vector<RunResult>& runs) {
-  std::vector<double> values;
-  for (const auto& run : runs) values.push_back(run.caller_cpu_ms);
-  return values;
+  return Each(runs, &RunResult::caller_cpu_ms);
 }
 
 double MeanShadowTilesRedrawn(const std::vector<RunResult>& runs) {

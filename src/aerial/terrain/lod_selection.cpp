@@ -203,7 +203,8 @@ Selection SelectChunks(const LodView& view, ChunkSource& source) {
       if (ready) {
         next.insert(next.end(), children.begin(), children.end());
       } else {
-        selection.chunks.push_back({id});
+        // Drawn in their place where it is in the frustum itself.
+        if (IntersectsFrustum(view, info.bounds)) selection.chunks.push_back({id});
         ++selection.deferred;
       }
     }

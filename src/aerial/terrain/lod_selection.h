@@ -2,10 +2,11 @@
 // Which terrain chunks to draw for a camera: chunked level of detail (Ulrich 2002). Walking the
 // quadtree from the root, a chunk outside the view frustum is not drawn (nor walked into, unless
 // a finer chunk below it may rise into the frustum), a chunk whose geometric error projects to
-// more than max_error_px pixels is replaced by its four children, and any other is drawn. The projected error of a chunk is its geometric error (terrain_chunk.h) seen
-// from its nearest point, rho = error * K / distance with K = height_px / (2 tan(fov_y / 2))
-// (Ulrich's equation 1 with the viewport's pixels per radian), so every drawn chunk is within
-// max_error_px of the surface on screen, wherever the camera is.
+// more than max_error_px pixels is replaced by its four children, and any other is drawn. The
+// projected error of a chunk is its geometric error (terrain_chunk.h) seen from its nearest point,
+// rho = error * K / distance with K = height_px / (2 tan(fov_y / 2)) (Ulrich's equation 1 with the
+// viewport's pixels per radian), so every drawn chunk is within max_error_px of the surface on
+// screen, wherever the camera is.
 #include <array>
 #include <limits>
 #include <span>
