@@ -39,12 +39,17 @@ Reflection ReflectFroxelShader() {
   // "FrameBlock.viewport: offset 208, type ..." and "FrameBlock: offset -1, type ffffffff, size 224, ..."
   std::regex member(R"(^(\w+Block\.[\w\.\[\]]+): offset (\d+),)");
   std::regex block(R"(^(\w+Block): offset -1, type \w+, size (\d+),)");
+  // The atmosphere's and the frame's members sit in the block's array of one struct
+  // (definitions.glsl, AERIAL_BLOCK_INDEX): "AtmosphereBlock.parameters[0].top_radius", and
+  // "AtmosphereBlock.parameters.top_radius" where a shader reads it at a computed index.
+  std::regex parameters(R"(\.parameters(\[0\])?)");
   std::smatch m;
   size_t start = 0;
   while (start < output.size()) {
     size_t end = output.find('\n', start);
     std::string line = output.substr(start, end == std::string::npos ? std::string::npos : end - start);
-    if (std::regex_search(line, m, member)) reflection.member_offsets[m[1]] = std::stol(m[2]);
+    if (std::regex_search(line, m, member))
+      reflection.member_offsets[std::regex_replace(m[1].str(), parameters, "")] = std::stol(m[2]);
     else if (std::regex_search(line, m, block)) reflection.block_sizes[m[1]] = std::stol(m[2]);
     if (end == std::string::npos) break;
     start = end + 1;

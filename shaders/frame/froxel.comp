@@ -6,6 +6,7 @@
 // storing the running integral at each slice center. Each step's single scattering is scaled by
 // the fraction of the step that sees the sun (the shadow map, shadow.glsl): light shafts and
 // mountain shadows in the air.
+#include "blocks_not_inlined.glsl"
 #include "froxel.glsl"
 #include "frame.glsl"
 #define SHADOW_BINDING 7

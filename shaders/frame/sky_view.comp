@@ -3,6 +3,7 @@
 // Sky-view pass: fills the per-frame sky-view table (sky_view.glsl) from the 4D or 3D tables, and
 // adds the correction of the tables' read (GetSkyInscatterCorrection) interpolated from the
 // lattice that sky_view_correction.comp wrote just before.
+#include "blocks_not_inlined.glsl"
 #include "sky_view.glsl"
 #include "surface.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;

@@ -11,6 +11,7 @@
 // cell spans. Since the correction also re-blends the multiple scattering in nu, it runs for a high
 // sun too (the 3D tables need none: every node returns at once); the frame under a moving sun at
 // noon did not move beyond its run-to-run noise (aerial_bench_render --preset noon).
+#include "blocks_not_inlined.glsl"
 #include "sky_lookup.glsl"
 #include "sky_view.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;

@@ -27,9 +27,16 @@ struct DensityProfile {
 // kMaxSpectralSunlightTerms in aerial/shader_abi/atmosphere_block.h.
 #define SPECTRAL_SUNLIGHT_MAX_TERMS 48
 
+// The atmosphere's and the frame's blocks (frame.glsl) are each read as the one element of an
+// array, at AERIAL_BLOCK_INDEX: 0 unless the shader defines it first (blocks_not_inlined.glsl). An
+// array of one struct in a std140 block lays its members out as the block itself would.
+#ifndef AERIAL_BLOCK_INDEX
+#define AERIAL_BLOCK_INDEX 0
+#endif
+
 // Mirrored by aerial::AtmosphereUniforms (aerial/shader_abi/atmosphere_block.h);
 // tests/uniform_layout_test.cpp checks every member's offset against the compiler's layout.
-layout(std140, set = 0, binding = 0) uniform AtmosphereBlock {
+struct AtmosphereParameters {
   vec4 solar_irradiance;        // W/m^2/nm, xyz = the three wavelengths.
   vec4 rayleigh_scattering;
   vec4 mie_scattering;
@@ -63,7 +70,11 @@ layout(std140, set = 0, binding = 0) uniform AtmosphereBlock {
   vec4 spectral_sunlight_rayleigh[SPECTRAL_SUNLIGHT_MAX_TERMS];
   vec4 spectral_sunlight_mie[SPECTRAL_SUNLIGHT_MAX_TERMS];
   vec4 spectral_sunlight_direct[SPECTRAL_SUNLIGHT_MAX_TERMS];
-} atmosphere;
+};
+layout(std140, set = 0, binding = 0) uniform AtmosphereBlock {
+  AtmosphereParameters parameters[1];
+} atmosphere_block;
+#define atmosphere atmosphere_block.parameters[AERIAL_BLOCK_INDEX]
 
 float ClampCosine(float mu) { return clamp(mu, -1.0, 1.0); }
 float ClampDistance(float d) { return max(d, 0.0); }

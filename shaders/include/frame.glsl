@@ -14,7 +14,7 @@ layout(constant_id = 0) const int kAerialPerPixel = 0;
 
 // Mirrored by aerial::FrameUniforms (aerial/shader_abi/frame_block.h); tests/uniform_layout_test.cpp
 // checks every member's offset against the compiler's layout.
-layout(std140, set = 0, binding = 1) uniform FrameBlock {
+struct FrameParameters {
   mat4 view_projection;          // camera-relative world -> clip (reversed Z, infinite far)
   mat4 inverse_view_projection;  // clip -> camera-relative world
   vec4 camera_scene_position;    // xyz: camera in the scene frame (to make vertices relative)
@@ -23,7 +23,11 @@ layout(std140, set = 0, binding = 1) uniform FrameBlock {
   ivec4 froxel_size;             // x, y, z: froxel grid (w unused)
   vec4 froxel_depth;             // x: far distance of the last slice (m)
   vec4 viewport;                 // x, y: size in pixels
-} frame;
+};
+layout(std140, set = 0, binding = 1) uniform FrameBlock {
+  FrameParameters parameters[1];  // at AERIAL_BLOCK_INDEX (definitions.glsl)
+} frame_block;
+#define frame frame_block.parameters[AERIAL_BLOCK_INDEX]
 
 // Unit view ray (camera-relative world) through a point of the screen, uv in [0,1]^2.
 vec3 ViewRayFromScreen(vec2 uv) {
