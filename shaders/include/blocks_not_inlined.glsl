@@ -6,9 +6,9 @@
 // Why: lavapipe (Mesa 22.3) inlines into a shader the uniform values that decide a branch or bound
 // a loop, then compiles the pipeline anew at every bind, keeping no variant (lvp_execute.c,
 // update_inline_shader_state). The three passes held such branches (the tables' sizes, the sunlight
-// terms, the froxel grid's depth), so a moving frame compiled all three: 20-25 ms of its wall clock
-// on this 2-core machine (docs/speed.md, "the tenth round"). A uniform read at an offset that is
-// not a constant is never inlined. A GPU driver reads the same values from the block either way.
+// terms, the froxel grid's depth), so a moving frame compiled all three: a third of its wall clock
+// on a 2-core machine (docs/speed.md, "What the tenth round did"). A uniform read at an offset that
+// is not a constant is never inlined. A GPU driver reads the same values from the block either way.
 #ifndef AERIAL_BLOCKS_NOT_INLINED_GLSL
 #define AERIAL_BLOCKS_NOT_INLINED_GLSL
 #ifdef AERIAL_DEFINITIONS_GLSL
