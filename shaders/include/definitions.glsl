@@ -6,6 +6,18 @@
 
 const float PI = 3.14159265358979323846;
 
+// Control flow that a CPU rasterizer pays for. lavapipe's shader compiler (gallivm, Mesa 22.3)
+// runs a SIMD group of invocations in lockstep under a lane mask and does not jump over a branch
+// that no lane takes: both sides of every if run, reads included (an early return too). A loop
+// does end once every lane has left it. In the functions the frame calls per pixel, per vertex or
+// per march step, therefore:
+//  - a branch picks where to read, not whether to read: `read(a ? x : y)`, not
+//    `if (a) return read(x); return read(y);`, which costs two reads;
+//  - work that only some cases need sits in a loop over the case's count (GetSunDiscLight's taps),
+//    not behind an if with the common case's early return before it: a group whose lanes all
+//    take the common case then pays for its one pass (and the loop's last test), not for all.
+// A GPU runs the same code at the same cost. Measured in docs/speed.md ("The eleventh round").
+
 // One layer of a density profile (Bruneton 2017, DensityProfileLayer):
 // density(h) = exp_term * exp(exp_scale * h) + linear_term * h + constant_term, clamped to [0, 1].
 struct DensityProfileLayer {

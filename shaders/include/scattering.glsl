@@ -148,13 +148,18 @@ vec2 GetClampedNuBlend(ivec4 size, vec4 uvwz, float mu, float mu_s, float nu) {
   return vec2(tex_x, nu1 > nu0 ? clamp((nu - nu0) / (nu1 - nu0), 0.0, 1.0) : 0.5);
 }
 
-// uvw: the table coordinates of (mu_s, mu, r), i.e. uvwz.yzw.
+// uvw: the table coordinates of (mu_s, mu, r), i.e. uvwz.yzw. One read chosen by a select, the
+// second only for the 4D tables (definitions.glsl, "Control flow").
 vec3 GetScatteringBlended(sampler3D scattering_texture, ivec4 size, vec2 nu_blend, vec3 uvw) {
-  if (size.w == 1) return ReadTable(scattering_texture, uvw).rgb;
+  bool one_slice = size.w == 1;
   float nu_size = float(size.w);
-  vec3 uvw0 = vec3((nu_blend.x + uvw.x) / nu_size, uvw.y, uvw.z);
-  vec3 uvw1 = vec3((nu_blend.x + 1.0 + uvw.x) / nu_size, uvw.y, uvw.z);
-  return mix(ReadTable(scattering_texture, uvw0).rgb, ReadTable(scattering_texture, uvw1).rgb, nu_blend.y);
+  vec3 uvw0 = one_slice ? uvw : vec3((nu_blend.x + uvw.x) / nu_size, uvw.y, uvw.z);
+  vec3 scattering = ReadTable(scattering_texture, uvw0).rgb;
+  if (!one_slice) {
+    vec3 uvw1 = vec3((nu_blend.x + 1.0 + uvw.x) / nu_size, uvw.y, uvw.z);
+    scattering = mix(scattering, ReadTable(scattering_texture, uvw1).rgb, nu_blend.y);
+  }
+  return scattering;
 }
 
 vec3 GetScatteringAt(sampler3D scattering_texture, ivec4 size, vec4 uvwz) {
@@ -187,14 +192,17 @@ vec3 GetScattering(sampler3D scattering_texture, ivec4 size, float r, float mu, 
 vec3 GetDensityBlended(sampler3D density_texture, ivec4 size, vec2 nu_blend, vec3 uvw) {
   float mu_s_size = float(size.z);
   vec2 blend = GetTexelBlend(uvw.x, mu_s_size);
-  if (size.w == 1 || blend.y == 0.0 || !IsMuSTexelBelow(blend.x + 1.0, mu_s_size, 0.0)) {
-    return GetScatteringBlended(density_texture, size, nu_blend, uvw);
+  bool exponential = size.w != 1 && blend.y != 0.0 && IsMuSTexelBelow(blend.x + 1.0, mu_s_size, 0.0);
+  // Linear: one read at uvw. Exponential: the lower texel's centre, then the upper one's
+  // (definitions.glsl, "Control flow").
+  vec3 density = GetScatteringBlended(density_texture, size, nu_blend,
+                                      exponential ? vec3((blend.x + 0.5) / mu_s_size, uvw.yz) : uvw);
+  if (exponential) {
+    vec3 upper = GetScatteringBlended(density_texture, size, nu_blend,
+                                      vec3((blend.x + 1.5) / mu_s_size, uvw.yz));
+    density = MixExponentially(density, upper, blend.y);
   }
-  vec3 density0 = GetScatteringBlended(density_texture, size, nu_blend,
-                                       vec3((blend.x + 0.5) / mu_s_size, uvw.yz));
-  vec3 density1 = GetScatteringBlended(density_texture, size, nu_blend,
-                                       vec3((blend.x + 1.5) / mu_s_size, uvw.yz));
-  return MixExponentially(density0, density1, blend.y);
+  return density;
 }
 
 // The blend in mu_s (and nu): GetDensityBlended for J_ms (density), linear for the other tables.

@@ -88,12 +88,10 @@ vec3 GetOpticalDepthFromOrigin(sampler2D transmittance_texture, vec3 origin, flo
                                float d, bool ray_r_mu_intersects_ground) {
   float r_d = RadiusAtDistance(r, mu, d);
   float mu_d = MuAtDistance(r, mu, d, r_d);
-  if (ray_r_mu_intersects_ground) {
-    vec3 tau_d = GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r_d, -mu_d);
-    return max(tau_d - origin, vec3(0.0));
-  }
-  vec3 tau_d = GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r_d, mu_d);
-  return max(origin - tau_d, vec3(0.0));
+  // One read, at the reversed ray for a ray that hits the ground (definitions.glsl, "Control flow").
+  vec3 tau_d = GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r_d,
+                                                      ray_r_mu_intersects_ground ? -mu_d : mu_d);
+  return max(ray_r_mu_intersects_ground ? tau_d - origin : origin - tau_d, vec3(0.0));
 }
 
 vec3 GetTransmittanceFromOrigin(sampler2D transmittance_texture, vec3 origin, float r, float mu,
@@ -155,53 +153,54 @@ struct SunDiscLight {
   vec3 spread;
 };
 
+// Tap i of a disc read in `taps` taps (2 to 4; 1: the centre alone): the zenith cosine of its
+// point and its weight, to be normalized by the taps' sum (Gauss-Chebyshev weights already sum
+// to 1). t_h: the visible part of a cut disc, y = cos t for t in [0, t_h]. Each tap's node is
+// worked out by selects as the tap is read, in a loop of `taps` passes (definitions.glsl, "Control
+// flow"): on a CPU rasterizer a SIMD group of points that take the centre alone (the sun more than
+// 10 degrees above the cut-off) pays for one pass and the masked one that ends the loop, where
+// the centre's early return before the taps' branch cost it both: five reads and the trigonometry.
+void GetSunDiscTap(int i, int taps, float mu_s, float sin_s, float t_h, out float mu, out float w) {
+  // A whole disc: y = +-1/2 (2 taps), or +-1/sqrt 2 and 0 (3 taps).
+  float y = taps == 2 ? 0.5 : 0.70710678;
+  float whole_y = i == 0 ? y : (i == 1 ? -y : 0.0);
+  float whole_w = taps == 2 ? 0.5 : (i == 2 ? 0.5 : 0.25);
+  // A cut disc: Gauss-Legendre in t, 4 points on [-1, 1].
+  const vec4 node = vec4(-0.3399810436, -0.8611363116, 0.3399810436, 0.8611363116);
+  const vec4 weight = vec4(0.6521451549, 0.3478548451, 0.6521451549, 0.3478548451);
+  float t = 0.5 * t_h * (1.0 + node[i]);
+  float sin_t = sin(t);
+  bool cut = taps == 4;
+  mu = taps == 1 ? mu_s : GetDiscPointCosine(mu_s, sin_s, cut ? cos(t) : whole_y);
+  w = taps == 1 ? 1.0 : (cut ? weight[i] * sin_t * sin_t : whole_w);
+}
+
 SunDiscLight GetSunDiscLight(sampler2D transmittance_texture, float r, float mu_s,
                              float cut_off_cosine, bool cosine_weighted) {
-  float alpha = atmosphere.sun_angular_radius;
   float x = GetSunElevationInDiscRadii(mu_s, cut_off_cosine);
   if (x <= -1.0) return SunDiscLight(vec3(0.0), vec3(0.0));
-  if (x * alpha > SUN_DISC_ONE_TAP_ELEVATION)
-    return SunDiscLight(GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r, mu_s),
-                        vec3(cosine_weighted ? mu_s : 1.0));
+  bool one_tap = x * atmosphere.sun_angular_radius > SUN_DISC_ONE_TAP_ELEVATION;
+  bool whole = x >= 1.0 && !cosine_weighted;
+  int taps = one_tap ? 1 : (whole ? (x > 5.0 ? 2 : 3) : 4);
   float sin_s = sqrt(max(1.0 - mu_s * mu_s, 0.0));
-  // Two to four taps: zenith cosines, weights (summing to 1) and the visible fraction.
-  int taps = 4;
+  float t_h = acos(clamp(-x, -1.0, 1.0));
   float mu[4];
   float w[4];
-  float visible = 1.0;
-  if (x >= 1.0 && !cosine_weighted) {
-    taps = x > 5.0 ? 2 : 3;
-    float y = taps == 2 ? 0.5 : 0.70710678;
-    mu[0] = GetDiscPointCosine(mu_s, sin_s, y);
-    mu[1] = GetDiscPointCosine(mu_s, sin_s, -y);
-    mu[2] = mu_s;
-    w[0] = taps == 2 ? 0.5 : 0.25;
-    w[1] = w[0];
-    w[2] = 0.5;
-  } else {
-    visible = GetSunDiscVisibleFraction(x);
-    float t_h = acos(max(-x, -1.0));
-    const vec2 node = vec2(0.3399810436, 0.8611363116);  // Gauss-Legendre, 4 points on [-1, 1]
-    const vec2 weight = vec2(0.6521451549, 0.3478548451);
-    float weights = 0.0;
-    for (int i = 0; i < 4; ++i) {
-      float t = 0.5 * t_h * (1.0 + (i < 2 ? -node[i] : node[i - 2]));
-      w[i] = weight[i % 2] * sin(t) * sin(t);
-      mu[i] = GetDiscPointCosine(mu_s, sin_s, cos(t));
-      weights += w[i];
-    }
-    for (int i = 0; i < 4; ++i) w[i] /= weights;
-  }
   vec3 tau[4];
-  vec3 mean = vec3(0.0);
+  float weights = 0.0;
+  vec3 weighted_tau = vec3(0.0);
   for (int i = 0; i < taps; ++i) {
+    GetSunDiscTap(i, taps, mu_s, sin_s, t_h, mu[i], w[i]);
     tau[i] = GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r, mu[i]);
-    mean += w[i] * tau[i];
+    weights += w[i];
+    weighted_tau += w[i] * tau[i];
   }
+  vec3 mean = weighted_tau / weights;
   vec3 spread = vec3(0.0);
   for (int i = 0; i < taps; ++i)
     spread += w[i] * exp(mean - tau[i]) * (cosine_weighted ? max(mu[i], 0.0) : 1.0);
-  return SunDiscLight(mean, spread * visible);
+  float visible = taps == 4 ? GetSunDiscVisibleFraction(x) : 1.0;
+  return SunDiscLight(mean, spread * (visible / weights));
 }
 
 // -sqrt(1 - (R / r)^2), from the horizon distance without cancellation.
