@@ -11,6 +11,18 @@ vk::ImageCreateInfo FroxelImage(const FroxelGrid& grid) {
           .volume = true};
 }
 
+// froxel.comp's constants: 0 and 1 (frame.glsl's kAerialPerPixel, unread here, and shadow.glsl's
+// kSunShadows) keep their defaults; 2 is kSunHighEverywhere.
+vk::ComputePipeline MakeFroxelPipeline(const vk::Context& context, FroxelPassVariant variant) {
+  return vk::ComputePipeline(context, "frame/froxel.comp",
+                             {{"AtmosphereBlock", vk::kUniform}, {"FrameBlock", vk::kUniform},
+                              {"transmittance_texture", vk::kSampled}, {"multiple_density_texture", vk::kSampled},
+                              {"rayleigh_froxels", vk::kStorageImage}, {"mie_froxels", vk::kStorageImage},
+                              {"transmittance_froxels", vk::kStorageImage}, {"ShadowBlock", vk::kUniform},
+                              {"shadow_map", vk::kSampled}},
+                             0, {0, 1, variant == FroxelPassVariant::kSunHigh ? 1 : 0});
+}
+
 }  // namespace
 
 FroxelVolume::FroxelVolume(const vk::Context& context, const FroxelGrid& grid)
@@ -18,12 +30,7 @@ FroxelVolume::FroxelVolume(const vk::Context& context, const FroxelGrid& grid)
       rayleigh_(context, FroxelImage(grid)),
       mie_(context, FroxelImage(grid)),
       transmittance_(context, FroxelImage(grid)),
-      pipeline_(context, "frame/froxel.comp",
-                {{"AtmosphereBlock", vk::kUniform}, {"FrameBlock", vk::kUniform},
-                 {"transmittance_texture", vk::kSampled}, {"multiple_density_texture", vk::kSampled},
-                 {"rayleigh_froxels", vk::kStorageImage}, {"mie_froxels", vk::kStorageImage},
-                 {"transmittance_froxels", vk::kStorageImage}, {"ShadowBlock", vk::kUniform},
-                 {"shadow_map", vk::kSampled}}),
+      pipeline_(MakeFroxelPipeline(context, FroxelPassVariant::kGeneral)),
       no_shadow_block_(context, vk::UniformBufferInfo(sizeof(ShadowUniforms))),
       no_shadow_map_(context, vk::RenderTargetInfo(1, 1, vk::kDepth32f)),
       no_shadow_sampler_(vk::CreateShadowMapSampler(context)) {
@@ -37,8 +44,11 @@ FroxelVolume::FroxelVolume(const vk::Context& context, const FroxelGrid& grid)
 
 void FroxelVolume::Build(const vk::CommandBuffer& cmd, const AtmosphereTables& tables,
                          const vk::Buffer& frame_uniforms, const vk::Buffer& shadow_uniforms,
-                         const vk::SampledImageSlot& shadow_map) const {
-  pipeline_.Dispatch(cmd,
+                         const vk::SampledImageSlot& shadow_map, FroxelPassVariant variant) const {
+  if (variant == FroxelPassVariant::kSunHigh && !sun_high_pipeline_)
+    sun_high_pipeline_.emplace(MakeFroxelPipeline(tables.context(), variant));
+  const vk::ComputePipeline& pipeline = variant == FroxelPassVariant::kSunHigh ? *sun_high_pipeline_ : pipeline_;
+  pipeline.Dispatch(cmd,
                      {vk::UniformBufferSlot{&tables.uniform_buffer()},
                       vk::UniformBufferSlot{&frame_uniforms},
                       tables.Sampled(tables.transmittance()),
@@ -50,8 +60,8 @@ void FroxelVolume::Build(const vk::CommandBuffer& cmd, const AtmosphereTables& t
 }
 
 void FroxelVolume::Build(const vk::CommandBuffer& cmd, const AtmosphereTables& tables,
-                         const vk::Buffer& frame_uniforms) const {
-  Build(cmd, tables, frame_uniforms, no_shadow_block_, {&no_shadow_map_, *no_shadow_sampler_});
+                         const vk::Buffer& frame_uniforms, FroxelPassVariant variant) const {
+  Build(cmd, tables, frame_uniforms, no_shadow_block_, {&no_shadow_map_, *no_shadow_sampler_}, variant);
 }
 
 FroxelTexels FroxelVolume::Read(const vk::Context& context) const {

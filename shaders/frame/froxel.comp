@@ -7,6 +7,9 @@
 // the fraction of the step that sees the sun (the shadow map, shadow.glsl): light shafts and
 // mountain shadows in the air.
 #include "blocks_not_inlined.glsl"
+// FroxelVolume's variant for a sun high over every froxel (froxel/froxel_pass_variant.h).
+layout(constant_id = 2) const bool kSunHighEverywhere = false;
+#define AERIAL_SUN_HIGH_EVERYWHERE kSunHighEverywhere
 #include "froxel.glsl"
 #include "frame.glsl"
 #define SHADOW_BINDING 7

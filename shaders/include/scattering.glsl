@@ -192,7 +192,9 @@ vec3 GetScattering(sampler3D scattering_texture, ivec4 size, float r, float mu, 
 vec3 GetDensityBlended(sampler3D density_texture, ivec4 size, vec2 nu_blend, vec3 uvw) {
   float mu_s_size = float(size.z);
   vec2 blend = GetTexelBlend(uvw.x, mu_s_size);
-  bool exponential = size.w != 1 && blend.y != 0.0 && IsMuSTexelBelow(blend.x + 1.0, mu_s_size, 0.0);
+  // The sun high (AERIAL_SUN_HIGH_EVERYWHERE): both texels hold a sun above the horizon.
+  bool exponential = !AERIAL_SUN_HIGH_EVERYWHERE && size.w != 1 && blend.y != 0.0 &&
+                     IsMuSTexelBelow(blend.x + 1.0, mu_s_size, 0.0);
   // Linear: one read at uvw. Exponential: the lower texel's centre, then the upper one's
   // (definitions.glsl, "Control flow").
   vec3 density = GetScatteringBlended(density_texture, size, nu_blend,

@@ -126,6 +126,14 @@ vec3 GetTransmittance(sampler2D transmittance_texture, float r, float mu, float 
 // horizontal surface also its plane); cosine_weighted: average T max(mu, 0) instead of T.
 const float SUN_DISC_ONE_TAP_ELEVATION = 0.1745;  // 10 degrees
 
+// True in a shader whose every point has the sun more than SUN_DISC_ONE_TAP_ELEVATION above its
+// horizontal: the froxel pass's variant for such frames (froxel/froxel_pass_variant.h), which
+// defines it as a specialization constant before its includes. The disc is then its centre alone
+// and J_ms is blended linearly in mu_s (GetDensityBlended), their tests compiled out.
+#ifndef AERIAL_SUN_HIGH_EVERYWHERE
+#define AERIAL_SUN_HIGH_EVERYWHERE false
+#endif
+
 // The zenith cosine of the disc's point y disc radii above its centre, to O(alpha^4) = 1e-9.
 float GetDiscPointCosine(float mu_s, float sin_s, float y) {
   float y_alpha = y * atmosphere.sun_angular_radius;
@@ -179,7 +187,8 @@ SunDiscLight GetSunDiscLight(sampler2D transmittance_texture, float r, float mu_
                              float cut_off_cosine, bool cosine_weighted) {
   float x = GetSunElevationInDiscRadii(mu_s, cut_off_cosine);
   if (x <= -1.0) return SunDiscLight(vec3(0.0), vec3(0.0));
-  bool one_tap = x * atmosphere.sun_angular_radius > SUN_DISC_ONE_TAP_ELEVATION;
+  // x alpha >= mu_s for a cut-off at or below the horizontal: AERIAL_SUN_HIGH_EVERYWHERE implies it.
+  bool one_tap = AERIAL_SUN_HIGH_EVERYWHERE || x * atmosphere.sun_angular_radius > SUN_DISC_ONE_TAP_ELEVATION;
   bool whole = x >= 1.0 && !cosine_weighted;
   int taps = one_tap ? 1 : (whole ? (x > 5.0 ? 2 : 3) : 4);
   float sin_s = sqrt(max(1.0 - mu_s * mu_s, 0.0));

@@ -41,7 +41,8 @@ void Froxels::Record(VkCommandBuffer command_buffer, const Tables& tables, const
   vk::BorrowedCommandBuffer cmd(atmosphere_tables.context(), command_buffer);
   FrameUniforms frame = MakeFrameUniforms(camera, tables.atmosphere().bottom_radius_m, grid());
   impl_->frame_block.RecordUpdate(*cmd, std::as_bytes(std::span(&frame, 1)));
-  impl_->volume.Build(*cmd, atmosphere_tables, impl_->frame_block);
+  impl_->volume.Build(*cmd, atmosphere_tables, impl_->frame_block,
+                      ChooseFroxelPassVariant(frame, tables.atmosphere().bottom_radius_m));
   vk::FullBarrier(*cmd);
 }
 

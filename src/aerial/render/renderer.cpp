@@ -478,8 +478,8 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
     bool sky_view_stale = SkyViewStale(complete, lattice_remade);
     timer.Begin(cmd, "froxel build");
     if (!FroxelsReusable(froxels_key_, frame_uniforms_, frame_info_.shadow_map_updated)) {
-      froxels_.Build(cmd, tables_, frame, shadow_buffers_[slot],
-                     shadow_map_.slot());
+      froxels_.Build(cmd, tables_, frame, shadow_buffers_[slot], shadow_map_.slot(),
+                     ChooseFroxelPassVariant(frame_uniforms_, tables_.atmosphere().bottom_radius_m));
       froxels_key_ = frame_uniforms_;
       frame_info_.froxels_updated = true;
     }
