@@ -14,8 +14,10 @@ enum class FroxelPassVariant {
   kSunHigh,  // the sun's centre alone, J_ms linear in mu_s: only where SunHighAtEveryFroxel
 };
 
-// The sine of the elevation above a point's horizon from which the shaders read the sun's disc at
-// its centre alone (SUN_DISC_ONE_TAP_ELEVATION, shaders/include/transmittance.glsl).
+// The shaders read the sun's disc at its centre alone where x alpha, the centre's height above the
+// cut-off cosine over the cut-off's sine, exceeds SUN_DISC_ONE_TAP_ELEVATION (0.1745,
+// shaders/include/transmittance.glsl). For a cut-off at or below the horizontal, x alpha is at
+// least the sine of the sun's elevation above the horizontal, so a sine above it suffices.
 inline constexpr double kSunDiscOneTapSine = 0.1745;
 
 // Whether the sun is more than that above the horizontal, with a margin of 0.005 for the shaders'
