@@ -12,7 +12,7 @@
 // filtering, clamp to edge) wherever its own layout puts them. Positions are camera-relative
 // world vectors (frame.glsl). The include declares specialization constant 0
 // (kAerialPerPixel, frame.glsl: 0 reads the froxels, which is what a caller wants), so the
-// caller's own constants start at 4 (aerial's passes use 1 to 3).
+// caller's own constants start at 4 (aerial's passes use 1 to 4 in their own shaders).
 //   Inscatter segment = GetAerialPerspective(rayleigh, mie, transmittance, gl_FragCoord.xy / frame.viewport.xy,
 //                                            length(relative_position));
 //   color.rgb = ApplyAerialPerspective(surface_radiance, segment, ViewSunCosine(relative_position));

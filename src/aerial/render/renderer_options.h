@@ -21,6 +21,9 @@ struct FramePasses {
 struct RendererOptions : RenderOptions {
   TerrainMode terrain = TerrainMode::kLod;
   FramePasses passes;
+  // The froxel pass's and the marched opaque pass's variants for a high sun, where they compute
+  // the same values (sun_high_variant.h); off: the general passes always, to compare with.
+  bool sun_high_variants = true;
 };
 
 // EstimateFrameMemory (aerial/renderer.h), without the terrain chunk slots for the fixed mesh.
