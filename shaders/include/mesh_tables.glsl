@@ -3,6 +3,11 @@
 // aerial perspective read from them (kAerialPerPixel 1 or 2, frame.glsl).
 #ifndef AERIAL_MESH_TABLES_GLSL
 #define AERIAL_MESH_TABLES_GLSL
+// The passes' variant for a sun high over every point that the marched per-pixel path reaches
+// (aerial/render/sun_high_variant.h, Renderer::MeshPipelinesFor); the other modes march nothing.
+// Included before anything else, so that transmittance.glsl takes it.
+layout(constant_id = 4) const bool kSunHighEverywhere = false;
+#define AERIAL_SUN_HIGH_EVERYWHERE kSunHighEverywhere
 #include "aerial_perspective.glsl"
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
 layout(set = 0, binding = 4) uniform sampler3D multiple_density_texture;

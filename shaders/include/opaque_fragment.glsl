@@ -16,10 +16,6 @@
 //    comparison cost about a third of a still frame; one texel fetch replaces them.
 #ifndef AERIAL_OPAQUE_FRAGMENT_GLSL
 #define AERIAL_OPAQUE_FRAGMENT_GLSL
-// The variant for a sun high over every point the marched per-pixel path reaches
-// (aerial/render/sun_high_variant.h, Renderer::Record); the other modes march nothing.
-layout(constant_id = 4) const bool kSunHighEverywhere = false;
-#define AERIAL_SUN_HIGH_EVERYWHERE kSunHighEverywhere
 #include "mesh_tables.glsl"
 #include "surface.glsl"
 #define SHADOW_BINDING 8

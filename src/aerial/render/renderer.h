@@ -36,11 +36,13 @@ namespace aerial {
 // the sky's part alone.
 enum class SurfaceLight { kSunAndSky, kSkyOnly };
 
-// The opaque pass's pipelines of one shader variant: lookup looks the sun visibility up
-// (opaque_fragment.glsl); with shadows on, caching also writes it and cached reads it back.
-struct OpaquePipelines {
-  vk::GraphicsPipeline lookup;
-  std::optional<vk::GraphicsPipeline> caching, cached;
+// The mesh passes' pipelines of one shader variant: opaque looks the sun visibility up
+// (opaque_fragment.glsl); with shadows on, opaque_caching also writes it and opaque_cached reads
+// it back; then the transparent objects.
+struct MeshPipelines {
+  vk::GraphicsPipeline opaque;
+  std::optional<vk::GraphicsPipeline> opaque_caching, opaque_cached;
+  vk::GraphicsPipeline transparent;
 };
 
 class Renderer {
@@ -90,8 +92,8 @@ class Renderer {
   const FrameUniforms& frame_uniforms() const { return frame_uniforms_; }  // of the last frame
   const RendererOptions& options() const { return options_; }
   const FrameInfo& frame_info() const { return frame_info_; }
-  // Whether the last frame's opaque pass was the variant for a high sun (OpaquePipelinesFor).
-  bool opaque_sun_high() const { return opaque_sun_high_used_; }
+  // Whether the last frame's mesh passes were the variant for a high sun (MeshPipelinesFor).
+  bool mesh_sun_high() const { return mesh_sun_high_used_; }
 
  private:
   terrain::LodView FrameLodView(const Scene& scene) const;
@@ -103,12 +105,12 @@ class Renderer {
   void RecordSkyViewCorrection(const vk::CommandBuffer& cmd, const vk::Buffer& frame,
                                const std::array<bool, kSkyViewLatticeBands>& remake);
   void RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& frame);
-  // The opaque pipelines of this frame's variant (renderer.cpp says when it is the high sun's).
-  const OpaquePipelines& OpaquePipelinesFor(const Scene& scene);
+  // The mesh pipelines of this frame's variant (renderer.cpp says when it is the high sun's).
+  const MeshPipelines& MeshPipelinesFor(const Scene& scene);
   std::vector<vk::Slot> MeshSlots(uint32_t slot) const;
   void DrawOpaque(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
                   const std::vector<vk::Slot>& slots) const;
-  void DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot,
+  void DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot, const vk::GraphicsPipeline& transparent,
                              const std::vector<vk::Slot>& mesh_slots) const;
 
   const AtmosphereTables& tables_;
@@ -147,13 +149,13 @@ class Renderer {
   bool still_view_ = false;
   bool shadow_selection_whole_ = false;
   vk::ComputePipeline sky_view_correction_, sky_view_;
-  double opaque_radius_m_;  // how far from the scene's origin an opaque surface may lie
-  OpaquePipelines opaque_;
-  // The marched per-pixel path's opaque variant for a high sun (OpaquePipelinesFor), made at its
-  // first use, and whether the last frame drew with it.
-  std::optional<OpaquePipelines> opaque_sun_high_;
-  bool opaque_sun_high_used_ = false;
-  vk::GraphicsPipeline sky_, transparent_, surface_;
+  double scene_radius_m_;  // how far from the scene's origin a surface may lie
+  MeshPipelines mesh_;
+  // The marched per-pixel path's variant for a high sun (MeshPipelinesFor), made at its first use,
+  // and whether the last frame drew with it.
+  std::optional<MeshPipelines> mesh_sun_high_;
+  bool mesh_sun_high_used_ = false;
+  vk::GraphicsPipeline sky_, surface_;
 };
 
 }  // namespace aerial

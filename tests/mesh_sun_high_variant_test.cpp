@@ -1,5 +1,5 @@
-// The marched per-pixel path's opaque pass in its variant for a high sun
-// (aerial/render/sun_high_variant.h, Renderer::OpaquePipelinesFor) against the general pass: the
+// The marched per-pixel path's mesh passes (opaque and transparent) in their variant for a high sun
+// (aerial/render/sun_high_variant.h, Renderer::MeshPipelinesFor) against the general passes: the
 // same image where the renderer picks it, and not picked where the sun is low.
 #include <gtest/gtest.h>
 
@@ -26,7 +26,7 @@ double LargestDifference(const ImageRgbF& a, const ImageRgbF& b) {
 
 struct Frames {
   ImageRgbF first, still;  // the first frame (sun visibility looked up and written) and a still one (read back)
-  bool sun_high;           // the last frame's opaque pass was the variant
+  bool sun_high;           // the last frame's mesh passes were the variant
 };
 
 // Two frames of a preset on the marched per-pixel path, shadows on, with the variants allowed or not.
@@ -40,15 +40,16 @@ Frames RenderPerPixel(const std::string& preset, bool sun_high_variants) {
   ImageRgbF first = renderer.ReadOutput();
   renderer.Render(scene);
   EXPECT_TRUE(renderer.frame_info().sun_visibility_cached) << "the still frame should read the sun visibility back";
-  return {std::move(first), renderer.ReadOutput(), renderer.opaque_sun_high()};
+  return {std::move(first), renderer.ReadOutput(), renderer.mesh_sun_high()};
 }
 
-class OpaqueSunHighVariantGpu : public GpuTest {};
+class MeshSunHighVariantGpu : public GpuTest {};
 
-// At noon the marched points take the same branches in both passes, and the variant has only
+// At noon (the balloon, the panes and the particle cloud in front of the terrain) the marched
+// points take the same branches in both passes, and the variant has only
 // dropped the ones not taken: the same pixels to float rounding (1e-5: the compiler may fold the
 // constants in another order; the froxel vs per-pixel target is 2%).
-TEST_F(OpaqueSunHighVariantGpu, SameImageWhereTheSunIsHighOverEveryOpaqueSurface) {
+TEST_F(MeshSunHighVariantGpu, SameImageWhereTheSunIsHighOverEverySurface) {
   Frames variant = RenderPerPixel("noon", true);
   Frames general = RenderPerPixel("noon", false);
   EXPECT_TRUE(variant.sun_high);
@@ -62,7 +63,7 @@ TEST_F(OpaqueSunHighVariantGpu, SameImageWhereTheSunIsHighOverEveryOpaqueSurface
 }
 
 // At sunset the far terrain's air has the sun's disc cut by the horizon: not picked.
-TEST_F(OpaqueSunHighVariantGpu, NotPickedWhereTheSunIsLow) {
+TEST_F(MeshSunHighVariantGpu, NotPickedWhereTheSunIsLow) {
   EXPECT_FALSE(RenderPerPixel("sunset", true).sun_high);
 }
 
