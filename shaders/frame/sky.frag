@@ -5,6 +5,10 @@
 // pixel's own ray, plus what lies behind it: the sun disc, or the bare planet where the ray meets
 // the ground beyond the scene's geometry. In froxel mode all of it comes from the sky-view table
 // (3 bilinear taps); in the per-pixel modes, from the tables.
+// The per-pixel sky's variant for a high sun (aerial/render/sun_high_variant.h,
+// Renderer::SkyPipelineFor), declared before the includes so that transmittance.glsl takes it.
+layout(constant_id = 4) const bool kSunHighEverywhere = false;
+#define AERIAL_SUN_HIGH_EVERYWHERE kSunHighEverywhere
 #include "aerial_perspective.glsl"
 #include "sky_view.glsl"
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;

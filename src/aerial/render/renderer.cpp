@@ -104,7 +104,8 @@ vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std
 
 // The sky: a full-screen triangle at depth 0 whose test (EQUAL against the depth cleared to 0,
 // reversed Z) passes only where no geometry was drawn, so each pixel runs one shader or the other.
-vk::GraphicsPipelineCreateInfo SkyPipeline(AerialMode mode) {
+// Its constants: 0 aerial perspective per pixel (frame.glsl), 4 the variant for a high sun.
+vk::GraphicsPipelineCreateInfo SkyPipeline(AerialMode mode, bool sun_high) {
   return {.vertex_shader = "frame/sky.vert",
           .fragment_shader = "frame/sky.frag",
           .slots = SkySlots(kSampled),
@@ -112,7 +113,7 @@ vk::GraphicsPipelineCreateInfo SkyPipeline(AerialMode mode) {
           .depth_format = vk::kDepth32f,
           .depth_write = false,
           .depth_compare = vk::kDepthEqual,
-          .specialization = {PerPixel(mode)}};
+          .specialization = {PerPixel(mode), 0, 0, 0, sun_high ? 1 : 0}};
 }
 
 vk::ImageCreateInfo SkyViewImage() {
@@ -250,7 +251,7 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       sky_view_(tables.context(), "frame/sky_view.comp", SkyViewSlots(), sizeof(kSkyViewSize)),
       scene_radius_m_(SceneRadiusM(scene, tables.atmosphere().bottom_radius_m)),
       mesh_(MakeMeshPipelines(tables.context(), options, false)),
-      sky_(tables.context(), SkyPipeline(options.mode)),
+      sky_(tables.context(), SkyPipeline(options.mode, false)),
       surface_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/surface.frag", false, MeshConstants(options))) {
   if (options.frames_in_flight < 1) throw Error("frames in flight", "0", "at least 1");
   for (uint32_t slot = 0; slot < options.frames_in_flight; ++slot) {
@@ -419,6 +420,19 @@ const MeshPipelines& Renderer::MeshPipelinesFor(const Scene& scene) {
   return *mesh_sun_high_;
 }
 
+// The marched per-pixel path's sky takes its variant for a high sun where every sun that its
+// correction of the Earth's shadow marches is high over every point of every sky ray
+// (sun_high_variant.h, SunHighOverEverySkyRay): with the default tables at noon, not with the
+// small ones, whose mu_s texel below the read's pair holds a sun 7 degrees up.
+const vk::GraphicsPipeline& Renderer::SkyPipelineFor() {
+  sky_sun_high_used_ = options_.mode == AerialMode::kPerPixel && options_.sun_high_variants &&
+                       SunHighOverEverySkyRay(frame_uniforms_, tables_.atmosphere(),
+                                              tables_.options().resolution.scattering_mu_s);
+  if (!sky_sun_high_used_) return sky_;
+  if (!sky_sun_high_) sky_sun_high_.emplace(tables_.context(), SkyPipeline(options_.mode, true));
+  return *sky_sun_high_;
+}
+
 std::vector<vk::Slot> Renderer::MeshSlots(uint32_t slot) const {
   return {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame_buffers_[slot]},
           tables_.Sampled(tables_.transmittance()), tables_.Sampled(tables_.irradiance()),
@@ -452,13 +466,13 @@ void Renderer::DrawOpaque(const vk::CommandBuffer& cmd, const vk::GraphicsPipeli
 
 // The sky where no geometry was drawn, then the transparent objects over everything, inside the
 // frame's Rendering scope.
-void Renderer::DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot,
+void Renderer::DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot, const vk::GraphicsPipeline& sky,
                                      const vk::GraphicsPipeline& transparent,
                                      const std::vector<vk::Slot>& mesh_slots) const {
   vk::GpuTimer& timer = *timers_[slot];
   timer.Begin(cmd, "sky");
   if (options_.passes.sky) {
-    sky_.Bind(cmd, {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame_buffers_[slot]},
+    sky.Bind(cmd, {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame_buffers_[slot]},
                     tables_.Sampled(tables_.transmittance()), tables_.Sampled(tables_.rayleigh()),
                     tables_.Sampled(tables_.mie()), tables_.Sampled(tables_.multiple()),
                     tables_.Sampled(tables_.irradiance()), tables_.Sampled(sky_rayleigh_),
@@ -527,6 +541,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   }
   std::vector<vk::Slot> mesh_slots = MeshSlots(slot);
   const MeshPipelines& pipelines = MeshPipelinesFor(scene);
+  const vk::GraphicsPipeline& sky = SkyPipelineFor();
   // Every pixel is written once by the opaque pass or the sky, so the output is not cleared.
   vk::RenderTargets targets{.colors = {&output_}, .clear_colors = {std::nullopt}, .depth = &depth_, .clear_depth = 0.0f};
   frame_info_.sun_visibility_cached =
@@ -549,13 +564,13 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
     vk::FullBarrier(cmd);
     targets.clear_depth = std::nullopt;
     vk::Rendering rendering(cmd, targets);
-    DrawSkyAndTransparent(cmd, slot, pipelines.transparent, mesh_slots);
+    DrawSkyAndTransparent(cmd, slot, sky, pipelines.transparent, mesh_slots);
   } else {
     vk::Rendering rendering(cmd, targets);
     timer.Begin(cmd, "opaque raster");
     DrawOpaque(cmd, frame_info_.sun_visibility_cached ? *pipelines.opaque_cached : pipelines.opaque, mesh_slots);
     timer.End(cmd);
-    DrawSkyAndTransparent(cmd, slot, pipelines.transparent, mesh_slots);
+    DrawSkyAndTransparent(cmd, slot, sky, pipelines.transparent, mesh_slots);
   }
   vk::FullBarrier(cmd);
   const bool shadowed_terrain = options_.shadows && terrain_ && options_.passes.terrain;

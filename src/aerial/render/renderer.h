@@ -94,6 +94,8 @@ class Renderer {
   const FrameInfo& frame_info() const { return frame_info_; }
   // Whether the last frame's mesh passes were the variant for a high sun (MeshPipelinesFor).
   bool mesh_sun_high() const { return mesh_sun_high_used_; }
+  // Whether the last frame's sky was the variant for a high sun (SkyPipelineFor).
+  bool sky_sun_high() const { return sky_sun_high_used_; }
 
  private:
   terrain::LodView FrameLodView(const Scene& scene) const;
@@ -107,11 +109,12 @@ class Renderer {
   void RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& frame);
   // The mesh pipelines of this frame's variant (renderer.cpp says when it is the high sun's).
   const MeshPipelines& MeshPipelinesFor(const Scene& scene);
+  const vk::GraphicsPipeline& SkyPipelineFor();
   std::vector<vk::Slot> MeshSlots(uint32_t slot) const;
   void DrawOpaque(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
                   const std::vector<vk::Slot>& slots) const;
-  void DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot, const vk::GraphicsPipeline& transparent,
-                             const std::vector<vk::Slot>& mesh_slots) const;
+  void DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot, const vk::GraphicsPipeline& sky,
+                             const vk::GraphicsPipeline& transparent, const std::vector<vk::Slot>& mesh_slots) const;
 
   const AtmosphereTables& tables_;
   RendererOptions options_;
@@ -156,6 +159,8 @@ class Renderer {
   std::optional<MeshPipelines> mesh_sun_high_;
   bool mesh_sun_high_used_ = false;
   vk::GraphicsPipeline sky_, surface_;
+  std::optional<vk::GraphicsPipeline> sky_sun_high_;  // the same for the sky (SkyPipelineFor)
+  bool sky_sun_high_used_ = false;
 };
 
 }  // namespace aerial

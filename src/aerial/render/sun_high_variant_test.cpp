@@ -54,5 +54,36 @@ TEST(SunHighWithin, ADegenerateFrameOrDistanceTakesTheGeneralPass) {
   EXPECT_FALSE(SunHighWithin(Frame(45.0), -1.0, kR));
 }
 
+// The grazing ray from the ground to the top of a 60 km atmosphere: sqrt(6420^2 - 6360^2) km.
+TEST(SunHighWithin, TheLongestSkyRayGrazesTheGround) {
+  EXPECT_NEAR(LongestSkyRayM(kR, kR, 6420e3), 875671.17, 0.01);
+  EXPECT_NEAR(LongestSkyRayM(kR + 50e3, kR, 6420e3), std::sqrt(6410e3 * 6410e3 - kR * kR) + 875671.17, 0.01);
+}
+
+// Earth's tables' mu_s axis (mu_s_min -0.5) with the default 36 texels: texel 19 holds mu_s
+// -0.0678530, texel 33 0.3936658 (sun elevation 23.18 degrees), from mappings.glsl's formula
+// evaluated apart from this code.
+TEST(SunHighWithin, TheSkysLowestMarchedSunIsTheTexelBelowTheReadsPair) {
+  // Midway between texels 20 and 21 (mu_s -0.0501489): the read blends them, the march adds 19.
+  EXPECT_NEAR(LowestSkyCorrectionSunSine(-0.0501489144, -0.5, 36), -0.0678529917, 1e-7);
+  // The sun at zenith 20 degrees (between texels 34 and 35): texel 33.
+  EXPECT_NEAR(LowestSkyCorrectionSunSine(std::cos(20.0 * std::numbers::pi / 180.0), -0.5, 36), 0.3936658312, 1e-7);
+  // At the axis' first texel there is none below: the first.
+  EXPECT_NEAR(LowestSkyCorrectionSunSine(-0.5, -0.5, 36), -0.5, 1e-9);
+}
+
+// Noon (sun zenith 20 degrees) with the default 36 mu_s texels: texel 33's sun, 23.18 degrees up,
+// stays above 10.33 over the 7.91 degrees of arc of the longest sky ray. With 16 texels the node is
+// near the horizon; at sun zenith 55 degrees it is 14 degrees up, too low for that arc.
+TEST(SunHighWithin, TheSkyVariantNeedsItsLowestMarchedSunHighOverTheLongestRay) {
+  const AtmosphereParameters earth = AtmosphereParameters::Earth();
+  EXPECT_TRUE(SunHighOverEverySkyRay(Frame(70.0), earth, 36));
+  EXPECT_FALSE(SunHighOverEverySkyRay(Frame(70.0), earth, 16));
+  EXPECT_FALSE(SunHighOverEverySkyRay(Frame(35.0), earth, 36));
+  FrameUniforms no_sun = Frame(70.0);
+  no_sun.sun_direction = {0.0f, 0.0f, 0.0f, 0.0f};
+  EXPECT_FALSE(SunHighOverEverySkyRay(no_sun, earth, 36));
+}
+
 }  // namespace
 }  // namespace aerial

@@ -1,0 +1,89 @@
+// The marched per-pixel path's passes in their variants for a high sun
+// (aerial/render/sun_high_variant.h): the mesh passes (opaque and transparent,
+// Renderer::MeshPipelinesFor) and the sky (Renderer::SkyPipelineFor) against the general passes:
+// the same image where the renderer picks them, and not picked where the sun is too low.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "aerial/render/renderer.h"
+#include "aerial/scene.h"
+#include "gpu_fixture.h"
+
+namespace aerial::testing {
+namespace {
+
+// The largest relative difference over every pixel's channels.
+double LargestDifference(const ImageRgbF& a, const ImageRgbF& b) {
+  double worst = 0.0;
+  for (size_t i = 0; i < a.rgba.size(); ++i) {
+    double scale = std::max(std::abs(double(a.rgba[i])), 1e-30);
+    worst = std::max(worst, std::abs(double(b.rgba[i]) - double(a.rgba[i])) / scale);
+  }
+  return worst;
+}
+
+struct Frames {
+  ImageRgbF first, still;  // the first frame (sun visibility looked up and written) and a still one (read back)
+  bool mesh_sun_high, sky_sun_high;  // the last frame's passes were the variants
+};
+
+// Two frames of a preset on the marched per-pixel path, shadows on, with the variants allowed or not.
+Frames RenderPerPixel(const AtmosphereTables& tables, const std::string& preset, bool sun_high_variants) {
+  Scene scene = BuildPreset(preset, tables.atmosphere().bottom_radius_m);
+  RendererOptions options{{.width = 160, .height = 90, .mode = AerialMode::kPerPixel}};
+  options.sun_high_variants = sun_high_variants;
+  Renderer renderer(tables, scene, options);
+  renderer.Render(scene);
+  ImageRgbF first = renderer.ReadOutput();
+  renderer.Render(scene);
+  EXPECT_TRUE(renderer.frame_info().sun_visibility_cached) << "the still frame should read the sun visibility back";
+  return {std::move(first), renderer.ReadOutput(), renderer.mesh_sun_high(), renderer.sky_sun_high()};
+}
+
+// The variants' frames against the general passes'. Where the variants are picked, the marched
+// points take the same branches in both, and the variants have only dropped the ones not taken:
+// the same pixels to float rounding (1e-5: the compiler may fold the constants in another order;
+// the froxel vs per-pixel target is 2%).
+Frames CompareAtNoon(const AtmosphereTables& tables, const char* name) {
+  Frames variant = RenderPerPixel(tables, "noon", true);
+  Frames general = RenderPerPixel(tables, "noon", false);
+  EXPECT_FALSE(general.mesh_sun_high || general.sky_sun_high);
+  double first = LargestDifference(general.first, variant.first);
+  double still = LargestDifference(general.still, variant.still);
+  std::printf("noon, %s: the variants against the general passes, largest relative difference %.3g, still frame %.3g\n",
+              name, first, still);
+  EXPECT_LE(first, 1e-5);
+  EXPECT_LE(still, 1e-5);
+  return variant;
+}
+
+class PerPixelSunHighVariantGpu : public GpuTest {};
+
+// The default tables' 36 mu_s texels: the sky's lowest marched sun (the texel below the read's
+// pair) is 23 degrees up at noon, and both variants are picked. The balloon, the panes and the
+// particle cloud stand in front of the terrain.
+TEST_F(PerPixelSunHighVariantGpu, SameImageWithBothVariantsAtNoonWithTheDefaultTables) {
+  Frames variant = CompareAtNoon(FullTables(), "default tables");
+  EXPECT_TRUE(variant.mesh_sun_high);
+  EXPECT_TRUE(variant.sky_sun_high);
+}
+
+// The small tables' 16 mu_s texels put that sun near the horizon: the sky keeps its general pass.
+TEST_F(PerPixelSunHighVariantGpu, SameImageWithTheMeshVariantAtNoonWithTheSmallTables) {
+  Frames variant = CompareAtNoon(SmallTables(), "small tables");
+  EXPECT_TRUE(variant.mesh_sun_high);
+  EXPECT_FALSE(variant.sky_sun_high);
+}
+
+// At sunset the far terrain's air and the sky have the sun's disc cut by the horizon: neither.
+TEST_F(PerPixelSunHighVariantGpu, NeitherPickedWhereTheSunIsLow) {
+  Frames sunset = RenderPerPixel(FullTables(), "sunset", true);
+  EXPECT_FALSE(sunset.mesh_sun_high);
+  EXPECT_FALSE(sunset.sky_sun_high);
+}
+
+}  // namespace
+}  // namespace aerial::testing
