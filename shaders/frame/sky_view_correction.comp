@@ -12,6 +12,10 @@
 // sun too (the 3D tables need none: every node returns at once); the frame under a moving sun at
 // noon did not move beyond its run-to-run noise (aerial_bench_render --preset noon).
 #include "blocks_not_inlined.glsl"
+// The variant for a sun high over every lattice ray's marched suns (aerial/render/sun_high_variant.h,
+// Renderer::RecordSkyViewCorrection), declared before the includes so that transmittance.glsl takes it.
+layout(constant_id = 4) const bool kSunHighEverywhere = false;
+#define AERIAL_SUN_HIGH_EVERYWHERE kSunHighEverywhere
 #include "sky_lookup.glsl"
 #include "sky_view.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;

@@ -70,6 +70,13 @@ vk::SlotLayout SkyViewCorrectionSlots() {
           {"rayleigh_texture", kSampled}, {"rayleigh_correction", vk::kStorageImage}, {"mie_correction", vk::kStorageImage}};
 }
 
+// Its constants: 0 (frame.glsl's kAerialPerPixel, unread) keeps its default; 4 the variant for a
+// high sun.
+vk::ComputePipeline SkyViewCorrectionPipeline(const vk::Context& context, bool sun_high) {
+  return vk::ComputePipeline(context, "frame/sky_view_correction.comp", SkyViewCorrectionSlots(),
+                             sizeof(kSkyViewSize) + 2 * sizeof(int), {0, 0, 0, 0, sun_high ? 1 : 0});
+}
+
 // Where an opaque fragment's sun visibility comes from (opaque_fragment.glsl).
 enum class SunVisibilitySource { kShadowMap, kCache };
 
@@ -246,8 +253,7 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       sky_mie_correction_(tables.context(), SkyViewLatticeImage()),
       shadow_map_(tables.context(), options.shadows),
       casters_(SceneCasterBounds(scene, tables.atmosphere().bottom_radius_m)),
-      sky_view_correction_(tables.context(), "frame/sky_view_correction.comp", SkyViewCorrectionSlots(),
-                           sizeof(kSkyViewSize) + 2 * sizeof(int)),
+      sky_view_correction_(SkyViewCorrectionPipeline(tables.context(), false)),
       sky_view_(tables.context(), "frame/sky_view.comp", SkyViewSlots(), sizeof(kSkyViewSize)),
       scene_radius_m_(SceneRadiusM(scene, tables.atmosphere().bottom_radius_m)),
       mesh_(MakeMeshPipelines(tables.context(), options, false)),
@@ -340,7 +346,7 @@ void Renderer::RecordSkyViewCorrection(const vk::CommandBuffer& cmd, const vk::B
       std::array<int, 2> size;
       int first_row, end_row;
     } constants{kSkyViewSize, SkyViewLatticeBandRows(band).first, SkyViewLatticeBandRows(end - 1).end};
-    sky_view_correction_.Dispatch(cmd,
+    SkyViewCorrectionPipelineFor().Dispatch(cmd,
                                   {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame},
                                    tables_.Sampled(tables_.transmittance()), tables_.Sampled(tables_.rayleigh()),
                                    vk::StorageImageSlot{&sky_rayleigh_correction_},
@@ -420,17 +426,26 @@ const MeshPipelines& Renderer::MeshPipelinesFor(const Scene& scene) {
   return *mesh_sun_high_;
 }
 
-// The marched per-pixel path's sky takes its variant for a high sun where every sun that its
-// correction of the Earth's shadow marches is high over every point of every sky ray
-// (sun_high_variant.h, SunHighOverEverySkyRay): with the default tables at noon, not with the
-// small ones, whose mu_s texel below the read's pair holds a sun 9.8 degrees up.
+// The sky's correction of the Earth's shadow (the marched per-pixel path's sky pass, the froxel
+// mode's sky-view lattice) takes its variant for a high sun where every sun that it marches is
+// high over every point of every sky ray (sun_high_variant.h, SunHighOverEverySkyRay): with the
+// default tables at noon, not with the small ones, whose mu_s texel below the read's pair holds a
+// sun 9.8 degrees up. The table-difference mode marches nothing.
+bool Renderer::SkySunHighThisFrame() const {
+  return options_.mode != AerialMode::kTableDifference && options_.sun_high_variants &&
+         SunHighOverEverySkyRay(frame_uniforms_, tables_.atmosphere(), tables_.options().resolution.scattering_mu_s);
+}
+
 const vk::GraphicsPipeline& Renderer::SkyPipelineFor() {
-  sky_sun_high_used_ = options_.mode == AerialMode::kPerPixel && options_.sun_high_variants &&
-                       SunHighOverEverySkyRay(frame_uniforms_, tables_.atmosphere(),
-                                              tables_.options().resolution.scattering_mu_s);
-  if (!sky_sun_high_used_) return sky_;
+  if (!sky_sun_high_used_ || options_.mode != AerialMode::kPerPixel) return sky_;
   if (!sky_sun_high_) sky_sun_high_.emplace(tables_.context(), SkyPipeline(options_.mode, true));
   return *sky_sun_high_;
+}
+
+const vk::ComputePipeline& Renderer::SkyViewCorrectionPipelineFor() {
+  if (!sky_sun_high_used_) return sky_view_correction_;
+  if (!sky_view_correction_sun_high_) sky_view_correction_sun_high_ = SkyViewCorrectionPipeline(tables_.context(), true);
+  return *sky_view_correction_sun_high_;
 }
 
 std::vector<vk::Slot> Renderer::MeshSlots(uint32_t slot) const {
@@ -499,6 +514,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
                                              options_.render_height(), options_.froxels);
   still_view_ = frames_recorded_ > 0 && SameFrame(uniforms, frame_uniforms_);
   frame_uniforms_ = uniforms;
+  sky_sun_high_used_ = SkySunHighThisFrame();
   frame_buffers_[slot].Write(std::as_bytes(std::span(&frame_uniforms_, 1)));
   geometry_.SortTransparent(scene.camera.position, slot);
   frame_info_ = {};

@@ -94,7 +94,8 @@ class Renderer {
   const FrameInfo& frame_info() const { return frame_info_; }
   // Whether the last frame's mesh passes were the variant for a high sun (MeshPipelinesFor).
   bool mesh_sun_high() const { return mesh_sun_high_used_; }
-  // Whether the last frame's sky was the variant for a high sun (SkyPipelineFor).
+  // Whether the last frame's sky (its pass per pixel, or the sky-view lattice's correction in
+  // froxel mode) was the variant for a high sun (SkySunHighThisFrame).
   bool sky_sun_high() const { return sky_sun_high_used_; }
 
  private:
@@ -109,7 +110,9 @@ class Renderer {
   void RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& frame);
   // The mesh pipelines of this frame's variant (renderer.cpp says when it is the high sun's).
   const MeshPipelines& MeshPipelinesFor(const Scene& scene);
+  bool SkySunHighThisFrame() const;
   const vk::GraphicsPipeline& SkyPipelineFor();
+  const vk::ComputePipeline& SkyViewCorrectionPipelineFor();
   std::vector<vk::Slot> MeshSlots(uint32_t slot) const;
   void DrawOpaque(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
                   const std::vector<vk::Slot>& slots) const;
@@ -159,7 +162,10 @@ class Renderer {
   std::optional<MeshPipelines> mesh_sun_high_;
   bool mesh_sun_high_used_ = false;
   vk::GraphicsPipeline sky_, surface_;
-  std::optional<vk::GraphicsPipeline> sky_sun_high_;  // the same for the sky (SkyPipelineFor)
+  // The same for the sky (SkyPipelineFor) and the sky-view lattice's correction
+  // (SkyViewCorrectionPipelineFor); whether the last frame's sky took it.
+  std::optional<vk::GraphicsPipeline> sky_sun_high_;
+  std::optional<vk::ComputePipeline> sky_view_correction_sun_high_;
   bool sky_sun_high_used_ = false;
 };
 

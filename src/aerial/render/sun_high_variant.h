@@ -5,8 +5,9 @@
 // sun's whole disc and its centre, and between J_ms's blends in and out of the Earth's shadow,
 // cost it both sides at every step. Where the sun is high over every point a pass marches, a
 // variant compiled with those choices made computes the same values without them: the froxel
-// pass (froxel/froxel_pass_variant.h), and the marched per-pixel path's mesh passes and sky
-// (Renderer::MeshPipelinesFor, Renderer::SkyPipelineFor).
+// pass (froxel/froxel_pass_variant.h), the marched per-pixel path's mesh passes and sky
+// (Renderer::MeshPipelinesFor, Renderer::SkyPipelineFor), and the sky-view lattice's correction
+// (Renderer::SkyViewCorrectionPipelineFor).
 #include "aerial/atmosphere.h"
 #include "aerial/shader_abi/frame_block.h"
 
