@@ -17,8 +17,8 @@ const float PI = 3.14159265358979323846;
 //    not behind an if with the common case's early return before it: a group whose lanes all
 //    take the common case then pays for its one pass (and the loop's last test), not for all;
 //  - where a whole frame takes one case, a pipeline specialized for it folds the test away (the
-//    froxel pass and the marched per-pixel path under a high sun: AERIAL_SUN_HIGH_EVERYWHERE,
-//    aerial/render/sun_high_variant.h).
+//    froxel pass, the sky-view lattice and the marched per-pixel path under a high sun:
+//    AERIAL_SUN_HIGH_EVERYWHERE, aerial/render/sun_high_variant.h).
 // A GPU runs the same code at the same cost. Measured in docs/speed.md ("The eleventh round").
 
 // One layer of a density profile (Bruneton 2017, DensityProfileLayer):

@@ -127,9 +127,9 @@ vec3 GetTransmittance(sampler2D transmittance_texture, float r, float mu, float 
 const float SUN_DISC_ONE_TAP_ELEVATION = 0.1745;  // 10 degrees
 
 // True in a shader whose every point has the sun more than SUN_DISC_ONE_TAP_ELEVATION above its
-// horizontal: the variants for such frames of the froxel pass and of the marched per-pixel path's
-// mesh passes and sky (aerial/render/sun_high_variant.h), which define it as a specialization
-// constant before their includes. The disc is then its centre alone and J_ms is blended linearly
+// horizontal: the variants for such frames of the froxel pass, the sky-view lattice's correction
+// and the marched per-pixel path's mesh passes and sky (aerial/render/sun_high_variant.h), which
+// define it as a specialization constant before their includes. The disc is then its centre alone and J_ms is blended linearly
 // in mu_s (GetDensityBlended), their tests compiled out.
 #ifndef AERIAL_SUN_HIGH_EVERYWHERE
 #define AERIAL_SUN_HIGH_EVERYWHERE false
