@@ -1,7 +1,9 @@
-// The mappings that C++ and GLSL both evaluate, run on the GPU (shaders/test/cpu_gpu_mappings.comp)
-// and held against their C++ side: the froxel depth mapping (FroxelGrid against
-// shaders/include/froxel_depth.glsl) and the sky-view lattice's size (the renderer's images
-// against what shaders/include/sky_view_lattice.glsl gives the passes).
+// The mappings that C++ and GLSL both evaluate, run on the GPU (shaders/test/cpu_gpu_mappings.comp,
+// sun_high_mirrors.comp) and held against their C++ side: the froxel depth mapping (FroxelGrid
+// against shaders/include/froxel_depth.glsl), the sky-view lattice's size (the renderer's images
+// against what shaders/include/sky_view_lattice.glsl gives the passes), and what the choice of the
+// variants for a high sun mirrors (aerial/render/sun_high_variant.h against mappings.glsl and
+// transmittance.glsl).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,7 +14,9 @@
 #include <vector>
 
 #include "aerial/froxel_grid.h"
+#include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/render/sky_view_layout.h"
+#include "aerial/render/sun_high_variant.h"
 #include "aerial/vk/compute_pipeline.h"
 #include "gpu_fixture.h"
 
@@ -126,6 +130,62 @@ TEST_F(CpuGpuMappings, SkyViewLatticeMatchesTheRenderersImages) {
                     << gpu.lattice[i][1] << ", C++ " << cpu[0] << "x" << cpu[1];
   }
   EXPECT_EQ(mismatches, 0);
+}
+
+struct SunHighMirrors {
+  std::vector<std::array<float, 2>> mu_s;  // GetUnitRangeFromMuS(mu_s), GetMuSFromUnitRange(x)
+  float one_tap_elevation = 0.0f;          // SUN_DISC_ONE_TAP_ELEVATION
+};
+
+// inputs: (mu_s, x) per case, with the Earth's atmosphere (its mu_s_min) in the AtmosphereBlock.
+SunHighMirrors RunSunHighMirrors(const std::vector<std::array<float, 2>>& inputs) {
+  vk::Context& context = SharedContext();
+  AtmosphereTables tables(context, AtmosphereParameters::Earth(), PrecomputeOptions::Small());
+  vk::Buffer in = HostBuffer(inputs.size() * 2 * sizeof(float));
+  vk::Buffer out = HostBuffer(inputs.size() * 2 * sizeof(float));
+  vk::Buffer constants = HostBuffer(sizeof(float));
+  std::memcpy(in.mapped(), inputs.data(), inputs.size() * 2 * sizeof(float));
+  vk::ComputePipeline pipeline(context, "test/sun_high_mirrors.comp",
+                               {{"AtmosphereBlock", vk::kUniform},
+                                {"MuSInputs", vk::kStorageBuffer},
+                                {"MuSOutputs", vk::kStorageBuffer},
+                                {"Constants", vk::kStorageBuffer}});
+  context.Submit([&](const auto& cmd) {
+    pipeline.Dispatch(cmd,
+                      {vk::UniformBufferSlot{&tables.uniform_buffer()}, vk::StorageBufferSlot{&in},
+                       vk::StorageBufferSlot{&out}, vk::StorageBufferSlot{&constants}},
+                      {uint32_t(inputs.size()), 1, 1}, {64, 1, 1});
+    vk::FullBarrier(cmd);
+  });
+  SunHighMirrors results{std::vector<std::array<float, 2>>(inputs.size())};
+  std::memcpy(results.mu_s.data(), out.mapped(), inputs.size() * 2 * sizeof(float));
+  std::memcpy(&results.one_tap_elevation, constants.mapped(), sizeof(float));
+  return results;
+}
+
+// The variants for a high sun are chosen on the CPU from copies of GLSL constants (the sun disc's
+// one-tap elevation, the mu_s axis's centre and spread): a change on one side alone would let a
+// variant run where it computes other values than the general pass. The axis is compared over
+// mu_s in [mu_s_min, 1] and x in [0, 1]: float32's atan and tan (measured 1.2e-6 and 1.7e-6) stay
+// far below 2e-5, while the C++ axis's centre moved to -0.1001 moved x by up to 2.5e-4, and its
+// spread moved to 7.01 by up to 2.6e-4 (both failed here).
+TEST_F(CpuGpuMappings, SunHighVariantMirrorsMatchTheShaders) {
+  const double mu_s_min = AtmosphereParameters::Earth().mu_s_min;
+  std::vector<std::array<float, 2>> inputs;
+  for (int i = 0; i <= 200; ++i) {
+    double t = i / 200.0;
+    inputs.push_back({float(mu_s_min + (1.0 - mu_s_min) * t), float(t)});
+  }
+  SunHighMirrors gpu = RunSunHighMirrors(inputs);
+  EXPECT_EQ(gpu.one_tap_elevation, float(kSunDiscOneTapSine));
+  double worst_x = 0.0, worst_mu_s = 0.0;
+  for (size_t i = 0; i < inputs.size(); ++i) {
+    worst_x = std::max(worst_x, std::abs(gpu.mu_s[i][0] - UnitRangeFromMuS(inputs[i][0], mu_s_min)));
+    worst_mu_s = std::max(worst_mu_s, std::abs(gpu.mu_s[i][1] - MuSFromUnitRange(inputs[i][1], mu_s_min)));
+  }
+  std::printf("%zu cases, worst absolute difference: x %.2e, mu_s %.2e\n", inputs.size(), worst_x, worst_mu_s);
+  EXPECT_LE(worst_x, 2e-5);
+  EXPECT_LE(worst_mu_s, 2e-5);
 }
 
 }  // namespace

@@ -8,20 +8,8 @@
 namespace aerial {
 namespace {
 
-// The tables' mu_s axis (mappings.glsl): x in [0, 1] on texel centres 0 .. n - 1.
+// The tables' mu_s axis (mappings.glsl).
 constexpr double kMuSDensest = -0.1, kMuSSpread = 7.0;
-
-double UnitRangeFromMuS(double mu_s, double mu_s_min) {
-  const double low = std::atan(kMuSSpread * (mu_s_min - kMuSDensest));
-  const double high = std::atan(kMuSSpread * (1.0 - kMuSDensest));
-  return std::clamp((std::atan(kMuSSpread * (mu_s - kMuSDensest)) - low) / (high - low), 0.0, 1.0);
-}
-
-double MuSFromUnitRange(double x, double mu_s_min) {
-  const double low = std::atan(kMuSSpread * (mu_s_min - kMuSDensest));
-  const double high = std::atan(kMuSSpread * (1.0 - kMuSDensest));
-  return std::clamp(kMuSDensest + std::tan(low + x * (high - low)) / kMuSSpread, -1.0, 1.0);
-}
 
 // The camera's distance from the planet's centre and the sine of the sun's elevation there.
 bool CameraAndSun(const FrameUniforms& frame, double* r, double* sun_sine) {
@@ -36,6 +24,18 @@ bool CameraAndSun(const FrameUniforms& frame, double* r, double* sun_sine) {
 }
 
 }  // namespace
+
+double UnitRangeFromMuS(double mu_s, double mu_s_min) {
+  const double low = std::atan(kMuSSpread * (mu_s_min - kMuSDensest));
+  const double high = std::atan(kMuSSpread * (1.0 - kMuSDensest));
+  return std::clamp((std::atan(kMuSSpread * (mu_s - kMuSDensest)) - low) / (high - low), 0.0, 1.0);
+}
+
+double MuSFromUnitRange(double x, double mu_s_min) {
+  const double low = std::atan(kMuSSpread * (mu_s_min - kMuSDensest));
+  const double high = std::atan(kMuSSpread * (1.0 - kMuSDensest));
+  return std::clamp(kMuSDensest + std::tan(low + x * (high - low)) / kMuSSpread, -1.0, 1.0);
+}
 
 bool SunHighWithin(double camera_radius_m, double sun_sine, double distance_m, double bottom_radius_m) {
   if (!(camera_radius_m > 0.0) || !(bottom_radius_m > 0.0) || !(distance_m >= 0.0) || !(std::abs(sun_sine) <= 1.0))

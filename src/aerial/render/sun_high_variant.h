@@ -17,7 +17,13 @@ namespace aerial {
 // cut-off cosine over the cut-off's sine, exceeds SUN_DISC_ONE_TAP_ELEVATION (0.1745,
 // shaders/include/transmittance.glsl). For a cut-off at or below the horizontal, x alpha is at
 // least the sine of the sun's elevation above the horizontal, so a sine above it suffices.
+// tests/cpu_gpu_mapping_test.cpp holds it and the two functions below to their GLSL.
 inline constexpr double kSunDiscOneTapSine = 0.1745;
+
+// The tables' mu_s axis (mappings.glsl, GetUnitRangeFromMuS and GetMuSFromUnitRange) in double:
+// x in [0, 1] puts texel centres 0 .. n - 1 at x (n - 1); mu_s_min is the atmosphere's.
+double UnitRangeFromMuS(double mu_s, double mu_s_min);
+double MuSFromUnitRange(double x, double mu_s_min);
 
 // Whether a sun whose elevation above the horizontal of a camera at radius camera_radius_m has
 // sine sun_sine is more than that above the horizontal, with a margin of 0.005 for the shaders'
@@ -34,8 +40,7 @@ double LongestSkyRayM(double r, double bottom_radius_m, double top_radius_m);
 
 // The sine of the lowest sun that the per-pixel sky's correction of the Earth's shadow marches for
 // a sun at mu_s (shaders/include/sky_lookup.glsl, GetSingleScatteringSuns): the mu_s texel below
-// the two that the tables' read blends. It mirrors the tables' mu_s axis (mappings.glsl,
-// GetUnitRangeFromMuS: MU_S_DENSEST -0.1, MU_S_SPREAD 7), and takes a sun within 0.01 texel of a
+// the two that the tables' read blends (UnitRangeFromMuS), taking a sun within 0.01 texel of a
 // texel's centre on the lower side.
 double LowestSkyCorrectionSunSine(double mu_s, double mu_s_min, int mu_s_texels);
 
