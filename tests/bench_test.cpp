@@ -177,8 +177,9 @@ void CheckTableDifference(const nlohmann::json& results) {
   }
 }
 
-// One run (a test process each would run it again) checked for four things.
-TEST(BenchQuick, ReportStructureCoverageAndReadmeFigures) {
+// One run (a test process each would run it again) checked for four things: its files and their
+// structure, its numbers and what they cover, the 3D tables against the 4D, and the two table reads.
+TEST(BenchQuick, ReportFilesNumbersAndComparisons) {
   fs::path dir = fs::temp_directory_path() / ("aerial-bench-test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   CommandRun run = RunAerial("bench --quick --quiet --out " + dir.string());
