@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "aerial/froxel_grid.h"
@@ -45,26 +46,32 @@ vk::Buffer HostBuffer(size_t bytes) {
                                       .host_visible = true});
 }
 
-GpuResults RunOnGpu(const std::vector<FroxelCase>& froxel, const std::vector<std::array<int32_t, 2>>& tables) {
+// One dispatch of a test shader over `invocations` invocations in groups of 64, waited for.
+void DispatchOnce(const std::string& shader, const vk::SlotLayout& layout, const std::vector<vk::Slot>& slots,
+                  size_t invocations) {
   vk::Context& context = SharedContext();
+  vk::ComputePipeline pipeline(context, shader, layout);
+  context.Submit([&](const auto& cmd) {
+    pipeline.Dispatch(cmd, slots, {uint32_t(invocations), 1, 1}, {64, 1, 1});
+    vk::FullBarrier(cmd);
+  });
+}
+
+GpuResults RunOnGpu(const std::vector<FroxelCase>& froxel, const std::vector<std::array<int32_t, 2>>& tables) {
   vk::Buffer froxel_in = HostBuffer(froxel.size() * sizeof(FroxelCase));
   vk::Buffer froxel_out = HostBuffer(froxel.size() * 2 * sizeof(float));
   vk::Buffer tables_in = HostBuffer(tables.size() * 2 * sizeof(int32_t));
   vk::Buffer lattice_out = HostBuffer(tables.size() * 2 * sizeof(int32_t));
   std::memcpy(froxel_in.mapped(), froxel.data(), froxel.size() * sizeof(FroxelCase));
   std::memcpy(tables_in.mapped(), tables.data(), tables.size() * 2 * sizeof(int32_t));
-  vk::ComputePipeline pipeline(context, "test/cpu_gpu_mappings.comp",
-                               {{"FroxelInputs", vk::kStorageBuffer},
-                                {"FroxelOutputs", vk::kStorageBuffer},
-                                {"TableSizes", vk::kStorageBuffer},
-                                {"LatticeSizes", vk::kStorageBuffer}});
-  context.Submit([&](const auto& cmd) {
-    pipeline.Dispatch(cmd,
-                      {vk::StorageBufferSlot{&froxel_in}, vk::StorageBufferSlot{&froxel_out},
-                       vk::StorageBufferSlot{&tables_in}, vk::StorageBufferSlot{&lattice_out}},
-                      {uint32_t(std::max(froxel.size(), tables.size())), 1, 1}, {64, 1, 1});
-    vk::FullBarrier(cmd);
-  });
+  DispatchOnce("test/cpu_gpu_mappings.comp",
+               {{"FroxelInputs", vk::kStorageBuffer},
+                {"FroxelOutputs", vk::kStorageBuffer},
+                {"TableSizes", vk::kStorageBuffer},
+                {"LatticeSizes", vk::kStorageBuffer}},
+               {vk::StorageBufferSlot{&froxel_in}, vk::StorageBufferSlot{&froxel_out},
+                vk::StorageBufferSlot{&tables_in}, vk::StorageBufferSlot{&lattice_out}},
+               std::max(froxel.size(), tables.size()));
   GpuResults results{std::vector<std::array<float, 2>>(froxel.size()),
                      std::vector<std::array<int32_t, 2>>(tables.size())};
   std::memcpy(results.froxel.data(), froxel_out.mapped(), froxel.size() * 2 * sizeof(float));
@@ -139,24 +146,19 @@ struct SunHighMirrors {
 
 // inputs: (mu_s, x) per case, with the Earth's atmosphere (its mu_s_min) in the AtmosphereBlock.
 SunHighMirrors RunSunHighMirrors(const std::vector<std::array<float, 2>>& inputs) {
-  vk::Context& context = SharedContext();
-  AtmosphereTables tables(context, AtmosphereParameters::Earth(), PrecomputeOptions::Small());
+  AtmosphereTables tables(SharedContext(), AtmosphereParameters::Earth(), PrecomputeOptions::Small());
   vk::Buffer in = HostBuffer(inputs.size() * 2 * sizeof(float));
   vk::Buffer out = HostBuffer(inputs.size() * 2 * sizeof(float));
   vk::Buffer constants = HostBuffer(sizeof(float));
   std::memcpy(in.mapped(), inputs.data(), inputs.size() * 2 * sizeof(float));
-  vk::ComputePipeline pipeline(context, "test/sun_high_mirrors.comp",
-                               {{"AtmosphereBlock", vk::kUniform},
-                                {"MuSInputs", vk::kStorageBuffer},
-                                {"MuSOutputs", vk::kStorageBuffer},
-                                {"Constants", vk::kStorageBuffer}});
-  context.Submit([&](const auto& cmd) {
-    pipeline.Dispatch(cmd,
-                      {vk::UniformBufferSlot{&tables.uniform_buffer()}, vk::StorageBufferSlot{&in},
-                       vk::StorageBufferSlot{&out}, vk::StorageBufferSlot{&constants}},
-                      {uint32_t(inputs.size()), 1, 1}, {64, 1, 1});
-    vk::FullBarrier(cmd);
-  });
+  DispatchOnce("test/sun_high_mirrors.comp",
+               {{"AtmosphereBlock", vk::kUniform},
+                {"MuSInputs", vk::kStorageBuffer},
+                {"MuSOutputs", vk::kStorageBuffer},
+                {"Constants", vk::kStorageBuffer}},
+               {vk::UniformBufferSlot{&tables.uniform_buffer()}, vk::StorageBufferSlot{&in},
+                vk::StorageBufferSlot{&out}, vk::StorageBufferSlot{&constants}},
+               inputs.size());
   SunHighMirrors results{std::vector<std::array<float, 2>>(inputs.size())};
   std::memcpy(results.mu_s.data(), out.mapped(), inputs.size() * 2 * sizeof(float));
   std::memcpy(&results.one_tap_elevation, constants.mapped(), sizeof(float));
