@@ -1,9 +1,12 @@
 // The opaque fragment shaders' parts (opaque.frag, opaque_caching.frag): geometry seen through the
 // air, L T + I_R P_R(nu) + I_M P_M(nu), with L the lit surface radiance from the vertices
-// (opaque.vert), its sun part times the sun's visibility here, (I_R, I_M, T) read from the froxel
-// volume at the fragment's screen position and distance (per-pixel modes: from the tables) and nu
-// from the fragment's own view ray. Geometry is drawn nearest first, so early depth tests skip
-// this work for hidden fragments.
+// (opaque.vert), its sun part times the sun's visibility here, (I_R, I_M, T) from the froxel
+// volume (per-pixel modes: from the tables) and nu from the fragment's own view ray. Geometry is
+// drawn nearest first, so early depth tests skip this work for hidden fragments.
+//
+// The froxel volume is read per vertex and interpolated on triangles thin in depth
+// (kFroxelsPerVertex, opaque.vert), per pixel at the fragment's screen position and distance on
+// others.
 //
 // The sun's visibility comes from one of three places:
 //  - the shadow map (shadow.glsl), which is 1 everywhere with shadows off;
@@ -21,6 +24,11 @@
 #define SHADOW_BINDING 8
 #include "shadow.glsl"
 layout(constant_id = 3) const int kSunVisibilityFromCache = 0;
+layout(constant_id = 5) const bool kFroxelsPerVertex = false;
+// Reads a benchmark leaves out to measure what each costs (aerial_bench_render): the froxel
+// volume's (a constant segment instead) and the sun visibility's (1 instead). 0 in every frame.
+layout(constant_id = 6) const int kReadsLeftOut = 0;
+const int kLeaveOutFroxelReads = 1, kLeaveOutSunVisibility = 2;
 layout(set = 0, binding = 5) uniform sampler3D rayleigh_froxels;
 layout(set = 0, binding = 6) uniform sampler3D mie_froxels;
 layout(set = 0, binding = 7) uniform sampler3D transmittance_froxels;
@@ -29,11 +37,24 @@ layout(location = 0) in vec3 relative_position;
 layout(location = 1) in vec3 sun_radiance;
 layout(location = 2) in vec3 sky_radiance;
 layout(location = 3) in vec3 surface_normal;
+layout(location = 4) in vec3 vertex_rayleigh;
+layout(location = 5) in vec3 vertex_mie;
+layout(location = 6) in vec3 vertex_transmittance;
 
 // The sun's visibility at the fragment (see above).
 float GetFragmentSunVisibility() {
+  if ((kReadsLeftOut & kLeaveOutSunVisibility) != 0) return 1.0;
   if (kSunVisibilityFromCache == 1) return texelFetch(cached_sun_visibility, ivec2(gl_FragCoord.xy), 0).r;
   return SunVisibility(relative_position, normalize(surface_normal));
+}
+
+// The segment of air between the camera and the fragment (see above).
+Inscatter GetFragmentSegment(float r, float mu, float mu_s, float nu, float distance) {
+  if (kAerialPerPixel != AERIAL_FROXELS) return GetMeshAerialPerspectivePerPixel(r, mu, mu_s, nu, distance);
+  if ((kReadsLeftOut & kLeaveOutFroxelReads) != 0) return Inscatter(vec3(1e-3), vec3(1e-4), vec3(0.9));
+  if (kFroxelsPerVertex) return Inscatter(vertex_rayleigh, vertex_mie, vertex_transmittance);
+  return GetAerialPerspective(rayleigh_froxels, mie_froxels, transmittance_froxels,
+                              gl_FragCoord.xy / frame.viewport.xy, distance);
 }
 
 // The fragment's radiance at the camera, its surface's sun part times sun_visibility.
@@ -42,16 +63,9 @@ vec4 GetFragmentRadiance(float sun_visibility) {
   vec3 ray = relative_position / distance;
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
-  Inscatter segment;
-  if (kAerialPerPixel != AERIAL_FROXELS) {
-    segment = GetMeshAerialPerspectivePerPixel(r, mu, mu_s, nu, distance);
-  } else {
-    segment = GetAerialPerspective(rayleigh_froxels, mie_froxels, transmittance_froxels,
-                                   gl_FragCoord.xy / frame.viewport.xy, distance);
-  }
   vec3 surface_radiance =
       ShadeLambertian(LambertianRadiance(sun_radiance, sky_radiance), normalize(surface_normal), sun_visibility);
-  return vec4(ApplyAerialPerspective(surface_radiance, segment, nu), 1.0);
+  return vec4(ApplyAerialPerspective(surface_radiance, GetFragmentSegment(r, mu, mu_s, nu, distance), nu), 1.0);
 }
 
 #endif

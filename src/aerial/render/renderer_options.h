@@ -17,10 +17,24 @@ struct FramePasses {
   bool sky = true, transparent = true, terrain = true;
 };
 
+// Where opaque surfaces read the froxel volume (froxel mode): per vertex, interpolated, on
+// triangles thin in depth and per pixel on others (surface_reads.h), or, to compare with, per
+// pixel everywhere or per vertex everywhere.
+enum class SurfaceFroxelReads { kPerVertexWhereThin, kPerPixel, kPerVertex };
+
+// Reads of the opaque fragments a benchmark leaves out to measure what each costs: the froxel
+// volume's (a constant segment instead) and the sun visibility's (1 instead). Every frame has
+// all of them.
+struct LeftOutReads {
+  bool froxels = false, sun_visibility = false;
+};
+
 // RendererOptions{{.width = 96, .height = 54}, TerrainMode::kStaticMesh}.
 struct RendererOptions : RenderOptions {
   TerrainMode terrain = TerrainMode::kLod;
   FramePasses passes;
+  SurfaceFroxelReads surface_froxel_reads = SurfaceFroxelReads::kPerVertexWhereThin;
+  LeftOutReads left_out_reads;
   // The froxel pass's and the marched opaque pass's variants for a high sun, where they compute
   // the same values (sun_high_variant.h); off: the general passes always, to compare with.
   bool sun_high_variants = true;

@@ -15,6 +15,26 @@ vk::Buffer Upload(const vk::Context& context, std::span<const std::byte> bytes,
   return buffer;
 }
 
+// The mesh's bounding sphere (around the centre of its vertices' box) and its longest edge.
+MeshDraw MeshBounds(const Mesh& mesh) {
+  MeshDraw draw{.double_sided = mesh.double_sided};
+  if (mesh.vertices.empty()) return draw;
+  glm::dvec3 low(mesh.vertices[0].position), high = low;
+  for (const Vertex& v : mesh.vertices) {
+    low = glm::min(low, glm::dvec3(v.position));
+    high = glm::max(high, glm::dvec3(v.position));
+  }
+  draw.center = 0.5 * (low + high);
+  for (const Vertex& v : mesh.vertices)
+    draw.radius_m = std::max(draw.radius_m, glm::length(glm::dvec3(v.position) - draw.center));
+  for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3)
+    for (int k = 0; k < 3; ++k) {
+      glm::dvec3 a(mesh.vertices[mesh.indices[i + k]].position), b(mesh.vertices[mesh.indices[i + (k + 1) % 3]].position);
+      draw.longest_edge_m = std::max(draw.longest_edge_m, glm::length(b - a));
+    }
+  return draw;
+}
+
 }  // namespace
 
 void SceneGeometry::Packed::Append(const Mesh& mesh) {
@@ -25,19 +45,19 @@ void SceneGeometry::Packed::Append(const Mesh& mesh) {
 
 SceneGeometry::Packing SceneGeometry::Pack(const Scene& scene, const std::vector<Mesh>& extra_opaque) {
   Packing packing;
-  std::vector<const Mesh*> single_sided, double_sided;
   for (const std::vector<Mesh>* meshes : {&scene.meshes, &extra_opaque}) {
     for (const Mesh& mesh : *meshes) {
       if (mesh.transparent) {
         packing.transparent.Append(mesh);
-      } else {
-        (mesh.double_sided ? double_sided : single_sided).push_back(&mesh);
+        continue;
       }
+      MeshDraw draw = MeshBounds(mesh);
+      draw.first_index = uint32_t(packing.opaque.indices.size());
+      draw.index_count = uint32_t(mesh.indices.size());
+      packing.opaque.Append(mesh);
+      if (draw.index_count > 0) packing.opaque_draws.push_back(draw);
     }
   }
-  for (const Mesh* mesh : single_sided) packing.opaque.Append(*mesh);
-  packing.single_sided_index_count = uint32_t(packing.opaque.indices.size());
-  for (const Mesh* mesh : double_sided) packing.opaque.Append(*mesh);
   return packing;
 }
 
@@ -47,7 +67,7 @@ SceneGeometry::SceneGeometry(const vk::Context& context, const Scene& scene, uin
 
 SceneGeometry::SceneGeometry(const vk::Context& context, const Packing& packing,
                              uint32_t frames_in_flight)
-    : single_sided_index_count_(packing.single_sided_index_count),
+    : opaque_draws_(packing.opaque_draws),
       opaque_index_count_(uint32_t(packing.opaque.indices.size())),
       opaque_vertices_(Upload(context, std::as_bytes(std::span(packing.opaque.vertices)),
                               ::vk::BufferUsageFlagBits::eVertexBuffer)),

@@ -1,6 +1,6 @@
 #pragma once
-// The scene's meshes on the GPU: opaque meshes in one vertex and index buffer, single-sided ones
-// (drawn with back faces culled) first; transparent meshes in another, whose triangles are
+// The scene's meshes on the GPU: opaque meshes in one vertex and index buffer, each drawn on its
+// own (MeshDraw); transparent meshes in another, whose triangles are
 // re-sorted back to front for every camera (they are blended). The sorted indices have one
 // buffer per frame in flight, so sorting for a frame never rewrites what an earlier one reads.
 #include <array>
@@ -13,6 +13,16 @@
 
 namespace aerial {
 
+// One opaque mesh's triangles in the shared buffers, and what decides how it is drawn: its faces'
+// culling, and how large its triangles may be on screen (surface_reads.h).
+struct MeshDraw {
+  uint32_t first_index = 0, index_count = 0;
+  bool double_sided = false;  // drawn without back-face culling
+  glm::dvec3 center{0.0};     // a sphere around every vertex
+  double radius_m = 0.0;
+  double longest_edge_m = 0.0;  // of its triangles
+};
+
 class SceneGeometry {
  public:
   // extra_opaque: meshes drawn with the scene's opaque ones (the reference terrain mesh).
@@ -24,8 +34,8 @@ class SceneGeometry {
 
   const vk::Buffer& opaque_vertices() const { return opaque_vertices_; }
   const vk::Buffer& opaque_indices() const { return opaque_indices_; }
-  uint32_t single_sided_index_count() const { return single_sided_index_count_; }
-  uint32_t opaque_index_count() const { return opaque_index_count_; }  // both kinds
+  const std::vector<MeshDraw>& opaque_draws() const { return opaque_draws_; }
+  uint32_t opaque_index_count() const { return opaque_index_count_; }
   const vk::Buffer& transparent_vertices() const { return transparent_vertices_; }
   const vk::Buffer& transparent_indices(uint32_t slot) const { return transparent_indices_[slot]; }
   uint32_t transparent_index_count() const { return uint32_t(transparent_triangles_.size() * 3); }
@@ -43,12 +53,13 @@ class SceneGeometry {
   };
   struct Packing {
     Packed opaque, transparent;
-    uint32_t single_sided_index_count = 0;
+    std::vector<MeshDraw> opaque_draws;
   };
   static Packing Pack(const Scene& scene, const std::vector<Mesh>& extra_opaque);
   SceneGeometry(const vk::Context& context, const Packing& packing, uint32_t frames_in_flight);
 
-  uint32_t single_sided_index_count_ = 0, opaque_index_count_ = 0;
+  std::vector<MeshDraw> opaque_draws_;
+  uint32_t opaque_index_count_ = 0;
   std::vector<Triangle> transparent_triangles_;
   std::vector<uint32_t> sorted_;  // scratch, kept so that sorting does not allocate
   vk::Buffer opaque_vertices_, opaque_indices_, transparent_vertices_;

@@ -187,6 +187,14 @@ TerrainChunk BuildTerrainChunk(const ChunkId& id, double planet_radius_m) {
       chunk.cell_lowest_m[j * N + i] = float(lowest);
     }
   }
+  // The surface's longest triangle edge: the cells' sides and both diagonals (whichever the
+  // triangles share). The skirts are left out: they show only as slivers in the cracks between
+  // levels of detail.
+  for (int j = 0; j < N; ++j)
+    for (int i = 0; i < N; ++i)
+      for (glm::dvec3 edge : {grid(i + 1, j) - grid(i, j), grid(i, j + 1) - grid(i, j),
+                              grid(i + 1, j + 1) - grid(i, j), grid(i, j + 1) - grid(i + 1, j)})
+        chunk.longest_edge_m = std::max(chunk.longest_edge_m, glm::length(edge));
   EdgeGaps gaps = MeasureEdges(id, grid, R);
   chunk.geometric_error_m = std::max(InteriorError(grid, R), gaps.edge_error);
   chunk.skirt_depth_m = kSkirtMargin * std::max(gaps.edge_error, gaps.coarser_gap) + kSkirtMinimumM;

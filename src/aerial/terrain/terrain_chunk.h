@@ -34,6 +34,7 @@ struct TerrainChunk {
   // (the middle of the triangles' shared diagonal) and at quarter points along the chunk's edges.
   double geometric_error_m = 0.0;
   double skirt_depth_m = 0.0;
+  double longest_edge_m = 0.0;  // of any of its surface's triangles (not the skirts')
   // Per cell (row by row), the height above the sphere of its lowest corner: the mesh over the
   // cell never dips below it (occluders, screen_horizon.h).
   std::array<float, kChunkCells * kChunkCells> cell_lowest_m{};

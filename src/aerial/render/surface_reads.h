@@ -1,0 +1,38 @@
+#pragma once
+// Where an opaque surface reads the froxel volume (opaque.vert, opaque_fragment.glsl). On most
+// triangles its vertices read it and its fragments interpolate what they read (O'Neil 2005, GPU
+// Gems 2 ch. 16: the scattering per vertex, the phase functions per pixel); on a CPU rasterizer,
+// which runs a fragment shader on every 4x4 block a triangle touches, that replaces three
+// trilinear taps per fragment.
+//
+// Interpolating between the vertices differs from the per-pixel read only where the air along
+// the view ray changes in a way a straight line across the triangle cannot follow. Either of two
+// conditions rules that out:
+// - the triangle is thin in the air: its longest edge has an optical thickness (at the ground,
+//   the densest air) of at most kMaxEdgeOpticalThickness, so inscatter and transmittance change
+//   by at most about that fraction across it, and an interpolation's error is a fraction of that;
+// - the triangle is thin in the volume: it spans at most kMaxSliceSpan of the volume's depth
+//   slices, so the per-pixel read interpolates between the same two slices (the slices'
+//   quadratic spacing, froxel_depth.glsl, makes them thick only where the air is far).
+// A triangle that fails both, e.g. a ground quad reaching from the camera to the horizon, or a
+// kilometres-high cliff face, is read per pixel.
+#include "aerial/atmosphere.h"
+#include "aerial/froxel_grid.h"
+
+namespace aerial {
+
+inline constexpr double kMaxEdgeOpticalThickness = 0.01;
+inline constexpr double kMaxSliceSpan = 0.5;
+
+// How many of the grid's slices a triangle may span in depth, when none of its edges is longer
+// than edge_m and none of its points is nearer the camera than distance_m: the depth coordinate
+// slices * sqrt(d / far) grows fastest nearest the camera.
+double SliceSpan(const FroxelGrid& grid, double edge_m, double distance_m);
+
+// The air's largest extinction coefficient (m^-1) over the channels, at the ground.
+double GroundExtinctionPerM(const AtmosphereParameters& atmosphere);
+
+bool ReadsFroxelsPerPixel(const FroxelGrid& grid, double ground_extinction_per_m, double edge_m,
+                          double distance_m);
+
+}  // namespace aerial
