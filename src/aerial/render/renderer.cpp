@@ -10,6 +10,7 @@
 #include "aerial/render/shadow_uniforms.h"
 #include "aerial/render/sky_view_layout.h"
 #include "aerial/render/sun_high_variant.h"
+#include "aerial/render/surface_reads.h"
 #include "aerial/scene/terrain.h"
 #include "aerial/terrain/terrain_chunk.h"
 
@@ -77,17 +78,22 @@ vk::ComputePipeline SkyViewCorrectionPipeline(const vk::Context& context, bool s
                              sizeof(kSkyViewSize) + 2 * sizeof(int), {0, 0, 0, 0, sun_high ? 1 : 0});
 }
 
-// Where an opaque fragment's sun visibility comes from (opaque_fragment.glsl).
-enum class SunVisibilitySource { kShadowMap, kCache };
-
 // The mesh shaders' specialization constants: 0 aerial perspective per pixel (frame.glsl), 1 sun
 // shadows (shadow.glsl), 2 the sun's part of the lighting in surface.frag (SurfaceLight), 3 the
-// sun visibility read from the cache, 4 the variant for a high sun (opaque_fragment.glsl).
-std::vector<int32_t> MeshConstants(const RenderOptions& options, SurfaceLight light = SurfaceLight::kSunAndSky,
-                                   SunVisibilitySource source = SunVisibilitySource::kShadowMap,
-                                   bool sun_high = false) {
-  return {PerPixel(options.mode), options.shadows ? 1 : 0, light == SurfaceLight::kSunAndSky ? 1 : 0,
-          source == SunVisibilitySource::kCache ? 1 : 0, sun_high ? 1 : 0};
+// sun visibility read from the cache, 4 the variant for a high sun, 5 the froxels read per vertex,
+// 6 the reads a benchmark leaves out (opaque_fragment.glsl).
+struct MeshVariant {
+  SurfaceLight light = SurfaceLight::kSunAndSky;
+  SunVisibilitySource source = SunVisibilitySource::kLookUp;
+  bool sun_high = false;
+  bool froxels_per_vertex = false;
+};
+
+std::vector<int32_t> MeshConstants(const RendererOptions& options, const MeshVariant& variant = {}) {
+  const int32_t left_out = (options.left_out_reads.froxels ? 1 : 0) | (options.left_out_reads.sun_visibility ? 2 : 0);
+  return {PerPixel(options.mode), options.shadows ? 1 : 0, variant.light == SurfaceLight::kSunAndSky ? 1 : 0,
+          variant.source == SunVisibilitySource::kCache ? 1 : 0, variant.sun_high ? 1 : 0,
+          variant.froxels_per_vertex ? 1 : 0, left_out};
 }
 
 vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std::string& fragment,
@@ -109,12 +115,15 @@ vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std
           .specialization = std::move(constants)};
 }
 
-// The sky: a full-screen triangle at depth 0 whose test (EQUAL against the depth cleared to 0,
-// reversed Z) passes only where no geometry was drawn, so each pixel runs one shader or the other.
-// Its constants: 0 aerial perspective per pixel (frame.glsl), 4 the variant for a high sun.
+// The sky, drawn where no geometry was (depth EQUAL against the depth cleared to 0, reversed Z),
+// so that each pixel runs one shader or the other: in froxel mode the sky dome at infinity from
+// the sky-view table (sky_dome.vert); in the per-pixel modes a full-screen triangle at depth 0
+// that reads the tables. Its constants: 0 aerial perspective per pixel (frame.glsl), 4 the
+// variant for a high sun.
 vk::GraphicsPipelineCreateInfo SkyPipeline(AerialMode mode, bool sun_high) {
-  return {.vertex_shader = "frame/sky.vert",
-          .fragment_shader = "frame/sky.frag",
+  const bool dome = mode == AerialMode::kFroxel;
+  return {.vertex_shader = dome ? "frame/sky_dome.vert" : "frame/sky.vert",
+          .fragment_shader = dome ? "frame/sky_dome.frag" : "frame/sky.frag",
           .slots = SkySlots(kSampled),
           .color_formats = {vk::kRgba32f},
           .depth_format = vk::kDepth32f,
@@ -143,26 +152,36 @@ vk::ImageCreateInfo SunVisibilityTarget(const RenderOptions& o) {
   return o.shadows ? Target(o, kSunVisibilityFormat) : vk::RenderTargetInfo(1, 1, kSunVisibilityFormat);
 }
 
-// With shadows, the opaque pipelines of the screen's sun visibility (opaque_fragment.glsl): the one
-// that looks it up and also writes it out (kShadowMap), and the one that reads it back (kCache).
-std::optional<vk::GraphicsPipeline> SunVisibilityPipeline(const vk::Context& context, const RenderOptions& o,
-                                                          SunVisibilitySource source, bool sun_high) {
-  if (!o.shadows) return std::nullopt;
-  std::vector<int32_t> constants = MeshConstants(o, SurfaceLight::kSunAndSky, source, sun_high);
-  if (source == SunVisibilitySource::kCache)
-    return vk::GraphicsPipeline(context, MeshPipeline("frame/opaque.vert", "frame/opaque.frag", false, constants));
-  return vk::GraphicsPipeline(context, MeshPipeline("frame/opaque.vert", "frame/opaque_caching.frag", false,
-                                                    constants, {vk::kRgba32f, kSunVisibilityFormat}));
+vk::GraphicsPipeline OpaquePipeline(const vk::Context& context, const RendererOptions& o, MeshVariant variant) {
+  if (variant.source == SunVisibilitySource::kLookUpAndCache)
+    return vk::GraphicsPipeline(context, MeshPipeline("frame/opaque.vert", "frame/opaque_caching.frag", false,
+                                                      MeshConstants(o, variant), {vk::kRgba32f, kSunVisibilityFormat}));
+  return vk::GraphicsPipeline(context, MeshPipeline("frame/opaque.vert", "frame/opaque.frag", false,
+                                                    MeshConstants(o, variant)));
 }
 
-MeshPipelines MakeMeshPipelines(const vk::Context& context, const RenderOptions& o, bool sun_high) {
-  const std::vector<int32_t> constants =
-      MeshConstants(o, SurfaceLight::kSunAndSky, SunVisibilitySource::kShadowMap, sun_high);
-  return {.opaque = vk::GraphicsPipeline(context, MeshPipeline("frame/opaque.vert", "frame/opaque.frag", false, constants)),
-          .opaque_caching = SunVisibilityPipeline(context, o, SunVisibilitySource::kShadowMap, sun_high),
-          .opaque_cached = SunVisibilityPipeline(context, o, SunVisibilitySource::kCache, sun_high),
-          .transparent = vk::GraphicsPipeline(
-              context, MeshPipeline("frame/transparent.vert", "frame/transparent.frag", true, constants))};
+// The opaque pipelines of one way of reading the froxels; with shadows, also those of the screen's
+// sun visibility (opaque_fragment.glsl).
+OpaquePipelines MakeOpaquePipelines(const vk::Context& context, const RendererOptions& o, MeshVariant variant) {
+  OpaquePipelines pipelines{.look_up = OpaquePipeline(context, o, variant)};
+  if (o.shadows) {
+    pipelines.look_up_and_cache = OpaquePipeline(
+        context, o, {.source = SunVisibilitySource::kLookUpAndCache, .sun_high = variant.sun_high,
+                     .froxels_per_vertex = variant.froxels_per_vertex});
+    pipelines.cache = OpaquePipeline(context, o, {.source = SunVisibilitySource::kCache, .sun_high = variant.sun_high,
+                                                  .froxels_per_vertex = variant.froxels_per_vertex});
+  }
+  return pipelines;
+}
+
+MeshPipelines MakeMeshPipelines(const vk::Context& context, const RendererOptions& o, bool sun_high) {
+  MeshPipelines pipelines{
+      .per_pixel = MakeOpaquePipelines(context, o, {.sun_high = sun_high}),
+      .transparent = vk::GraphicsPipeline(context, MeshPipeline("frame/transparent.vert", "frame/transparent.frag",
+                                                                true, MeshConstants(o, {.sun_high = sun_high})))};
+  if (o.mode == AerialMode::kFroxel && o.surface_froxel_reads != SurfaceFroxelReads::kPerPixel)
+    pipelines.per_vertex = MakeOpaquePipelines(context, o, {.sun_high = sun_high, .froxels_per_vertex = true});
+  return pipelines;
 }
 
 std::vector<Mesh> ReferenceTerrain(const Scene& scene, const RendererOptions& options, double R) {
@@ -258,7 +277,7 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       scene_radius_m_(SceneRadiusM(scene, tables.atmosphere().bottom_radius_m)),
       mesh_(MakeMeshPipelines(tables.context(), options, false)),
       sky_(tables.context(), SkyPipeline(options.mode, false)),
-      surface_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/surface.frag", false, MeshConstants(options))) {
+      surface_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/surface.frag", false, MeshConstants(options_))) {
   if (options.frames_in_flight < 1) throw Error("frames in flight", "0", "at least 1");
   for (uint32_t slot = 0; slot < options.frames_in_flight; ++slot) {
     frame_buffers_.emplace_back(tables.context(), vk::UniformBufferInfo(sizeof(FrameUniforms)));
@@ -457,26 +476,70 @@ std::vector<vk::Slot> Renderer::MeshSlots(uint32_t slot) const {
           tables_.Sampled(tables_.rayleigh()), tables_.Sampled(tables_.mie()), tables_.Sampled(tables_.multiple())};
 }
 
-// Nearest first, so that early depth tests skip the shading of what is hidden: the scene's meshes
-// (landmarks and models standing on the ground), then the terrain's chunks by distance.
-void Renderer::DrawOpaque(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
-                          const std::vector<vk::Slot>& slots) const {
+const vk::GraphicsPipeline& OpaquePipelines::For(SunVisibilitySource source) const {
+  switch (source) {
+    case SunVisibilitySource::kLookUpAndCache: return *look_up_and_cache;
+    case SunVisibilitySource::kCache: return *cache;
+    case SunVisibilitySource::kLookUp: break;
+  }
+  return look_up;
+}
+
+// Which meshes and chunks read the froxels per pixel (surface_reads.h), by their longest edge at
+// the nearest point of their bounds.
+void Renderer::ChooseFroxelReads(const Camera& camera) {
+  const double extinction = GroundExtinctionPerM(tables_.atmosphere());
+  auto per_pixel = [&](double edge_m, double distance_m) {
+    return options_.surface_froxel_reads == SurfaceFroxelReads::kPerPixel ||
+           (options_.surface_froxel_reads == SurfaceFroxelReads::kPerVertexWhereThin &&
+            ReadsFroxelsPerPixel(options_.froxels, extinction, edge_m, distance_m));
+  };
+  mesh_reads_per_pixel_.clear();
+  for (const MeshDraw& draw : geometry_.opaque_draws())
+    mesh_reads_per_pixel_.push_back(
+        per_pixel(draw.longest_edge_m, glm::length(draw.center - camera.position) - draw.radius_m));
+  auto first_per_vertex = std::stable_partition(
+      terrain_chunks_.begin(), terrain_chunks_.end(), [&](const terrain::SelectedChunk& chunk) {
+        const terrain::ChunkInfo* info = terrain_->Find(chunk.id);
+        return per_pixel(info->longest_edge_m, terrain::DistanceToBounds(camera.position, info->bounds));
+      });
+  terrain_per_pixel_ = size_t(first_per_vertex - terrain_chunks_.begin());
+}
+
+// The opaque meshes and terrain chunks whose froxel reads are pixel_reads (per pixel or per vertex),
+// or all of them, with one pipeline.
+void Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
+                             const std::vector<vk::Slot>& slots, std::optional<bool> pixel_reads) const {
   pipeline.Bind(cmd, slots);
   vk::BindMesh(cmd, geometry_.opaque_vertices(), geometry_.opaque_indices());
-  vk::SetCullBackFaces(cmd, true);
-  vk::DrawIndexed(cmd, geometry_.single_sided_index_count());
-  uint32_t double_sided = geometry_.opaque_index_count() - geometry_.single_sided_index_count();
-  if (double_sided > 0) {
-    vk::SetCullBackFaces(cmd, false);
-    vk::DrawIndexed(cmd, double_sided, geometry_.single_sided_index_count());
+  const std::vector<MeshDraw>& draws = geometry_.opaque_draws();
+  for (size_t i = 0; i < draws.size(); ++i) {
+    if (pixel_reads && bool(mesh_reads_per_pixel_[i]) != *pixel_reads) continue;
+    vk::SetCullBackFaces(cmd, !draws[i].double_sided);
+    vk::DrawIndexed(cmd, draws[i].index_count, draws[i].first_index);
   }
   if (terrain_chunks_.empty()) return;
   vk::SetCullBackFaces(cmd, true);
   vk::BindMesh(cmd, terrain_->vertices(), terrain_->indices());
-  for (const terrain::SelectedChunk& chunk : terrain_chunks_) {
-    terrain::IndexRange range = terrain::ChunkIndexRange(chunk.skirts);
-    vk::DrawIndexed(cmd, range.count, range.first, terrain_->VertexOffset(chunk.id));
+  const size_t first = pixel_reads.value_or(true) ? 0 : terrain_per_pixel_;
+  const size_t end = pixel_reads.value_or(false) ? terrain_per_pixel_ : terrain_chunks_.size();
+  for (size_t i = first; i < end; ++i) {
+    terrain::IndexRange range = terrain::ChunkIndexRange(terrain_chunks_[i].skirts);
+    vk::DrawIndexed(cmd, range.count, range.first, terrain_->VertexOffset(terrain_chunks_[i].id));
   }
+}
+
+// Nearest first, so that early depth tests skip the shading of what is hidden: the scene's meshes
+// (landmarks and models standing on the ground), then the terrain's chunks by distance; those
+// that read the froxels per pixel before those that read them per vertex.
+void Renderer::DrawOpaque(const vk::CommandBuffer& cmd, const MeshPipelines& pipelines, SunVisibilitySource source,
+                          const std::vector<vk::Slot>& slots) const {
+  if (!pipelines.per_vertex) {
+    DrawOpaqueRun(cmd, pipelines.per_pixel.For(source), slots, std::nullopt);
+    return;
+  }
+  DrawOpaqueRun(cmd, pipelines.per_pixel.For(source), slots, true);
+  DrawOpaqueRun(cmd, pipelines.per_vertex->For(source), slots, false);
 }
 
 // The sky where no geometry was drawn, then the transparent objects over everything, inside the
@@ -492,7 +555,11 @@ void Renderer::DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot
                    tables_.Sampled(tables_.mie()), tables_.Sampled(tables_.multiple()),
                    tables_.Sampled(tables_.irradiance()), tables_.Sampled(sky_rayleigh_),
                     tables_.Sampled(sky_mie_), tables_.Sampled(sky_background_)});
-    vk::DrawFullScreenTriangle(cmd);
+    if (options_.mode == AerialMode::kFroxel) {
+      vk::Draw(cmd, kSkyDomeVertices, 2);
+    } else {
+      vk::DrawFullScreenTriangle(cmd);
+    }
   }
   timer.End(cmd);
   timer.Begin(cmd, "transparent raster");
@@ -519,6 +586,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   geometry_.SortTransparent(scene.camera.position, slot);
   frame_info_ = {};
   SelectTerrain(scene, complete);
+  ChooseFroxelReads(scene.camera);
 
   // The previous frame's reads and writes of the shared images come before this frame's.
   vk::FullBarrier(cmd);
@@ -560,10 +628,11 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   const vk::GraphicsPipeline& sky = SkyPipelineFor();
   // Every pixel is written once by the opaque pass or the sky, so the output is not cleared.
   vk::RenderTargets targets{.colors = {&output_}, .clear_colors = {std::nullopt}, .depth = &depth_, .clear_depth = 0.0f};
+  const bool cacheable = pipelines.per_pixel.look_up_and_cache.has_value();
   frame_info_.sun_visibility_cached =
-      pipelines.opaque_caching &&
+      cacheable &&
       SunVisibilityReusable(sun_visibility_key_, frame_uniforms_, terrain_chunks_, frame_info_.shadow_map_updated);
-  if (!frame_info_.sun_visibility_cached && pipelines.opaque_caching &&
+  if (!frame_info_.sun_visibility_cached && cacheable &&
       SunVisibilityWorthCaching(frames_recorded_ == 0, still_view_)) {
     sun_visibility_key_ = SunVisibilityKey{frame_uniforms_, terrain_chunks_};
     // The opaque pass writes the sun visibility as well, in a scope of its own: the sky and the
@@ -574,7 +643,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
       caching.clear_colors.push_back(std::nullopt);  // only covered pixels are ever read
       vk::Rendering rendering(cmd, caching);
       timer.Begin(cmd, "opaque raster");
-      DrawOpaque(cmd, *pipelines.opaque_caching, mesh_slots);
+      DrawOpaque(cmd, pipelines, SunVisibilitySource::kLookUpAndCache, mesh_slots);
       timer.End(cmd);
     }
     vk::FullBarrier(cmd);
@@ -584,7 +653,9 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   } else {
     vk::Rendering rendering(cmd, targets);
     timer.Begin(cmd, "opaque raster");
-    DrawOpaque(cmd, frame_info_.sun_visibility_cached ? *pipelines.opaque_cached : pipelines.opaque, mesh_slots);
+    DrawOpaque(cmd, pipelines,
+               frame_info_.sun_visibility_cached ? SunVisibilitySource::kCache : SunVisibilitySource::kLookUp,
+               mesh_slots);
     timer.End(cmd);
     DrawSkyAndTransparent(cmd, slot, sky, pipelines.transparent, mesh_slots);
   }
@@ -617,7 +688,7 @@ ImageRgbF Renderer::ReadSurface(SurfaceLight light) const {
   std::optional<vk::GraphicsPipeline> sky_only;
   if (light == SurfaceLight::kSkyOnly)
     sky_only.emplace(context, MeshPipeline("frame/opaque.vert", "frame/surface.frag", false,
-                                           MeshConstants(options_, SurfaceLight::kSkyOnly)));
+                                           MeshConstants(options_, {.light = SurfaceLight::kSkyOnly})));
   vk::Image surface(context, Target(options_, vk::kRgba32f));
   vk::Image depth(context, Target(options_, vk::kDepth32f));
   context.Submit([&](const vk::CommandBuffer& cmd) {
@@ -626,7 +697,7 @@ ImageRgbF Renderer::ReadSurface(SurfaceLight light) const {
     {
       vk::Rendering rendering(cmd, {.colors = {&surface}, .clear_colors = {std::array<float, 4>{0, 0, 0, -1}},
                                     .depth = &depth, .clear_depth = 0.0f});
-      DrawOpaque(cmd, sky_only ? *sky_only : surface_, MeshSlots(last_slot_));
+      DrawOpaqueRun(cmd, sky_only ? *sky_only : surface_, MeshSlots(last_slot_), std::nullopt);
     }
     vk::FullBarrier(cmd);
   });

@@ -36,12 +36,24 @@ namespace aerial {
 // the sky's part alone.
 enum class SurfaceLight { kSunAndSky, kSkyOnly };
 
-// The mesh passes' pipelines of one shader variant: opaque looks the sun visibility up
-// (opaque_fragment.glsl); with shadows on, opaque_caching also writes it and opaque_cached reads
-// it back; then the transparent objects.
+// Where an opaque pass takes the sun's visibility from (opaque_fragment.glsl): it looks it up; it
+// looks it up and also writes it to the screen's cache; it reads the cache back.
+enum class SunVisibilitySource { kLookUp, kLookUpAndCache, kCache };
+
+// The opaque pass's pipelines of one way of reading the froxels (opaque_fragment.glsl), one per
+// SunVisibilitySource (the two of the cache with shadows on only).
+struct OpaquePipelines {
+  vk::GraphicsPipeline look_up;
+  std::optional<vk::GraphicsPipeline> look_up_and_cache, cache;
+  const vk::GraphicsPipeline& For(SunVisibilitySource source) const;
+};
+
+// The mesh passes' pipelines of one shader variant: the opaque pass reading the froxels per pixel
+// (or, in the per-pixel modes, the tables), and in froxel mode per vertex on small triangles
+// (surface_reads.h); then the transparent objects.
 struct MeshPipelines {
-  vk::GraphicsPipeline opaque;
-  std::optional<vk::GraphicsPipeline> opaque_caching, opaque_cached;
+  OpaquePipelines per_pixel;
+  std::optional<OpaquePipelines> per_vertex;
   vk::GraphicsPipeline transparent;
 };
 
@@ -114,7 +126,10 @@ class Renderer {
   const vk::GraphicsPipeline& SkyPipelineFor();
   const vk::ComputePipeline& SkyViewCorrectionPipelineFor();
   std::vector<vk::Slot> MeshSlots(uint32_t slot) const;
-  void DrawOpaque(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
+  void ChooseFroxelReads(const Camera& camera);
+  void DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
+                     const std::vector<vk::Slot>& slots, std::optional<bool> pixel_reads) const;
+  void DrawOpaque(const vk::CommandBuffer& cmd, const MeshPipelines& pipelines, SunVisibilitySource source,
                   const std::vector<vk::Slot>& slots) const;
   void DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot, const vk::GraphicsPipeline& sky,
                              const vk::GraphicsPipeline& transparent, const std::vector<vk::Slot>& mesh_slots) const;
@@ -123,7 +138,11 @@ class Renderer {
   RendererOptions options_;
   SceneGeometry geometry_;
   std::unique_ptr<TerrainChunkCache> terrain_;  // null without a terrain or with the fixed mesh
+  // Front to back within each of two runs: the chunks that read the froxels per pixel first
+  // (surface_reads.h), terrain_per_pixel_ of them, then those that read them per vertex.
   std::vector<terrain::SelectedChunk> terrain_chunks_;
+  size_t terrain_per_pixel_ = 0;
+  std::vector<char> mesh_reads_per_pixel_;  // per SceneGeometry::opaque_draws()
   // What the selection of terrain_chunks_ left out as hidden, and drew in place of finer chunks not
   // built yet (-1 before the first selection); the frames that keep it report the same.
   int terrain_hidden_ = 0, terrain_deferred_ = -1;
