@@ -32,17 +32,18 @@ struct DifferencePush {
   float full_scale;
 };
 
-// Constant 0 is frame.glsl's aerial mode (unused here), 1 display.glsl's kTargetEncodesSrgb.
+// Constant 0 is frame.glsl's aerial mode (unused here), 1 display.glsl's kTargetEncodesSrgb,
+// 2 present.frag's kResampled.
 vk::GraphicsPipelineCreateInfo FullScreen(::vk::RenderPass render_pass, ::vk::Format format,
                                           const std::string& fragment,
-                                          vk::SlotLayout slots, uint32_t push_bytes) {
+                                          vk::SlotLayout slots, uint32_t push_bytes, bool resampled = false) {
   return {.vertex_shader = "frame/fullscreen.vert",
           .fragment_shader = fragment,
           .slots = std::move(slots),
           .push_constant_bytes = push_bytes,
           .render_pass = render_pass,
           .depth_write = false,
-          .specialization = {0, vk::EncodesSrgb(format) ? 1 : 0}};
+          .specialization = {0, vk::EncodesSrgb(format) ? 1 : 0, resampled ? 1 : 0}};
 }
 
 }  // namespace
@@ -52,6 +53,8 @@ DisplayPasses::DisplayPasses(const vk::Context& context, ::vk::RenderPass render
       nearest_(vk::CreateNearestClampSampler(context)),
       tone_map_(context, FullScreen(render_pass, format, "view/present.frag", {{"radiance_image", kSampled}},
                                      sizeof(ToneMapPush))),
+      tone_map_resampled_(context, FullScreen(render_pass, format, "view/present.frag",
+                                              {{"radiance_image", kSampled}}, sizeof(ToneMapPush), true)),
       term_(context, FullScreen(render_pass, format, "view/inscatter.frag",
                                 {{"AtmosphereBlock", kUniform},
                                  {"FrameBlock", kUniform},
@@ -77,7 +80,8 @@ DisplayPasses::DisplayPasses(const vk::Context& context, ::vk::RenderPass render
 void DisplayPasses::RecordToneMap(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
                                   const SampledImage& radiance, float exposure) const {
   ToneMapPush push{{float(extent.width), float(extent.height)}, exposure};
-  tone_map_.Bind(cmd, {Linear(radiance)}, &push);
+  const bool same_size = radiance.extent.width == extent.width && radiance.extent.height == extent.height;
+  (same_size ? tone_map_ : tone_map_resampled_).Bind(cmd, {Linear(radiance)}, &push);
   vk::DrawFullScreenTriangle(cmd);
 }
 

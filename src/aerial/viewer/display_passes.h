@@ -42,7 +42,8 @@ class DisplayPasses {
   vk::SampledViewSlot Linear(const SampledImage& image) const { return {image.view, *linear_}; }
 
   ::vk::raii::Sampler linear_, nearest_;
-  vk::GraphicsPipeline tone_map_, term_, froxel_slice_, difference_;
+  // The picture of a frame of the target's size, read texel for texel, and of another size.
+  vk::GraphicsPipeline tone_map_, tone_map_resampled_, term_, froxel_slice_, difference_;
 };
 
 }  // namespace aerial::viewer
