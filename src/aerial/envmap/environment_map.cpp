@@ -1,0 +1,129 @@
+#include "aerial/envmap/environment_map.h"
+
+#include <OpenEXR/ImfEnvmap.h>
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+#include "aerial/error.h"
+#include "aerial/shader_abi/camera_frame_block.h"
+#include "aerial/view_geometry.h"
+#include "aerial/vk/compute_pipeline.h"
+
+namespace aerial {
+namespace {
+
+// OpenEXR's envmap frame (Y up) in the scene frame: X north, Y up, Z east.
+glm::dvec3 SceneFromExr(const Imath::V3f& exr) { return glm::normalize(glm::dvec3(exr.z, exr.x, exr.y)); }
+
+struct PushConstants {
+  int32_t width, height, face_height, sun_disc;
+};
+
+}  // namespace
+
+std::array<int, 2> EnvironmentImageSize(const EnvironmentMapOptions& options) {
+  if (options.layout == EnvironmentLayout::kLatLong) return {2 * options.size, options.size};
+  return {options.size, 6 * options.size};
+}
+
+std::vector<glm::dvec3> LatLongDirections(int width, int height) {
+  std::vector<glm::dvec3> directions;
+  directions.reserve(size_t(width) * height);
+  for (int y = 0; y < height; ++y) {
+    const double zenith = std::numbers::pi * (y + 0.5) / height;
+    for (int x = 0; x < width; ++x) {
+      const double azimuth = 2.0 * std::numbers::pi * (x + 0.5) / width - 0.5 * std::numbers::pi;
+      directions.emplace_back(std::sin(zenith) * std::sin(azimuth), std::sin(zenith) * std::cos(azimuth),
+                              std::cos(zenith));
+    }
+  }
+  return directions;
+}
+
+std::vector<glm::dvec3> CubeDirections(int face_size) {
+  const Imath::Box2i window(Imath::V2i(0, 0), Imath::V2i(face_size - 1, 6 * face_size - 1));
+  std::vector<glm::dvec3> directions(size_t(face_size) * 6 * face_size);
+  for (int face = 0; face < 6; ++face) {
+    for (int j = 0; j < face_size; ++j) {
+      for (int i = 0; i < face_size; ++i) {
+        const Imf::CubeMapFace f = Imf::CubeMapFace(face);
+        const Imath::V2f in_face{float(i), float(j)};
+        const Imath::V2f pixel = Imf::CubeMap::pixelPosition(f, window, in_face);
+        directions[size_t(std::lround(pixel.y)) * face_size + size_t(std::lround(pixel.x))] =
+            SceneFromExr(Imf::CubeMap::direction(f, window, in_face));
+      }
+    }
+  }
+  return directions;
+}
+
+EnvironmentMap RenderEnvironmentMap(const AtmosphereTables& tables, const EnvironmentMapOptions& options) {
+  const AtmosphereParameters& atmosphere = tables.atmosphere();
+  ValidateViewAngles({.altitude_m = options.altitude_m, .sun_zenith_deg = options.sun.zenith_deg}, atmosphere);
+  const auto [width, height] = EnvironmentImageSize(options);
+  CheckImageSize(width, height);
+  const std::vector<glm::dvec3> directions =
+      options.layout == EnvironmentLayout::kLatLong ? LatLongDirections(width, height) : CubeDirections(options.size);
+
+  const vk::Context& context = tables.context();
+  const size_t texels = size_t(width) * height;
+  vk::Buffer direction_buffer(context, {.size = texels * sizeof(glm::vec4),
+                                        .usage = ::vk::BufferUsageFlagBits::eStorageBuffer,
+                                        .host_visible = true});
+  auto* mapped = reinterpret_cast<glm::vec4*>(direction_buffer.mapped());
+  for (size_t i = 0; i < texels; ++i) mapped[i] = glm::vec4(glm::vec3(directions[i]), 0.0f);
+  vk::Buffer radiance_buffer(context, {.size = texels * sizeof(glm::vec4),
+                                       .usage = ::vk::BufferUsageFlagBits::eStorageBuffer,
+                                       .host_visible = true});
+  vk::Buffer sun_buffer(context, {.size = sizeof(glm::vec4),
+                                  .usage = ::vk::BufferUsageFlagBits::eStorageBuffer,
+                                  .host_visible = true});
+  // The point on the planet's +z axis, its vertical the scene frame's: only the camera's position
+  // and the sun reach the shader (GetCameraRayParameters).
+  FrameCamera camera;
+  camera.view_projection = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  camera.position_m = {0.0, 0.0, options.altitude_m};
+  const glm::dvec3 sun = options.sun.Direction();
+  camera.sun_direction = {sun.x, sun.y, sun.z};
+  camera.width = uint32_t(width);
+  camera.height = uint32_t(height);
+  const FrameUniforms frame = MakeFrameUniforms(camera, atmosphere.bottom_radius_m, FroxelGrid{});
+  vk::Buffer frame_buffer(context, {.size = sizeof(FrameUniforms),
+                                    .usage = ::vk::BufferUsageFlagBits::eUniformBuffer,
+                                    .host_visible = true});
+  frame_buffer.Write(std::as_bytes(std::span(&frame, 1)));
+
+  vk::ComputePipeline pipeline(
+      context, "envmap/envmap.comp",
+      {{"AtmosphereBlock", vk::kUniform}, {"FrameBlock", vk::kUniform}, {"transmittance_texture", vk::kSampled},
+       {"rayleigh_texture", vk::kSampled}, {"mie_texture", vk::kSampled}, {"multiple_texture", vk::kSampled},
+       {"irradiance_texture", vk::kSampled}, {"Directions", vk::kStorageBuffer}, {"Radiance", vk::kStorageBuffer},
+       {"Sunlight", vk::kStorageBuffer}},
+      sizeof(PushConstants));
+  const PushConstants push{width, height,
+                           options.layout == EnvironmentLayout::kLatLong ? height : options.size,
+                           options.sun_disc ? 1 : 0};
+  context.Submit([&](const auto& cmd) {
+    pipeline.Dispatch(cmd,
+                      {vk::UniformBufferSlot{&tables.uniform_buffer()}, vk::UniformBufferSlot{&frame_buffer},
+                       tables.Sampled(tables.transmittance()), tables.Sampled(tables.rayleigh()),
+                       tables.Sampled(tables.mie()), tables.Sampled(tables.multiple()),
+                       tables.Sampled(tables.irradiance()), vk::StorageBufferSlot{&direction_buffer},
+                       vk::StorageBufferSlot{&radiance_buffer}, vk::StorageBufferSlot{&sun_buffer}},
+                      {uint32_t(width), uint32_t(height), 1}, {64, 1, 1}, &push);
+    vk::FullBarrier(cmd);
+  });
+
+  EnvironmentMap map;
+  map.image.width = width;
+  map.image.height = height;
+  map.image.rgba.resize(texels * 4);
+  std::memcpy(map.image.rgba.data(), radiance_buffer.mapped(), texels * sizeof(glm::vec4));
+  const auto* sunlight = reinterpret_cast<const float*>(sun_buffer.mapped());
+  map.sun_irradiance = {sunlight[0], sunlight[1], sunlight[2]};
+  return map;
+}
+
+}  // namespace aerial
