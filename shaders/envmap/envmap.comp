@@ -4,7 +4,7 @@
 // sky pass draws it per pixel (GetSkyRadianceAlongRay, aerial_perspective.glsl): the tables'
 // inscatter with the direction's own phase functions and, where the direction meets the planet,
 // the lit bare ground through the air. The sun's disc is drawn only when asked for, each texel it
-// touches getting the disc's radiance times the part of the texel it covers (sampled 8x8), so
+// touches getting the disc's radiance times the part of the texel it covers (sampled 16x16), so
 // that the map holds the sun's whole irradiance at any resolution; invocation 0 also writes the
 // sun's irradiance at the point, normal to its rays, for a separate sun lamp.
 #include "aerial_perspective.glsl"
@@ -26,7 +26,7 @@ layout(push_constant) uniform Map {
   int sun_disc;  // 1: the disc in the map
 } map;
 
-const int DISC_SAMPLES = 8;  // per texel side, where the disc may touch the texel
+const int DISC_SAMPLES = 16;  // per texel side, where the disc may touch the texel
 
 vec3 TexelDirection(int x, int y) { return directions[y * map.width + x].xyz; }
 
