@@ -2,6 +2,7 @@
 
 #include <OpenEXR/ImfEnvmap.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -17,9 +18,26 @@ namespace {
 // OpenEXR's envmap frame (Y up) in the scene frame: X north, Y up, Z east.
 glm::dvec3 SceneFromExr(const Imath::V3f& exr) { return glm::normalize(glm::dvec3(exr.z, exr.x, exr.y)); }
 
-struct PushConstants {
-  int32_t width, height, face_height, sun_disc;
+struct LatticeShape {
+  int32_t rows, azimuths;
 };
+struct MapConstants {
+  int32_t width, height, face_height, sun_disc, azimuths, rows_above, rows_below;
+  float zenith_above, zenith_below;
+};
+
+// The lattice's azimuth nodes over [0, pi]: one every 16 texels of a lat-long map as wide (128
+// for 2048 texels: 1.4 degrees apart), at least 64. The phase-free inscatter is smooth in
+// azimuth (the phases, which are not, are applied per texel), so that linear interpolation moved
+// no texel of the tests' maps by 0.05%.
+int AzimuthNodes(int lat_long_width) { return std::clamp(lat_long_width / 16, 64, 512) + 1; }
+
+// A cube map's lattice rows on each side of the horizon, evenly in zenith angle: two per texel
+// of a face's side, at least 256 (a third of a degree).
+int CubeRowsPerSide(int face_size) { return std::max(2 * face_size, 256); }
+
+// Just off the horizon on either side, so that a row never straddles it.
+constexpr double kHorizonMargin = 1e-4;
 
 }  // namespace
 
@@ -64,24 +82,43 @@ EnvironmentMap RenderEnvironmentMap(const AtmosphereTables& tables, const Enviro
   ValidateViewAngles({.altitude_m = options.altitude_m, .sun_zenith_deg = options.sun.zenith_deg}, atmosphere);
   const auto [width, height] = EnvironmentImageSize(options);
   CheckImageSize(width, height);
-  const std::vector<glm::dvec3> directions =
-      options.layout == EnvironmentLayout::kLatLong ? LatLongDirections(width, height) : CubeDirections(options.size);
+  const bool lat_long = options.layout == EnvironmentLayout::kLatLong;
+  const std::vector<glm::dvec3> directions = lat_long ? LatLongDirections(width, height) : CubeDirections(options.size);
+
+  // The lattice's rows: the lat-long map's own, or evenly on each side of the horizon.
+  MapConstants constants{width, height, lat_long ? height : options.size, options.sun_disc ? 1 : 0,
+                         AzimuthNodes(lat_long ? width : 4 * options.size), 0, 0, 0.0f, 0.0f};
+  std::vector<float> rows;
+  if (lat_long) {
+    for (int y = 0; y < height; ++y) rows.push_back(float(std::numbers::pi * (y + 0.5) / height));
+  } else {
+    const double r = atmosphere.bottom_radius_m + options.altitude_m;
+    const double horizon = std::numbers::pi - std::asin(std::min(atmosphere.bottom_radius_m / r, 1.0));
+    const double above = horizon - kHorizonMargin, below = horizon + kHorizonMargin;
+    constants.rows_above = constants.rows_below = CubeRowsPerSide(options.size);
+    constants.zenith_above = float(above);
+    constants.zenith_below = float(below);
+    for (int i = 0; i < constants.rows_above; ++i) rows.push_back(float(above * i / (constants.rows_above - 1)));
+    for (int i = 0; i < constants.rows_below; ++i)
+      rows.push_back(float(below + (std::numbers::pi - below) * i / (constants.rows_below - 1)));
+  }
+  const LatticeShape shape{int32_t(rows.size()), constants.azimuths};
 
   const vk::Context& context = tables.context();
+  auto storage = [&](size_t bytes) {
+    return vk::Buffer(context, {.size = bytes, .usage = ::vk::BufferUsageFlagBits::eStorageBuffer, .host_visible = true});
+  };
   const size_t texels = size_t(width) * height;
-  vk::Buffer direction_buffer(context, {.size = texels * sizeof(glm::vec4),
-                                        .usage = ::vk::BufferUsageFlagBits::eStorageBuffer,
-                                        .host_visible = true});
+  vk::Buffer direction_buffer = storage(texels * sizeof(glm::vec4));
   auto* mapped = reinterpret_cast<glm::vec4*>(direction_buffer.mapped());
   for (size_t i = 0; i < texels; ++i) mapped[i] = glm::vec4(glm::vec3(directions[i]), 0.0f);
-  vk::Buffer radiance_buffer(context, {.size = texels * sizeof(glm::vec4),
-                                       .usage = ::vk::BufferUsageFlagBits::eStorageBuffer,
-                                       .host_visible = true});
-  vk::Buffer sun_buffer(context, {.size = sizeof(glm::vec4),
-                                  .usage = ::vk::BufferUsageFlagBits::eStorageBuffer,
-                                  .host_visible = true});
+  vk::Buffer row_buffer = storage(rows.size() * sizeof(float));
+  row_buffer.Write(std::as_bytes(std::span(rows)));
+  vk::Buffer lattice_buffer = storage(rows.size() * size_t(shape.azimuths) * 3 * sizeof(glm::vec4));
+  vk::Buffer radiance_buffer = storage(texels * sizeof(glm::vec4));
+  vk::Buffer sun_buffer = storage(sizeof(glm::vec4));
   // The point on the planet's +z axis, its vertical the scene frame's: only the camera's position
-  // and the sun reach the shader (GetCameraRayParameters).
+  // and the sun reach the shaders (GetCameraRayParameters, GetSkyViewFrame).
   FrameCamera camera;
   camera.view_projection = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   camera.position_m = {0.0, 0.0, options.altitude_m};
@@ -95,24 +132,32 @@ EnvironmentMap RenderEnvironmentMap(const AtmosphereTables& tables, const Enviro
                                     .host_visible = true});
   frame_buffer.Write(std::as_bytes(std::span(&frame, 1)));
 
-  vk::ComputePipeline pipeline(
-      context, "envmap/envmap.comp",
+  vk::ComputePipeline lattice(
+      context, "envmap/envmap_lattice.comp",
       {{"AtmosphereBlock", vk::kUniform}, {"FrameBlock", vk::kUniform}, {"transmittance_texture", vk::kSampled},
        {"rayleigh_texture", vk::kSampled}, {"mie_texture", vk::kSampled}, {"multiple_texture", vk::kSampled},
-       {"irradiance_texture", vk::kSampled}, {"Directions", vk::kStorageBuffer}, {"Radiance", vk::kStorageBuffer},
+       {"irradiance_texture", vk::kSampled}, {"Rows", vk::kStorageBuffer}, {"Lattice", vk::kStorageBuffer}},
+      sizeof(LatticeShape));
+  vk::ComputePipeline texels_pass(
+      context, "envmap/envmap.comp",
+      {{"AtmosphereBlock", vk::kUniform}, {"FrameBlock", vk::kUniform}, {"transmittance_texture", vk::kSampled},
+       {"Directions", vk::kStorageBuffer}, {"Lattice", vk::kStorageBuffer}, {"Radiance", vk::kStorageBuffer},
        {"Sunlight", vk::kStorageBuffer}},
-      sizeof(PushConstants));
-  const PushConstants push{width, height,
-                           options.layout == EnvironmentLayout::kLatLong ? height : options.size,
-                           options.sun_disc ? 1 : 0};
+      sizeof(MapConstants));
   context.Submit([&](const auto& cmd) {
-    pipeline.Dispatch(cmd,
-                      {vk::UniformBufferSlot{&tables.uniform_buffer()}, vk::UniformBufferSlot{&frame_buffer},
-                       tables.Sampled(tables.transmittance()), tables.Sampled(tables.rayleigh()),
-                       tables.Sampled(tables.mie()), tables.Sampled(tables.multiple()),
-                       tables.Sampled(tables.irradiance()), vk::StorageBufferSlot{&direction_buffer},
-                       vk::StorageBufferSlot{&radiance_buffer}, vk::StorageBufferSlot{&sun_buffer}},
-                      {uint32_t(width), uint32_t(height), 1}, {64, 1, 1}, &push);
+    const vk::UniformBufferSlot atmosphere_block{&tables.uniform_buffer()}, frame_block{&frame_buffer};
+    lattice.Dispatch(cmd,
+                     {atmosphere_block, frame_block, tables.Sampled(tables.transmittance()),
+                      tables.Sampled(tables.rayleigh()), tables.Sampled(tables.mie()),
+                      tables.Sampled(tables.multiple()), tables.Sampled(tables.irradiance()),
+                      vk::StorageBufferSlot{&row_buffer}, vk::StorageBufferSlot{&lattice_buffer}},
+                     {uint32_t(shape.azimuths), uint32_t(shape.rows), 1}, {64, 1, 1}, &shape);
+    vk::FullBarrier(cmd);
+    texels_pass.Dispatch(cmd,
+                         {atmosphere_block, frame_block, tables.Sampled(tables.transmittance()),
+                          vk::StorageBufferSlot{&direction_buffer}, vk::StorageBufferSlot{&lattice_buffer},
+                          vk::StorageBufferSlot{&radiance_buffer}, vk::StorageBufferSlot{&sun_buffer}},
+                         {uint32_t(width), uint32_t(height), 1}, {64, 1, 1}, &constants);
     vk::FullBarrier(cmd);
   });
 

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "aerial/error.h"
 #include "aerial/scene/scene_file.h"
 #include "aerial/scene/scene_overrides.h"
@@ -42,6 +44,12 @@ TEST(SunDateInScenes, TomlDatesTimesAndStringsGiveTheAstronomySun) {
   // The sun of the case is 50 degrees from the zenith, in the south-southwest (SPA's 194.34).
   EXPECT_NEAR(expected.zenith_deg, 50.128, 0.001);
   EXPECT_NEAR(expected.azimuth_deg, 194.340, 0.001);
+}
+
+// examples/scenes/dated.toml is the SPA case above.
+TEST(SunDateInScenes, TheExampleSceneHasTheSpaSun) {
+  const Scene scene = LoadSceneFile(std::filesystem::path(AERIAL_SOURCE_DIR) / "examples/scenes/dated.toml", kR);
+  EXPECT_EQ(scene.sun, astronomy::SunFromDate(kGolden, astronomy::kSunDateOptions, ""));
 }
 
 TEST(SunDateInScenes, BadKeysAreNamedWithTheirFile) {
