@@ -125,7 +125,7 @@ TEST_F(Envmap, CubeTexelsLookWhereOpenExrSays) {
   for (int face = 0; face < 6; ++face)
     for (int j : {0, 5, 15})
       for (int i : {0, 9, 15}) {
-        const Imath::V2f in_face(float(i), float(j));
+        const Imath::V2f in_face{float(i), float(j)};
         const Imath::V2f pixel = Imf::CubeMap::pixelPosition(Imf::CubeMapFace(face), window, in_face);
         const Imath::V3f exr = Imf::CubeMap::direction(Imf::CubeMapFace(face), window, in_face);
         const glm::dvec3 direction = glm::normalize(glm::dvec3(exr.z, exr.x, exr.y));  // east, north, up

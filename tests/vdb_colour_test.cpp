@@ -143,9 +143,9 @@ TEST_F(VdbColour, FrustumFirstVoxelSitsAtTheFirstFroxelSlice) {
     const double view_depth = glm::dot(glm::dvec3(world[0], world[1], world[2]) - camera.position, forward);
     std::printf("frustum slice %d: view depth %.3f m (first froxel slice %.3f m), %d slices\n", k, view_depth,
                 first_slice, frustum.slices());
-    if (k == 0) EXPECT_NEAR(view_depth, first_slice, 0.05);
-    // One slice, 2 (31.25 - 0.5) m deep, farther.
-    if (k == 1) EXPECT_NEAR(view_depth, camera.near_m + 3.0 * (first_slice - camera.near_m), 0.1);
+    // The second one slice, 2 (31.25 - 0.5) m deep, farther.
+    const double expected = k == 0 ? first_slice : camera.near_m + 3.0 * (first_slice - camera.near_m);
+    EXPECT_NEAR(view_depth, expected, k == 0 ? 0.05 : 0.1);
   }
   EXPECT_EQ(frustum.slices(), 2082);
 }

@@ -22,6 +22,7 @@ def reset():
     scene = bpy.context.scene
     scene.render.engine = "CYCLES"
     scene.cycles.device = "CPU"
+    scene.cycles.use_denoising = False
     scene.view_settings.view_transform = "Standard"
     scene.render.image_settings.file_format = "OPEN_EXR"
     scene.render.image_settings.color_depth = "32"
@@ -100,7 +101,9 @@ print("blender: the VDB's grids", sorted(g.name for g in volume.data.grids), "; 
 material = bpy.data.materials.new("air")
 material.use_nodes = True
 nodes, links = material.node_tree.nodes, material.node_tree.links
-nodes.remove(nodes["Principled BSDF"])
+for node in [n for n in nodes if n.type != "OUTPUT_MATERIAL"]:
+    nodes.remove(node)
+output = next(n for n in nodes if n.type == "OUTPUT_MATERIAL")
 scattering = nodes.new("ShaderNodeAttribute")
 scattering.attribute_name = "scattering"
 absorption = nodes.new("ShaderNodeAttribute")
@@ -118,13 +121,14 @@ links.new(one_minus.outputs["Vector"], absorb.inputs["Color"])
 both = nodes.new("ShaderNodeAddShader")
 links.new(scatter.outputs["Volume"], both.inputs[0])
 links.new(absorb.outputs["Volume"], both.inputs[1])
-links.new(both.outputs["Shader"], nodes["Material Output"].inputs["Volume"])
+links.new(both.outputs["Shader"], output.inputs["Volume"])
 volume.data.materials.append(material)
 sun = bpy.data.objects.new("sun", bpy.data.lights.new("sun", "SUN"))
 sun.data.energy = 1.0
 sun.rotation_euler = (math.radians(30.0), 0.0, math.radians(160.0))
 scene.collection.objects.link(sun)
 add_camera(scene, azimuth_deg=0.0, elevation_deg=4.0, fov_deg=50.0, location=(0.0, 0.0, 30.0))
+scene.camera.data.clip_end = 1e5
 width, height, pixels = render(scene, "air", (48, 27))
 mean = [sum(p[c] for p in pixels) / len(pixels) for c in range(3)]
 print("blender: the air rendered with the recipe, mean R G B", [f"{v:.4g}" for v in mean],

@@ -1,6 +1,10 @@
 #include "aerial/envmap/environment_file.h"
 
+#include <OpenEXR/ImfThreading.h>
+
+#include <algorithm>
 #include <numbers>
+#include <thread>
 
 #include "aerial/core/atomic_file.h"
 #include "aerial/image/exposure.h"
@@ -45,6 +49,10 @@ ExrHeaderExtras EnvironmentHeader(const EnvironmentMap& map, const EnvironmentMa
 }
 
 void WriteEnvironmentExr(const std::filesystem::path& path, const EnvironmentMap& map, const ExrHeaderExtras& header) {
+  // OpenEXR compresses a file's blocks on its global thread pool, which has no threads unless
+  // asked: a 2048 x 1024 map took most of a second to compress on one. A caller that chose a
+  // count keeps it.
+  if (Imf::globalThreadCount() == 0) Imf::setGlobalThreadCount(int(std::max(1u, std::thread::hardware_concurrency())));
   WriteFileAtomically(path, EncodeExr(map.image, header));
 }
 
