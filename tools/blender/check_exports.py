@@ -8,7 +8,9 @@
 #    right), and one looking east 30 degrees up sees the sun of the second map at its centre;
 #  - the VDB recipe of docs/vdb.md: the grids Blender lists, and the air rendered with a Volume
 #    Scatter (colour: the `scattering` grid) and a Volume Absorption (colour: 1 - `absorption`),
-#    density 1, lit by a white sun lamp: blue in front of a black world.
+#    density 1, lit by a white sun lamp from the south, in front of a black world (its mean R, G,
+#    B; Debian's Blender 3.4 renders imported VDB volumes black in Cycles, even with a constant
+#    density, where a mesh with the same material renders: see docs/vdb.md).
 import math
 import sys
 
@@ -125,11 +127,11 @@ links.new(both.outputs["Shader"], output.inputs["Volume"])
 volume.data.materials.append(material)
 sun = bpy.data.objects.new("sun", bpy.data.lights.new("sun", "SUN"))
 sun.data.energy = 1.0
-sun.rotation_euler = (math.radians(30.0), 0.0, math.radians(160.0))
-scene.collection.objects.link(sun)
-add_camera(scene, azimuth_deg=0.0, elevation_deg=4.0, fov_deg=50.0, location=(0.0, 0.0, 30.0))
+sun.rotation_euler = (math.radians(30.0), 0.0, 0.0)  # shining north and down
+bpy.context.collection.objects.link(sun)
+add_camera(scene, azimuth_deg=0.0, elevation_deg=4.0, fov_deg=50.0, location=(0.0, -3000.0, 30.0))
 scene.camera.data.clip_end = 1e5
 width, height, pixels = render(scene, "air", (48, 27))
 mean = [sum(p[c] for p in pixels) / len(pixels) for c in range(3)]
 print("blender: the air rendered with the recipe, mean R G B", [f"{v:.4g}" for v in mean],
-      "; blue / red", round(mean[2] / mean[0], 2))
+      "; blue / red", round(mean[2] / mean[0], 2) if mean[0] > 0 else "(red is 0)")
