@@ -46,35 +46,34 @@ std::array<int, 2> EnvironmentImageSize(const EnvironmentMapOptions& options) {
   return {options.size, 6 * options.size};
 }
 
-std::vector<glm::dvec3> LatLongDirections(int width, int height) {
-  std::vector<glm::dvec3> directions;
-  directions.reserve(size_t(width) * height);
+void LatLongDirections(int width, int height, std::span<glm::vec4> out) {
+  std::vector<double> sin_azimuth(width), cos_azimuth(width);
+  for (int x = 0; x < width; ++x) {
+    const double azimuth = 2.0 * std::numbers::pi * (x + 0.5) / width - 0.5 * std::numbers::pi;
+    sin_azimuth[x] = std::sin(azimuth);
+    cos_azimuth[x] = std::cos(azimuth);
+  }
   for (int y = 0; y < height; ++y) {
     const double zenith = std::numbers::pi * (y + 0.5) / height;
-    for (int x = 0; x < width; ++x) {
-      const double azimuth = 2.0 * std::numbers::pi * (x + 0.5) / width - 0.5 * std::numbers::pi;
-      directions.emplace_back(std::sin(zenith) * std::sin(azimuth), std::sin(zenith) * std::cos(azimuth),
-                              std::cos(zenith));
-    }
+    const double sin_zenith = std::sin(zenith), cos_zenith = std::cos(zenith);
+    for (int x = 0; x < width; ++x)
+      out[size_t(y) * width + x] = glm::vec4(sin_zenith * sin_azimuth[x], sin_zenith * cos_azimuth[x], cos_zenith, 0.0);
   }
-  return directions;
 }
 
-std::vector<glm::dvec3> CubeDirections(int face_size) {
+void CubeDirections(int face_size, std::span<glm::vec4> out) {
   const Imath::Box2i window(Imath::V2i(0, 0), Imath::V2i(face_size - 1, 6 * face_size - 1));
-  std::vector<glm::dvec3> directions(size_t(face_size) * 6 * face_size);
   for (int face = 0; face < 6; ++face) {
     for (int j = 0; j < face_size; ++j) {
       for (int i = 0; i < face_size; ++i) {
         const Imf::CubeMapFace f = Imf::CubeMapFace(face);
         const Imath::V2f in_face{float(i), float(j)};
         const Imath::V2f pixel = Imf::CubeMap::pixelPosition(f, window, in_face);
-        directions[size_t(std::lround(pixel.y)) * face_size + size_t(std::lround(pixel.x))] =
-            SceneFromExr(Imf::CubeMap::direction(f, window, in_face));
+        out[size_t(std::lround(pixel.y)) * face_size + size_t(std::lround(pixel.x))] =
+            glm::vec4(glm::vec3(SceneFromExr(Imf::CubeMap::direction(f, window, in_face))), 0.0f);
       }
     }
   }
-  return directions;
 }
 
 EnvironmentMap RenderEnvironmentMap(const AtmosphereTables& tables, const EnvironmentMapOptions& options) {
@@ -83,7 +82,6 @@ EnvironmentMap RenderEnvironmentMap(const AtmosphereTables& tables, const Enviro
   const auto [width, height] = EnvironmentImageSize(options);
   CheckImageSize(width, height);
   const bool lat_long = options.layout == EnvironmentLayout::kLatLong;
-  const std::vector<glm::dvec3> directions = lat_long ? LatLongDirections(width, height) : CubeDirections(options.size);
 
   // The lattice's rows: the lat-long map's own, or evenly on each side of the horizon.
   MapConstants constants{width, height, lat_long ? height : options.size, options.sun_disc ? 1 : 0,
@@ -110,8 +108,12 @@ EnvironmentMap RenderEnvironmentMap(const AtmosphereTables& tables, const Enviro
   };
   const size_t texels = size_t(width) * height;
   vk::Buffer direction_buffer = storage(texels * sizeof(glm::vec4));
-  auto* mapped = reinterpret_cast<glm::vec4*>(direction_buffer.mapped());
-  for (size_t i = 0; i < texels; ++i) mapped[i] = glm::vec4(glm::vec3(directions[i]), 0.0f);
+  const std::span<glm::vec4> directions(reinterpret_cast<glm::vec4*>(direction_buffer.mapped()), texels);
+  if (lat_long) {
+    LatLongDirections(width, height, directions);
+  } else {
+    CubeDirections(options.size, directions);
+  }
   vk::Buffer row_buffer = storage(rows.size() * sizeof(float));
   row_buffer.Write(std::as_bytes(std::span(rows)));
   vk::Buffer lattice_buffer = storage(rows.size() * size_t(shape.azimuths) * 3 * sizeof(glm::vec4));

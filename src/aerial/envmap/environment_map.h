@@ -17,6 +17,7 @@
 // The lower half is what aerial's sky shows there: the air in front of the bare planet, lit by the
 // sun and the sky with the atmosphere's ground albedo.
 #include <array>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -47,9 +48,10 @@ struct EnvironmentMap {
 // The image's width and height for the options.
 std::array<int, 2> EnvironmentImageSize(const EnvironmentMapOptions& options);
 
-// The world direction (unit) of each texel's centre, row-major, top row first.
-std::vector<glm::dvec3> LatLongDirections(int width, int height);
-std::vector<glm::dvec3> CubeDirections(int face_size);
+// The world direction (unit, w 0) of each texel's centre into `out`, row-major, top row first:
+// width x height texels, or face_size x 6 face_size.
+void LatLongDirections(int width, int height, std::span<glm::vec4> out);
+void CubeDirections(int face_size, std::span<glm::vec4> out);
 
 // Throws Error naming --altitude-m for an altitude outside the atmosphere's [0, top - bottom].
 EnvironmentMap RenderEnvironmentMap(const AtmosphereTables& tables, const EnvironmentMapOptions& options);
