@@ -38,11 +38,12 @@ void ReadSunDate(TomlReader& r, const toml::table& t, Sun& sun) {
                   "together",
                   r.At(*first));
   }
-  if (t.get("zenith_deg") || t.get("azimuth_deg"))
-    r.Fail(*t.get("date"), kFields.date, "no sun.zenith_deg or sun.azimuth_deg with it: the date, time and place give "
-                                         "the sun");
   astronomy::SunDate date;
   date.date = DateOrTimeText(r, *t.get("date"), kFields.date);
+  if (t.get("zenith_deg") || t.get("azimuth_deg"))
+    throw Error(kFields.date, date.date,
+                "no sun.zenith_deg or sun.azimuth_deg with it: the date, time and place give the sun",
+                r.At(*t.get("date")));
   date.time = DateOrTimeText(r, *t.get("time"), kFields.time);
   date.time_zone = r.String(*t.get("time_zone"), kFields.time_zone);
   date.latitude_deg = r.Number(*t.get("latitude_deg"), kFields.latitude, "degrees");
