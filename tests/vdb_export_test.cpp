@@ -245,9 +245,10 @@ TEST_F(VdbExport, FrustumGridHoldsTheGpuFroxelsWhereEachVoxelSits) {
 
   const glm::dvec3 camera = scene.camera.position;
   const double radius = tables().atmosphere().bottom_radius_m;
+  const int64_t slices = Meta<int64_t>(file.metadata, "frustum_slices");
   int64_t active = 0, beyond_far = 0, below_ground = 0, wrong_activity = 0, nonzero = 0;
   double worst[5] = {0, 0, 0, 0, 0};
-  for (int k = 0; k < grid.depth; ++k)
+  for (int k = 0; k < slices; ++k)
     for (int j = 0; j < grid.height; ++j)
       for (int i = 0; i < grid.width; ++i) {
         auto world = transmittance.IndexToWorld(i, j, k);  // OpenVDB's frustum map
@@ -291,9 +292,9 @@ TEST_F(VdbExport, FrustumGridHoldsTheGpuFroxelsWhereEachVoxelSits) {
 // The frustum transform, read back through the OpenVDB library, maps the index box's corners
 // (-0.5 to W - 0.5, ...: the voxels' outer faces) to the corners of the frustum the camera's
 // parameters imply (near plane at camera.near_m, far plane at the froxels' far distance, along
-// the view axis), and each voxel center to the point at view depth
-// near + (far - near) (k + 0.5) / D on the renderer's own ray through its froxel column's image
-// point. Tolerances: 1e-9 of the distance from the camera for what the test computes from the
+// the view axis), and each voxel center to the point at view depth near + (far - near) (k + 0.5) / S
+// (S the file's frustum_slices) on the renderer's own ray through its froxel column's image point.
+// Tolerances: 1e-9 of the distance from the camera for what the test computes from the
 // same double parameters (OpenVDB's map rounds at ~1e-15; a voxel's width is 1e-2 or more of
 // it); 1e-5 rad off the renderer's ray, whose matrices are float (~1e-6 rad; a voxel spans
 // 0.13 rad here).
@@ -307,22 +308,23 @@ TEST_F(VdbExport, FrustumTransformPutsEachVoxelWhereTheCameraSawIt) {
   const FroxelGrid& grid = frame.texels.grid;
   const ExpectedFrustum expected(frame.camera, kTestSize.aspect());
   const double near = frame.camera.near_m, far = grid.far_m;
+  const int64_t slices = Meta<int64_t>(file.metadata, "frustum_slices");
 
   double worst_corner = 0.0, worst_depth = 0.0, worst_angle = 0.0;
   for (int corner = 0; corner < 8; ++corner) {
     int x = corner & 1, y = (corner >> 1) & 1, z = (corner >> 2) & 1;
     auto world = density->IndexToWorld(x ? grid.width - 0.5 : -0.5, y ? grid.height - 0.5 : -0.5,
-                                       z ? grid.depth - 0.5 : -0.5);
+                                       z ? slices - 0.5 : -0.5);
     glm::dvec3 point = expected.Point(x, y, z ? far : near);
     worst_corner = std::max(worst_corner, glm::length(glm::dvec3(world[0], world[1], world[2]) - point) /
                                               glm::length(point - expected.position));
   }
-  for (int k = 0; k < grid.depth; ++k)
+  for (int k = 0; k < slices; ++k)
     for (int j = 0; j < grid.height; ++j)
       for (int i = 0; i < grid.width; ++i) {
         auto world = density->IndexToWorld(i, j, k);
         glm::dvec3 relative = glm::dvec3(world[0], world[1], world[2]) - expected.position;
-        double view_depth = near + (far - near) * (k + 0.5) / grid.depth;
+        double view_depth = near + (far - near) * (k + 0.5) / slices;
         worst_depth = std::max(worst_depth, std::abs(glm::dot(relative, expected.forward) - view_depth) /
                                                 glm::length(relative));
         glm::dvec3 ray = RendererRay(frame.uniforms, (i + 0.5) / grid.width, (j + 0.5) / grid.height);
@@ -606,7 +608,8 @@ TEST_F(VdbExport, DebiansPythonOpenVdbSeesFogVolumesInPlace) {
   if (std::system("/usr/bin/python3 -c 'import pyopenvdb' 2>/dev/null") != 0)
     GTEST_SKIP() << "/usr/bin/python3 has no pyopenvdb (Debian's python3-openvdb, in tools/setup.sh)";
   FroxelFrame frame = Capture();
-  WriteVdb(dir_ / "f.vdb", MakeFrustumVolume(frame));
+  VdbVolume frustum_volume = MakeFrustumVolume(frame);
+  WriteVdb(dir_ / "f.vdb", frustum_volume);
   WriteVdb(dir_ / "w.vdb", MakeWorldSpaceVolume(frame, 4000.0));
   std::ofstream(dir_ / "read.py") << R"(
 import json, sys, pyopenvdb as vdb
@@ -632,7 +635,8 @@ print(json.dumps({"frustum": frustum, "world": world}))
   const FroxelGrid& grid = frame.texels.grid;
   std::string command = "/usr/bin/python3 " + (dir_ / "read.py").string() + " " + (dir_ / "f.vdb").string() + " " +
                         (dir_ / "w.vdb").string() + " " + std::to_string(grid.width) + " " +
-                        std::to_string(grid.height) + " " + std::to_string(grid.depth) + " > " +
+                        std::to_string(grid.height) + " " +
+                        std::to_string(std::get<int64_t>(frustum_volume.file_metadata.at("frustum_slices"))) + " > " +
                         (dir_ / "out.json").string();
   ASSERT_EQ(std::system(command.c_str()), 0);
   std::ifstream in(dir_ / "out.json");

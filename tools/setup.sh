@@ -12,8 +12,9 @@ packages=(
   libglm-dev libglfw3-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libopenvdb-dev libboost-iostreams-dev libtbb-dev libopenexr-dev libstb-dev
   libimgui-dev libtinygltf-dev libxxhash-dev libcairo2-dev fonts-dejavu-core
+  liberfa-dev libhowardhinnant-date-dev tzdata
   # tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-openvdb
+  libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-openvdb python3-openimageio
   # sanitizer and fuzzing builds (tools/run-sanitizer-tests.sh, tools/fuzz.sh): clang, its
   # runtimes (ASan, UBSan, libFuzzer) and llvm-symbolizer for readable reports
   clang libclang-rt-dev llvm

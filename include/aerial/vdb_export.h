@@ -26,8 +26,8 @@ struct VdbExportOptions {
 // created; errors name --out), the world grid (voxel size in (0, far], at most 2^24 voxels
 // over the frustum's bounding box; errors name --world-grid) or else the frustum grid (the
 // camera's near plane in (0, far); errors name camera.near_m). Returns the most voxels the volume
-// can have (the froxels, or the world grid's voxels the froxels cover, sampled), for a memory
-// estimate.
+// can have (the frustum grid's, or the world grid's voxels the froxels cover, sampled), for a
+// memory estimate.
 uint64_t CheckVdbExport(const std::filesystem::path& out, const Scene& scene, const AtmosphereParameters& atmosphere,
                         const FroxelGrid& grid, const VdbExportOptions& options);
 

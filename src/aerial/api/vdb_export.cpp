@@ -19,8 +19,8 @@ uint64_t CheckVdbExport(const std::filesystem::path& out, const Scene& scene, co
     FrameUniforms frame = CaptureFrameUniforms(scene, atmosphere.bottom_radius_m, grid, SizeOf(options));
     return uint64_t(CheckWorldGrid(*options.world_grid_m, FroxelPlacement(frame, grid)));
   }
-  CameraFrustum(scene.camera, SizeOf(options).aspect(), grid);  // throws for a near plane beyond far
-  return uint64_t(grid.width) * grid.height * grid.depth;
+  // Throws for a near plane beyond far.
+  return uint64_t(grid.width) * grid.height * CameraFrustum(scene.camera, SizeOf(options).aspect(), grid).slices();
 }
 
 size_t ExportFroxelVdb(const std::filesystem::path& out, const Tables& tables, const Scene& scene,

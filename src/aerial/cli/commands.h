@@ -9,6 +9,7 @@ void AddPrecomputeCommand(CLI::App& app);
 void AddProbeCommand(CLI::App& app);
 void AddRenderCommand(CLI::App& app);
 void AddExportVdbCommand(CLI::App& app);
+void AddEnvmapCommand(CLI::App& app);
 void AddViewCommand(CLI::App& app);
 
 }  // namespace aerial::cli

@@ -39,7 +39,8 @@ void RunExportVdb(const ExportVdbCommandOptions& options) {
   uint64_t most_voxels = CheckVdbExport(options.out, scene, atmosphere, grid, vdb);
   Device device(options.tables.MakeDeviceOptions());
   std::vector<MemoryUse> uses = Combined(TableMemoryUses(precompute), Combined(FrameMemoryUses(render), FroxelExportMemoryUses(grid)));
-  if (vdb.world_grid_m) uses = Combined(uses, WorldGridMemoryUses(*vdb.world_grid_m, most_voxels));
+  uses = Combined(uses, vdb.world_grid_m ? WorldGridMemoryUses(*vdb.world_grid_m, most_voxels)
+                                         : FrustumGridMemoryUses(grid, most_voxels));
   options.tables.MakeMemoryBudget(device.largest_heap_bytes()).Check(uses);
   Tables tables = Tables::LoadOrPrecompute(device, atmosphere, precompute, options.tables.MakeLoadOptions());
   size_t voxels = ExportFroxelVdb(options.out, tables, scene, grid, vdb);

@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
   aerial::cli::AddProbeCommand(app);
   aerial::cli::AddRenderCommand(app);
   aerial::cli::AddExportVdbCommand(app);
+  aerial::cli::AddEnvmapCommand(app);
   aerial::cli::AddViewCommand(app);
   aerial::cli::AddBenchCommand(app);
   // CLI11 reports a mistyped command only as "a subcommand is required": name it instead.

@@ -59,6 +59,11 @@ std::vector<MemoryUse> WorldGridMemoryUses(double voxel_m, uint64_t voxels) {
            voxels * kBytesPerExportedVoxel}};
 }
 
+std::vector<MemoryUse> FrustumGridMemoryUses(const FroxelGrid& grid, uint64_t voxels) {
+  return {{"--froxels", Join({grid.width, grid.height, grid.depth}, "x"),
+           "frustum grid volume (" + std::to_string(voxels) + " voxels)", voxels * kBytesPerExportedVoxel}};
+}
+
 std::vector<MemoryUse> SwapchainMemoryUses(const RenderOptions& window) {
   constexpr uint64_t kImages = 4, kBytesPerPixel = 4;
   return {{"--width/--height", Join({window.width, window.height}, "x"), "swapchain images",

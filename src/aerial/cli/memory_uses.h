@@ -28,6 +28,10 @@ std::vector<MemoryUse> FroxelExportMemoryUses(const FroxelGrid& grid);
 // as for a froxel, on top of the froxels read back.
 std::vector<MemoryUse> WorldGridMemoryUses(double voxel_m, uint64_t voxels);
 
+// The frustum grid's volume of `voxels` voxels (CheckVdbExport: linear slices as thin as the
+// froxels' first), at 320 bytes a voxel, on top of the froxels read back.
+std::vector<MemoryUse> FrustumGridMemoryUses(const FroxelGrid& grid, uint64_t voxels);
+
 // The viewer's window: up to 4 swapchain images of 4 bytes a pixel.
 std::vector<MemoryUse> SwapchainMemoryUses(const RenderOptions& window);
 

@@ -24,6 +24,7 @@ void SceneOptions::AddTo(CLI::App& command) {
   command.add_option("--camera-fov-deg", overrides.camera_fov_deg, "Vertical field of view (deg)");
   command.add_option("--sun-zenith-deg", overrides.sun_zenith_deg, "Sun zenith angle (deg)");
   command.add_option("--sun-azimuth-deg", overrides.sun_azimuth_deg, "Sun compass azimuth (deg)");
+  sun_date.AddTo(command);
 }
 
 Scene SceneOptions::Load(double planet_radius_m, const MemoryBudget& budget) const {
@@ -38,6 +39,7 @@ Scene SceneOptions::Load(double planet_radius_m, const MemoryBudget& budget) con
                 "the estimate stop it first)");
   }
   SceneOverrides all = overrides;
+  all.sun_date = sun_date.Make();
   if (!camera_position_m.empty()) {
     all.camera_position_m =
         glm::dvec3(camera_position_m[0], camera_position_m[1], camera_position_m[2]);

@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "aerial/cli/sun_date_options.h"
 #include "aerial/core/memory_budget.h"
 #include "aerial/froxel_grid.h"
 #include "aerial/image/exposure.h"
@@ -23,8 +24,9 @@ struct SceneOptions {
   std::string preset;
   std::vector<double> camera_position_m;  // x, y, z
   SceneOverrides overrides;
+  SunDateOptions sun_date;
 
-  // --scene, --preset and the camera and sun overrides.
+  // --scene, --preset and the camera and sun overrides (angles, or a date and a place).
   void AddTo(CLI::App& command);
   // The preset (noon by default) or the scene file, with the overrides applied (validated); the
   // scene's glTF models load within budget.

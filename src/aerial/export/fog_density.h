@@ -25,6 +25,16 @@ namespace aerial {
 // 0.2126 R + 0.7152 G + 0.0722 B of the (680, 550, 440 nm) channels.
 double Luma(const glm::dvec3& rgb);
 
+// The air's coefficients per channel at a point, in 1/m, what a path tracer's volume shader takes
+// (Houdini's Karma Volume, MaterialX's anisotropic_vdf, Blender's Volume Scatter and Absorption):
+//   scattering_c = rayleigh_scattering_c rho_R(h) + mie_scattering_c rho_M(h)
+//   absorption_c = (mie_extinction_c - mie_scattering_c) rho_M(h) + absorption_extinction_c rho_O(h)
+// at the altitudes below, so that scattering + absorption is the sigma above.
+struct AirCoefficients {
+  glm::dvec3 scattering, absorption;
+};
+AirCoefficients AirCoefficientsAt(const AtmosphereParameters& atmosphere, const glm::dvec3& point);
+
 // The density above at a world point (scene frame, m: the planet's center at (0, 0, -R)).
 double FogDensity(const AtmosphereParameters& atmosphere, const glm::dvec3& point);
 

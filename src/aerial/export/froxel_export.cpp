@@ -224,15 +224,15 @@ VdbVolume MakeFrustumVolume(const FroxelFrame& frame) {
   const CameraFrustum frustum(frame.camera, frame.size.aspect(), grid);
   const Ground ground(frame.terrain, frame.atmosphere.bottom_radius_m);
   VdbVolume volume;
-  VolumeGrids grids(size_t(grid.width) * grid.height * grid.depth);
-  for (int k = 0; k < grid.depth; ++k) {
+  VolumeGrids grids(size_t(grid.width) * grid.height * frustum.slices());
+  for (int k = 0; k < frustum.slices(); ++k) {
     for (int j = 0; j < grid.height; ++j) {
       for (int i = 0; i < grid.width; ++i) {
         const glm::dvec3 center = frustum.VoxelCenter(i, j, k);
         const double distance = glm::length(center - frame.camera.position);
         if (distance > grid.far_m || ground.Below(center)) continue;
         volume.voxels.push_back({i, j, k});
-        grids.Add(texels.Read(frustum.ScreenPoint(i, j), distance), FogDensity(frame.atmosphere, center));
+        grids.Add(texels.Read(frustum.ScreenPoint(i, j), distance), AirCoefficientsAt(frame.atmosphere, center));
       }
     }
   }
@@ -241,9 +241,10 @@ VdbVolume MakeFrustumVolume(const FroxelFrame& frame) {
   volume.grid_metadata = FrameMetadata(frame, "frustum");
   volume.grid_metadata["frustum_near_m"] = frame.camera.near_m;
   volume.grid_metadata["frustum_far_m"] = grid.far_m;
+  volume.grid_metadata["frustum_slices"] = int64_t(frustum.slices());
   volume.grid_metadata["index_space"] =
       std::string("frustum: OpenVDB's NonlinearFrustumMap; voxel (i, j, k) is the point at view depth "
-                  "frustum_near_m + (frustum_far_m - frustum_near_m) * (k + 0.5) / D on the view ray "
+                  "frustum_near_m + (frustum_far_m - frustum_near_m) * (k + 0.5) / frustum_slices on the view ray "
                   "through the image point ((i + 0.5) / W, (j + 0.5) / H), (0, 0) the top-left "
                   "corner: the froxels' columns, their values read at each voxel's distance; voxels "
                   "farther than froxel_far_m from the camera or below the ground are inactive");
@@ -265,7 +266,7 @@ VdbVolume MakeWorldSpaceVolume(const FroxelFrame& frame, double voxel_m) {
         std::optional<FroxelPlacement::ScreenPoint> point = placement.ToScreen(center);
         if (!point || !placement.Covers(*point) || ground.Below(center)) continue;
         volume.voxels.push_back({x, y, z});
-        grids.Add(frame.texels.Read(point->uv, point->distance), FogDensity(frame.atmosphere, center));
+        grids.Add(frame.texels.Read(point->uv, point->distance), AirCoefficientsAt(frame.atmosphere, center));
       }
     }
   }

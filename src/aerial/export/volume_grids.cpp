@@ -31,6 +31,13 @@ constexpr GridText kDensity{"density", "1/m",
                             "Mie extinction and ozone absorption at its altitude), 0.2126 R + "
                             "0.7152 G + 0.0722 B of the channels: a fog volume's density"};
 
+constexpr GridText kScattering{"scattering", "1/m",
+                               "scattering coefficient of the air at the point, per channel (Rayleigh and Mie "
+                               "scattering at its altitude); channels as `channels` says"};
+constexpr GridText kAbsorption{"absorption", "1/m",
+                               "absorption coefficient of the air at the point, per channel (Mie absorption and "
+                               "ozone at its altitude); channels as `channels` says"};
+
 VdbVolume::Grid MakeGrid(const GridText& text, int components, size_t voxels, float background = 0.0f,
                          VdbGridClass grid_class = VdbGridClass::kUnknown) {
   VdbVolume::Grid grid{.name = text.name, .components = components};
@@ -54,9 +61,11 @@ VolumeGrids::VolumeGrids(size_t voxels)
       mie_(MakeGrid(kMie, 3, voxels)),
       transmittance_(MakeGrid(kTransmittance, 3, voxels, 1.0f)),
       luminance_(MakeGrid(kLuminance, 1, voxels)),
-      density_(MakeGrid(kDensity, 1, voxels, 0.0f, VdbGridClass::kFogVolume)) {}
+      density_(MakeGrid(kDensity, 1, voxels, 0.0f, VdbGridClass::kFogVolume)),
+      scattering_(MakeGrid(kScattering, 3, voxels)),
+      absorption_(MakeGrid(kAbsorption, 3, voxels)) {}
 
-void VolumeGrids::Add(const FroxelTexels::Sample& sample, double density) {
+void VolumeGrids::Add(const FroxelTexels::Sample& sample, const AirCoefficients& air) {
   float r[3] = {}, m[3] = {};
   for (int c = 0; c < 3; ++c) {
     r[c] = float(sample.rayleigh[c]);
@@ -64,14 +73,17 @@ void VolumeGrids::Add(const FroxelTexels::Sample& sample, double density) {
     rayleigh_.values.push_back(r[c]);
     mie_.values.push_back(m[c]);
     transmittance_.values.push_back(float(sample.transmittance[c]));
+    scattering_.values.push_back(float(air.scattering[c]));
+    absorption_.values.push_back(float(air.absorption[c]));
   }
   luminance_.values.push_back(float(InscatterLuminance(r, m)));
-  density_.values.push_back(float(density));
+  density_.values.push_back(float(Luma(air.scattering + air.absorption)));
 }
 
 std::vector<VdbVolume::Grid> VolumeGrids::Take() && {
   std::vector<VdbVolume::Grid> grids;
-  for (VdbVolume::Grid* grid : {&rayleigh_, &mie_, &transmittance_, &luminance_, &density_})
+  for (VdbVolume::Grid* grid :
+       {&rayleigh_, &mie_, &transmittance_, &luminance_, &density_, &scattering_, &absorption_})
     grids.push_back(std::move(*grid));
   return grids;
 }

@@ -7,10 +7,15 @@
 //   inscatter_luminance               float, Rec. 709 luma of the inscatter; background 0
 //   density                           float, 1/m, the extinction coefficient (fog_density.h);
 //                                     background 0, grid class fog volume
-// The inscatter grids and transmittance are not densities and keep the class unknown.
+//   scattering, absorption            Vec3S, 1/m per channel, the air's own coefficients at the
+//                                     voxel (AirCoefficientsAt): what a path tracer renders in colour,
+//                                     seen from anywhere; background 0
+// The inscatter grids and transmittance hold what the camera sees and are valid from the export's
+// camera only; they, scattering and absorption keep the class unknown.
 #include <cstddef>
 #include <vector>
 
+#include "aerial/export/fog_density.h"
 #include "aerial/export/vdb_file.h"
 #include "froxel/froxel_placement.h"
 
@@ -20,12 +25,12 @@ class VolumeGrids {
  public:
   explicit VolumeGrids(size_t voxels);  // room for this many
 
-  // One voxel's values: the froxels read at its center, and its density.
-  void Add(const FroxelTexels::Sample& sample, double density);
+  // One voxel's values: the froxels read at its center, and the air's coefficients there.
+  void Add(const FroxelTexels::Sample& sample, const AirCoefficients& air);
   std::vector<VdbVolume::Grid> Take() &&;
 
  private:
-  VdbVolume::Grid rayleigh_, mie_, transmittance_, luminance_, density_;
+  VdbVolume::Grid rayleigh_, mie_, transmittance_, luminance_, density_, scattering_, absorption_;
 };
 
 }  // namespace aerial

@@ -1,12 +1,16 @@
 #include "aerial/image/exr.h"
 
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfEnvmapAttribute.h>
+#include <OpenEXR/ImfFloatAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStdIO.h>
+#include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfVecAttribute.h>
 
 #include <exception>
 
@@ -34,7 +38,7 @@ Imf::FrameBuffer InterleavedFrameBuffer(float* rgba, const Imath::Box2i& window)
 
 }  // namespace
 
-std::vector<std::byte> EncodeExr(const ImageRgbF& image) {
+std::vector<std::byte> EncodeExr(const ImageRgbF& image, const ExrHeaderExtras& extras) {
   CheckImageSize(image);
   Imf::Header header(image.width, image.height);
   header.compression() = Imf::ZIP_COMPRESSION;
@@ -46,6 +50,18 @@ std::vector<std::byte> EncodeExr(const ImageRgbF& image) {
   // luminance is 683 lm/W times the integral of y-bar (spectrum/colour.h).
   Imf::addChromaticities(header, Imf::Chromaticities());
   Imf::addWhiteLuminance(header, float(kRadiancePerNmToLuminance));
+  if (extras.envmap != ExrHeaderExtras::Envmap::kNone)
+    Imf::addEnvmap(header, extras.envmap == ExrHeaderExtras::Envmap::kCube ? Imf::ENVMAP_CUBE : Imf::ENVMAP_LATLONG);
+  for (const auto& [name, value] : extras.attributes) {
+    if (const auto* text = std::get_if<std::string>(&value)) {
+      header.insert(name, Imf::StringAttribute(*text));
+    } else if (const auto* number = std::get_if<float>(&value)) {
+      header.insert(name, Imf::FloatAttribute(*number));
+    } else {
+      const auto& v = std::get<std::array<float, 3>>(value);
+      header.insert(name, Imf::V3fAttribute(Imath::V3f(v[0], v[1], v[2])));
+    }
+  }
 
   Imf::StdOSStream stream;
   {

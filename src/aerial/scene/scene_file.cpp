@@ -10,6 +10,7 @@
 #include "aerial/scene/gltf_loader.h"
 #include "aerial/scene.h"
 #include "aerial/scene/scene_limits.h"
+#include "aerial/scene/sun_date_keys.h"
 #include "aerial/scene/terrain.h"
 
 namespace aerial {
@@ -52,10 +53,12 @@ void ReadCamera(TomlReader& r, const toml::table& t, double planet_radius_m, Cam
 }
 
 void ReadSun(TomlReader& r, const toml::table& t, Sun& sun) {
-  r.RejectUnknownKeys(t, "sun", {"zenith_deg", "azimuth_deg"});
+  r.RejectUnknownKeys(t, "sun",
+                      {"zenith_deg", "azimuth_deg", "date", "time", "time_zone", "latitude_deg", "longitude_deg"});
   ReadNumbers<Sun>(r, t, "sun", sun,
                    {{"zenith_deg", &Sun::zenith_deg, "degrees", CheckZenithDeg},
                     {"azimuth_deg", &Sun::azimuth_deg, "degrees", CheckAzimuthDeg}});
+  ReadSunDate(r, t, sun);
 }
 
 // Scale, then turn about z by yaw clockwise seen from above (a model's +y goes to compass

@@ -14,6 +14,9 @@
 //   [sun]
 //   zenith_deg = 20.0                # [0, 180]; above 90 the sun has set
 //   azimuth_deg = 160.0              # compass, like yaw_deg
+//   # or, instead of the two angles, the sun of a date and a place (sun_date_keys.h):
+//   # date = 2003-10-17, time = 12:30:30, time_zone = "America/Denver" (or "-07:00"),
+//   # latitude_deg = 39.74, longitude_deg = -105.18
 //   [[mesh]]                         # any number of these
 //   gltf = "cube.gltf"               # .gltf or .glb, relative to this file
 //   position_m = [0.0, 800.0, 0.0]   # where the model's origin goes; [x, y] puts it on the ground

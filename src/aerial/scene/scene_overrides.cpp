@@ -1,5 +1,6 @@
 #include "aerial/scene/scene_overrides.h"
 
+#include "aerial/error.h"
 #include "aerial/scene/scene_limits.h"
 
 namespace aerial {
@@ -13,6 +14,13 @@ void ApplyOverrides(Scene& scene, const SceneOverrides& o, double planet_radius_
   if (o.camera_fov_deg) CheckFovDeg(*o.camera_fov_deg, "--camera-fov-deg", where);
   if (o.sun_zenith_deg) CheckZenithDeg(*o.sun_zenith_deg, "--sun-zenith-deg", where);
   if (o.sun_azimuth_deg) CheckAzimuthDeg(*o.sun_azimuth_deg, "--sun-azimuth-deg", where);
+  std::optional<Sun> dated;
+  if (o.sun_date) {
+    if (o.sun_zenith_deg || o.sun_azimuth_deg)
+      throw Error("--date", o.sun_date->date, "no --sun-zenith-deg or --sun-azimuth-deg with it: the date, time and "
+                  "place give the sun", where);
+    dated = astronomy::SunFromDate(*o.sun_date, astronomy::kSunDateOptions, where);
+  }
 
   Camera& camera = scene.camera;
   camera.position = o.camera_position_m.value_or(camera.position);
@@ -21,6 +29,7 @@ void ApplyOverrides(Scene& scene, const SceneOverrides& o, double planet_radius_
   camera.vertical_fov_deg = o.camera_fov_deg.value_or(camera.vertical_fov_deg);
   scene.sun.zenith_deg = o.sun_zenith_deg.value_or(scene.sun.zenith_deg);
   scene.sun.azimuth_deg = o.sun_azimuth_deg.value_or(scene.sun.azimuth_deg);
+  if (dated) scene.sun = *dated;
 }
 
 }  // namespace aerial

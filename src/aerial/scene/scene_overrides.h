@@ -3,6 +3,7 @@
 #include <glm/glm.hpp>
 #include <optional>
 
+#include "aerial/astronomy/sun_date.h"
 #include "aerial/scene.h"
 
 namespace aerial {
@@ -17,6 +18,9 @@ struct SceneOverrides {
   std::optional<double> camera_fov_deg;         // --camera-fov-deg
   std::optional<double> sun_zenith_deg;         // --sun-zenith-deg
   std::optional<double> sun_azimuth_deg;        // --sun-azimuth-deg
+  // The sun from a date and a place (--date, --time, --time-zone, --latitude-deg,
+  // --longitude-deg): instead of the two angles, never with them.
+  std::optional<astronomy::SunDate> sun_date;
 };
 
 // Validates every set value with the scene file's ranges (scene_limits.h) and then applies them;
