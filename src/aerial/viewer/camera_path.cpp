@@ -24,7 +24,7 @@ const toml::node& Required(const TomlReader& r, const toml::table& t, const toml
 CameraKeyframe ReadKeyframe(TomlReader& r, const toml::node& node, const std::string& field,
                             double planet_radius_m) {
   const toml::table& t = r.Table(node, field);
-  r.RejectUnknownKeys(t, field, {"time_s", "position_m", "yaw_deg", "pitch_deg"});
+  r.RejectUnknownKeys(t, field, {"time_s", "position_m", "yaw_deg", "pitch_deg", "sun_zenith_deg", "sun_azimuth_deg"});
   auto key = [&](std::string_view k) { return TomlReader::Join(field, k); };
   CameraKeyframe k;
   const toml::node& time = Required(r, t, node, field, "time_s", "a number (s)");
@@ -41,7 +41,27 @@ CameraKeyframe ReadKeyframe(TomlReader& r, const toml::node& node, const std::st
   const toml::node& pitch = Required(r, t, node, field, "pitch_deg", "a number (degrees)");
   k.pitch_deg = r.Number(pitch, key("pitch_deg"), "degrees");
   CheckPitchDeg(k.pitch_deg, key("pitch_deg"), r.At(pitch));
+  if (t.contains("sun_zenith_deg") || t.contains("sun_azimuth_deg")) {
+    const toml::node& zenith = Required(r, t, node, field, "sun_zenith_deg", "a number (degrees), with sun_azimuth_deg");
+    const toml::node& azimuth = Required(r, t, node, field, "sun_azimuth_deg", "a number (degrees), with sun_zenith_deg");
+    Sun sun;
+    sun.zenith_deg = r.Number(zenith, key("sun_zenith_deg"), "degrees");
+    CheckZenithDeg(sun.zenith_deg, key("sun_zenith_deg"), r.At(zenith));
+    sun.azimuth_deg = r.Number(azimuth, key("sun_azimuth_deg"), "degrees");
+    CheckAzimuthDeg(sun.azimuth_deg, key("sun_azimuth_deg"), r.At(azimuth));
+    k.sun = sun;
+  }
   return k;
+}
+
+// The first keyframe decides whether the path moves the sun; every other one must agree.
+void CheckSunKeysInAllOrNone(const TomlReader& r, const std::vector<CameraKeyframe>& keyframes, size_t i) {
+  if (keyframes[i].sun.has_value() == keyframes[0].sun.has_value()) return;
+  const std::string field = TomlReader::Join(TomlReader::Index("keyframe", i), "sun_zenith_deg");
+  throw Error(field, keyframes[i].sun ? FormatNumber(keyframes[i].sun->zenith_deg) : "missing",
+              keyframes[0].sun ? "a number (degrees): keyframe[0] moves the sun, so every keyframe must"
+                               : "absent: keyframe[0] leaves the sun alone, so every keyframe must",
+              r.WhereOf(TomlReader::Index("keyframe", i)));
 }
 
 }  // namespace
@@ -67,6 +87,7 @@ CameraPath CameraPath::Parse(std::string_view text, const std::string& where, do
                       " s (times must increase from keyframe to keyframe)",
                   r.WhereOf(time_field));
     }
+    CheckSunKeysInAllOrNone(r, path.keyframes_, i);
   }
   return path;
 }
@@ -75,18 +96,43 @@ CameraPath CameraPath::Load(const std::filesystem::path& path, double planet_rad
   return Parse(ReadTomlFile(path, "--camera-path"), path.string(), planet_radius_m);
 }
 
-void CameraPath::Apply(double t_s, Camera& camera) const {
+namespace {
+
+// The keyframes around path time t and how far (s in [0, 1]) t is from the first to the second.
+struct Segment {
+  const CameraKeyframe& a;
+  const CameraKeyframe& b;
+  double s;
+};
+
+Segment SegmentAt(const std::vector<CameraKeyframe>& keyframes, double t_s) {
   // The first keyframe later than t; the segment is the one ending there.
-  auto next = std::upper_bound(keyframes_.begin(), keyframes_.end(), t_s,
+  auto next = std::upper_bound(keyframes.begin(), keyframes.end(), t_s,
                                [](double t, const CameraKeyframe& k) { return t < k.time_s; });
-  const CameraKeyframe& a = next == keyframes_.begin() ? keyframes_.front()
-                            : next == keyframes_.end() ? keyframes_.back()
-                                                       : *(next - 1);
-  const CameraKeyframe& b = next == keyframes_.end() ? keyframes_.back() : *next;
+  const CameraKeyframe& a = next == keyframes.begin() ? keyframes.front()
+                            : next == keyframes.end() ? keyframes.back()
+                                                      : *(next - 1);
+  const CameraKeyframe& b = next == keyframes.end() ? keyframes.back() : *next;
   double s = b.time_s > a.time_s ? std::clamp((t_s - a.time_s) / (b.time_s - a.time_s), 0.0, 1.0) : 0.0;
+  return {a, b, s};
+}
+
+double Lerp(double a, double b, double s) { return a + s * (b - a); }
+
+}  // namespace
+
+void CameraPath::Apply(double t_s, Camera& camera) const {
+  auto [a, b, s] = SegmentAt(keyframes_, t_s);
   camera.position = a.position_m + s * (b.position_m - a.position_m);
-  camera.yaw_deg = a.yaw_deg + s * (b.yaw_deg - a.yaw_deg);
-  camera.pitch_deg = a.pitch_deg + s * (b.pitch_deg - a.pitch_deg);
+  camera.yaw_deg = Lerp(a.yaw_deg, b.yaw_deg, s);
+  camera.pitch_deg = Lerp(a.pitch_deg, b.pitch_deg, s);
+}
+
+void CameraPath::ApplySun(double t_s, Sun& sun) const {
+  if (!moves_sun()) return;
+  auto [a, b, s] = SegmentAt(keyframes_, t_s);
+  sun.zenith_deg = Lerp(a.sun->zenith_deg, b.sun->zenith_deg, s);
+  sun.azimuth_deg = Lerp(a.sun->azimuth_deg, b.sun->azimuth_deg, s);
 }
 
 }  // namespace aerial::viewer

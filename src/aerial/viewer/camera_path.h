@@ -9,11 +9,14 @@
 //   yaw_deg = 0.0                  # compass azimuth of the view, interpolated as written: go
 //                                  # from 350 to 370, not to 10, to turn 20 degrees clockwise
 //   pitch_deg = 4.0                # [-90, 90]
+//   sun_zenith_deg = 60.0          # optional, in every keyframe or in none: the sun moves
+//   sun_azimuth_deg = 250.0        # with the camera, interpolated the same way
 //
-// Every key of a keyframe is required. Errors name the key ("keyframe[2].position_m"), the value
+// Every camera key of a keyframe is required; the sun's keys come as a pair. Errors name the key ("keyframe[2].position_m"), the value
 // and the allowed range, at "file:line:column". Before the first keyframe's time the camera
 // holds it, after the last it holds the last.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -29,6 +32,7 @@ struct CameraKeyframe {
   double time_s = 0;
   glm::dvec3 position_m{0.0};
   double yaw_deg = 0, pitch_deg = 0;
+  std::optional<Sun> sun;  // the same in every keyframe: present in all or in none
 };
 
 class CameraPath {
@@ -39,6 +43,9 @@ class CameraPath {
 
   // Sets position, yaw and pitch for path time t_s; the field of view and near plane stay.
   void Apply(double t_s, Camera& camera) const;
+  // Whether the keyframes move the sun, and where it is at path time t_s.
+  bool moves_sun() const { return keyframes_.front().sun.has_value(); }
+  void ApplySun(double t_s, Sun& sun) const;
   double duration_s() const { return keyframes_.back().time_s; }
   const std::vector<CameraKeyframe>& keyframes() const { return keyframes_; }
 

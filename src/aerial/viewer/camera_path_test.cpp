@@ -87,6 +87,43 @@ TEST(CameraPath, MissingKeyIsNamedWithItsForm) {
   }
 }
 
+const char* kSunPath = R"(
+[[keyframe]]
+time_s = 0.0
+position_m = [0.0, 0.0, 30.0]
+yaw_deg = 0.0
+pitch_deg = 4.0
+sun_zenith_deg = 60.0
+sun_azimuth_deg = 250.0
+
+[[keyframe]]
+time_s = 2.0
+position_m = [0.0, 0.0, 30.0]
+yaw_deg = 0.0
+pitch_deg = 4.0
+sun_zenith_deg = 88.0
+sun_azimuth_deg = 260.0
+)";
+
+TEST(CameraPath, SunKeysMoveTheSunLikeTheCamera) {
+  CameraPath path = CameraPath::Parse(kSunPath, "path.toml", kR);
+  ASSERT_TRUE(path.moves_sun());
+  Sun sun;
+  path.ApplySun(0.5, sun);
+  EXPECT_NEAR(sun.zenith_deg, 67.0, 1e-9);
+  EXPECT_NEAR(sun.azimuth_deg, 252.5, 1e-9);
+  path.ApplySun(5.0, sun);  // after the last keyframe: held there
+  EXPECT_NEAR(sun.zenith_deg, 88.0, 1e-9);
+}
+
+TEST(CameraPath, WithoutSunKeysTheSunStays) {
+  CameraPath path = CameraPath::Parse(kPath, "path.toml", kR);
+  EXPECT_FALSE(path.moves_sun());
+  Sun sun{.zenith_deg = 45.0, .azimuth_deg = 100.0};
+  path.ApplySun(1.0, sun);
+  EXPECT_EQ(sun, (Sun{.zenith_deg = 45.0, .azimuth_deg = 100.0}));
+}
+
 // "x.x...x", parts parts.
 std::string DottedKey(int parts) {
   std::string key = "x";
@@ -119,7 +156,15 @@ INSTANTIATE_TEST_SUITE_P(
         BadPath{kFirst + "[[keyframe]]\ntime_s = 1.0\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 1.7e308\npitch_deg = 0.0\n",
                 "keyframe[1].yaw_deg"},
         // Issue 41: 40,000 dotted parts overflowed toml++'s stack.
-        BadPath{DottedKey(40000) + " = 1\n", "TOML nesting"}),
+        BadPath{DottedKey(40000) + " = 1\n", "TOML nesting"},
+        // The sun's keys: a pair, in every keyframe or in none, each in its range.
+        BadPath{kFirst + "sun_zenith_deg = 60.0\n[[keyframe]]\ntime_s = 1.0\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 0.0\npitch_deg = 0.0\n",
+                "keyframe[0].sun_azimuth_deg"},
+        BadPath{kFirst + "sun_zenith_deg = 60.0\nsun_azimuth_deg = 0.0\n[[keyframe]]\ntime_s = 1.0\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 0.0\npitch_deg = 0.0\n",
+                "keyframe[1].sun_zenith_deg"},
+        BadPath{kFirst + "[[keyframe]]\ntime_s = 1.0\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 0.0\npitch_deg = 0.0\nsun_zenith_deg = 60.0\nsun_azimuth_deg = 0.0\n",
+                "keyframe[1].sun_zenith_deg"},
+        BadPath{kFirst + "sun_zenith_deg = 200.0\nsun_azimuth_deg = 0.0\n", "keyframe[0].sun_zenith_deg"}),
     [](const ::testing::TestParamInfo<BadPath>& info) { return "case" + std::to_string(info.index); });
 
 }  // namespace

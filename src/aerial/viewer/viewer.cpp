@@ -231,13 +231,14 @@ void Viewer::Impl::Resize(::vk::Extent2D extent) {
   imgui_.OnSwapchainRecreated(swapchain_);
 }
 
-// The camera follows the path while it lasts, then the fly controls; the sun follows the keys and
-// the mouse, within the zenith angles the tables cover.
+// The camera (and the sun, where the path moves it) follows the path while it lasts, then the fly
+// controls; the sun follows the keys and the mouse, within the zenith angles the tables cover.
 void Viewer::Impl::Steer(const FrameInput& input, double dt_s) {
   Scene& scene = options_.scene;
   double path_time = frames_ * kFrameStepS;
   if (options_.camera_path && path_time <= options_.camera_path->duration_s()) {
     options_.camera_path->Apply(path_time, scene.camera);
+    options_.camera_path->ApplySun(path_time, scene.sun);
   } else {
     Fly(scene.camera, input.fly, dt_s, options_.atmosphere.bottom_radius_m);
   }
