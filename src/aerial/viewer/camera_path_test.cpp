@@ -164,7 +164,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "keyframe[1].sun_zenith_deg"},
         BadPath{kFirst + "[[keyframe]]\ntime_s = 1.0\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 0.0\npitch_deg = 0.0\nsun_zenith_deg = 60.0\nsun_azimuth_deg = 0.0\n",
                 "keyframe[1].sun_zenith_deg"},
-        BadPath{kFirst + "sun_zenith_deg = 200.0\nsun_azimuth_deg = 0.0\n", "keyframe[0].sun_zenith_deg"}),
+        BadPath{kFirst + "sun_zenith_deg = 200.0\nsun_azimuth_deg = 0.0\n" + kFirst, "keyframe[0].sun_zenith_deg"}),
     [](const ::testing::TestParamInfo<BadPath>& info) { return "case" + std::to_string(info.index); });
 
 }  // namespace
