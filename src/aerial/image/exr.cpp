@@ -42,6 +42,7 @@ std::vector<std::byte> EncodeExr(const ImageRgbF& image, const ExrHeaderExtras& 
   CheckImageSize(image);
   Imf::Header header(image.width, image.height);
   header.compression() = Imf::ZIP_COMPRESSION;
+  header.zipCompressionLevel() = 1;
   header.lineOrder() = Imf::INCREASING_Y;  // top row first, as in ImageRgbF
   for (const char* name : kChannels) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
   // The colour space: linear sRGB (Rec. 709 primaries, D65 white, OpenEXR's default
