@@ -100,6 +100,29 @@ PrecomputeOptions SpectralGroupOptions(const PrecomputeOptions& options, bool al
   return group;
 }
 
+TableBytes SpectralPrecomputeScratchMemory(const PrecomputeOptions& options) {
+  const PrecomputeOptions group = SpectralGroupOptions(options, true);
+  const TableBytes group_tables = TableMemory(group), group_scratch = PrecomputeScratchMemory(group);
+  const TableBytes result = TableMemory(options);
+  const uint64_t wavelengths_with_all_orders = 3 * uint64_t(SpectralAllOrderGroupCount(options));
+  // The group's tables are float32 RGBA, 16 bytes a texel, so group_tables counts the texels too.
+  auto part = [&](uint64_t TableBytes::*table, bool has_higher_orders) {
+    const uint64_t rgba = group_tables.*table, texels = rgba / 16;
+    return group_tables.*table + group_scratch.*table  // a group's device tables and scratch
+           + 2 * rgba                                  // its read-backs: single scattering, all orders
+           + 2 * rgba                                  // both as float vectors (AsFloats)
+           + rgba                                      // the sums
+           + 3 * texels * 4                            // one wavelength's channel (twice), a stencil's
+           + (has_higher_orders ? wavelengths_with_all_orders * texels * 4 : 0)  // `higher`
+           + result.*table;                            // the final tables' read-back
+  };
+  // The transmittance table is computed again from the linear sRGB coefficients, not summed.
+  return {.transmittance = part(&TableBytes::transmittance, false),
+          .irradiance = part(&TableBytes::irradiance, true),
+          .scattering = part(&TableBytes::scattering, true),
+          .multiple_density = part(&TableBytes::multiple_density, true)};
+}
+
 std::vector<vk::PassTime> PrecomputeSpectral(AtmosphereTables& tables, Progress* progress) {
   const PrecomputeOptions& options = tables.options();
   const SpectralSampling sampling(options.spectral_wavelengths);
