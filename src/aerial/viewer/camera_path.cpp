@@ -44,6 +44,35 @@ CameraKeyframe ReadKeyframe(TomlReader& r, const toml::node& node, const std::st
   return k;
 }
 
+// The camera's position s of the way from a to b (s in [0, 1]): Apply's interpolation.
+glm::dvec3 PositionBetween(const CameraKeyframe& a, const CameraKeyframe& b, double s) {
+  return a.position_m + s * (b.position_m - a.position_m);
+}
+
+// What the path interpolates between keyframes a and b (keyframe[index - 1] and keyframe[index])
+// must be as valid as each keyframe: the camera meets every value of the segment. Linear
+// interpolation keeps an angle between two valid ones in its range, so only the position needs a
+// check: a straight line between two valid positions can pass through the planet. Its lowest
+// point is the point of the segment nearest the planet's center.
+void CheckSegment(const TomlReader& r, const CameraKeyframe& a, const CameraKeyframe& b, size_t index,
+                  double planet_radius_m) {
+  const glm::dvec3 center(0.0, 0.0, -planet_radius_m), step = b.position_m - a.position_m;
+  double length2 = glm::dot(step, step);
+  double s = length2 > 0.0 ? std::clamp(glm::dot(center - a.position_m, step) / length2, 0.0, 1.0) : 0.0;
+  const std::string from = TomlReader::Index("keyframe", index - 1), to = TomlReader::Index("keyframe", index);
+  const std::string field = from + " to " + to;
+  try {
+    CheckCameraPosition(PositionBetween(a, b, s), planet_radius_m, field,
+                        r.WhereOf(TomlReader::Join(to, "position_m")));
+  } catch (const Error& e) {
+    throw Error(e.field(), e.value(),
+                e.allowed() + " all along the segment, which reaches this point at t = " +
+                    FormatNumber(a.time_s + s * (b.time_s - a.time_s)) +
+                    " s (the camera moves in a straight line: a keyframe between them can lead it around)",
+                e.where());
+  }
+}
+
 }  // namespace
 
 CameraPath CameraPath::Parse(std::string_view text, const std::string& where, double planet_radius_m) {
@@ -67,6 +96,7 @@ CameraPath CameraPath::Parse(std::string_view text, const std::string& where, do
                       " s (times must increase from keyframe to keyframe)",
                   r.WhereOf(time_field));
     }
+    if (i > 0) CheckSegment(r, path.keyframes_[i - 1], path.keyframes_[i], i, planet_radius_m);
   }
   return path;
 }
@@ -84,7 +114,7 @@ void CameraPath::Apply(double t_s, Camera& camera) const {
                                                        : *(next - 1);
   const CameraKeyframe& b = next == keyframes_.end() ? keyframes_.back() : *next;
   double s = b.time_s > a.time_s ? std::clamp((t_s - a.time_s) / (b.time_s - a.time_s), 0.0, 1.0) : 0.0;
-  camera.position = a.position_m + s * (b.position_m - a.position_m);
+  camera.position = PositionBetween(a, b, s);
   camera.yaw_deg = a.yaw_deg + s * (b.yaw_deg - a.yaw_deg);
   camera.pitch_deg = a.pitch_deg + s * (b.pitch_deg - a.pitch_deg);
 }

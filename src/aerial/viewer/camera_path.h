@@ -11,7 +11,10 @@
 //   pitch_deg = 4.0                # [-90, 90]
 //
 // Every key of a keyframe is required. Errors name the key ("keyframe[2].position_m"), the value
-// and the allowed range, at "file:line:column". Before the first keyframe's time the camera
+// and the allowed range, at "file:line:column". What the path passes through between keyframes
+// is checked too: a segment whose straight line runs below the altitudes a keyframe may have
+// (through the planet) is refused naming both keyframes ("keyframe[1] to keyframe[2]"), its
+// lowest point and when the camera would reach it. Before the first keyframe's time the camera
 // holds it, after the last it holds the last.
 #include <filesystem>
 #include <string>
