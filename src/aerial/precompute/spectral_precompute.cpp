@@ -114,7 +114,7 @@ TableBytes SpectralPrecomputeScratchMemory(const PrecomputeOptions& options) {
            + rgba                                      // the sums
            + 3 * texels * 4                            // one wavelength's channel (twice), a stencil's
            + (has_higher_orders ? wavelengths_with_all_orders * texels * 4 : 0)  // `higher`
-           + result.*table;                            // the final tables' read-back
+           + 3 * result.*table;  // the final tables' read-back, their conversion, the upload's staging
   };
   // The transmittance table is computed again from the linear sRGB coefficients, not summed.
   return {.transmittance = part(&TableBytes::transmittance, false),
