@@ -12,7 +12,7 @@
 
 namespace aerial {
 
-// 2 GiB: a default render is estimated at 0.9 GiB, a 3840x2160 one at 1.5 GiB, the viewer at 1.1.
+// 2 GiB: a default render is estimated at 0.9 GiB, a 3840x2160 one at 1.5 GiB, the viewer at 1.2.
 inline constexpr uint64_t kDefaultMemoryBudgetMiB = 2048;
 
 // One part of an estimate, under the option that sizes it.
