@@ -26,7 +26,7 @@ CommandRun RunAerial(const std::string& arguments, const RunOptions& options) {
     ::close(out[0]);
     ::close(out[1]);
     if (options.file_size_limit_bytes) {
-      ::signal(SIGXFSZ, SIG_IGN);
+      ::signal(SIGXFSZ, options.ignore_file_size_signal ? SIG_IGN : SIG_DFL);
       struct rlimit limit = {*options.file_size_limit_bytes, *options.file_size_limit_bytes};
       if (::setrlimit(RLIMIT_FSIZE, &limit) != 0) ::_exit(126);
     }

@@ -19,6 +19,9 @@ struct RunOptions {
   // RLIMIT_FSIZE of the child, a full disk in miniature: with SIGXFSZ ignored (as the child
   // inherits it), a write past the limit fails with EFBIG instead of killing the process.
   std::optional<rlim_t> file_size_limit_bytes;
+  // With the limit: false leaves SIGXFSZ at its default action (killing), as a shell's
+  // `ulimit -f` does, for aerial to handle itself.
+  bool ignore_file_size_signal = true;
 };
 
 // `aerial <arguments>`; stdout and stderr captured separately.

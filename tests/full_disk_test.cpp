@@ -64,21 +64,28 @@ TEST_F(FullDisk, ExportVdbKeepsTheOldFileAndFails) {
 }
 
 // A cache write that fails for want of room warns, like a read-only cache directory, and the
-// render still writes its image; it used to fail after computing the tables.
+// render still writes its image; it used to fail after computing the tables. With SIGXFSZ at its
+// default, as under a shell's `ulimit -f`, the signal killed the command (exit status 153, no
+// message, the temporary left behind): now the write fails with a named error either way.
 TEST_F(FullDisk, RenderWritesItsImageWhenTheCacheDoesNotFit) {
-  const fs::path cache = dir_ / "cache", out = dir_ / "out" / "frame.png";
-  // 1 MiB: a 64x64 PNG (3 KB) fits, the small tables' cache file (4.3 MB) does not.
-  CommandRun run = RunAerial("render --small-tables --quiet --width 64 --height 64 --cache-dir " +
-                                 cache.string() + " --out " + out.string(),
-                             {.file_size_limit_bytes = 1 << 20});
-  EXPECT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_TRUE(fs::exists(out));
-  EXPECT_GT(fs::file_size(out), 0u);
-  EXPECT_NE(run.err.find("aerial: warning: not caching the tables (file = " + cache.string() + "/tables-"),
-            std::string::npos)
-      << run.err;
-  EXPECT_NE(run.err.find("File too large"), std::string::npos) << run.err;
-  EXPECT_TRUE(Entries(cache).empty()) << "no partial cache file or temporary left";
+  for (bool ignore_signal : {true, false}) {
+    SCOPED_TRACE(ignore_signal ? "SIGXFSZ ignored" : "SIGXFSZ at its default");
+    const fs::path cache = dir_ / (ignore_signal ? "cache" : "cache-signal"), out = dir_ / "out" / "frame.png";
+    // 1 MiB: a 64x64 PNG (3 KB) fits, the small tables' cache file (4.3 MB) does not.
+    CommandRun run = RunAerial("render --small-tables --quiet --width 64 --height 64 --cache-dir " +
+                                   cache.string() + " --out " + out.string(),
+                               RunOptions{.file_size_limit_bytes = 1 << 20, .ignore_file_size_signal = ignore_signal});
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_TRUE(fs::exists(out));
+    EXPECT_GT(fs::file_size(out), 0u);
+    EXPECT_NE(run.err.find("aerial: warning: not caching the tables (file = " + cache.string() + "/tables-"),
+              std::string::npos)
+        << run.err;
+    EXPECT_NE(run.err.find("File too large: the file would pass the file size limit (ulimit -f)"), std::string::npos)
+        << run.err;
+    EXPECT_FALSE(fs::exists(cache)) << "no partial cache file or temporary, nor the directory made for them";
+    fs::remove(out);
+  }
 }
 
 }  // namespace

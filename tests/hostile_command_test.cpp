@@ -12,31 +12,16 @@
 
 #include "aerial/atmosphere.h"
 #include "aerial/precompute/table_store.h"
-#include "command_run.h"
-#include "scratch_directory.h"
+#include "hostile_command.h"
 
 namespace aerial::testing {
 namespace {
 
 namespace fs = std::filesystem;
 
-class HostileCommandRound2 : public ::testing::Test {
+class HostileCommandRound2 : public HostileCommand {
  protected:
-  // The command exits with status, and its stderr holds each of the texts.
-  CommandRun Expect(const std::string& arguments, int status, std::initializer_list<std::string> texts,
-                    const std::string& wrapper = "") {
-    CommandRun run = RunAerial(arguments, "timeout 30" + (wrapper.empty() ? "" : " " + wrapper));
-    EXPECT_EQ(run.exit_code, status) << arguments << "\n" << run.err;
-    for (const std::string& text : texts)
-      EXPECT_NE(run.err.find(text), std::string::npos) << "no \"" << text << "\" in:\n" << run.err;
-    return run;
-  }
-  fs::path Fifo(const std::string& name) {
-    EXPECT_EQ(::mkfifo((dir_ / name).c_str(), 0600), 0);
-    return dir_ / name;
-  }
-
-  ScratchDirectory dir_{"hostile_command"};
+  HostileCommandRound2() : HostileCommand("hostile_command") {}
 };
 
 // Before: a FIFO or device at --stats was renamed over (as root, `--stats /dev/null` replaced

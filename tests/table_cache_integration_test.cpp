@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -97,7 +99,8 @@ TEST_F(TableCacheIntegration, FileFromAnotherParameterSetIsNotUsed) {
 }
 
 // A cache write killed with -9 leaves its temporary (33 MB with the default tables) behind; the
-// next use of the cache removes it once its writer is gone, and only then.
+// next use of the cache removes it once its writer is gone, and only then: while the writer holds
+// its lock, whatever its pid (another pid namespace or host may run it).
 TEST_F(TableCacheIntegration, TemporariesOfDeadWritersAreRemoved) {
   fs::create_directories(dir_);
   pid_t dead = ::fork();
@@ -111,10 +114,13 @@ TEST_F(TableCacheIntegration, TemporariesOfDeadWritersAreRemoved) {
   };
   const std::string cache = "tables-4d-0123456789abcdef-0123456789abcdef.bin";
   fs::path stale = temporary(cache, dead, "0123456789abcdef");
-  fs::path live = temporary(cache, ::getpid(), "0123456789abcdef");        // a write in progress
+  fs::path live = temporary(cache, dead, "0123456789abcdee");             // a write in progress
+  int writer = ::open(live.c_str(), O_RDONLY | O_CLOEXEC);                 // as its writer holds it
+  ASSERT_EQ(::flock(writer, LOCK_EX), 0);
   fs::path foreign = temporary("notes.txt", dead, "0123456789abcdef");     // not a cache file's
   fs::path unlike = temporary(cache, dead, "0123");                        // not our naming
   Load();
+  ::close(writer);
   EXPECT_FALSE(fs::exists(stale));
   EXPECT_TRUE(fs::exists(live));
   EXPECT_TRUE(fs::exists(foreign));

@@ -82,5 +82,26 @@ TEST(ViewCli, RenderScaleKeepsTheWindowSize) {
   std::filesystem::remove_all(dir);
 }
 
+// --white-balance reaches the viewer's pictures as it reaches render's PNG: the spectral sun is not
+// white, so balancing it changes the picture. Before, the viewer ignored the option and both
+// screenshots were byte for byte the same.
+TEST(ViewCli, WhiteBalanceIsHonoured) {
+  if (std::string why = MissingXServer("xvfb-run"); !why.empty()) GTEST_SKIP() << why;
+  std::filesystem::path dir = ScratchDir();
+  std::string pictures[2];
+  for (int on = 0; on < 2; ++on) {
+    std::filesystem::path png = dir / (on ? "on.png" : "off.png");
+    CommandRun view = RunAerial("view" + kSmall + " --frames 1 --white-balance " + (on ? "on" : "off") +
+                                    " --screenshot " + png.string(),
+                                kXvfb);
+    ASSERT_EQ(view.exit_code, 0) << view.err;
+    std::ifstream in(png, std::ios::binary);
+    pictures[on].assign(std::istreambuf_iterator<char>(in), {});
+    ASSERT_FALSE(pictures[on].empty());
+  }
+  EXPECT_NE(pictures[0], pictures[1]);
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace aerial::testing

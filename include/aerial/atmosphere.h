@@ -61,7 +61,8 @@ AtmosphereParameters LoadAtmosphereFile(const std::filesystem::path& path);
 
 // Checks physical ranges, on each value as the shaders receive it (rounded to float): bottom
 // radius in [1000, 100000] km and thickness top - bottom in [1, 1000] km; wavelengths in
-// [300, 1000] nm; solar irradiance in [0, 1000] W/m^2/nm; sun angular radius in [1e-4, 0.1] rad;
+// [360, 830] nm, where the spectral data (solar spectrum, ozone, CIE observer) are tabulated;
+// solar irradiance in [0, 1000] W/m^2/nm, not 0 at all three; sun angular radius in [1e-4, 0.1] rad;
 // scattering, extinction and absorption in [0, 0.1] m^-1, with Mie extinction >= Mie scattering;
 // Mie g in (-1, 1); albedo in [0, 1]; mu_s_min in [-1, 0] (max_sun_zenith_deg in [90, 180]);
 // density layers with width >= 0 and each term within +-1e6 at every altitude. Why each range:

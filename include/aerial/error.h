@@ -17,6 +17,14 @@ inline constexpr size_t kMaxShownBytes = 200;
 // cannot flood the terminal.
 std::string Shortened(std::string_view text);
 
+// text as it may reach a terminal: every byte that a terminal could take as a command (the C0
+// controls, NUL and ESC among them, and DEL) is written "\xNN", a C1 control (U+0080 to U+009F,
+// which some terminals also obey) "\u00NN", and a byte that is not part of valid UTF-8 "\xNN";
+// everything else is kept. Every message aerial prints passes through it (Error's what(), the
+// command line's own messages), so a path, URI or name from a file cannot set a terminal's title
+// or clear its screen, and a NUL cannot cut a message short.
+std::string Printable(std::string_view text);
+
 class Error : public std::runtime_error {
  public:
   // field: dotted name of the input ("rayleigh.scattering[1]", "--altitude-m", "cache header").

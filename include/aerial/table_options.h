@@ -100,7 +100,8 @@ struct PrecomputeOptions {
   void SetScatteringSize(int r, int mu, int mu_s, int nu);
 
   // Throws aerial::Error naming the field, value and allowed range; each table's texel count is
-  // capped so that a precompute ends within minutes on a CPU driver.
+  // capped so that an rgb precompute ends within minutes on a CPU driver (a spectral one takes
+  // about spectral_wavelengths / 5 times as long: docs/usage.md).
   void Validate() const;
   uint64_t Hash() const;
   std::string Describe() const;  // one line, for logs and the cache header
@@ -118,7 +119,8 @@ struct TableBytes {
 TableBytes TableMemory(const PrecomputeOptions& options);
 
 // The memory of the intermediate tables Precompute allocates besides `tables`, known before it
-// allocates them.
+// allocates them: for spectral tables, also the per-wavelength precomputes and their sums, which
+// grow with spectral_wavelengths.
 TableBytes PrecomputeScratchMemory(const PrecomputeOptions& options);
 
 }  // namespace aerial

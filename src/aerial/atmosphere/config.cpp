@@ -236,8 +236,17 @@ AtmosphereParameters LoadAtmosphereFile(const std::filesystem::path& path) {
 
 void Validate(const AtmosphereParameters& a, const std::string& where) {
   const std::string per_m = " m^-1";
-  CheckSpectrum(a.wavelengths_nm, "wavelengths_nm", 300.0, 1000.0, " nm", where);
+  CheckSpectrum(a.wavelengths_nm, "wavelengths_nm", kMinWavelengthNm, kMaxWavelengthNm,
+                " nm (where the spectral data are tabulated)", where);
   CheckSpectrum(a.solar_irradiance, "solar_irradiance", 0.0, kMaxSolarIrradiance, " W/m^2/nm", where);
+  // A channel may be dark, but a sun without light leaves nothing to see, and the exposure and the
+  // white balance, which divide by it, undefined.
+  if (!std::any_of(a.solar_irradiance.begin(), a.solar_irradiance.end(), [](double e) { return AsFloat(e) > 0.0; })) {
+    throw Error("solar_irradiance",
+                "[" + TomlFloat(a.solar_irradiance[0]) + ", " + TomlFloat(a.solar_irradiance[1]) + ", " +
+                    TomlFloat(a.solar_irradiance[2]) + "]",
+                "at least one value > 0 W/m^2/nm (a sun that gives light)", where);
+  }
   CheckRange(a.sun_angular_radius_rad, "sun_angular_radius_rad", kMinSunRadiusRad, kMaxSunRadiusRad,
              " rad", where);
   CheckRange(a.bottom_radius_m, "bottom_radius_m", kMinBottomRadiusM, kMaxBottomRadiusM, " m", where);

@@ -35,4 +35,9 @@ std::string ToToml(const AtmosphereParameters& atmosphere);
 double MuSMinFromMaxSunZenithDeg(double degrees);
 double MaxSunZenithDegFromMuSMin(double mu_s_min);
 
+// The wavelengths an atmosphere may be given at: where every spectrum the spectral precompute
+// reads (spectrum/spectral_data.h) is tabulated. Outside it the solar spectrum reads 0, and the
+// spectral sun would be black.
+inline constexpr double kMinWavelengthNm = 360.0, kMaxWavelengthNm = 830.0;
+
 }  // namespace aerial

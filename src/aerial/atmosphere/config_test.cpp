@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <regex>
 
 #include "aerial/error.h"
+#include "aerial/spectrum/spectral_data.h"
 
 #ifndef AERIAL_SOURCE_DIR
 #define AERIAL_SOURCE_DIR "."
@@ -106,7 +108,7 @@ TEST(AtmosphereConfig, MaxSunZenithAnglesGiveExactCosines) {
 TEST(AtmosphereConfig, ToTomlRoundTripsExactly) {
   AtmosphereParameters a = AtmosphereParameters::Earth();
   a.name = "odd \"name\" \\ with\ttab";
-  a.wavelengths_nm = {1400.1 / 3.0, 0.1 + 0.2 + 500.0, 300.0};
+  a.wavelengths_nm = {1400.1 / 3.0, 0.1 + 0.2 + 500.0, 360.0};
   a.solar_irradiance = {1.0 / 3.0, 5e-324, 999.99999999999989};
   a.rayleigh_density.layers[0] = {1234.5678, 0.3, -1.0 / 7000.0, 1e-9, 0.1};
   a.mie_phase_g = -0.9999999;
@@ -172,6 +174,23 @@ TEST(AtmosphereConfig, StatedBoundsAreAccepted) {
   EXPECT_NO_THROW(ParseAtmosphereToml("sun_angular_radius_rad = 0.1", "snippet.toml"));
 }
 
+// The wavelength range is where every spectrum the spectral precompute reads is tabulated: a data
+// file that grows or shrinks must move the range with it.
+TEST(AtmosphereConfig, WavelengthRangeIsWhereTheSpectralDataAre) {
+  const spectrum::TabulatedSpectrum* data[] = {&spectrum::SolarIrradiance(), &spectrum::OzoneCrossSection(),
+                                                &spectrum::Cie1931ColourMatching()[1]};
+  double first = 0.0, last = 1e9;
+  for (const spectrum::TabulatedSpectrum* d : data) {
+    first = std::max(first, d->wavelengths_nm.front());
+    last = std::min(last, d->wavelengths_nm.back());
+  }
+  EXPECT_EQ(kMinWavelengthNm, first);
+  EXPECT_EQ(kMaxWavelengthNm, last);
+  EXPECT_NO_THROW(ParseAtmosphereToml("wavelengths_nm = [830.0, 550.0, 360.0]", "snippet.toml"));
+  // One dark channel is a valid sun (its white balance: tone_map_test.cpp).
+  EXPECT_NO_THROW(ParseAtmosphereToml("solar_irradiance = [1.0, 0.0, 1.0]", "snippet.toml"));
+}
+
 struct BadSnippet {
   const char* toml;
   const char* field;  // the dotted key the error must name.
@@ -192,6 +211,11 @@ TEST(AtmosphereConfig, EveryInvalidFieldIsNamedInTheError) {
       {"top_radius_m = nan", "top_radius_m"},
       {"wavelengths_nm = [680.0, 550.0, 200.0]", "wavelengths_nm[2]"},
       {"wavelengths_nm = [nan, 550.0, 440.0]", "wavelengths_nm[0]"},
+      // Within 300-1000 nm, which the check allowed before, but outside the spectral data: the
+      // spectral sun was zero and the render failed after its precompute.
+      {"wavelengths_nm = [680.0, 550.0, 350.0]", "wavelengths_nm[2]"},
+      {"wavelengths_nm = [900.0, 550.0, 440.0]", "wavelengths_nm[0]"},
+      {"solar_irradiance = [0.0, 0.0, 0.0]", "solar_irradiance"},
       {"wavelengths_nm = [680.0, 550.0]", "wavelengths_nm"},
       {"solar_irradiance = [1.0, -1.0, 1.0]", "solar_irradiance[1]"},
       {"solar_irradiance = [1.0, inf, 1.0]", "solar_irradiance[1]"},

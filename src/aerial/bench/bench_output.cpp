@@ -5,9 +5,14 @@
 #include "aerial/bench/report_markdown.h"
 #include "aerial/bench/results_files.h"
 #include "aerial/core/atomic_file.h"
+#include "aerial/core/output_conflicts.h"
 
 namespace aerial::bench {
 namespace {
+
+constexpr const char* kResultsJsonFile = "results.json";
+constexpr const char* kResultsCsvFile = "results.csv";
+constexpr const char* kReportFile = "report.md";
 
 Picture PrecomputeChart(const BenchResults& b) {
   ChartSpec spec{.title = "Precompute time against table memory, 3D and 4D tables",
@@ -22,7 +27,21 @@ Picture PrecomputeChart(const BenchResults& b) {
 
 }  // namespace
 
-void CheckOutputDirectory(const std::filesystem::path& dir) { CheckWritable(dir / "report.md"); }
+std::vector<std::string> BenchOutputFiles(const BenchPlan& plan) {
+  std::vector<std::string> files;
+  for (const std::string& view : plan.views) files.push_back(ViewFigureFile(view));
+  for (const char* file : {kChartFile, kResultsJsonFile, kResultsCsvFile, kReportFile}) files.push_back(file);
+  return files;
+}
+
+void CheckOutputDirectory(const std::filesystem::path& dir, const BenchPlan& plan) {
+  std::vector<NamedFile> outputs;
+  for (const std::string& file : BenchOutputFiles(plan)) {
+    CheckWritable(dir / file);
+    outputs.push_back({"--out", dir / file});
+  }
+  CheckOutputConflicts(outputs);
+}
 
 void WriteBenchOutputs(const std::filesystem::path& dir, const BenchResults& b) {
   const TableTier& tier = b.plan.tiers.at(b.plan.figure_tier);
@@ -31,9 +50,9 @@ void WriteBenchOutputs(const std::filesystem::path& dir, const BenchResults& b) 
     WriteFileAtomically(dir / ViewFigureFile(figure.view), ComparisonFigure(figure, title).EncodePng());
   }
   WriteFileAtomically(dir / kChartFile, PrecomputeChart(b).EncodePng());
-  WriteFileAtomically(dir / "results.json", ResultsJson(b).dump(2) + "\n");
-  WriteFileAtomically(dir / "results.csv", ResultsCsv(b));
-  WriteFileAtomically(dir / "report.md", MarkdownReport(b));
+  WriteFileAtomically(dir / kResultsJsonFile, ResultsJson(b).dump(2) + "\n");
+  WriteFileAtomically(dir / kResultsCsvFile, ResultsCsv(b));
+  WriteFileAtomically(dir / kReportFile, MarkdownReport(b));
 }
 
 }  // namespace aerial::bench

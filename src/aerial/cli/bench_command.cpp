@@ -15,6 +15,7 @@
 #include "aerial/cli/commands.h"
 #include "aerial/cli/path_option.h"
 #include "aerial/cli/scene_options.h"
+#include "aerial/error.h"
 #include "aerial/version.h"
 
 namespace aerial::cli {
@@ -64,7 +65,7 @@ void RunBenchCommand(const BenchCommandOptions& options) {
   bench::BenchPlan plan = options.quick ? bench::BenchPlan::Quick() : bench::BenchPlan::Full();
   plan.shadows = ParseShadows(options.shadows);
   plan.colour = ParseColourMode(options.colour, "--colour");
-  bench::CheckOutputDirectory(options.out);
+  bench::CheckOutputDirectory(options.out, plan);
   Device device(DeviceOptions{.device_name = options.device, .validation = options.validation});
   bench::MachineInfo machine{.device = device.name(),
                              .date = UtcNow(),
@@ -77,7 +78,7 @@ void RunBenchCommand(const BenchCommandOptions& options) {
   results.machine.load_after = LoadAverage();
   bench::WriteBenchOutputs(options.out, results);
   std::printf("aerial bench: %s mode, %.0f s; wrote %s\n", plan.quick ? "quick" : "full", results.seconds,
-              (options.out / "report.md").c_str());
+              Printable((options.out / "report.md").native()).c_str());
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "aerial/atmosphere.h"
 #include "aerial/cli/path_option.h"
 #include "aerial/error.h"
+#include "aerial/precompute/table_store.h"
 
 namespace aerial::cli {
 
@@ -100,6 +101,13 @@ DeviceOptions TableOptions::MakeDeviceOptions() const { return {.device_name = d
 
 TableLoadOptions TableOptions::MakeLoadOptions() const {
   return {.cache_dir = cache_dir, .read_cache = !no_cache, .write_cache = true, .print_progress = !quiet};
+}
+
+std::optional<std::filesystem::path> TableOptions::CacheFile(const AtmosphereParameters& atmosphere,
+                                                            const PrecomputeOptions& precompute) const {
+  std::optional<std::filesystem::path> dir = cache_dir.empty() ? DefaultCacheDirectory() : cache_dir;
+  if (!dir) return std::nullopt;
+  return CacheFilePath(*dir, atmosphere, precompute);
 }
 
 MemoryBudget TableOptions::MakeMemoryBudget(uint64_t largest_heap_bytes) const {

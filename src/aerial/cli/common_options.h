@@ -48,6 +48,9 @@ struct TableOptions {
   PrecomputeOptions MakePrecomputeOptions() const;
   DeviceOptions MakeDeviceOptions() const;  // --device, --validation
   TableLoadOptions MakeLoadOptions() const;  // --cache-dir, --no-cache, --quiet
+  // The cache file of these tables (in --cache-dir, else the default directory), if any.
+  std::optional<std::filesystem::path> CacheFile(const AtmosphereParameters& atmosphere,
+                                                 const PrecomputeOptions& precompute) const;
   // --max-memory-mib, else the default budget or the device's heap when smaller.
   MemoryBudget MakeMemoryBudget(uint64_t largest_heap_bytes) const;
   // Before a device is chosen (loading the scene's models): --max-memory-mib, else the default.

@@ -11,6 +11,8 @@
 #include "aerial/cli/memory_uses.h"
 #include "aerial/cli/path_option.h"
 #include "aerial/cli/scene_options.h"
+#include "aerial/core/output_conflicts.h"
+#include "aerial/error.h"
 #include "aerial/renderer.h"
 #include "aerial/vdb_export.h"
 
@@ -37,15 +39,18 @@ void RunExportVdb(const ExportVdbCommandOptions& options) {
   render.Validate();
   Scene scene = options.scene.Load(atmosphere.bottom_radius_m, options.tables.MakeHostMemoryBudget());
   uint64_t most_voxels = CheckVdbExport(options.out, scene, atmosphere, grid, vdb);
+  CheckOutputConflicts({{"--out", options.out}});
   Device device(options.tables.MakeDeviceOptions());
-  std::vector<MemoryUse> uses = Combined(TableMemoryUses(precompute), Combined(FrameMemoryUses(render), FroxelExportMemoryUses(grid)));
+  std::vector<MemoryUse> uses = Combined(SceneMemoryUses(scene, options.scene.Source()),
+                                         Combined(TableMemoryUses(precompute),
+                                                  Combined(FrameMemoryUses(render), FroxelExportMemoryUses(grid))));
   uses = Combined(uses, vdb.world_grid_m ? WorldGridMemoryUses(*vdb.world_grid_m, most_voxels)
                                          : FrustumGridMemoryUses(grid, most_voxels));
   options.tables.MakeMemoryBudget(device.largest_heap_bytes()).Check(uses);
   Tables tables = Tables::LoadOrPrecompute(device, atmosphere, precompute, options.tables.MakeLoadOptions());
   size_t voxels = ExportFroxelVdb(options.out, tables, scene, grid, vdb);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("wrote %s: %zu voxels per grid (%s), %.2f s\n", options.out.c_str(), voxels,
+  std::printf("wrote %s: %zu voxels per grid (%s), %.2f s\n", Printable(options.out.native()).c_str(), voxels,
               vdb.world_grid_m ? "world grid" : "camera frustum", seconds);
 }
 

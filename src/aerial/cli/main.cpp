@@ -10,6 +10,7 @@
 #include <vulkan/vulkan.hpp>  // the out-of-memory exceptions below
 
 #include "aerial/cli/commands.h"
+#include "aerial/cli/option_values.h"
 #include "aerial/device.h"
 #include "aerial/error.h"
 #include "aerial/version.h"
@@ -19,7 +20,7 @@ namespace {
 constexpr int kUsageError = 2;
 
 int Fail(const std::exception& e) {
-  std::fprintf(stderr, "aerial: error: %s\n", e.what());
+  std::fprintf(stderr, "aerial: error: %s\n", aerial::Printable(e.what()).c_str());
   return 1;
 }
 
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
   aerial::cli::AddEnvmapCommand(app);
   aerial::cli::AddViewCommand(app);
   aerial::cli::AddBenchCommand(app);
+  aerial::cli::RefuseNonFiniteNumbers(app);
   // CLI11 reports a mistyped command only as "a subcommand is required": name it instead.
   if (argc > 1 && argv[1][0] != '-') {
     std::string commands;
@@ -57,8 +59,8 @@ int main(int argc, char** argv) {
       known = known || command->get_name() == argv[1];
     }
     if (!known) {
-      std::fprintf(stderr, "aerial: error: command = %s is invalid; expected one of: %s\n", argv[1],
-                   commands.c_str());
+      std::fprintf(stderr, "aerial: error: command = %s is invalid; expected one of: %s\n",
+                   aerial::Printable(argv[1]).c_str(), commands.c_str());
       return kUsageError;
     }
   }
@@ -69,10 +71,10 @@ int main(int argc, char** argv) {
     // own form, not CLI11's.
     if (e.get_exit_code() == 0) return app.exit(e);
     std::fprintf(stderr, "aerial: error: %s (aerial --help lists the commands, aerial COMMAND --help "
-                 "their options)\n", e.what());
+                 "their options)\n", aerial::Printable(e.what()).c_str());
     return kUsageError;
   } catch (const aerial::Error& e) {
-    return Fail(e);
+    return Fail(aerial::cli::AsTyped(e, app));
   } catch (const ::vk::OutOfDeviceMemoryError& e) {
     return Fail(OutOfMemory("device memory", e.what()));
   } catch (const ::vk::OutOfHostMemoryError& e) {

@@ -20,7 +20,11 @@ std::vector<MemoryUse> TableMemoryUses(const PrecomputeOptions& options) {
   const TableResolution& r = options.resolution;
   TableBytes tables = TableMemory(options);
   TableBytes scratch = PrecomputeScratchMemory(options);
-  const std::string what = "tables, precompute scratch and cache copies";
+  const std::string what =
+      options.colour == ColourMode::kSpectral
+          ? "tables, precompute scratch (spectral, " + std::to_string(options.spectral_wavelengths) +
+                " wavelengths) and cache copies"
+          : "tables, precompute scratch and cache copies";
   return {{"--transmittance-size", Join({r.transmittance_mu, r.transmittance_r}, ","), what,
            3 * tables.transmittance + scratch.transmittance},
           {"--irradiance-size", Join({r.irradiance_mu_s, r.irradiance_r}, ","), what,
@@ -62,6 +66,14 @@ std::vector<MemoryUse> WorldGridMemoryUses(double voxel_m, uint64_t voxels) {
 std::vector<MemoryUse> FrustumGridMemoryUses(const FroxelGrid& grid, uint64_t voxels) {
   return {{"--froxels", Join({grid.width, grid.height, grid.depth}, "x"),
            "frustum grid volume (" + std::to_string(voxels) + " voxels)", voxels * kBytesPerExportedVoxel}};
+}
+
+std::vector<MemoryUse> SceneMemoryUses(const Scene& scene, const std::string& source, int renderers) {
+  uint64_t bytes = 0;
+  for (const Mesh& mesh : scene.meshes)
+    bytes += uint64_t(mesh.vertices.capacity()) * sizeof(Vertex) + uint64_t(mesh.indices.capacity()) * sizeof(uint32_t);
+  return {{"--scene", source, "meshes: the scene's copy, GPU buffers and upload copies",
+           bytes * (1 + 2 * uint64_t(renderers))}};
 }
 
 std::vector<MemoryUse> SwapchainMemoryUses(const RenderOptions& window) {

@@ -5,6 +5,7 @@
 
 #include "aerial/core/memory_budget.h"
 #include "aerial/render/renderer_options.h"
+#include "aerial/scene.h"
 #include "aerial/table_options.h"
 
 namespace aerial::cli {
@@ -31,6 +32,11 @@ std::vector<MemoryUse> WorldGridMemoryUses(double voxel_m, uint64_t voxels);
 // The frustum grid's volume of `voxels` voxels (CheckVdbExport: linear slices as thin as the
 // froxels' first), at 320 bytes a voxel, on top of the froxels read back.
 std::vector<MemoryUse> FrustumGridMemoryUses(const FroxelGrid& grid, uint64_t voxels);
+
+// The scene's meshes (the built-in ones and its glTF models), under --scene (source: the file, or
+// the preset's name): its own copy, and each of `renderers` renderers' GPU buffers and their
+// upload copies, by the vectors' capacity.
+std::vector<MemoryUse> SceneMemoryUses(const Scene& scene, const std::string& source, int renderers = 1);
 
 // The viewer's window: up to 4 swapchain images of 4 bytes a pixel.
 std::vector<MemoryUse> SwapchainMemoryUses(const RenderOptions& window);

@@ -56,5 +56,32 @@ TEST(MemoryUses, DefaultTablesWithinTheLowSunMemoryBudget) {
   EXPECT_GT(double(now), 1.05 * double(before));
 }
 
+uint64_t Total(const std::vector<MemoryUse>& uses) {
+  uint64_t total = 0;
+  for (const MemoryUse& use : uses) total += use.bytes;
+  return total;
+}
+
+// The spectral precompute keeps the orders >= 2 of every other wavelength for every texel of the
+// tables it sums (4 bytes each), beside the group tables and their copies: the estimate grows with
+// --wavelengths by at least that. Before, it followed neither --colour nor --wavelengths (24
+// wavelengths peaked 127 MiB above an rgb run estimated the same).
+TEST(MemoryUses, SpectralEstimateFollowsTheWavelengths) {
+  PrecomputeOptions rgb = PrecomputeOptions::Small(), spectral12 = rgb, spectral24 = rgb;
+  spectral12.colour = spectral24.colour = ColourMode::kSpectral;
+  spectral24.spectral_wavelengths = 24;
+  const TableResolution& r = rgb.resolution;
+  // The tables the sums hold, in texels: Rayleigh and Mie, the density table, the irradiance.
+  const uint64_t texels = 2 * uint64_t(r.scattering_r) * r.scattering_mu * r.scattering_mu_s * r.scattering_nu +
+                          uint64_t(r.multiple_density_r) * r.multiple_density_mu * r.multiple_density_mu_s *
+                              r.multiple_density_nu +
+                          uint64_t(r.irradiance_mu_s) * r.irradiance_r;
+  const uint64_t a = Total(TableMemoryUses(rgb)), b = Total(TableMemoryUses(spectral12)),
+                 c = Total(TableMemoryUses(spectral24));
+  EXPECT_GE(b, a + 6 * texels * 4);
+  EXPECT_GE(c, b + 6 * texels * 4) << "12 more wavelengths, 6 more with all orders";
+  EXPECT_NE(TableMemoryUses(spectral24)[2].what.find("spectral, 24 wavelengths"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace aerial::cli

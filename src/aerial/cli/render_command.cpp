@@ -9,6 +9,7 @@
 #include "aerial/cli/memory_uses.h"
 #include "aerial/cli/path_option.h"
 #include "aerial/cli/scene_options.h"
+#include "aerial/core/output_conflicts.h"
 #include "aerial/image.h"
 #include "aerial/precompute/spectral_precompute.h"
 #include "aerial/render/renderer_options.h"
@@ -29,10 +30,12 @@ void RunRender(const RenderCommandOptions& options) {
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
   RendererOptions render = options.frame.MakeRenderOptions();
   Scene scene = options.scene.Load(atmosphere.bottom_radius_m, options.tables.MakeHostMemoryBudget());
+  CheckOutputConflicts({{"--out", options.out}});
   PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
   Device device(options.tables.MakeDeviceOptions());
   options.tables.MakeMemoryBudget(device.largest_heap_bytes())
-      .Check(Combined(TableMemoryUses(precompute), FrameMemoryUses(render)));
+      .Check(Combined(SceneMemoryUses(scene, options.scene.Source()),
+                      Combined(TableMemoryUses(precompute), FrameMemoryUses(render))));
   Tables tables = Tables::LoadOrPrecompute(device, atmosphere, precompute, options.tables.MakeLoadOptions());
   SceneRenderer renderer = MakeSceneRenderer(tables, scene, render);
   renderer.Render(scene);  // the first frame includes lavapipe's shader compilation

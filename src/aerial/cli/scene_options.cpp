@@ -48,6 +48,10 @@ Scene SceneOptions::Load(double planet_radius_m, const MemoryBudget& budget) con
   return scene;
 }
 
+std::string SceneOptions::Source() const {
+  return !scene_file.empty() ? scene_file.string() : preset.empty() ? "noon" : preset;
+}
+
 void FroxelOptions::AddTo(CLI::App& command) {
   command.add_option("--froxels", froxels, "Froxel grid WxHxD (default 32x32x32)");
   command.add_option("--froxel-far-m", froxel_far_m, "Distance covered by the froxels (m)");
@@ -118,16 +122,19 @@ void FrameOptions::AddTo(CLI::App& command, const std::string& size_help) {
                      "The sun's shadow map of the terrain and the opaque meshes on surfaces: on (default) "
                      "or off");
   command.add_option("--white-balance", white_balance,
-                     "PNG pictures divided by the sun's colour, so that sunlight is white: on (default) or "
-                     "off; EXR output is never white-balanced")
+                     "PNG pictures (and the viewer's window) divided by the sun's colour, so that sunlight "
+                     "is white: on (default) or off; EXR output is never white-balanced")
       ->check(CLI::IsMember({"on", "off"}));
   froxels.AddTo(command);
 }
 
 ToneMapOptions FrameOptions::MakeToneMap(const ImageRgbF& frame, const Spectrum& sun_colour) const {
-  ToneMapOptions tone_map{.exposure = MakeExposure().MultiplierFor(frame)};
-  if (white_balance == "on") tone_map.white_balance = WhiteBalanceForSun(sun_colour);
-  return tone_map;
+  return {.exposure = MakeExposure().MultiplierFor(frame), .white_balance = WhiteBalance(sun_colour)};
+}
+
+std::array<double, 3> FrameOptions::WhiteBalance(const Spectrum& sun_colour) const {
+  if (white_balance == "on") return WhiteBalanceForSun(sun_colour);
+  return {1.0, 1.0, 1.0};
 }
 
 Exposure FrameOptions::MakeExposure() const {

@@ -2,6 +2,7 @@
 // Options shared by the commands that draw a frame of a scene (render, view, export-vdb): which
 // scene, the camera and sun overrides, the froxel grid and the frame's shape. Registered once
 // here so every command spells and checks them the same way.
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -31,6 +32,8 @@ struct SceneOptions {
   // The preset (noon by default) or the scene file, with the overrides applied (validated); the
   // scene's glTF models load within budget.
   Scene Load(double planet_radius_m, const MemoryBudget& budget) const;
+  // The scene file's path, or the preset's name, for messages.
+  std::string Source() const;
 };
 
 struct FroxelOptions {
@@ -67,8 +70,10 @@ struct FrameOptions {
   RendererOptions MakeRenderOptions() const;  // validated
   Exposure MakeExposure() const;            // validated
   // The tone map of PNG pictures for tables whose sun has this colour (ShaderAtmosphere's
-  // solar_irradiance): the exposure metered from `frame`, and the sun's white balance if on.
+  // solar_irradiance): the exposure metered from `frame`, and WhiteBalance(sun_colour).
   ToneMapOptions MakeToneMap(const ImageRgbF& frame, const Spectrum& sun_colour) const;
+  // The sun's white balance (WhiteBalanceForSun) with --white-balance on, else {1, 1, 1}.
+  std::array<double, 3> WhiteBalance(const Spectrum& sun_colour) const;
 };
 
 }  // namespace aerial::cli

@@ -1,5 +1,6 @@
 // aerial view: the real-time viewer (src/aerial/viewer/). Scripted runs (--frames, --screenshot,
-// --stats, --camera-path) check every path and file before the window opens.
+// --stats, --camera-path) check every path and file before the window opens, the outputs against
+// each other and the inputs too.
 #include <memory>
 
 #include "aerial/cli/commands.h"
@@ -8,8 +9,10 @@
 #include "aerial/cli/path_option.h"
 #include "aerial/cli/scene_options.h"
 #include "aerial/core/atomic_file.h"
+#include "aerial/core/output_conflicts.h"
 #include "aerial/error.h"
 #include "aerial/image/image_writer.h"
+#include "aerial/precompute/spectral_precompute.h"
 #include "aerial/viewer/viewer.h"
 
 namespace aerial::cli {
@@ -43,11 +46,12 @@ std::map<LutVariant, PrecomputeOptions> TableVariants(const TableOptions& tables
   return variants;
 }
 
-// Each variant's tables (the difference view shows both, each drawn by its own renderer), the
-// background precompute's scratch, and the window. A short-lived device of the same choice gives
+// The scene, each variant's tables (the difference view shows both, each drawn by its own
+// renderer), the background precompute's scratch, and the window. A short-lived device of the same choice gives
 // the budget its heap size, before the viewer allocates anything.
-void CheckViewerMemory(const TableOptions& tables, const viewer::ViewerOptions& viewer) {
-  std::vector<MemoryUse> uses = SwapchainMemoryUses(viewer.render);
+void CheckViewerMemory(const TableOptions& tables, const viewer::ViewerOptions& viewer, const std::string& scene) {
+  std::vector<MemoryUse> uses =
+      Combined(SwapchainMemoryUses(viewer.render), SceneMemoryUses(viewer.scene, scene, int(viewer.tables.size())));
   for (const auto& [variant, precompute] : viewer.tables) uses = Combined(uses, TableMemoryUses(precompute));
   uses = Combined(uses, FrameMemoryUses(viewer.render, int(viewer.tables.size())));
   tables.MakeMemoryBudget(Device(viewer.device).largest_heap_bytes()).Check(uses);
@@ -70,10 +74,14 @@ void RunView(const ViewCommandOptions& options) {
   if (!options.camera_path.empty())
     viewer.camera_path = viewer::CameraPath::Load(options.camera_path, viewer.atmosphere.bottom_radius_m);
   viewer.scene = options.scene.Load(viewer.atmosphere.bottom_radius_m, options.tables.MakeHostMemoryBudget());
+  CheckOutputConflicts({{"--screenshot", options.screenshot}, {"--stats", options.stats}});
   viewer.load = options.tables.MakeLoadOptions();
   viewer.device = options.tables.MakeDeviceOptions();
-  CheckViewerMemory(options.tables, viewer);
+  CheckViewerMemory(options.tables, viewer, options.scene.Source());
   viewer.exposure = options.frame.MakeExposure();
+  // Both variants' tables share the colour mode and the sun, which the panel does not change.
+  viewer.white_balance = options.frame.WhiteBalance(
+      ShaderAtmosphere(viewer.atmosphere, viewer.tables.at(viewer.variant)).solar_irradiance);
   viewer.frames = options.frames;
   viewer.screenshot = options.screenshot;
   viewer.stats = options.stats;

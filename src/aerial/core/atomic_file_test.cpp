@@ -1,6 +1,8 @@
 #include "aerial/core/atomic_file.h"
 
 #include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -101,10 +103,13 @@ TEST_F(AtomicFile, ReadMissingFileNamesPath) {
 
 TEST_F(AtomicFile, ReadDirectoryThrows) { EXPECT_THROW(ReadFile(dir_), Error); }
 
-TEST_F(AtomicFile, CheckWritableAcceptsNewPathAndCreatesParent) {
-  EXPECT_NO_THROW(CheckWritable(dir_ / "new" / "out.bin"));
-  EXPECT_TRUE(fs::is_directory(dir_ / "new"));
-  EXPECT_EQ(Entries(), std::vector<std::string>{"new"});  // the probe file is gone.
+// The check makes nothing (before, it made the missing directories, which a SIGTERM'd bench then
+// left behind, empty); the write makes them.
+TEST_F(AtomicFile, CheckWritableAcceptsNewPathAndMakesNothing) {
+  EXPECT_NO_THROW(CheckWritable(dir_ / "new" / "deeper" / "out.bin"));
+  EXPECT_TRUE(Entries().empty());  // no directory, and the probe file is gone
+  WriteFileAtomically(dir_ / "new" / "deeper" / "out.bin", std::string_view("x"));
+  EXPECT_EQ(Entries(), (std::vector<std::string>{"new", "new/deeper", "new/deeper/out.bin"}));
 }
 
 TEST_F(AtomicFile, CheckWritableRejectsParentThatIsAFile) {
@@ -176,17 +181,67 @@ TEST_F(AtomicFile, CheckOutputFileCreatesNothing) {
   EXPECT_NO_THROW(CheckOutputFile(dir_ / "s.json", "--stats"));
 }
 
-// A write removes the temporaries that killed writers of the same path left (issue 41: only the
-// table cache's were).
-TEST_F(AtomicFile, StaleTemporariesOfTheTargetAreRemovedByTheNextWrite) {
+// A pid that names no process in this pid namespace.
+pid_t DeadPid() {
   pid_t dead = ::fork();
   if (dead == 0) ::_exit(0);
-  ASSERT_GT(dead, 0);
   ::waitpid(dead, nullptr, 0);  // reaped: its pid names no process now
-  std::string stale = "out.vdb.tmp-" + std::to_string(dead) + "-0123456789abcdef";
-  MakeRegularFile(dir_ / stale);
+  return dead;
+}
+
+// A write removes the temporaries that killed writers of the same path left (issue 41: only the
+// table cache's were): nothing holds their lock.
+TEST_F(AtomicFile, StaleTemporariesOfTheTargetAreRemovedByTheNextWrite) {
+  MakeRegularFile(dir_ / ("out.vdb.tmp-" + std::to_string(DeadPid()) + "-0123456789abcdef"));
+  MakeRegularFile(dir_ / ("out.vdb.tmp-" + std::to_string(::getpid()) + "-0123456789abcdee"));
   WriteFileAtomically(dir_ / "out.vdb", std::string_view("x"));
   EXPECT_EQ(Entries(), std::vector<std::string>{"out.vdb"});
+}
+
+// A writer in another pid namespace (a container sharing the cache) or on another host has a pid
+// that names no process here, or another one: only its lock tells it is alive. Before, the sweep
+// judged by the pid and removed the live writer's file, whose rename then failed.
+TEST_F(AtomicFile, ATemporaryWhoseWriterHoldsItsLockIsKeptWhateverItsPid) {
+  const std::string live = "out.vdb.tmp-" + std::to_string(DeadPid()) + "-0123456789abcdef";
+  MakeRegularFile(dir_ / live);
+  int writer = ::open((dir_ / live).c_str(), O_WRONLY | O_CLOEXEC);  // as the other writer holds it
+  ASSERT_GE(writer, 0);
+  ASSERT_EQ(::flock(writer, LOCK_EX), 0);
+  WriteFileAtomically(dir_ / "out.vdb", std::string_view("x"));
+  EXPECT_TRUE(RemoveStaleTemporaries(dir_, "out.vdb").empty());
+  EXPECT_EQ(Entries(), (std::vector<std::string>{"out.vdb", live}));
+  ::close(writer);  // the writer is gone: now the temporary is stale
+  EXPECT_EQ(RemoveStaleTemporaries(dir_, "out.vdb"), std::vector<fs::path>{dir_ / live});
+}
+
+// A name of 244 bytes is valid (up to 255), but "<name>.tmp-<pid>-<16 digits>" is not: the
+// temporary's name is cut, and both the check and the write succeed. Before, the check refused
+// the path, blaming the user's name ("File name too long").
+TEST_F(AtomicFile, AnyValidNameCanBeWritten) {
+  for (size_t length : {244u, 255u}) {
+    const fs::path path = dir_ / (std::string(length - 4, 'n') + ".png");
+    EXPECT_NO_THROW(CheckOutputFile(path, "--out")) << length;
+    EXPECT_NO_THROW(CheckWritable(path)) << length;
+    WriteFileAtomically(path, std::string_view("x"));
+    EXPECT_EQ(ReadFile(path).size(), 1u);
+    fs::remove(path);
+  }
+  EXPECT_TRUE(Entries().empty()) << "no temporary left";
+}
+
+// A symbolic link to a file that does not exist yet: the file is written where it points, and
+// the link kept (before, the link was replaced by a regular file).
+TEST_F(AtomicFile, WriteThroughADanglingLinkMakesItsFileAndKeepsTheLink) {
+  fs::create_directories(dir_ / "real");
+  fs::create_symlink("real/frame.png", dir_ / "link.png");
+  EXPECT_NO_THROW(CheckOutputFile(dir_ / "link.png", "--out"));
+  WriteFileAtomically(dir_ / "link.png", std::string_view("new"));
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link.png"));
+  EXPECT_EQ(ReadFile(dir_ / "real" / "frame.png").size(), 3u);
+  EXPECT_EQ(OutputTarget(dir_ / "link.png"), dir_ / "real/frame.png");
+  // A link into a directory that does not exist is refused by the output check, as a path there.
+  fs::create_symlink("missing/frame.png", dir_ / "nowhere.png");
+  EXPECT_THROW(CheckOutputFile(dir_ / "nowhere.png", "--out"), Error);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "aerial/core/file_kind.h"
+#include "aerial/core/output_conflicts.h"
 #include "aerial/error.h"
 
 namespace aerial {
@@ -46,6 +47,10 @@ struct Fd {
 std::vector<unsigned char> ReadBoundedFile(const std::filesystem::path& path,
                                            const std::string& field, size_t max_bytes,
                                            const std::string& cap_note) {
+  // A path from a file (a glTF URI, a scene's model) may hold a NUL, which the system would take
+  // for its end: another file than the one named would be read.
+  if (path.native().find('\0') != std::string::npos)
+    throw Error(field, path.string(), "a path without a NUL character");
   // stat() first: opening a FIFO for reading blocks until a writer appears.
   struct stat info;
   if (::stat(path.c_str(), &info) != 0) FailUnreadable(path, field, errno);
@@ -78,6 +83,7 @@ std::vector<unsigned char> ReadBoundedFile(const std::filesystem::path& path,
     size += static_cast<size_t>(got);
   }
   bytes.resize(size);
+  RecordInputFile(field, path, info);
   return bytes;
 }
 

@@ -7,9 +7,8 @@
 
 namespace aerial {
 
-JsonShape MeasureJson(std::string_view json) {
-  JsonShape shape{.values = json.empty() ? 0u : 1u};
-  size_t depth = 0;
+size_t JsonNestingDepth(std::string_view json) {
+  size_t depth = 0, deepest = 0;
   bool in_string = false, escaped = false;
   for (char c : json) {
     if (in_string) {
@@ -23,18 +22,13 @@ JsonShape MeasureJson(std::string_view json) {
     } else if (c == '"') {
       in_string = true;
     } else if (c == '[' || c == '{') {
-      shape.depth = std::max(shape.depth, ++depth);
-      ++shape.values;
+      deepest = std::max(deepest, ++depth);
     } else if ((c == ']' || c == '}') && depth > 0) {
       --depth;
-    } else if (c == ',') {
-      ++shape.values;
     }
   }
-  return shape;
+  return deepest;
 }
-
-size_t JsonNestingDepth(std::string_view json) { return MeasureJson(json).depth; }
 
 void CheckJsonDepth(std::string_view json, const std::string& where) {
   size_t depth = JsonNestingDepth(json);

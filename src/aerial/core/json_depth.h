@@ -8,17 +8,8 @@
 
 namespace aerial {
 
-// What a parse of json will build, by one scan of its brackets and commas outside strings: the
-// deepest nesting of arrays and objects ("[[]]" is 2) and about how many values it holds (each
-// array and object, and one per comma). It does not check that json is valid; the parser does
-// that afterwards.
-struct JsonShape {
-  size_t depth = 0;
-  size_t values = 0;
-};
-JsonShape MeasureJson(std::string_view json);
-
-// MeasureJson(json).depth.
+// The deepest nesting of arrays and objects in json ("[[]]" is 2), by one scan of its brackets
+// outside strings. It does not check that json is valid; the parser does that afterwards.
 size_t JsonNestingDepth(std::string_view json);
 
 // Throws Error("JSON nesting", "<depth> levels", ..., where) when json nests deeper than

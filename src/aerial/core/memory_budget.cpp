@@ -16,12 +16,14 @@ std::string FormatMiB(uint64_t bytes) {
   return text;
 }
 
-void MemoryBudget::Check(const std::vector<MemoryUse>& uses) const {
+void MemoryBudget::Check(const std::vector<MemoryUse>& new_uses) const {
+  std::vector<MemoryUse> uses = held;
+  uses.insert(uses.end(), new_uses.begin(), new_uses.end());
   uint64_t total = 0;
   const MemoryUse* largest = nullptr;
   std::string parts;
   for (const MemoryUse& use : uses) {
-    total += use.bytes;
+    total = use.bytes > UINT64_MAX - total ? UINT64_MAX : total + use.bytes;
     if (!largest || use.bytes > largest->bytes) largest = &use;
     parts += (parts.empty() ? "" : "; ") + use.option + " " + use.value + ": " + use.what + " " +
              FormatMiB(use.bytes);
@@ -30,6 +32,12 @@ void MemoryBudget::Check(const std::vector<MemoryUse>& uses) const {
   throw Error(largest->option, largest->value,
               "sizes whose memory fits the budget: estimated " + FormatMiB(total) + " (" + parts +
                   ") > budget " + FormatMiB(bytes) + " (" + origin + ")");
+}
+
+MemoryBudget MemoryBudget::Holding(const std::vector<MemoryUse>& uses) const {
+  MemoryBudget budget = *this;
+  budget.held.insert(budget.held.end(), uses.begin(), uses.end());
+  return budget;
 }
 
 void MemoryTally::Add(uint64_t bytes) {

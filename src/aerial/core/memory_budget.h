@@ -12,7 +12,7 @@
 
 namespace aerial {
 
-// 2 GiB: a default render is estimated at 290 MiB, a 3840x2160 one at 0.9 GiB.
+// 2 GiB: a default render is estimated at 0.9 GiB, a 3840x2160 one at 1.5 GiB, the viewer at 1.2.
 inline constexpr uint64_t kDefaultMemoryBudgetMiB = 2048;
 
 // One part of an estimate, under the option that sizes it.
@@ -26,14 +26,21 @@ struct MemoryUse {
 struct MemoryBudget {
   uint64_t bytes = 0;
   std::string origin;  // where it comes from, for the message: "--max-memory-mib 512", "the default; ..."
+  // Memory the command already holds when this budget is handed on (the scene's models loaded so
+  // far), counted in every Check: one budget for everything a command loads, not one per input.
+  std::vector<MemoryUse> held;
 
-  // Throws aerial::Error when the uses add up to more than the budget. The error names the
-  // option of the largest use and its value, the estimate with its parts, and the budget.
+  // Throws aerial::Error when the uses, with those held, add up to more than the budget. The
+  // error names the option of the largest use and its value, the estimate with its parts, and
+  // the budget.
   void Check(const std::vector<MemoryUse>& uses) const;
+  // This budget with `uses` held as well.
+  MemoryBudget Holding(const std::vector<MemoryUse>& uses) const;
 };
 
 // Memory an input's loader allocates as it reads (a glTF model's JSON tree and geometry, whose
-// size only the file knows), added up and checked against the budget before each allocation.
+// size only the file knows), added up and checked against the budget (with what it holds) before
+// each allocation.
 class MemoryTally {
  public:
   // option and value name the input in the error, as MemoryUse does; what says what is counted.

@@ -9,8 +9,11 @@
 namespace aerial {
 
 // The deepest nesting in toml, by a scan outside strings and comments: open brackets and braces
-// plus the parts of the dotted key or number being read ("a.b.c = 1" is 3, "x = [[1]]" is 3). It
-// does not check that toml is valid; the parser does that afterwards.
+// plus the parts of the dotted key or number being read ("a.b.c = 1" is 3, "x = [[1]]" is 3).
+// Strings are skipped by TOML 1.0's rules for each of its four forms (basic, literal and their
+// multi-line forms, with their escapes and the quotes a multi-line string may hold), so that no
+// valid string can hide what follows it. It does not check that toml is valid; the parser does
+// that afterwards.
 size_t TomlNestingDepth(std::string_view toml);
 
 // Throws Error("TOML nesting", "<depth> levels", ..., where) when toml nests deeper than

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "aerial/core/input_limits.h"
 #include "aerial/core/toml_reader.h"
@@ -55,6 +56,45 @@ TEST(TomlDepth, ReaderRefusesAHugeDottedKeyBeforeParsing) {
     } catch (const Error& e) {
       EXPECT_EQ(e.field(), "TOML nesting");
       EXPECT_EQ(e.where(), "deep.toml");
+    }
+  }
+}
+
+// "x.x.x" with parts parts.
+std::string KeyParts(size_t parts) {
+  std::string key = "x";
+  for (size_t i = 1; i < parts; ++i) key += ".x";
+  return key;
+}
+
+// The strings of TOML 1.0's four forms, each valid, with the quotes and escapes that end them.
+const std::vector<std::string> kStrings = {
+    R"("x")",          R"("x\"")",         R"("x\\")",        R"('x\')",          R"("")",
+    R"('')",           R"("""x""")",       R"("""x"""")",     R"("""x""""")",     R"("""x""y""")",
+    R"("""x\"""")",    "\"\"\"x\n\"\n\"\"\n\"\"\"", R"("""""")", R"('''x''')",    R"('''x'''')",
+    R"('''x''''')",    R"('''x''y\''')",   R"('''''')",       "'''x\n'\n''\n'''"};
+
+// Each string form ends where the parser ends it, so that what follows it is counted. Before, a
+// multi-line string closed by four quotes ("""x"""", which holds x") left a quote that hid the
+// rest of its line from the count (depth 2 here instead of 4).
+TEST(TomlDepth, EveryStringFormEndsWhereTheParserEndsIt) {
+  for (const std::string& string : kStrings) {
+    std::string text = "t = { a = " + string + ", " + KeyParts(3) + " = 1 }\n";
+    EXPECT_EQ(TomlNestingDepth(text), 4u) << text;
+    EXPECT_NO_THROW(TomlReader("s.toml").Parse(text)) << text << ": the case must be valid TOML";
+  }
+}
+
+// Before: a dotted key of 400,000 parts after """x"""" on the same line crashed (SIGSEGV) every
+// reader again.
+TEST(TomlDepth, ReaderRefusesADeepKeyAfterAnyString) {
+  for (const std::string& string : kStrings) {
+    std::string text = "t = { a = " + string + ", " + KeyParts(400000) + " = 1 }\n";
+    try {
+      TomlReader("deep.toml").Parse(text);
+      FAIL() << "parsed after " << string;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.field(), "TOML nesting") << string;
     }
   }
 }

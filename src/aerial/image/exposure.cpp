@@ -56,7 +56,10 @@ double Exposure::MultiplierFor(const ImageRgbF& image) const {
 
 std::array<double, 3> WhiteBalanceForSun(const std::array<double, 3>& sun_colour) {
   double mean = (sun_colour[0] + sun_colour[1] + sun_colour[2]) / 3.0;
-  return {mean / sun_colour[0], mean / sun_colour[1], mean / sun_colour[2]};
+  if (!(mean > 0.0) || !std::isfinite(mean)) return {1.0, 1.0, 1.0};  // no sunlight to balance
+  std::array<double, 3> gains;
+  for (int c = 0; c < 3; ++c) gains[c] = mean / std::max(sun_colour[c], mean / kMaxWhiteBalanceGain);
+  return gains;
 }
 
 }  // namespace aerial

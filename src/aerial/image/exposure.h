@@ -44,6 +44,11 @@ double Ev100FromRadianceMultiplier(double multiplier);
 
 // The gains that make the sun's colour white, keeping their mean at 1 (the white balance of
 // Bruneton 2017's demo): mean(sun) / sun per channel, for pictures; physical output never has it.
+// Defined for every sun: a channel the sun lights less than a millionth of its mean (a dark
+// channel of an rgb sun, valid in an atmosphere file) gets the gain kMaxWhiteBalanceGain, which
+// leaves it as dark as the sun leaves it, instead of an infinite one; with no sunlight at all the
+// gains are 1.
+inline constexpr double kMaxWhiteBalanceGain = 1e6;
 std::array<double, 3> WhiteBalanceForSun(const std::array<double, 3>& sun_colour);
 
 // How an image is exposed: metered (automatic), a fixed EV100, or a plain radiance multiplier.

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "aerial/image.h"
+
 namespace aerial {
 namespace {
 
@@ -31,6 +33,18 @@ TEST(Exposure, WhiteBalanceMakesTheSunWhite) {
   std::array<double, 3> gains = WhiteBalanceForSun(sun);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(sun[c] * gains[c], (2.0 + 1.77 + 1.70) / 3.0, 1e-12);
   for (double gain : WhiteBalanceForSun({1.5, 1.5, 1.5})) EXPECT_DOUBLE_EQ(gain, 1.0);
+}
+
+// A dark channel is a valid rgb sun: its gain is finite (before, 1 / 0 = inf failed a PNG render
+// after all its work), and the other channels are balanced as before.
+TEST(Exposure, WhiteBalanceIsDefinedForASunWithADarkChannel) {
+  std::array<double, 3> gains = WhiteBalanceForSun({1.0, 0.0, 2.0});
+  EXPECT_DOUBLE_EQ(gains[0], 1.0);
+  EXPECT_DOUBLE_EQ(gains[1], kMaxWhiteBalanceGain);
+  EXPECT_DOUBLE_EQ(gains[2], 0.5);
+  ImageRgbF image{.width = 1, .height = 1, .rgba = {0.5f, 0.0f, 0.25f, 1.0f}};
+  EXPECT_NO_THROW(ToneMapToSrgb8(image, {.exposure = 1.0, .white_balance = gains}));
+  for (double gain : WhiteBalanceForSun({0.0, 0.0, 0.0})) EXPECT_EQ(gain, 1.0);
 }
 
 TEST(Exposure, Ev100OfTheMeterCalibration) {

@@ -36,22 +36,31 @@ bool FiniteAt(const CachedTable& table, size_t offset) {
 
 }  // namespace
 
-void CheckFiniteTables(const TableCache& tables) {
+std::optional<NonFiniteTexel> FindNonFiniteTexel(const TableCache& tables) {
   for (const CachedTable& table : tables.tables) {
     size_t channel = TexelBytes(table.format) / 4;
-    for (size_t offset = 0; offset < table.texels.size(); offset += channel) {
+    if (channel == 0 || table.width == 0 || table.height == 0) continue;  // no texels to read
+    for (size_t offset = 0; offset + channel <= table.texels.size(); offset += channel) {
       if (FiniteAt(table, offset)) continue;
       size_t texel = offset / TexelBytes(table.format);
       size_t x = texel % table.width, y = texel / table.width % table.height,
              z = texel / (size_t{table.width} * table.height);
-      auto writer = kWriters.find(table.name);
-      throw Error("precompute pass \"" + (writer == kWriters.end() ? table.name : writer->second) + "\"",
-                  "NaN or infinity in table \"" + table.name + "\" at texel (" + std::to_string(x) + ", " +
-                      std::to_string(y) + ", " + std::to_string(z) + ")",
-                  "finite tables (the atmosphere or the orders may be beyond what float arithmetic "
-                  "holds; fewer --orders or a thinner atmosphere)");
+      return NonFiniteTexel{table.name, "NaN or infinity in table \"" + table.name + "\" at texel (" +
+                                            std::to_string(x) + ", " + std::to_string(y) + ", " +
+                                            std::to_string(z) + ")"};
     }
   }
+  return std::nullopt;
+}
+
+void CheckFiniteTables(const TableCache& tables) {
+  std::optional<NonFiniteTexel> bad = FindNonFiniteTexel(tables);
+  if (!bad) return;
+  auto writer = kWriters.find(bad->table);
+  throw Error("precompute pass \"" + (writer == kWriters.end() ? bad->table : writer->second) + "\"",
+              bad->description,
+              "finite tables (the atmosphere or the orders may be beyond what float arithmetic "
+              "holds; fewer --orders or a thinner atmosphere)");
 }
 
 }  // namespace aerial

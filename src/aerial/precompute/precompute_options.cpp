@@ -97,10 +97,12 @@ void CheckMuAxis(const std::string& field, int value) {
     throw Error(field, std::to_string(value), "an even number (split at the horizon)");
 }
 
-// The tables' texel counts are capped so that the slowest allowed precompute (every table at its
-// cap, 16 orders) ends within a few minutes on lavapipe with 2 cores: it took 188 s there, with
-// another job on one of the cores (docs/usage.md, "Memory, disks and the device"). The per-axis ranges
-// alone allowed 4096x4096 transmittance and irradiance tables, which ran for over 5 minutes.
+// The tables' texel counts are capped so that the slowest allowed rgb precompute (every table at
+// its cap, 16 orders) ends within a few minutes on lavapipe with 2 cores: it took 188 s there,
+// with another job on one of the cores (docs/usage.md, "Memory, disks and the device"). The
+// per-axis ranges alone allowed 4096x4096 transmittance and irradiance tables, which ran for over
+// 5 minutes. A spectral precompute repeats the work per three wavelengths, so its time also grows
+// with spectral_wavelengths, which these caps do not bound.
 constexpr int64_t kMaxTransmittanceTexels = int64_t(1) << 20;  // 1024x1024: 6 s
 constexpr int64_t kMaxIrradianceTexels = int64_t(1) << 14;     // 256x64: 1.4 s per order
 // 32x128x128x8, 3.2 times the default: single scattering 26 s, then 8.7 s per order.
@@ -116,7 +118,7 @@ void CheckTexels(const std::string& field, std::initializer_list<int> axes, int6
   }
   if (texels > cap)
     throw Error(field, size + " = " + std::to_string(texels) + " texels",
-                "at most " + std::to_string(cap) + " texels, so that the precompute ends within minutes");
+                "at most " + std::to_string(cap) + " texels, so that an rgb precompute ends within minutes");
 }
 
 // A nu axis has exactly one slice in the 3D variant, 2 to 64 in the 4D one.

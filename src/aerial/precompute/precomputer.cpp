@@ -158,6 +158,17 @@ void BlitConvert(const vk::CommandBuffer& cmd, const vk::Image& from, const vk::
 }  // namespace
 
 TableBytes PrecomputeScratchMemory(const PrecomputeOptions& options) {
+  if (options.colour == ColourMode::kSpectral) {
+    // The three-wavelength precomputes and their sums, on top of what an rgb precompute of these
+    // tables uses (an overestimate by the rgb scratch that the spectral path does not allocate).
+    PrecomputeOptions rgb = options;
+    rgb.colour = ColourMode::kRgb;
+    TableBytes scratch = PrecomputeScratchMemory(rgb), spectral = SpectralPrecomputeScratchMemory(options);
+    return {.transmittance = scratch.transmittance + spectral.transmittance,
+            .irradiance = scratch.irradiance + spectral.irradiance,
+            .scattering = scratch.scattering + spectral.scattering,
+            .multiple_density = scratch.multiple_density + spectral.multiple_density};
+  }
   const TableResolution& r = options.resolution;
   const ::vk::Extent3D density = DensityExtent(options);
   uint64_t scattering_texels = uint64_t(r.scattering_nu) * r.scattering_mu_s * r.scattering_mu * r.scattering_r;

@@ -100,6 +100,33 @@ PrecomputeOptions SpectralGroupOptions(const PrecomputeOptions& options, bool al
   return group;
 }
 
+TableBytes SpectralPrecomputeScratchMemory(const PrecomputeOptions& options) {
+  const PrecomputeOptions group = SpectralGroupOptions(options, true);
+  const TableBytes group_tables = TableMemory(group), group_scratch = PrecomputeScratchMemory(group);
+  const TableBytes result = TableMemory(options);
+  const uint64_t wavelengths_with_all_orders = 3 * uint64_t(SpectralAllOrderGroupCount(options));
+  // The group's tables are float32 RGBA, 16 bytes a texel, so group_tables counts the texels too.
+  auto part = [&](uint64_t TableBytes::*table, bool has_higher_orders) {
+    const uint64_t rgba = group_tables.*table, texels = rgba / 16;
+    return group_tables.*table + group_scratch.*table  // a group's device tables and scratch
+           + 2 * rgba                                  // its read-backs: single scattering, all orders
+           + 2 * rgba                                  // both as float vectors (AsFloats)
+           + rgba                                      // the sums
+           + 3 * texels * 4                            // one wavelength's channel (twice), a stencil's
+           + (has_higher_orders ? wavelengths_with_all_orders * texels * 4 : 0)  // `higher`
+           + 3 * result.*table;  // the final tables' read-back, their conversion, the upload's staging
+  };
+  // Each group also leaves the driver and the allocator holding memory the tables do not explain:
+  // from 12 to 48 wavelengths over the small tables the peak grew 2.4 MiB a group more than they
+  // do (lavapipe's pipelines, the heap's fragments), counted here at 4 MiB.
+  constexpr uint64_t kBytesPerGroup = uint64_t{4} << 20;
+  // The transmittance table is computed again from the linear sRGB coefficients, not summed.
+  return {.transmittance = part(&TableBytes::transmittance, false),
+          .irradiance = part(&TableBytes::irradiance, true),
+          .scattering = part(&TableBytes::scattering, true) + SpectralGroupCount(options) * kBytesPerGroup,
+          .multiple_density = part(&TableBytes::multiple_density, true)};
+}
+
 std::vector<vk::PassTime> PrecomputeSpectral(AtmosphereTables& tables, Progress* progress) {
   const PrecomputeOptions& options = tables.options();
   const SpectralSampling sampling(options.spectral_wavelengths);

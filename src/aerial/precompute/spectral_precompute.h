@@ -35,6 +35,13 @@ int SpectralGroupCount(const PrecomputeOptions& options);
 int SpectralAllOrderGroupCount(const PrecomputeOptions& options);
 PrecomputeOptions SpectralGroupOptions(const PrecomputeOptions& options, bool all_orders);
 
+// What PrecomputeSpectral allocates besides the tables, by table: each group's tables and
+// precompute scratch (device memory), their read-backs and float copies, the colour sums, the
+// orders >= 2 kept at every wavelength that has them (spectral_wavelengths / 2 of them, 4 bytes a
+// texel each) and what the driver keeps per group, so the estimate grows with --wavelengths as
+// the run does.
+TableBytes SpectralPrecomputeScratchMemory(const PrecomputeOptions& options);
+
 // Fills spectral `tables` (options().colour == kSpectral); leaves `progress` unfinished.
 std::vector<vk::PassTime> PrecomputeSpectral(AtmosphereTables& tables, Progress* progress);
 

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <span>
 
 #include "aerial/core/atomic_file.h"
@@ -17,6 +18,7 @@
 #include "aerial/core/file_kind.h"
 #include "aerial/core/input_limits.h"
 #include "aerial/error.h"
+#include "aerial/precompute/finite_tables.h"
 
 namespace aerial {
 namespace {
@@ -333,6 +335,12 @@ TableCache ReadTableCache(const std::filesystem::path& path, const TableCacheKey
       throw Error("cache table \"" + t.name + "\" checksum", Hex(actual),
                   Hex(checksums[i]) + " as stored (corrupt texels)", where);
     }
+  }
+  // The checksums say the texels are as written, not that they are numbers: the same check as
+  // after a precompute.
+  if (std::optional<NonFiniteTexel> bad = FindNonFiniteTexel(cache)) {
+    throw Error("cache table \"" + bad->table + "\"", bad->description,
+                "finite texels (tables written with a NaN or infinity in them are never used)", where);
   }
   return cache;
 }

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstring>
 #include <fstream>
+#include <limits>
 
 #include "aerial/core/atomic_file.h"
 #include "aerial/core/input_limits.h"
@@ -19,7 +21,9 @@ CachedTable FakeTable(std::string name, uint32_t w, uint32_t h, uint32_t d, Texe
                       int seed) {
   CachedTable t{std::move(name), w, h, d, format, {}};
   t.texels.resize(size_t{w} * h * d * TexelBytes(format));
-  for (size_t i = 0; i < t.texels.size(); ++i) t.texels[i] = std::byte((i * 31 + seed) & 0xff);
+  // Bytes below 0x40 keep every float's and half float's exponent short of all ones: finite
+  // texels, as a cache file must hold.
+  for (size_t i = 0; i < t.texels.size(); ++i) t.texels[i] = std::byte((i * 31 + seed) & 0x3f);
   return t;
 }
 
@@ -97,6 +101,24 @@ TEST_F(TableCacheFile, RoundTripIsBitExact) {
 TEST_F(TableCacheFile, EmptyCacheRoundTrips) {
   WriteTableCache(path_, TableCache{kKey, "", {}});
   EXPECT_TRUE(ReadTableCache(path_, kKey).tables.empty());
+}
+
+// Checksums only say the texels are as written: a file written with a NaN (or an infinity) in a
+// table, checksums and all, is refused as a precompute with one is. Before, probe read it and
+// printed null, with exit status 0.
+TEST_F(TableCacheFile, ANonFiniteTexelIsRefusedThoughItsChecksumsHold) {
+  for (float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+    TableCache cache = FakeCache();
+    std::memcpy(cache.tables[0].texels.data() + 5 * 16 + 4, &bad, 4);  // texel (1, 1, 0), green
+    WriteTableCache(path_, cache);
+    try {
+      ReadTableCache(path_, kKey);
+      ADD_FAILURE() << "read";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.field(), "cache table \"scattering\"");
+      EXPECT_EQ(e.value(), "NaN or infinity in table \"scattering\" at texel (1, 1, 0)");
+    }
+  }
 }
 
 TEST_F(TableCacheFile, FlippedPayloadByteNamesTheTable) {

@@ -13,10 +13,17 @@ namespace aerial {
 
 std::optional<std::filesystem::path> DefaultCacheDirectory() {
   if (const char* dir = std::getenv("AERIAL_CACHE_DIR"); dir && *dir) return dir;
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-    return std::filesystem::path(xdg) / "aerial";
-  if (const char* home = std::getenv("HOME"); home && *home)
-    return std::filesystem::path(home) / ".cache" / "aerial";
+  // The XDG Base Directory Specification: "All paths set in these environment variables must be
+  // absolute. If an implementation encounters a relative path in any of these variables it should
+  // consider the path invalid and ignore it." HOME is held to the same rule: a relative one would
+  // put the cache wherever the command happens to run.
+  auto absolute = [](const char* variable) -> std::optional<std::filesystem::path> {
+    const char* value = std::getenv(variable);
+    if (!value || value[0] != '/') return std::nullopt;
+    return std::filesystem::path(value);
+  };
+  if (auto xdg = absolute("XDG_CACHE_HOME")) return *xdg / "aerial";
+  if (auto home = absolute("HOME")) return *home / ".cache" / "aerial";
   return std::nullopt;
 }
 
@@ -57,13 +64,16 @@ LoadedTables LoadOrPrecompute(const vk::Context& context, const AtmosphereParame
       std::fprintf(stderr, "aerial: AERIAL_TABLE_FILTERING=%s: the tables are precomputed, not cached\n", value.c_str());
     use_cache = false;
   } else if (!dir) {
-    without_cache(Error("HOME", "unset",
-                        "set, or XDG_CACHE_HOME, AERIAL_CACHE_DIR or --cache-dir, to place the table cache"));
+    const char* home = std::getenv("HOME");
+    without_cache(Error("HOME", home && *home ? home : "unset",
+                        "an absolute path, or an absolute XDG_CACHE_HOME, AERIAL_CACHE_DIR or --cache-dir, to "
+                        "place the table cache (relative ones are ignored, as the XDG specification says)"));
   } else {
     loaded.cache_file = CacheFilePath(*dir, atmosphere, options);
     for (const std::filesystem::path& stale : RemoveStaleTemporaries(*dir, "tables-")) {
       if (!store.quiet)
-        std::fprintf(stderr, "aerial: removed %s, left by a table cache write that was killed\n", stale.c_str());
+        std::fprintf(stderr, "aerial: removed %s, left by a table cache write that was killed\n",
+                     Printable(stale.native()).c_str());
     }
   }
   std::error_code ec;  // a symbolic link loop at the path: no cache to read, and writing fails below

@@ -33,7 +33,8 @@ struct LoadedTables {
   std::vector<vk::PassTime> pass_times;  // empty when read from the cache
 };
 
-// $AERIAL_CACHE_DIR, else $XDG_CACHE_HOME/aerial, else $HOME/.cache/aerial; none when none of
+// $AERIAL_CACHE_DIR, else $XDG_CACHE_HOME/aerial, else $HOME/.cache/aerial, where a relative
+// XDG_CACHE_HOME or HOME counts as unset (the XDG Base Directory Specification); none when none of
 // them is set (a cache in the working directory would surprise: the caller goes on without one).
 std::optional<std::filesystem::path> DefaultCacheDirectory();
 

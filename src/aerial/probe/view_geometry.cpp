@@ -5,20 +5,16 @@
 #include <numbers>
 #include <string>
 
+#include "aerial/core/format_number.h"
 #include "aerial/error.h"
 
 namespace aerial {
 namespace {
 
-std::string Text(double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
-}
-
 void CheckAngle(const char* field, double value, double low, double high) {
   if (!std::isfinite(value) || value < low || value > high)
-    throw Error(field, Text(value), "degrees in [" + Text(low) + ", " + Text(high) + "]");
+    throw Error(field, FormatNumber(value),
+                "degrees in [" + FormatNumber(low) + ", " + FormatNumber(high) + "]");
 }
 
 }  // namespace
@@ -26,8 +22,8 @@ void CheckAngle(const char* field, double value, double low, double high) {
 void ValidateViewAngles(const ViewAngles& view, const AtmosphereParameters& atmosphere) {
   double thickness = atmosphere.top_radius_m - atmosphere.bottom_radius_m;
   if (!std::isfinite(view.altitude_m) || view.altitude_m < 0.0 || view.altitude_m > thickness)
-    throw Error("--altitude-m", Text(view.altitude_m),
-                "meters in [0, " + Text(thickness) + "] (ground to the top of the atmosphere)");
+    throw Error("--altitude-m", FormatNumber(view.altitude_m),
+                "meters in [0, " + FormatNumber(thickness) + "] (ground to the top of the atmosphere)");
   CheckAngle("--view-zenith-deg", view.view_zenith_deg, 0.0, 180.0);
   CheckAngle("--sun-zenith-deg", view.sun_zenith_deg, 0.0, 180.0);
   CheckAngle("--azimuth-deg", view.azimuth_deg, -360.0, 360.0);

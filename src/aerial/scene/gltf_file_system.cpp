@@ -51,6 +51,7 @@ void GltfFileSystem::CheckInsideFolder(const std::string& uri, const std::filesy
   std::filesystem::path folder = folder_.empty() ? "." : folder_;
   std::string inside = "a relative path to a file inside the model's folder " + folder.string();
   if (uri.empty() || uri.front() == '/') throw Error(field, uri, inside + " (not an absolute path)");
+  if (uri.find('\0') != std::string::npos) throw Error(field, uri, inside + " (without a NUL character)");
   if (HasScheme(uri)) throw Error(field, uri, inside + " or a data: URI (no other scheme)");
   std::error_code folder_error, path_error;
   std::filesystem::path real_folder = std::filesystem::weakly_canonical(folder, folder_error);

@@ -15,6 +15,7 @@
 #include "aerial/scene/glb_layout.h"
 #include "aerial/scene/gltf_accessors.h"
 #include "aerial/scene/gltf_file_system.h"
+#include "aerial/scene/gltf_parse_memory.h"
 #include "aerial/scene/scene_limits.h"
 #include "aerial/scene/tiny_gltf_config.h"
 
@@ -162,12 +163,6 @@ void AppendMesh(const GltfReader& reader, const tinygltf::Model& model, int mesh
   }
 }
 
-// What parsing a glTF's JSON allocates, counted before tinygltf parses it. Each value is held
-// twice, in the JSON library's tree and in tinygltf's (an `extras` array of 10 million zeros, 20 MB,
-// took 1.96 GB: 196 bytes a value); the text, its strings and the buffers decoded from data URIs
-// take a few times the file's bytes.
-constexpr uint64_t kJsonBytesPerValue = 200, kJsonBytesPerFileByte = 4;
-
 tinygltf::Model ReadModel(const std::filesystem::path& path, MemoryTally& tally) {
   tinygltf::Model model;
   std::string base_dir = path.parent_path().string();
@@ -180,7 +175,7 @@ tinygltf::Model ReadModel(const std::filesystem::path& path, MemoryTally& tally)
   std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
   std::string_view json = binary ? CheckedGlbJson(bytes, path.string()) : text;
   CheckJsonDepth(json, path.string());
-  tally.Add(MeasureJson(json).values * kJsonBytesPerValue + bytes.size() * kJsonBytesPerFileByte);
+  tally.Add(GltfParseBytes(json, bytes.size()));
 
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks(files.Callbacks());
@@ -205,6 +200,10 @@ tinygltf::Model ReadModel(const std::filesystem::path& path, MemoryTally& tally)
 }
 
 }  // namespace
+
+uint64_t HeldMeshBytes(const Mesh& mesh) {
+  return 3 * (uint64_t(mesh.vertices.capacity()) * sizeof(Vertex) + uint64_t(mesh.indices.capacity()) * sizeof(uint32_t));
+}
 
 Mesh LoadGltfMesh(const std::filesystem::path& path, const std::string& name, const MemoryBudget& budget) {
   MemoryTally tally(budget, "glTF model", path.string(), "JSON parse and geometry");

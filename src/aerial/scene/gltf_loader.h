@@ -34,4 +34,8 @@ namespace aerial {
 Mesh LoadGltfMesh(const std::filesystem::path& path, const std::string& name,
                   const MemoryBudget& budget = MakeMemoryBudget(std::nullopt, UINT64_MAX));
 
+// What a loaded mesh holds while the command runs, as its load counted it: its vertices and
+// indices (by their vectors' capacity) in the mesh, the GPU's buffers and their upload copies.
+uint64_t HeldMeshBytes(const Mesh& mesh);
+
 }  // namespace aerial

@@ -187,9 +187,14 @@ Scene ParseSceneToml(std::string_view text, const std::string& where,
   IfPresent(root, "mesh", [&](const toml::node& n) {
     const toml::array* meshes = n.as_array();
     if (!meshes) r.Fail(n, "mesh", "an array of tables ([[mesh]])");
+    // One budget for all the models: each loads beside those loaded before it, which stay.
+    uint64_t held = 0;
     for (size_t i = 0; i < meshes->size(); ++i) {
-      view.meshes.push_back(
-          ReadMesh(r, *meshes->get(i), TomlReader::Index("mesh", i), base_dir, planet_radius_m, built_in, budget));
+      MemoryBudget with_models =
+          held == 0 ? budget : budget.Holding({{"--scene", where, "the glTF models before mesh[" + std::to_string(i) + "]", held}});
+      view.meshes.push_back(ReadMesh(r, *meshes->get(i), TomlReader::Index("mesh", i), base_dir, planet_radius_m,
+                                     built_in, with_models));
+      held += HeldMeshBytes(view.meshes.back());
     }
   });
 

@@ -187,6 +187,40 @@ TEST(SceneFile, UnknownKeysAreRejected) {
 
 TEST(SceneFile, SyntaxErrorsHaveALine) { ExpectError("[camera\nfov_deg = 50", "TOML syntax", 1); }
 
+// One budget for every model of a scene: each loads beside those loaded before it. The budget
+// here is the least that one model needs to load (found by bisection, in bytes); ten copies of it
+// must not pass. Before, each model was checked alone, so ten copies of a 137 MiB model passed
+// --max-memory-mib 400 and peaked at 1.45 GB.
+TEST(SceneFile, ModelsShareOneMemoryBudget) {
+  auto scene = [](int copies) {
+    std::string text = "built_in = false\n";
+    for (int i = 0; i < copies; ++i) text += "[[mesh]]\ngltf = \"cube.gltf\"\nposition_m = [0.0, 0.0]\n";
+    return text;
+  };
+  auto loads = [&](int copies, uint64_t bytes) {
+    try {
+      ParseSceneToml(scene(copies), "test.toml", kExamples, kR, MemoryBudget{bytes, "test"});
+      return true;
+    } catch (const Error&) {
+      return false;
+    }
+  };
+  uint64_t low = 1, high = uint64_t{1} << 30;  // loads(1, high), !loads(1, low)
+  ASSERT_TRUE(loads(1, high));
+  while (high - low > 1) {
+    uint64_t middle = low + (high - low) / 2;
+    (loads(1, middle) ? high : low) = middle;
+  }
+  EXPECT_TRUE(loads(1, high));
+  try {
+    ParseSceneToml(scene(10), "test.toml", kExamples, kR, MemoryBudget{high, "test"});
+    FAIL() << "ten models loaded within the budget of one";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.field(), "mesh[1].gltf") << e.what();
+    EXPECT_NE(e.allowed().find("the glTF models before mesh[1]"), std::string::npos) << e.what();
+  }
+}
+
 TEST(SceneFile, MissingFileNamesThePath) {
   try {
     LoadSceneFile(kExamples / "no-such-scene.toml", kR);

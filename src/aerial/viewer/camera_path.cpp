@@ -64,6 +64,35 @@ void CheckSunKeysInAllOrNone(const TomlReader& r, const std::vector<CameraKeyfra
               r.WhereOf(TomlReader::Index("keyframe", i)));
 }
 
+// The camera's position s of the way from a to b (s in [0, 1]): Apply's interpolation.
+glm::dvec3 PositionBetween(const CameraKeyframe& a, const CameraKeyframe& b, double s) {
+  return a.position_m + s * (b.position_m - a.position_m);
+}
+
+// What the path interpolates between keyframes a and b (keyframe[index - 1] and keyframe[index])
+// must be as valid as each keyframe: the camera meets every value of the segment. Linear
+// interpolation keeps an angle between two valid ones in its range, so only the position needs a
+// check: a straight line between two valid positions can pass through the planet. Its lowest
+// point is the point of the segment nearest the planet's center.
+void CheckSegment(const TomlReader& r, const CameraKeyframe& a, const CameraKeyframe& b, size_t index,
+                  double planet_radius_m) {
+  const glm::dvec3 center(0.0, 0.0, -planet_radius_m), step = b.position_m - a.position_m;
+  double length2 = glm::dot(step, step);
+  double s = length2 > 0.0 ? std::clamp(glm::dot(center - a.position_m, step) / length2, 0.0, 1.0) : 0.0;
+  const std::string from = TomlReader::Index("keyframe", index - 1), to = TomlReader::Index("keyframe", index);
+  const std::string field = from + " to " + to;
+  try {
+    CheckCameraPosition(PositionBetween(a, b, s), planet_radius_m, field,
+                        r.WhereOf(TomlReader::Join(to, "position_m")));
+  } catch (const Error& e) {
+    throw Error(e.field(), e.value(),
+                e.allowed() + " all along the segment, which reaches this point at t = " +
+                    FormatNumber(a.time_s + s * (b.time_s - a.time_s)) +
+                    " s (the camera moves in a straight line: a keyframe between them can lead it around)",
+                e.where());
+  }
+}
+
 }  // namespace
 
 CameraPath CameraPath::Parse(std::string_view text, const std::string& where, double planet_radius_m) {
@@ -88,6 +117,7 @@ CameraPath CameraPath::Parse(std::string_view text, const std::string& where, do
                   r.WhereOf(time_field));
     }
     CheckSunKeysInAllOrNone(r, path.keyframes_, i);
+    if (i > 0) CheckSegment(r, path.keyframes_[i - 1], path.keyframes_[i], i, planet_radius_m);
   }
   return path;
 }
@@ -123,7 +153,7 @@ double Lerp(double a, double b, double s) { return a + s * (b - a); }
 
 void CameraPath::Apply(double t_s, Camera& camera) const {
   auto [a, b, s] = SegmentAt(keyframes_, t_s);
-  camera.position = a.position_m + s * (b.position_m - a.position_m);
+  camera.position = PositionBetween(a, b, s);
   camera.yaw_deg = Lerp(a.yaw_deg, b.yaw_deg, s);
   camera.pitch_deg = Lerp(a.pitch_deg, b.pitch_deg, s);
 }

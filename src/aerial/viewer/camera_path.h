@@ -12,8 +12,12 @@
 //   sun_zenith_deg = 60.0          # optional, in every keyframe or in none: the sun moves
 //   sun_azimuth_deg = 250.0        # with the camera, interpolated the same way
 //
-// Every camera key of a keyframe is required; the sun's keys come as a pair. Errors name the key ("keyframe[2].position_m"), the value
-// and the allowed range, at "file:line:column". Before the first keyframe's time the camera
+// Every camera key of a keyframe is required; the sun's keys come as a pair. Errors name the key
+// ("keyframe[2].position_m"), the value and the allowed range, at "file:line:column". What the
+// path passes through between keyframes is checked too: a segment whose straight line runs below
+// the altitudes a keyframe may have (through the planet) is refused naming both keyframes
+// ("keyframe[1] to keyframe[2]"), its lowest point and when the camera would reach it. Before the
+// first keyframe's time the camera
 // holds it, after the last it holds the last.
 #include <filesystem>
 #include <optional>

@@ -122,6 +122,28 @@ TEST(CameraPath, WithoutSunKeysTheSunStays) {
   Sun sun{.zenith_deg = 45.0, .azimuth_deg = 100.0};
   path.ApplySun(1.0, sun);
   EXPECT_EQ(sun, (Sun{.zenith_deg = 45.0, .azimuth_deg = 100.0}));
+// Two keyframes, each at a valid altitude, whose straight line between them runs through the
+// planet: keyframe[1] stands at the antipode of keyframe[0] (0 m up on the far side), so the
+// camera would cross the planet's center at t = 0.5 s. Before, the path loaded and the viewer drew
+// from inside the planet (a black frame), positions `render` refuses.
+TEST(CameraPath, ASegmentThroughThePlanetIsRefusedNamingItsKeyframes) {
+  const std::string path = "[[keyframe]]\ntime_s = 0.0\nposition_m = [0.0, 0.0, 0.0]\nyaw_deg = 0.0\n"
+                           "pitch_deg = 0.0\n[[keyframe]]\ntime_s = 1.0\nposition_m = [0.0, 0.0, -12720000.0]\n"
+                           "yaw_deg = 0.0\npitch_deg = 0.0\n";
+  try {
+    CameraPath::Parse(path, "path.toml", kR);
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.field(), "keyframe[0] to keyframe[1]");
+    EXPECT_EQ(e.value(), "[0, 0, -6360000] (altitude -6360000 m)");
+    EXPECT_NE(e.allowed().find("at t = 0.5 s"), std::string::npos) << e.what();
+    EXPECT_EQ(e.where(), "path.toml:8:14") << "keyframe[1].position_m";
+  }
+  // A segment 100 km long with its ends 227 m up passes 30 m over the ground at its middle: allowed.
+  const std::string chord = "[[keyframe]]\ntime_s = 0.0\nposition_m = [-50000.0, 0.0, 30.0]\nyaw_deg = 0.0\n"
+                            "pitch_deg = 0.0\n[[keyframe]]\ntime_s = 1.0\nposition_m = [50000.0, 0.0, 30.0]\n"
+                            "yaw_deg = 0.0\npitch_deg = 0.0\n";
+  EXPECT_NO_THROW(CameraPath::Parse(chord, "path.toml", kR));
 }
 
 // "x.x...x", parts parts.

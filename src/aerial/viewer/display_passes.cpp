@@ -12,6 +12,8 @@ using vk::kUniform;
 struct ToneMapPush {
   float target_size[2];
   float exposure;
+  float padding;  // a vec3 starts at a multiple of 16 bytes
+  float white_balance[3];
 };
 
 struct TermPush {
@@ -78,8 +80,10 @@ DisplayPasses::DisplayPasses(const vk::Context& context, ::vk::RenderPass render
                                       sizeof(DifferencePush))) {}
 
 void DisplayPasses::RecordToneMap(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
-                                  const SampledImage& radiance, float exposure) const {
-  ToneMapPush push{{float(extent.width), float(extent.height)}, exposure};
+                                  const SampledImage& radiance, float exposure,
+                                  const std::array<float, 3>& white_balance) const {
+  ToneMapPush push{{float(extent.width), float(extent.height)}, exposure, 0.0f,
+                   {white_balance[0], white_balance[1], white_balance[2]}};
   const bool same_size = radiance.extent.width == extent.width && radiance.extent.height == extent.height;
   (same_size ? tone_map_ : tone_map_resampled_).Bind(cmd, {Linear(radiance)}, &push);
   vk::DrawFullScreenTriangle(cmd);

@@ -5,6 +5,8 @@
 // read the renderer's images, as aerial's public API hands them out (aerial/renderer.h): the
 // frame itself is always SceneRenderer::Record's, as in
 // `aerial render`.
+#include <array>
+
 #include "aerial/renderer.h"
 #include "aerial/vk/graphics_pipeline.h"
 
@@ -18,10 +20,10 @@ class DisplayPasses {
   DisplayPasses(const vk::Context& context, ::vk::RenderPass render_pass, ::vk::Format format);
 
   // Each records one draw over a target of `extent` inside the caller's render pass.
-  // The picture: radiance times exposure through ACES and sRGB (shaders/view/present.frag),
-  // resampled bilinearly to the target.
-  void RecordToneMap(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
-                     const SampledImage& radiance, float exposure) const;
+  // The picture: radiance times the white balance's gains and the exposure through ACES and sRGB
+  // (shaders/view/present.frag), resampled bilinearly to the target.
+  void RecordToneMap(const vk::CommandBuffer& cmd, ::vk::Extent2D extent, const SampledImage& radiance,
+                     float exposure, const std::array<float, 3>& white_balance = {1.0f, 1.0f, 1.0f}) const;
 
   enum class Term { kRayleigh = 0, kMie = 1, kTransmittance = 2 };
   // One term of the aerial perspective alone (shaders/view/inscatter.frag), for the renderer's

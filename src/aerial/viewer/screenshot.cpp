@@ -6,7 +6,7 @@
 
 namespace aerial::viewer {
 
-std::string SaveScreenshots(const SceneRenderer& renderer, double exposure,
+std::string SaveScreenshots(const SceneRenderer& renderer, const ToneMapOptions& png,
                             const std::filesystem::path& directory) {
   std::time_t now = std::time(nullptr);
   std::tm local{};
@@ -14,11 +14,11 @@ std::string SaveScreenshots(const SceneRenderer& renderer, double exposure,
   char stem[64];
   std::strftime(stem, sizeof stem, "aerial-view-%Y%m%d-%H%M%S", &local);
   ImageRgbF frame = renderer.ReadOutput();
-  std::filesystem::path png = directory / (std::string(stem) + ".png");
+  std::filesystem::path png_path = directory / (std::string(stem) + ".png");
   std::filesystem::path exr = directory / (std::string(stem) + ".exr");
-  WriteImage(png, frame, {.exposure = exposure});
+  WriteImage(png_path, frame, png);
   WriteImage(exr, frame, {});
-  return "Saved " + png.string() + " and " + exr.string();
+  return "Saved " + png_path.string() + " and " + exr.string();
 }
 
 }  // namespace aerial::viewer

@@ -251,7 +251,7 @@ double Viewer::Impl::MaxSunZenithDeg() const {
 }
 
 void Viewer::Impl::Say(std::string message) {
-  std::printf("%s\n", message.c_str());
+  std::printf("%s\n", Printable(message).c_str());
   std::fflush(stdout);
   message_ = std::move(message);
 }
@@ -270,7 +270,7 @@ void Viewer::Impl::Act(const PanelEvents& events, const std::vector<int>& keys, 
   }
   if (screenshot) {
     try {
-      Say(SaveScreenshots(renderer, DisplayExposure()));
+      Say(SaveScreenshots(renderer, {.exposure = DisplayExposure(), .white_balance = options_.white_balance}));
     } catch (const Error& e) {
       Say(std::string("screenshot: ") + e.what());
     }
@@ -327,7 +327,9 @@ void Viewer::Impl::RecordDisplay(const vk::CommandBuffer& cmd, uint32_t slot,
     timer.Begin(cmd, PassName(view));
     switch (view) {
       case DebugView::kFinal:
-        display_.RecordToneMap(cmd, extent, primary.output(), DisplayExposure());
+        display_.RecordToneMap(cmd, extent, primary.output(), DisplayExposure(),
+                               {float(options_.white_balance[0]), float(options_.white_balance[1]),
+                                float(options_.white_balance[2])});
         break;
       case DebugView::kRayleigh:
       case DebugView::kMie:
@@ -453,7 +455,8 @@ void Viewer::Impl::Run() {
   // Exposed as `aerial render` exposes the same frame, so that the two can be compared.
   if (!options_.screenshot.empty() && shown_) {
     ImageRgbF frame = shown_->ReadOutput();
-    WriteImage(options_.screenshot, frame, {.exposure = options_.exposure.MultiplierFor(frame)});
+    WriteImage(options_.screenshot, frame,
+               {.exposure = options_.exposure.MultiplierFor(frame), .white_balance = options_.white_balance});
   }
   if (!options_.stats.empty()) stats_.Write(options_.stats);
 }

@@ -7,6 +7,7 @@
 // are asked for and adopted apart from the window (table_supply.h) and made on a worker thread
 // with its own device (table_worker.h), so the window keeps drawing
 // with the old tables until the new ones arrive.
+#include <array>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -35,6 +36,9 @@ struct ViewerOptions {
   DeviceOptions device;             // device and validation; the window's needs are added
   RendererOptions render;           // width and height: the window's first size
   Exposure exposure;                // automatic by default (aerial/image/exposure.h)
+  // Gains of the pictures (the window, --screenshot and F12's PNG): the sun's white balance with
+  // --white-balance on, {1, 1, 1} off; EXR screenshots stay linear radiance.
+  std::array<double, 3> white_balance = {1.0, 1.0, 1.0};
   int frames = 0;                   // > 0: close after that many presented frames
   std::filesystem::path screenshot;  // written after the last frame, .png or .exr (checked by the caller)
   std::filesystem::path stats;       // frame statistics (frame_stats.h), written at exit

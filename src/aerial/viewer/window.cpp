@@ -4,6 +4,7 @@
 #include <GLFW/glfw3.h>
 
 #include "aerial/error.h"
+#include "aerial/vk/loader_files.h"
 
 namespace aerial::viewer {
 namespace {
@@ -17,6 +18,7 @@ void OnGlfwError(int code, const char* description) {
 }  // namespace
 
 GlfwSession::GlfwSession() {
+  vk::CheckLoaderFiles();  // glfwVulkanSupported starts the Vulkan loader
   glfwSetErrorCallback(&OnGlfwError);
   if (!glfwInit())
     throw Error("window system", g_last_glfw_error, "a display (set DISPLAY, or run under xvfb-run)");

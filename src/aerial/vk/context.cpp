@@ -5,7 +5,7 @@
 #include <cstdlib>
 
 #include "aerial/error.h"
-#include "aerial/vk/driver_manifests.h"
+#include "aerial/vk/loader_files.h"
 
 namespace aerial::vk {
 namespace {
@@ -66,7 +66,7 @@ bool HasLayer(const ::vk::raii::Context& loader, const char* name) {
 int Context::ValidationMessageCount() { return g_validation_messages.load(); }
 
 Context::Context(const ContextCreateInfo& info) {
-  CheckDriverManifests();  // before the loader opens them
+  CheckLoaderFiles();  // before the loader opens them
   validation_ = info.validation || EnvironmentFlag("AERIAL_VALIDATION");
   const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
   if (validation_ && !HasLayer(loader_, kValidationLayer))
