@@ -122,6 +122,8 @@ TEST(CameraPath, WithoutSunKeysTheSunStays) {
   Sun sun{.zenith_deg = 45.0, .azimuth_deg = 100.0};
   path.ApplySun(1.0, sun);
   EXPECT_EQ(sun, (Sun{.zenith_deg = 45.0, .azimuth_deg = 100.0}));
+}
+
 // Two keyframes, each at a valid altitude, whose straight line between them runs through the
 // planet: keyframe[1] stands at the antipode of keyframe[0] (0 m up on the far side), so the
 // camera would cross the planet's center at t = 0.5 s. Before, the path loaded and the viewer drew
