@@ -44,7 +44,7 @@ vec4 GetFragmentRadiance(float sun_visibility) {
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
   Inscatter segment;
   if (kAerialPerPixel != AERIAL_FROXELS) {
-    segment = GetMeshAerialPerspectivePerPixel(r, mu, mu_s, nu, distance);
+    segment = GetMeshAerialPerspectivePerPixel(ray, r, mu, mu_s, nu, distance);
   } else {
     segment = GetAerialPerspective(rayleigh_froxels, mie_froxels, transmittance_froxels,
                                    gl_FragCoord.xy / frame.viewport.xy, distance);
