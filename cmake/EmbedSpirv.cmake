@@ -1,20 +1,10 @@
-# Turns a SPIR-V binary (IN) into a comma-separated list of 32-bit words (OUT) for #include.
+# Turns a SPIR-V binary (IN) into a comma-separated list of 32-bit words (OUT) for #include, 16
+# words a line. Whole-string regular expressions: a loop over substrings copies the string at
+# each word and took minutes for a 200 KB shader.
 file(READ ${IN} hex HEX)
-string(LENGTH "${hex}" n)
-set(words "")
-set(i 0)
-while(i LESS n)
-  # SPIR-V is little-endian: reverse the four bytes of each word.
-  string(SUBSTRING "${hex}" ${i} 8 w)
-  string(SUBSTRING "${w}" 0 2 b0)
-  string(SUBSTRING "${w}" 2 2 b1)
-  string(SUBSTRING "${w}" 4 2 b2)
-  string(SUBSTRING "${w}" 6 2 b3)
-  string(APPEND words "0x${b3}${b2}${b1}${b0},")
-  math(EXPR i "${i} + 8")
-  math(EXPR col "${i} % 128")
-  if(col EQUAL 0)
-    string(APPEND words "\n")
-  endif()
-endwhile()
+# SPIR-V is little-endian: reverse the four bytes of each word.
+string(REGEX REPLACE "(..)(..)(..)(..)" "0x\\4\\3\\2\\1," words "${hex}")
+set(word "0x........,")
+string(REPEAT "${word}" 16 line)
+string(REGEX REPLACE "(${line})" "\\1\n" words "${words}")
 file(WRITE ${OUT} "${words}\n")

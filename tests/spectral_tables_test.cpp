@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <optional>
 
@@ -48,8 +49,9 @@ const std::vector<ViewAngles> kLowSunViews = {{0.0, 80.0, 88.0, 0.0}, {0.0, 80.0
                                               {10e3, 80.0, 88.0, 180.0}, {10e3, 80.0, 90.0, 0.0}};
 constexpr double kPointDistanceM = 10e3;
 
-// The tables' values at `views`, and the spectral reference's (single scattering, the default
-// wavelength count), with the radiance to a point 10 km along each view.
+// The tables' values at `views`, and the spectral reference's (single scattering, 48 wavelengths
+// over 360-830 nm: neither the tables' wavelengths nor their conversion), with the radiance to a
+// point 10 km along each view.
 struct ViewsCompared {
   std::vector<ProbeResult> tables, reference;
 };
@@ -62,18 +64,18 @@ ViewsCompared CompareViews(ColourMode colour, const std::vector<ViewAngles>& vie
   ViewsCompared compared{ProbeTables(tables, queries), {}};
   for (const ProbeQuery& query : queries)
     compared.reference.push_back(ProbeReferenceSpectral(AtmosphereParameters::Earth(), query.ray, kPointDistanceM, 1,
-                                                        PrecomputeOptions{}.spectral_wavelengths));
+                                                        spectrum::SpectralSampling::Midpoint(48)));
   return compared;
 }
 
 class SpectralTables : public GpuTest {};
 
-// The daylight target, du'v' <= 0.003 and luminance within 1%, for the sky radiance, the
-// sun's irradiance and the radiance to a point 10 km away; measured 3e-5 and 0.1% for the sky at
-// the second view. The radiance to a point is marched at render time through the three-channel
-// transmittance table: with the sunlight read per wavelength (GetPathSunlight) it is within
-// 1e-5 and 0.01%; with the channels' transmittance as it is, 0.0013 and 1.45% off at the last
-// view (docs/colour.md, "Transmittance").
+// Daylight's target, du'v' <= 0.001 and luminance within 1%, for the sky radiance, the sun's
+// irradiance and the radiance to a point 10 km away, against 48 wavelengths: measured 1.4e-4 and
+// 0.16% at most. With the midpoint rule at 12 wavelengths over 360-830 nm the tables are
+// 0.0014-0.0029 off here, a near-constant shift. The radiance to a point is marched
+// at render time with the sunlight read per wavelength (GetPathSunlight, docs/colour.md,
+// "Transmittance").
 TEST_F(SpectralTables, MatchTheSpectralReferenceInColour) {
   ViewsCompared c = CompareViews(ColourMode::kSpectral);
   for (size_t i = 0; i < kViews.size(); ++i) {
@@ -82,23 +84,28 @@ TEST_F(SpectralTables, MatchTheSpectralReferenceInColour) {
           std::pair{c.tables[i].sun_irradiance, c.reference[i].sun_irradiance},
           std::pair{c.tables[i].radiance_to_point, c.reference[i].radiance_to_point}}) {
       ColourError error = Compare(measured, wanted);
-      EXPECT_LT(error.chromaticity, 0.003) << "view " << i;
+      std::printf("view %zu: du'v' %.5f, luminance %.3f%%\n", i, error.chromaticity, 100 * error.luminance);
+      EXPECT_LT(error.chromaticity, 0.001) << "view " << i;
       EXPECT_LT(error.luminance, 0.01) << "view " << i;
     }
   }
 }
 
-// The low sun's target, du'v' <= 0.008, where the sunlight crosses 10-40 air masses: the sun's
-// irradiance and the radiance to a point (single scattering: the sun's light through the air).
-// Measured at most 0.0014 (the sun's irradiance on the ground with the sun's centre on the
-// horizon); with the channels' transmittance as it is, 0.0125 and 0.0143 at the second view.
+// The low sun, where the sunlight crosses 10-40 air masses: the sun's irradiance and the radiance
+// to a point (single scattering: the sun's light through the air), against 48 wavelengths. The
+// target is du'v' <= 0.001; measured 1.5e-4 at most but with the sun's centre on the horizon
+// (view 1), where the sun's irradiance on the ground is 0.0014 off and the radiance to a point
+// 0.0009: the bound holds what is met, and docs/colour.md says what is left.
 TEST_F(SpectralTables, MatchTheSpectralReferenceInColourAtTheLowSun) {
   ViewsCompared c = CompareViews(ColourMode::kSpectral, kLowSunViews);
   for (size_t i = 0; i < kLowSunViews.size(); ++i)
     for (auto [measured, wanted] :
          {std::pair{c.tables[i].sun_irradiance, c.reference[i].sun_irradiance},
-          std::pair{c.tables[i].radiance_to_point, c.reference[i].radiance_to_point}})
-      EXPECT_LT(Compare(measured, wanted).chromaticity, 0.008) << "view " << i;
+          std::pair{c.tables[i].radiance_to_point, c.reference[i].radiance_to_point}}) {
+      const ColourError error = Compare(measured, wanted);
+      std::printf("low sun view %zu: du'v' %.5f, luminance %.3f%%\n", i, error.chromaticity, 100 * error.luminance);
+      EXPECT_LT(error.chromaticity, 0.0015) << "view " << i;
+    }
 }
 
 // Three wavelengths shown as RGB miss the same sky's chromaticity by more than the target (by
@@ -124,7 +131,7 @@ TEST_F(SpectralTables, HigherOrdersAtEveryOtherWavelengthKeepTheColour) {
   const AtmosphereParameters earth = AtmosphereParameters::Earth();
   const AtmosphereTables& tables = CachedTables(options);
 
-  const spectrum::SpectralSampling sampling(options.spectral_wavelengths);
+  const spectrum::SpectralSampling sampling = spectrum::SpectralSampling::ForTables(options.spectral_wavelengths);
   const spectrum::SpectralAtmosphere spectral(earth);
   TableCache every_order = tables.Download();
   std::vector<std::vector<float>> sums;

@@ -587,7 +587,7 @@ TEST_F(VdbExport, SpectralChannelsAreNamedLinearSrgb) {
   EXPECT_EQ(file.metadata.count("wavelengths_nm"), 0u);
   std::string sampling = Meta<std::string>(file.metadata, "spectral_wavelengths_nm");
   EXPECT_EQ(std::count(sampling.begin(), sampling.end(), ','), options.spectral_wavelengths - 1) << sampling;
-  EXPECT_EQ(sampling.substr(0, sampling.find(',')), "379.583333") << sampling;  // 360 nm + half a 39.17 nm bin
+  EXPECT_EQ(sampling.substr(0, sampling.find(',')), "407.708333") << sampling;  // 395 nm + half a 25.42 nm bin
   for (const char* name : {"rayleigh_inscatter", "mie_inscatter", "transmittance"}) {
     const VdbGridData* grid = file.Find(name);
     ASSERT_NE(grid, nullptr) << name;

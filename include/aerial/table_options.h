@@ -11,7 +11,7 @@ enum class LutVariant { k4D, k3D };
 enum class TablePrecision { kFloat32, kFloat16 };
 // What the tables' three channels hold: radiance at the atmosphere's three wavelengths (rgb, as
 // Bruneton 2008), or linear sRGB converted with the CIE 1931 observer from a precompute at
-// spectral_wavelengths wavelengths over 360-830 nm (spectral, Bruneton 2017's "precomputed
+// spectral_wavelengths wavelengths over 395-700 nm (spectral, Bruneton 2017's "precomputed
 // luminance"; docs/colour.md).
 enum class ColourMode { kRgb, kSpectral };
 
@@ -71,11 +71,11 @@ struct PrecomputeOptions {
   // After the last order, add the orders beyond it as a geometric series per texel (the tables then
   // stand for the whole series); off: exactly orders 1..N. Needs orders >= 3.
   bool close_series = true;
-  ColourMode colour = ColourMode::kRgb;
+  ColourMode colour = ColourMode::kRgb;  // within 1.x; every command defaults to spectral
   // Wavelengths of the spectral mode, a multiple of 6: each has its single scattering, every other
   // one its orders >= 2 (the others read theirs between them), in precomputes of three. 12 put the
-  // direct sun within 0.0015 of the 1 nm integral's chromaticity u'v', 9 within 0.006, 6 within
-  // 0.023 (docs/colour.md).
+  // colour of sky light within 1.5e-4 in u'v' of the CIE integral, with weights fitted to it
+  // (spectrum/sky_light_conversion.h, docs/colour.md).
   int spectral_wavelengths = 12;
   TableResolution resolution;
   // Small()'s density grid: the scattering density of each order integrates the incident light over

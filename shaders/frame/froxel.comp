@@ -4,8 +4,8 @@
 // from the camera to its slice's distance along the ray through its screen-space center. One
 // invocation walks one froxel column with one march (inscatter_march.glsl), one step per slice,
 // storing the running integral at each slice center. Each step's single scattering is scaled by
-// the fraction of the step that sees the sun (the shadow map, shadow.glsl): light shafts and
-// mountain shadows in the air.
+// the fraction of the step that sees the sun (the shadow map, shadowed_march.glsl): light shafts
+// and mountain shadows in the air.
 #include "blocks_not_inlined.glsl"
 // FroxelVolume's variant for a sun high over every froxel (froxel/froxel_pass_variant.h).
 layout(constant_id = 2) const bool kSunHighEverywhere = false;
@@ -13,7 +13,7 @@ layout(constant_id = 2) const bool kSunHighEverywhere = false;
 #include "froxel.glsl"
 #include "frame.glsl"
 #define SHADOW_BINDING 7
-#include "shadow.glsl"
+#include "shadowed_march.glsl"
 // Wide in x: a CPU implementation vectorizes across the invocations of a workgroup's rows.
 layout(local_size_x = 32, local_size_y = 1) in;
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
@@ -24,20 +24,7 @@ layout(set = 0, binding = 6) writeonly uniform image3D transmittance_froxels;
 
 // One march step per slice: the slices' quadratic spacing keeps each step a similar fraction of
 // its distance from the camera, and 1 and 2 steps gave the same image (froxel vs per-pixel 0.2263%
-// and 0.2264% relative RMSE on the noon preset beyond 1 km). The sun's visibility changes far
-// faster than the air's light (a shadow edge), so each step takes it at VISIBILITY_SAMPLES points
-// spread over the step (their centres) and uses their mean.
-const int VISIBILITY_SAMPLES = 4;
-
-float StepSunVisibility(vec3 ray, float from, float to) {
-  float visible = 0.0;
-  for (int i = 0; i < VISIBILITY_SAMPLES; ++i) {
-    float t = (float(i) + 0.5) / float(VISIBILITY_SAMPLES);
-    vec3 relative = ray * mix(from, to, t);
-    visible += SunVisibilityInAir(relative, frame.camera_planet_position.xyz + relative);
-  }
-  return visible / float(VISIBILITY_SAMPLES);
-}
+// and 0.2264% relative RMSE on the noon preset beyond 1 km).
 
 void main() {
   ivec2 column = ivec2(gl_GlobalInvocationID.xy);
@@ -52,7 +39,7 @@ void main() {
   for (int slice = 0; slice < size.z; ++slice) {
     float distance = FroxelSliceDistance(float(slice) + 0.5, float(size.z), frame.froxel_depth.x);
     AdvanceInscatterMarch(transmittance_texture, multiple_density_texture, march, distance,
-                          StepSunVisibility(ray, previous, distance));
+                          GetStepSunVisibility(ray, previous, distance));
     previous = distance;
     Inscatter inscatter = GetInscatterMarchResult(march);
     ivec3 froxel = ivec3(column, slice);

@@ -26,7 +26,7 @@ void main() {
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
   Inscatter segment;
   if (kAerialPerPixel != AERIAL_FROXELS) {
-    segment = GetMeshAerialPerspectivePerPixel(r, mu, mu_s, nu, distance);
+    segment = GetMeshAerialPerspectivePerPixel(ray, r, mu, mu_s, nu, distance);
   } else {
     segment.rayleigh = vertex_rayleigh;
     segment.mie = vertex_mie;

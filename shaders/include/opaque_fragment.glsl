@@ -49,8 +49,8 @@ float GetFragmentSunVisibility() {
 }
 
 // The segment of air between the camera and the fragment (see above).
-Inscatter GetFragmentSegment(float r, float mu, float mu_s, float nu, float distance) {
-  if (kAerialPerPixel != AERIAL_FROXELS) return GetMeshAerialPerspectivePerPixel(r, mu, mu_s, nu, distance);
+Inscatter GetFragmentSegment(vec3 ray, float r, float mu, float mu_s, float nu, float distance) {
+  if (kAerialPerPixel != AERIAL_FROXELS) return GetMeshAerialPerspectivePerPixel(ray, r, mu, mu_s, nu, distance);
   if ((kReadsLeftOut & kLeaveOutFroxelReads) != 0) return Inscatter(vec3(1e-3), vec3(1e-4), vec3(0.9));
   if (kFroxelsPerVertex) return Inscatter(vertex_rayleigh, vertex_mie, vertex_transmittance);
   return GetAerialPerspective(rayleigh_froxels, mie_froxels, transmittance_froxels,
@@ -65,7 +65,7 @@ vec4 GetFragmentRadiance(float sun_visibility) {
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
   vec3 surface_radiance =
       ShadeLambertian(LambertianRadiance(sun_radiance, sky_radiance), normalize(surface_normal), sun_visibility);
-  return vec4(ApplyAerialPerspective(surface_radiance, GetFragmentSegment(r, mu, mu_s, nu, distance), nu), 1.0);
+  return vec4(ApplyAerialPerspective(surface_radiance, GetFragmentSegment(ray, r, mu, mu_s, nu, distance), nu), 1.0);
 }
 
 #endif

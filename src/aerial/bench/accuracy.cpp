@@ -5,6 +5,7 @@
 #include "aerial/api/impl.h"
 #include "aerial/renderer.h"
 #include "aerial/scene.h"
+#include "aerial/spectrum/spectral_sampling.h"
 
 namespace aerial::bench {
 
@@ -86,8 +87,10 @@ std::vector<ViewReference> SampleViews(const Tables& tables, Scene& scene, const
     renderer->Render(scene);
     const Renderer& frame = ImplOf(*renderer).renderer;
     references.push_back(options.colour == ColourMode::kSpectral
-                             ? SampleSpectralReference(atmosphere, options.spectral_wavelengths, scene,
-                                                       frame.frame_uniforms(), frame.ReadSurface(), sampling, on_pixel)
+                             ? SampleSpectralReference(atmosphere,
+                                                       spectrum::SpectralSampling::ForTables(options.spectral_wavelengths),
+                                                       scene, frame.frame_uniforms(), frame.ReadSurface(), sampling,
+                                                       on_pixel)
                              : SampleReference(model, scene, frame.frame_uniforms(), frame.ReadSurface(), sampling,
                                                on_pixel));
   }

@@ -18,7 +18,7 @@ struct TableTier {
   bool small_base = false;  // transmittance, irradiance and sample counts of Small() (else Default())
   int r = 32, mu = 128, mu_s = 32, nu = 8;
 
-  PrecomputeOptions Options(LutVariant variant, ColourMode colour = ColourMode::kRgb) const;
+  PrecomputeOptions Options(LutVariant variant, ColourMode colour = ColourMode::kSpectral) const;
 };
 
 // "RxMUxMU_SxNU" of the scattering tables, e.g. "32x128x32x8".
@@ -38,9 +38,8 @@ struct BenchPlan {
   // their CPU reference lights every surface point as if nothing stood between it and the sun.
   bool shadows = true;
   // What the tables' channels hold (--colour). Spectral tables are compared with the spectral
-  // reference (validation/reference_sampling.h, SampleSpectralReference): four times the
-  // reference's work at the default 12 wavelengths.
-  ColourMode colour = ColourMode::kRgb;
+  // reference (validation/reference_sampling.h, SampleSpectralReference).
+  ColourMode colour = ColourMode::kSpectral;
   int image_width = 1280, image_height = 720;  // the accuracy renders
   int reference_columns = 16, reference_rows = 9;
   int reference_paths = 32768;  // Monte Carlo paths per reference query (orders >= 2)

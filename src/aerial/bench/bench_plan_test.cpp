@@ -48,15 +48,15 @@ BenchResults QuickResults() {
 // --colour reaches every table the bench precomputes, and the results say which they were.
 TEST(BenchPlan, ColourReachesTheTablesAndTheResults) {
   BenchPlan plan = BenchPlan::Quick();
-  EXPECT_EQ(plan.colour, ColourMode::kRgb);  // the default: bench's reference time (docs/colour.md)
-  plan.colour = ColourMode::kSpectral;
+  EXPECT_EQ(plan.colour, ColourMode::kSpectral);  // the default of every command (docs/colour.md)
+  plan.colour = ColourMode::kRgb;
   for (const TableTier& tier : plan.tiers)
     for (LutVariant variant : {LutVariant::k4D, LutVariant::k3D})
-      EXPECT_EQ(tier.Options(variant, plan.colour).colour, ColourMode::kSpectral) << tier.name;
+      EXPECT_EQ(tier.Options(variant, plan.colour).colour, ColourMode::kRgb) << tier.name;
   BenchResults results = QuickResults();
-  EXPECT_EQ(ResultsJson(results)["settings"]["colour"], "rgb");
-  results.plan.colour = ColourMode::kSpectral;
   EXPECT_EQ(ResultsJson(results)["settings"]["colour"], "spectral");
+  results.plan.colour = ColourMode::kRgb;
+  EXPECT_EQ(ResultsJson(results)["settings"]["colour"], "rgb");
 }
 
 TEST(BenchPlan, AFrameNotTimedIsReportedAsNotMeasured) {

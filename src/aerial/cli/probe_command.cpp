@@ -84,7 +84,8 @@ void RunProbe(const ProbeOptions& options) {
   std::vector<ProbeResult> at_wavelengths;  // the spectral reference's, group by group
   if (options.reference) {
     result = spectral ? ProbeReferenceSpectral(atmosphere, ray, options.distance_m, precompute.RepresentedOrders(),
-                                               precompute.spectral_wavelengths, {}, &at_wavelengths)
+                                               spectrum::SpectralSampling::ForTables(precompute.spectral_wavelengths),
+                                               {}, &at_wavelengths)
                       : ProbeReference(atmosphere, ray, options.distance_m, precompute.RepresentedOrders());
   } else {
     Device device(options.tables.MakeDeviceOptions());
@@ -103,7 +104,8 @@ void RunProbe(const ProbeOptions& options) {
   // linear sRGB converted from the precompute's wavelengths (which the tables do not keep apart).
   if (spectral) {
     json["channels"] = "linear_srgb";
-    json["spectral_wavelengths_nm"] = spectrum::SpectralSampling(precompute.spectral_wavelengths).wavelengths_nm();
+    json["spectral_wavelengths_nm"] =
+        spectrum::SpectralSampling::ForTables(precompute.spectral_wavelengths).wavelengths_nm();
   } else {
     json["channels"] = "wavelengths_nm";
     json["wavelengths_nm"] = ToJson(atmosphere.wavelengths_nm);
@@ -124,8 +126,9 @@ void RunProbe(const ProbeOptions& options) {
     if (options.distance_m) json["radiance_to_point_std_error"] = ToJson(result.radiance_to_point_std_error);
   }
   if (!at_wavelengths.empty()) {
-    json["at_wavelengths"] = SpectralJson(at_wavelengths, spectrum::SpectralSampling(precompute.spectral_wavelengths),
-                                          options.distance_m.has_value());
+    json["at_wavelengths"] =
+        SpectralJson(at_wavelengths, spectrum::SpectralSampling::ForTables(precompute.spectral_wavelengths),
+                     options.distance_m.has_value());
   }
   std::printf("%s\n", json.dump(2).c_str());
 }
@@ -134,9 +137,6 @@ void RunProbe(const ProbeOptions& options) {
 
 void AddProbeCommand(CLI::App& app) {
   auto options = std::make_shared<ProbeOptions>();
-  // rgb unless asked: the probe reports quantities over wavelengths (`wavelengths_nm`), which
-  // the rgb tables' channels are and the spectral tables' linear sRGB channels are not.
-  options->tables.colour = "rgb";
   CLI::App* command = app.add_subcommand("probe", "Print the sky seen by one camera along one ray, as JSON");
   command->add_option("--altitude-m", options->view.altitude_m, "Camera altitude above the ground (m)")
       ->required();

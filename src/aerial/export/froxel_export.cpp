@@ -47,7 +47,7 @@ std::string ChannelsText(const FroxelFrame& frame) {
 // The wavelengths the channels come from: the atmosphere's three, or the spectral sampling's.
 std::pair<const std::string, VdbMetaValue> WavelengthsMetadata(const FroxelFrame& frame) {
   if (frame.colour != ColourMode::kSpectral) return {"wavelengths_nm", frame.atmosphere.wavelengths_nm};
-  const spectrum::SpectralSampling sampling(frame.spectral_wavelengths);
+  const spectrum::SpectralSampling sampling = spectrum::SpectralSampling::ForTables(frame.spectral_wavelengths);
   std::string list;
   for (double nm : sampling.wavelengths_nm()) {
     if (!list.empty()) list += ',';

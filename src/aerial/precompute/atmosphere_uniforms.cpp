@@ -26,8 +26,9 @@ std::array<GpuDensityLayer, 2> ToGpu(const DensityProfile& profile) {
 
 void SetSpectralSunlight(const AtmosphereParameters& atmosphere, const AtmosphereParameters& linear_srgb,
                          const PrecomputeOptions& options, AtmosphereUniforms& u) {
-  const spectrum::SpectralSunlight sunlight = spectrum::MakeSpectralSunlight(
-      spectrum::SpectralAtmosphere(atmosphere), linear_srgb, spectrum::SpectralSampling(options.spectral_wavelengths));
+  const spectrum::SpectralSunlight sunlight =
+      spectrum::MakeSpectralSunlight(spectrum::SpectralAtmosphere(atmosphere), linear_srgb,
+                                     spectrum::SpectralSampling::ForTables(options.spectral_wavelengths));
   const int terms = int(sunlight.exponents.size());
   if (terms > kMaxSpectralSunlightTerms) throw Error("wavelengths", std::to_string(terms), "at most 48");
   u.spectral_sunlight_terms = {terms, 0, 0, 0};

@@ -83,7 +83,7 @@ size_t TexelCount(const CachedTable& table) { return size_t(table.width) * table
 AtmosphereParameters ShaderAtmosphere(const AtmosphereParameters& atmosphere, const PrecomputeOptions& options) {
   if (options.colour == ColourMode::kRgb) return atmosphere;
   return spectrum::LinearSrgbAtmosphere(SpectralAtmosphere(atmosphere), atmosphere,
-                                        SpectralSampling(options.spectral_wavelengths));
+                                        SpectralSampling::ForTables(options.spectral_wavelengths));
 }
 
 int SpectralGroupCount(const PrecomputeOptions& options) { return options.spectral_wavelengths / 3; }
@@ -129,7 +129,7 @@ TableBytes SpectralPrecomputeScratchMemory(const PrecomputeOptions& options) {
 
 std::vector<vk::PassTime> PrecomputeSpectral(AtmosphereTables& tables, Progress* progress) {
   const PrecomputeOptions& options = tables.options();
-  const SpectralSampling sampling(options.spectral_wavelengths);
+  const SpectralSampling sampling = SpectralSampling::ForTables(options.spectral_wavelengths);
   const std::vector<double>& nm = sampling.wavelengths_nm();
   const int count = int(nm.size());
   const SpectralAtmosphere spectral(tables.atmosphere());

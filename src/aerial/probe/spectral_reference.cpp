@@ -17,10 +17,10 @@ Spectrum Over(const Spectrum& a, const Spectrum& b) { return {a[0] / b[0], a[1] 
 }  // namespace
 
 ProbeResult ProbeReferenceSpectral(const AtmosphereParameters& atmosphere, const RayParameters& ray,
-                                   std::optional<double> distance_m, int orders, int wavelengths,
+                                   std::optional<double> distance_m, int orders,
+                                   const spectrum::SpectralSampling& sampling,
                                    const reference::MonteCarloOptions& monte_carlo,
                                    std::vector<ProbeResult>* at_wavelengths) {
-  const spectrum::SpectralSampling sampling(wavelengths);
   const spectrum::SpectralAtmosphere spectral(atmosphere);
   LinearSrgbSum sky, sky_variance, irradiance, irradiance_variance, to_point, to_point_variance;
   LinearSrgbSum sun_irradiance, solar_radiance, sun, sunlit, sunlit_to_point;

@@ -1,11 +1,14 @@
 #pragma once
 // The CPU reference in colour: ProbeReference at every wavelength of a spectral sampling (the
 // atmosphere extended as the spectral precompute extends it, SpectralAtmosphere), converted to
-// linear sRGB by the same CIE tables as the spectral tables. It shares no code with the shaders.
+// linear sRGB by that sampling's conversion. It shares no code with the shaders. At
+// SpectralSampling::Midpoint(48) it is the truth the tables' colour is measured against; at the
+// tables' own sampling it shares their wavelengths and conversion, and measures the rest.
 #include <optional>
 #include <vector>
 
 #include "aerial/probe.h"
+#include "aerial/spectrum/spectral_sampling.h"
 
 namespace aerial {
 
@@ -14,7 +17,8 @@ namespace aerial {
 // propagate through the conversion's weights as independent errors. at_wavelengths (may be null)
 // receives the unconverted results, one per group of three wavelengths (SpectralSampling::Group).
 ProbeResult ProbeReferenceSpectral(const AtmosphereParameters& atmosphere, const RayParameters& ray,
-                                   std::optional<double> distance_m, int orders, int wavelengths,
+                                   std::optional<double> distance_m, int orders,
+                                   const spectrum::SpectralSampling& sampling,
                                    const reference::MonteCarloOptions& monte_carlo = {},
                                    std::vector<ProbeResult>* at_wavelengths = nullptr);
 

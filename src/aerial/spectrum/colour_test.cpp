@@ -22,7 +22,7 @@ TEST(Colour, D65IsWhiteInLinearSrgb) {
 // The equal-energy spectrum sits at x = y = 1/3, u'v' = (4/19, 9/19), and a flat spectrum of 1 has
 // Y = 1 in aerial's units; 48 wavelengths integrate it to 0.1%.
 TEST(Colour, EqualEnergySpectrumIsIlluminantE) {
-  SpectralSampling sampling(48);
+  const SpectralSampling sampling = SpectralSampling::Midpoint(48);
   Spectrum xyz = sampling.Xyz(std::vector<double>(48, 1.0));
   std::array<double, 2> uv = ChromaticityUv(xyz);
   EXPECT_NEAR(uv[0], 4.0 / 19.0, 1e-3);
@@ -34,7 +34,7 @@ TEST(Colour, EqualEnergySpectrumIsIlluminantE) {
 
 // The groups' matrices add up to the whole conversion (the spectral precompute relies on it).
 TEST(Colour, GroupsSumToTheWholeConversion) {
-  SpectralSampling sampling(12);
+  const SpectralSampling sampling = SpectralSampling::ForTables(12);
   std::vector<double> values = sampling.Sample([](double nm) { return 1.0 + std::sin(nm / 37.0); });
   Spectrum sum{};
   for (int g = 0; g < sampling.groups(); ++g) {

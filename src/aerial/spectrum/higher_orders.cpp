@@ -3,33 +3,23 @@
 #include <cmath>
 #include <utility>
 
+#include "aerial/spectrum/linear_system.h"
+
 namespace aerial::spectrum {
 
 std::vector<double> LeastSquaresWeights(const std::vector<std::vector<double>>& basis,
                                         const std::vector<double>& at) {
   // The fit's coefficients are c = (A^T A)^-1 A^T y, read at `at`: at . c = w . y with
-  // w = A (A^T A)^-1 at. Solve (A^T A) z = at by Gauss-Jordan elimination, then w = A z.
+  // w = A (A^T A)^-1 at = A z, where (A^T A) z = at.
   const size_t points = basis.size(), functions = at.size();
-  std::vector<std::vector<double>> system(functions, std::vector<double>(functions + 1, 0.0));
-  for (size_t k = 0; k < functions; ++k) {
+  std::vector<std::vector<double>> normal(functions, std::vector<double>(functions, 0.0));
+  for (size_t k = 0; k < functions; ++k)
     for (size_t l = 0; l < functions; ++l)
-      for (size_t j = 0; j < points; ++j) system[k][l] += basis[j][k] * basis[j][l];
-    system[k][functions] = at[k];
-  }
-  for (size_t k = 0; k < functions; ++k) {
-    size_t pivot = k;
-    for (size_t row = k + 1; row < functions; ++row)
-      if (std::abs(system[row][k]) > std::abs(system[pivot][k])) pivot = row;
-    std::swap(system[k], system[pivot]);
-    for (size_t row = 0; row < functions; ++row) {
-      if (row == k) continue;
-      const double factor = system[row][k] / system[k][k];
-      for (size_t col = k; col <= functions; ++col) system[row][col] -= factor * system[k][col];
-    }
-  }
+      for (size_t j = 0; j < points; ++j) normal[k][l] += basis[j][k] * basis[j][l];
+  const std::vector<double> z = SolveLinearSystem(std::move(normal), at);
   std::vector<double> weights(points, 0.0);
   for (size_t j = 0; j < points; ++j)
-    for (size_t k = 0; k < functions; ++k) weights[j] += basis[j][k] * system[k][functions] / system[k][k];
+    for (size_t k = 0; k < functions; ++k) weights[j] += basis[j][k] * z[k];
   return weights;
 }
 

@@ -38,7 +38,7 @@ TEST(LeastSquaresWeights, FitALineThroughFourPoints) {
 // Every other wavelength has all orders; the others read theirs from those alone.
 TEST(HigherOrderStencils, ReadOnlyWavelengthsWithAllOrders) {
   SpectralAtmosphere earth(AtmosphereParameters::Earth());
-  std::vector<HigherOrderStencil> stencils = HigherOrderStencils(SpectralSampling(12), earth);
+  std::vector<HigherOrderStencil> stencils = HigherOrderStencils(SpectralSampling::ForTables(12), earth);
   ASSERT_EQ(stencils.size(), 12u);
   for (int w = 0; w < 12; ++w) {
     if (HasAllOrders(w)) {
@@ -58,7 +58,7 @@ TEST(HigherOrderStencils, ReadOnlyWavelengthsWithAllOrders) {
 // one side only and fits a line in log(lambda): it is not exact, and is not checked.
 TEST(HigherOrderStencils, ReadBackAPowerLawThroughOzone) {
   SpectralAtmosphere earth(AtmosphereParameters::Earth());
-  SpectralSampling sampling(12);
+  const SpectralSampling sampling = SpectralSampling::ForTables(12);
   std::vector<HigherOrderStencil> stencils = HigherOrderStencils(sampling, earth);
   const std::vector<double>& nm = sampling.wavelengths_nm();
   for (double ozone_depth : {0.03, 1.0}) {

@@ -35,7 +35,7 @@ TEST(SpectralAtmosphere, ExtendsRayleighAsLambdaToTheMinusFour) {
 TEST(SpectralAtmosphere, LinearSrgbCoefficientsWeightTheSunlight) {
   AtmosphereParameters earth = AtmosphereParameters::Earth();
   SpectralAtmosphere spectral(earth);
-  SpectralSampling sampling(12);
+  const SpectralSampling sampling = SpectralSampling::ForTables(12);
   AtmosphereParameters srgb = LinearSrgbAtmosphere(spectral, earth, sampling);
   std::vector<double> sunlit_rayleigh = sampling.Sample(
       [&](double nm) { return spectral.SolarIrradiance(nm) * spectral.RayleighScattering(nm); });
@@ -67,7 +67,7 @@ TEST(SpectralAtmosphere, ReflectanceIsLinearBetweenTheThreeWavelengths) {
 // as saturated as a lawn's; a grey albedo is a flat spectrum of the same value.
 TEST(SpectralAtmosphere, ReflectanceForSunlightReflectsItAsTheAlbedoDoes) {
   SpectralAtmosphere earth(AtmosphereParameters::Earth());
-  SpectralSampling sampling(12);
+  const SpectralSampling sampling = SpectralSampling::ForTables(12);
   std::vector<double> sun = sampling.Sample([&](double nm) { return earth.SolarIrradiance(nm); });
   const Spectrum green = {0.08, 0.25, 0.04};
   Spectrum rho = earth.ReflectanceForSunlight(green, sampling);

@@ -46,7 +46,7 @@ const Columns kPaths[] = {{8000.0, 1200.0, 15000.0}, {40 * 8000.0, 40 * 1200.0, 
 
 void ExpectReadsBackEveryWavelength(const AtmosphereParameters& base) {
   SpectralAtmosphere atmosphere(base);
-  SpectralSampling sampling(12);
+  const SpectralSampling sampling = SpectralSampling::ForTables(12);
   AtmosphereParameters srgb = LinearSrgbAtmosphere(atmosphere, base, sampling);
   SpectralSunlight sunlight = MakeSpectralSunlight(atmosphere, srgb, sampling);
   ASSERT_EQ(sunlight.exponents.size(), 12u);
@@ -87,7 +87,7 @@ TEST(SpectralSunlight, ReadsBackWithoutOzone) {
 TEST(SpectralSunlight, DiffersFromTheChannelsTransmittanceAtTheLowSun) {
   AtmosphereParameters base = AtmosphereParameters::Earth();
   SpectralAtmosphere atmosphere(base);
-  SpectralSampling sampling(12);
+  const SpectralSampling sampling = SpectralSampling::ForTables(12);
   AtmosphereParameters srgb = LinearSrgbAtmosphere(atmosphere, base, sampling);
   Spectrum tau = ChannelOpticalDepth(srgb, kPaths[1]);
   Spectrum expected = ExpectedSunlight(atmosphere, sampling, &SpectralAtmosphere::RayleighScattering, kPaths[1]);
@@ -103,7 +103,7 @@ TEST(SpectralSunlight, NoTermsWhereTheColumnsAreNotDetermined) {
     base.mie_extinction[c] = 0.5 * base.rayleigh_scattering[c];
   }
   SpectralAtmosphere atmosphere(base);
-  SpectralSampling sampling(12);
+  const SpectralSampling sampling = SpectralSampling::ForTables(12);
   EXPECT_TRUE(MakeSpectralSunlight(atmosphere, LinearSrgbAtmosphere(atmosphere, base, sampling), sampling)
                   .exponents.empty());
 }

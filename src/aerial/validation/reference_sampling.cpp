@@ -97,10 +97,10 @@ ViewReference SampleReference(const reference::Reference& model, const Scene& sc
   return view;
 }
 
-ViewReference SampleSpectralReference(const AtmosphereParameters& atmosphere, int wavelengths, const Scene& scene,
+ViewReference SampleSpectralReference(const AtmosphereParameters& atmosphere,
+                                      const spectrum::SpectralSampling& spectral_sampling, const Scene& scene,
                                       const FrameUniforms& frame, const ImageRgbF& surface,
                                       const ReferenceSampling& sampling, const std::function<void()>& on_pixel) {
-  const spectrum::SpectralSampling spectral_sampling(wavelengths);
   const spectrum::SpectralAtmosphere spectral(atmosphere);
   ViewReference view;
   // Per pixel: the converted inscatter, S + T L_surface, sunlit transmittance and sunlight, and

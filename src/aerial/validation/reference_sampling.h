@@ -24,6 +24,7 @@
 #include "aerial/reference/reference.h"
 #include "aerial/scene.h"
 #include "aerial/shader_abi/frame_geometry.h"
+#include "aerial/spectrum/spectral_sampling.h"
 #include "aerial/validation/image_metrics.h"
 
 namespace aerial::validation {
@@ -82,15 +83,16 @@ ViewReference SampleReference(const reference::Reference& model, const Scene& sc
                               const ImageRgbF& surface, const ReferenceSampling& sampling,
                               const std::function<void()>& on_pixel);
 
-// SampleReference in colour: at every group of three wavelengths of a spectral sampling of
-// `wavelengths` (the atmosphere extended as the spectral precompute extends it,
-// SpectralAtmosphere), each scene surface's linear sRGB albedo taken as the reflectance spectrum
-// that reflects sunlight as the albedo does its colour (SpectralAtmosphere::ReflectanceForSunlight,
-// as the renderer multiplies light by it), converted to linear sRGB by the same CIE tables as the
-// spectral tables and summed. A pixel's `transmittance` is then the sunlight-weighted one
-// (LinearSrgb(E T) / LinearSrgb(E), as spectral_reference.h's) and its `surface` what makes
+// SampleReference in colour: at every group of three wavelengths of `spectral_sampling` (the
+// atmosphere extended as the spectral precompute extends it, SpectralAtmosphere), each scene
+// surface's linear sRGB albedo taken as the reflectance spectrum that reflects sunlight as the
+// albedo does its colour (SpectralAtmosphere::ReflectanceForSunlight, as the renderer multiplies
+// light by it), converted to linear sRGB by the sampling's conversion and summed. A pixel's
+// `transmittance` is then the sunlight-weighted one (LinearSrgb(E T) / LinearSrgb(E), as
+// spectral_reference.h's) and its `surface` what makes
 // Expected() the converted S + T L_surface; standard errors propagate as independent errors.
-ViewReference SampleSpectralReference(const AtmosphereParameters& atmosphere, int wavelengths, const Scene& scene,
+ViewReference SampleSpectralReference(const AtmosphereParameters& atmosphere,
+                                      const spectrum::SpectralSampling& spectral_sampling, const Scene& scene,
                                       const FrameUniforms& frame, const ImageRgbF& surface,
                                       const ReferenceSampling& sampling, const std::function<void()>& on_pixel);
 

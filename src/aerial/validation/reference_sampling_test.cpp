@@ -64,7 +64,8 @@ TEST(SampleSpectralReference, SkyPixelsAreTheSpectralProbesRadiance) {
   FrameUniforms frame = MakeFrameUniforms(scene, earth.bottom_radius_m, 32, 18, FroxelGrid{});
   ImageRgbF all_sky{.width = 32, .height = 18, .rgba = std::vector<float>(32 * 18 * 4, -1.0f)};
   ViewReference view =
-      SampleSpectralReference(earth, 12, scene, frame, all_sky, {.columns = 3, .rows = 2, .orders = 1}, {});
+      SampleSpectralReference(earth, spectrum::SpectralSampling::ForTables(12), scene, frame, all_sky,
+                              {.columns = 3, .rows = 2, .orders = 1}, {});
   ASSERT_EQ(view.pixels.size(), 6u);
   const glm::dvec3 camera(frame.camera_planet_position[0], frame.camera_planet_position[1],
                           frame.camera_planet_position[2]);
@@ -74,7 +75,8 @@ TEST(SampleSpectralReference, SkyPixelsAreTheSpectralProbesRadiance) {
   for (const ReferencePixel& pixel : view.pixels) {
     glm::dvec3 ray = PixelRay(frame, pixel.x, pixel.y);
     RayParameters parameters{r, glm::dot(camera, ray) / r, glm::dot(camera, sun) / r, glm::dot(ray, sun)};
-    ProbeResult probe = ProbeReferenceSpectral(earth, parameters, std::nullopt, 1, 12);
+    ProbeResult probe =
+        ProbeReferenceSpectral(earth, parameters, std::nullopt, 1, spectrum::SpectralSampling::ForTables(12));
     const bool ground = parameters.mu < -std::sqrt(1.0 - std::pow(earth.bottom_radius_m / r, 2.0));
     ground_pixels += ground;
     Spectrum expected = pixel.Expected();

@@ -10,6 +10,7 @@
 #include "aerial/error.h"
 #include "aerial/probe.h"
 #include "aerial/reference/reference.h"
+#include "aerial/validation/reference_file.h"
 
 namespace aerial::validation {
 namespace {
@@ -191,12 +192,8 @@ void WriteSkyReference(const SkyReference& reference, const std::filesystem::pat
 }
 
 SkyReference ReadSkyReference(const std::filesystem::path& path) {
-  std::vector<std::byte> bytes = ReadFile(path);
   try {
-    nlohmann::json j = nlohmann::json::parse(reinterpret_cast<const char*>(bytes.data()),
-                                             reinterpret_cast<const char*>(bytes.data()) + bytes.size());
-    if (j.at("version").get<int>() != kFileVersion)
-      throw Error("version", j.at("version").dump(), std::to_string(kFileVersion), path.string());
+    const nlohmann::json j = ReadReferenceJson(path, kFileVersion);
     SkyReference r{.orders = j.at("orders").get<int>(), .paths_per_query = j.at("paths_per_query").get<int>(),
                    .point_distance_m = j.at("point_distance_m").get<double>()};
     for (size_t q = 0; q < r.floors.size(); ++q) r.floors[q] = SpectrumFrom(j.at("floors").at(q));
