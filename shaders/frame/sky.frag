@@ -1,25 +1,54 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The sky of the per-pixel modes, drawn after the opaque geometry into the same target where none
-// was drawn (the depth test passes only there): the whole view ray's inscatter from the tables
-// with the phase functions of the pixel's own ray, plus what lies behind it, the sun disc or the
-// bare planet where the ray meets the ground beyond the scene's geometry. Froxel mode draws the
-// sky from the per-frame sky-view table instead (sky_dome.vert, sky_dome.frag).
-// The variant for a high sun (aerial/render/sun_high_variant.h, Renderer::SkyPipelineFor),
-// declared before the includes so that transmittance.glsl takes it.
+// The sky, drawn after the opaque geometry into the same target where none was drawn (the depth
+// test passes only there): the inscatter of the whole view ray with the phase functions from the
+// pixel's own ray, plus what lies behind it: the sun disc, or the bare planet where the ray meets
+// the ground beyond the scene's geometry. In froxel mode all of it comes from the sky-view table
+// (3 bilinear taps); in the per-pixel modes, from the tables.
+// The per-pixel sky's variant for a high sun (aerial/render/sun_high_variant.h,
+// Renderer::SkyPipelineFor), declared before the includes so that transmittance.glsl takes it.
 layout(constant_id = 4) const bool kSunHighEverywhere = false;
 #define AERIAL_SUN_HIGH_EVERYWHERE kSunHighEverywhere
 #include "aerial_perspective.glsl"
+#include "sky_view.glsl"
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
 layout(set = 0, binding = 3) uniform sampler3D rayleigh_texture;
 layout(set = 0, binding = 4) uniform sampler3D mie_texture;
 layout(set = 0, binding = 5) uniform sampler3D multiple_texture;
 layout(set = 0, binding = 6) uniform sampler2D irradiance_texture;
+layout(set = 0, binding = 7) uniform sampler2D rayleigh_sky;
+layout(set = 0, binding = 8) uniform sampler2D mie_sky;
+layout(set = 0, binding = 9) uniform sampler2D background_sky;
 layout(location = 0) in vec3 view_ray;
+layout(location = 1) flat in vec3 up;
+layout(location = 2) flat in vec3 toward_sun;
+layout(location = 3) flat in vec2 horizon;  // x: its zenith angle, y: its cos
 layout(location = 0) out vec4 color;
 
+// The whole view ray's inscatter, and in `transmittance` the background through the atmosphere
+// (GetBackgroundThroughAtmosphere), from the sky-view table.
+Inscatter GetPixelSky(vec3 ray, float mu) {
+  vec3 horizontal = ray - mu * up;
+  float cos_phi = dot(horizontal, horizontal) > 1e-12 ? dot(normalize(horizontal), toward_sun) : 1.0;
+  vec2 uv = GetSkyViewUv(horizon.x, cos_phi, acos(clamp(mu, -1.0, 1.0)), textureSize(rayleigh_sky, 0));
+  Inscatter sky;
+  sky.rayleigh = textureLod(rayleigh_sky, uv, 0.0).rgb;
+  sky.mie = textureLod(mie_sky, uv, 0.0).rgb;
+  sky.transmittance = textureLod(background_sky, uv, 0.0).rgb;
+  return sky;
+}
+
 void main() {
-  color = vec4(GetSkyRadianceAlongRay(transmittance_texture, rayleigh_texture, mie_texture, multiple_texture,
-                                      irradiance_texture, normalize(view_ray)),
-               1.0);
+  vec3 ray = normalize(view_ray);
+  if (kAerialPerPixel != AERIAL_FROXELS) {
+    color = vec4(GetSkyRadianceAlongRay(transmittance_texture, rayleigh_texture, mie_texture, multiple_texture,
+                                        irradiance_texture, ray),
+                 1.0);
+    return;
+  }
+  float r, mu, mu_s, nu;
+  GetCameraRayParameters(ray, r, mu, mu_s, nu);
+  Inscatter sky = GetPixelSky(ray, mu);
+  // The ray meets the ground below the horizon: RayIntersectsGround, with the frame's horizon.
+  color = vec4(ApplyPhaseFunctions(sky, nu) + ShadeBackground(sky.transmittance, mu < horizon.y, nu), 1.0);
 }

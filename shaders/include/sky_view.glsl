@@ -1,8 +1,8 @@
 // The sky-view table (Hillaire 2020, "sky-view LUT"): per frame, the phase-free Rayleigh and Mie
-// inscatter and what lies behind the whole view ray, for every direction around the camera, so
-// that the sky reads them (sky_dome.vert, sky_dome.frag) instead of evaluating the 4D lookups.
-// Directions are (azimuth from the sun's vertical plane, zenith angle); the sky is symmetric about
-// that plane, so the azimuth covers [0, pi]. The zenith axis is split at the horizon like the scattering tables' mu
+// inscatter and the transmittance of the whole view ray, for every direction around the camera,
+// so that sky pixels read 3 taps instead of evaluating the 4D lookups. Directions are (azimuth
+// from the sun's vertical plane, zenith angle); the sky is symmetric about that plane, so the
+// azimuth covers [0, pi]. The zenith axis is split at the horizon like the scattering tables' mu
 // axis, each half on its own texel centers, with the square-root mapping of Hillaire 2020 that
 // puts most rows next to the horizon, where the sky changes fastest.
 #ifndef AERIAL_SKY_VIEW_GLSL
@@ -11,17 +11,22 @@
 #include "mappings.glsl"
 #include "sky_view_lattice.glsl"
 
-// The table coordinates of a direction at azimuth phi = PI * azimuth_unit from the sun's vertical
-// plane and zenith angle theta, with theta_h the horizon's (HorizonZenithAngle of the camera's r)
-// and below whether the direction is below the horizon (the table's lower half).
-vec2 GetSkyViewUv(float theta_h, float azimuth_unit, float theta, bool below, ivec2 size) {
-  float x = below ? sqrt(max((theta - theta_h) / (PI - theta_h), 0.0))  // 0 at the horizon
-                  : 1.0 - sqrt(max(1.0 - theta / theta_h, 0.0));      // 0 at the zenith, 1 at the horizon
-  return vec2(GetTextureCoordFromUnitRange(azimuth_unit, size.x),
-              0.5 * float(below) + 0.5 * GetTextureCoordFromUnitRange(clamp(x, 0.0, 1.0), size.y / 2));
+// (u, v) of a direction: cos_phi relative to the sun's azimuth, theta the zenith angle, theta_h
+// the horizon's (HorizonZenithAngle of the camera's r: the same for every direction of a frame).
+vec2 GetSkyViewUv(float theta_h, float cos_phi, float theta, ivec2 size) {
+  float v;
+  if (theta < theta_h) {
+    float x = 1.0 - sqrt(max(1.0 - theta / theta_h, 0.0));  // 0 at the zenith, 1 at the horizon
+    v = 0.5 * GetTextureCoordFromUnitRange(x, size.y / 2);
+  } else {
+    float x = sqrt(clamp((theta - theta_h) / (PI - theta_h), 0.0, 1.0));  // 0 at the horizon
+    v = 0.5 + 0.5 * GetTextureCoordFromUnitRange(x, size.y / 2);
+  }
+  float u = GetTextureCoordFromUnitRange(acos(clamp(cos_phi, -1.0, 1.0)) / PI, size.x);
+  return vec2(u, v);
 }
 
-// The inverse, for a camera at r from the planet's centre: (cos_phi, theta).
+// The inverse, for the texels of the table: returns (cos_phi, theta).
 vec2 GetSkyViewDirection(float r, vec2 uv, ivec2 size) {
   float theta_h = HorizonZenithAngle(r);
   float theta;
@@ -56,21 +61,15 @@ struct SkyViewRay {
   float r, mu, mu_s, nu;
 };
 
-// The world direction of (cos_phi, theta) = angles (GetSkyViewDirection), on the side of the sun's
-// vertical plane that side_sign (+1 or -1) picks.
-vec3 GetSkyViewRayDirection(vec2 angles, float side_sign) {
-  vec3 up, toward_sun, side;
-  GetSkyViewFrame(up, toward_sun, side);
-  float sin_phi = side_sign * sqrt(max(1.0 - angles.x * angles.x, 0.0));
-  return up * cos(angles.y) + sin(angles.y) * (toward_sun * angles.x + side * sin_phi);
-}
-
 SkyViewRay GetSkyViewRay(ivec2 texel, ivec2 size) {
   SkyViewRay ray;
   ray.r = length(frame.camera_planet_position.xyz);
   vec2 angles = GetSkyViewDirection(ray.r, (vec2(texel) + 0.5) / vec2(size), size);
-  ray.direction = GetSkyViewRayDirection(angles, 1.0);
-  vec3 up = normalize(frame.camera_planet_position.xyz);
+  vec3 up, toward_sun, side;
+  GetSkyViewFrame(up, toward_sun, side);
+  float sin_theta = sin(angles.y);
+  ray.direction = up * cos(angles.y) +
+                  sin_theta * (toward_sun * angles.x + side * sqrt(max(1.0 - angles.x * angles.x, 0.0)));
   ray.mu = dot(up, ray.direction);
   ray.mu_s = dot(up, frame.sun_direction.xyz);
   ray.nu = dot(ray.direction, frame.sun_direction.xyz);

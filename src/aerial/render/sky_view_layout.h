@@ -1,23 +1,17 @@
 #pragma once
-// The sky-view table's size and its correction lattice's, for the images the renderer allocates,
-// and the sky dome's vertex count.
+// The sky-view table's size and its correction lattice's, for the images the renderer allocates.
 // The lattice's shape comes from shaders/include/sky_view_lattice.glsl, the lines the shaders
 // compile; the shaders take the table's size from its image.
 #include <array>
 
 namespace aerial {
 
-#include "shaders/include/sky_dome.glsl"
 #include "shaders/include/sky_view_lattice.glsl"
 
 // Hillaire 2020's 192x108: azimuth over [0, pi], zenith split at the horizon (54 rows each side).
 constexpr std::array<int, 2> kSkyViewSize = {192, 108};
 constexpr std::array<int, 2> kSkyViewLatticeSize = {GetSkyViewLatticeWidth(kSkyViewSize[0]),
                                                      GetSkyViewLatticeHeight(kSkyViewSize[1])};
-
-// The sky dome's vertices (sky_dome.vert: two triangles per cell, both halves of the zenith axis),
-// drawn twice, once mirrored across the sun's vertical plane.
-constexpr uint32_t kSkyDomeVertices = 2 * SKY_DOME_ROWS * SKY_DOME_COLUMNS * 6;
 
 // The lattice is made in bands of whole rows, each for the camera altitude of its own frame
 // (frame_cache_policy.h, SkyViewLatticeBandsToRemake): 8 bands of 5 rows (the last one of 3).

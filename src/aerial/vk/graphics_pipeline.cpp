@@ -154,8 +154,4 @@ void DrawIndexed(const CommandBuffer& cmd, uint32_t index_count, uint32_t first_
 
 void DrawFullScreenTriangle(const CommandBuffer& cmd) { cmd.draw(3, 1, 0, 0); }
 
-void Draw(const CommandBuffer& cmd, uint32_t vertex_count, uint32_t instance_count) {
-  cmd.draw(vertex_count, instance_count, 0, 0);
-}
-
 }  // namespace aerial::vk

@@ -90,8 +90,5 @@ void DrawIndexed(const CommandBuffer& cmd, uint32_t index_count, uint32_t first_
                  int32_t vertex_offset = 0);
 // Three vertices and no buffers: a full-screen triangle made in the vertex shader.
 void DrawFullScreenTriangle(const CommandBuffer& cmd);
-// Draws vertex_count vertices of no vertex buffer (the shader makes them from gl_VertexIndex),
-// instance_count times.
-void Draw(const CommandBuffer& cmd, uint32_t vertex_count, uint32_t instance_count = 1);
 
 }  // namespace aerial::vk
