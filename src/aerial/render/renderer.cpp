@@ -115,15 +115,12 @@ vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std
           .specialization = std::move(constants)};
 }
 
-// The sky, drawn where no geometry was (depth EQUAL against the depth cleared to 0, reversed Z),
-// so that each pixel runs one shader or the other: in froxel mode the sky dome at infinity from
-// the sky-view table (sky_dome.vert); in the per-pixel modes a full-screen triangle at depth 0
-// that reads the tables. Its constants: 0 aerial perspective per pixel (frame.glsl), 4 the
-// variant for a high sun.
+// The sky: a full-screen triangle at depth 0 whose test (EQUAL against the depth cleared to 0,
+// reversed Z) passes only where no geometry was drawn, so each pixel runs one shader or the other.
+// Its constants: 0 aerial perspective per pixel (frame.glsl), 4 the variant for a high sun.
 vk::GraphicsPipelineCreateInfo SkyPipeline(AerialMode mode, bool sun_high) {
-  const bool dome = mode == AerialMode::kFroxel;
-  return {.vertex_shader = dome ? "frame/sky_dome.vert" : "frame/sky.vert",
-          .fragment_shader = dome ? "frame/sky_dome.frag" : "frame/sky.frag",
+  return {.vertex_shader = "frame/sky.vert",
+          .fragment_shader = "frame/sky.frag",
           .slots = SkySlots(kSampled),
           .color_formats = {vk::kRgba32f},
           .depth_format = vk::kDepth32f,
@@ -488,20 +485,21 @@ const vk::GraphicsPipeline& OpaquePipelines::For(SunVisibilitySource source) con
 // Which meshes and chunks read the froxels per pixel (surface_reads.h), by their longest edge at
 // the nearest point of their bounds.
 void Renderer::ChooseFroxelReads(const Camera& camera) {
-  const double extinction = GroundExtinctionPerM(tables_.atmosphere());
-  auto per_pixel = [&](double edge_m, double distance_m) {
+  const AirScales air = MakeAirScales(tables_.atmosphere());
+  auto per_pixel = [&](double edge_m, double rise_m, double distance_m) {
     return options_.surface_froxel_reads == SurfaceFroxelReads::kPerPixel ||
            (options_.surface_froxel_reads == SurfaceFroxelReads::kPerVertexWhereThin &&
-            ReadsFroxelsPerPixel(options_.froxels, extinction, edge_m, distance_m));
+            ReadsFroxelsPerPixel(options_.froxels, air, edge_m, rise_m, distance_m));
   };
   mesh_reads_per_pixel_.clear();
   for (const MeshDraw& draw : geometry_.opaque_draws())
     mesh_reads_per_pixel_.push_back(
-        per_pixel(draw.longest_edge_m, glm::length(draw.center - camera.position) - draw.radius_m));
+        per_pixel(draw.longest_edge_m, draw.largest_rise_m, glm::length(draw.center - camera.position) - draw.radius_m));
   auto first_per_vertex = std::stable_partition(
       terrain_chunks_.begin(), terrain_chunks_.end(), [&](const terrain::SelectedChunk& chunk) {
         const terrain::ChunkInfo* info = terrain_->Find(chunk.id);
-        return per_pixel(info->longest_edge_m, terrain::DistanceToBounds(camera.position, info->bounds));
+        return per_pixel(info->longest_edge_m, info->largest_rise_m,
+                         terrain::DistanceToBounds(camera.position, info->bounds));
       });
   terrain_per_pixel_ = size_t(first_per_vertex - terrain_chunks_.begin());
 }
@@ -555,11 +553,7 @@ void Renderer::DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot
                    tables_.Sampled(tables_.mie()), tables_.Sampled(tables_.multiple()),
                    tables_.Sampled(tables_.irradiance()), tables_.Sampled(sky_rayleigh_),
                     tables_.Sampled(sky_mie_), tables_.Sampled(sky_background_)});
-    if (options_.mode == AerialMode::kFroxel) {
-      vk::Draw(cmd, kSkyDomeVertices, 2);
-    } else {
-      vk::DrawFullScreenTriangle(cmd);
-    }
+    vk::DrawFullScreenTriangle(cmd);
   }
   timer.End(cmd);
   timer.Begin(cmd, "transparent raster");

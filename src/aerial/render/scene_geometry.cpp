@@ -31,6 +31,7 @@ MeshDraw MeshBounds(const Mesh& mesh) {
     for (int k = 0; k < 3; ++k) {
       glm::dvec3 a(mesh.vertices[mesh.indices[i + k]].position), b(mesh.vertices[mesh.indices[i + (k + 1) % 3]].position);
       draw.longest_edge_m = std::max(draw.longest_edge_m, glm::length(b - a));
+      draw.largest_rise_m = std::max(draw.largest_rise_m, std::abs(b.z - a.z));
     }
   return draw;
 }

@@ -21,6 +21,7 @@ struct MeshDraw {
   glm::dvec3 center{0.0};     // a sphere around every vertex
   double radius_m = 0.0;
   double longest_edge_m = 0.0;  // of its triangles
+  double largest_rise_m = 0.0;  // the largest height difference along any of its triangles' edges
 };
 
 class SceneGeometry {

@@ -1,6 +1,8 @@
 #include "aerial/render/surface_reads.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace aerial {
 
@@ -11,18 +13,25 @@ double SliceSpan(const FroxelGrid& grid, double edge_m, double distance_m) {
 
 // The density profiles are 1 at the ground for Rayleigh and Mie (atmosphere.h); ozone's layer
 // lies higher but is counted at its full density, which can only make the bound stricter.
-double GroundExtinctionPerM(const AtmosphereParameters& atmosphere) {
-  double most = 0.0;
+AirScales MakeAirScales(const AtmosphereParameters& atmosphere) {
+  AirScales air{.smallest_scale_height_m = std::numeric_limits<double>::infinity()};
   for (size_t c = 0; c < atmosphere.rayleigh_scattering.size(); ++c)
-    most = std::max(most, atmosphere.rayleigh_scattering[c] + atmosphere.mie_extinction[c] +
-                              atmosphere.absorption_extinction[c]);
-  return most;
+    air.ground_extinction_per_m =
+        std::max(air.ground_extinction_per_m, atmosphere.rayleigh_scattering[c] + atmosphere.mie_extinction[c] +
+                                                  atmosphere.absorption_extinction[c]);
+  for (const DensityProfile* profile : {&atmosphere.rayleigh_density, &atmosphere.mie_density})
+    for (const DensityProfileLayer& layer : profile->layers)
+      if (layer.exp_term != 0.0 && layer.exp_scale_per_m != 0.0)
+        air.smallest_scale_height_m = std::min(air.smallest_scale_height_m, 1.0 / std::abs(layer.exp_scale_per_m));
+  return air;
 }
 
-bool ReadsFroxelsPerPixel(const FroxelGrid& grid, double ground_extinction_per_m, double edge_m,
+bool ReadsFroxelsPerPixel(const FroxelGrid& grid, const AirScales& air, double edge_m, double rise_m,
                           double distance_m) {
-  const bool thin_in_air = edge_m * ground_extinction_per_m <= kMaxEdgeOpticalThickness;
-  return !thin_in_air && SliceSpan(grid, edge_m, distance_m) > kMaxSliceSpan;
+  const bool thin_in_air = edge_m * air.ground_extinction_per_m <= kMaxEdgeOpticalThickness;
+  const bool small_in_volume = SliceSpan(grid, edge_m, distance_m) <= kMaxSliceSpan &&
+                               rise_m <= kMaxRiseOfScaleHeight * air.smallest_scale_height_m;
+  return !thin_in_air && !small_in_volume;
 }
 
 }  // namespace aerial

@@ -11,9 +11,13 @@
 // - the triangle is thin in the air: its longest edge has an optical thickness (at the ground,
 //   the densest air) of at most kMaxEdgeOpticalThickness, so inscatter and transmittance change
 //   by at most about that fraction across it, and an interpolation's error is a fraction of that;
-// - the triangle is thin in the volume: it spans at most kMaxSliceSpan of the volume's depth
-//   slices, so the per-pixel read interpolates between the same two slices (the slices'
-//   quadratic spacing, froxel_depth.glsl, makes them thick only where the air is far).
+// - the triangle is small in the volume: it spans at most kMaxSliceSpan of the volume's depth
+//   slices (the slices' quadratic spacing, froxel_depth.glsl, makes them thick only where the air
+//   is far), so the per-pixel reads interpolate between the same two slices, and it rises at most
+//   kMaxRiseOfScaleHeight of the air's smallest scale height, so the air along the rays to its
+//   vertices is alike (a kilometre-high face far away sees air of different density at its top
+//   and at its foot). Interpolating an exponential linearly over a rise of x scale heights
+//   misses by at most x^2 / 8 of it: 3% of the haze's inscatter at half a scale height.
 // A triangle that fails both, e.g. a ground quad reaching from the camera to the horizon, or a
 // kilometres-high cliff face, is read per pixel.
 #include "aerial/atmosphere.h"
@@ -23,16 +27,24 @@ namespace aerial {
 
 inline constexpr double kMaxEdgeOpticalThickness = 0.01;
 inline constexpr double kMaxSliceSpan = 0.5;
+inline constexpr double kMaxRiseOfScaleHeight = 0.5;
 
 // How many of the grid's slices a triangle may span in depth, when none of its edges is longer
 // than edge_m and none of its points is nearer the camera than distance_m: the depth coordinate
 // slices * sqrt(d / far) grows fastest nearest the camera.
 double SliceSpan(const FroxelGrid& grid, double edge_m, double distance_m);
 
-// The air's largest extinction coefficient (m^-1) over the channels, at the ground.
-double GroundExtinctionPerM(const AtmosphereParameters& atmosphere);
+// What the rule needs of the air: its largest extinction coefficient (m^-1) over the channels at
+// the ground, and its smallest exponential scale height (m) among the scattering layers.
+struct AirScales {
+  double ground_extinction_per_m = 0.0;
+  double smallest_scale_height_m = 0.0;
+};
+AirScales MakeAirScales(const AtmosphereParameters& atmosphere);
 
-bool ReadsFroxelsPerPixel(const FroxelGrid& grid, double ground_extinction_per_m, double edge_m,
+// For a triangle whose edges are at most edge_m long and rise at most rise_m, and whose points are
+// at least distance_m from the camera.
+bool ReadsFroxelsPerPixel(const FroxelGrid& grid, const AirScales& air, double edge_m, double rise_m,
                           double distance_m);
 
 }  // namespace aerial

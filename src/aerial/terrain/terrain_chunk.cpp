@@ -181,10 +181,14 @@ TerrainChunk BuildTerrainChunk(const ChunkId& id, double planet_radius_m) {
   }
   for (int j = 0; j < N; ++j) {
     for (int i = 0; i < N; ++i) {
-      double lowest = INFINITY;
-      for (int corner = 0; corner < 4; ++corner)
-        lowest = std::min(lowest, Radial(grid(i + (corner & 1), j + (corner >> 1)), R) - R);
+      double lowest = INFINITY, highest = -INFINITY;
+      for (int corner = 0; corner < 4; ++corner) {
+        const double height = Radial(grid(i + (corner & 1), j + (corner >> 1)), R) - R;
+        lowest = std::min(lowest, height);
+        highest = std::max(highest, height);
+      }
       chunk.cell_lowest_m[j * N + i] = float(lowest);
+      chunk.largest_rise_m = std::max(chunk.largest_rise_m, highest - lowest);
     }
   }
   // The surface's longest triangle edge: the cells' sides and both diagonals (whichever the

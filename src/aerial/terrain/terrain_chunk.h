@@ -35,6 +35,7 @@ struct TerrainChunk {
   double geometric_error_m = 0.0;
   double skirt_depth_m = 0.0;
   double longest_edge_m = 0.0;  // of any of its surface's triangles (not the skirts')
+  double largest_rise_m = 0.0;  // the largest height difference within one of its cells
   // Per cell (row by row), the height above the sphere of its lowest corner: the mesh over the
   // cell never dips below it (occluders, screen_horizon.h).
   std::array<float, kChunkCells * kChunkCells> cell_lowest_m{};
