@@ -27,7 +27,7 @@ AERIAL_VALIDATION=1 "$work/embed/embed" "$here/scene.toml" "$work/embed.exr" "$c
 # per-frame sky-view table (192x108, shaders/include/sky_view.glsl), where the example evaluates
 # GetSkyRadianceAlongRay on the tables per pixel. --colour rgb: the example takes the library's
 # default tables, whatever the commands' default.
-"$build/aerial" render --scene "$here/scene.toml" --width 320 --height 180 --aerial froxel --froxels 32x32x32 \
+"$build/aerial" render --scene "$here/scene.toml" --width 320 --height 180 --aerial froxel --froxel-reads per-pixel --froxels 32x32x32 \
   --colour rgb --froxel-far-m 128000 --shadows off --cache-dir "$cache" --quiet --out "$work/aerial.exr"
 
 # Bounds on the largest per-pixel relative error, max_c |a_c - b_c| / max_c b_c:

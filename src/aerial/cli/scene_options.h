@@ -58,6 +58,7 @@ struct FrameOptions {
   int height = 720;
   std::optional<double> exposure, ev100;  // neither: automatic exposure
   std::string aerial = "froxel";
+  std::string froxel_reads = "auto";
   double render_scale = 1.0;
   std::string terrain = "lod";
   double terrain_error_px = kDefaultTerrainErrorPx;
@@ -65,7 +66,7 @@ struct FrameOptions {
   std::string white_balance = "on";
 
   // The froxel options, --width/--height (size_help: what they size, "Image"), --exposure,
-  // --aerial, --render-scale, --terrain, --terrain-error-px, --shadows and --white-balance.
+  // --aerial, --froxel-reads, --render-scale, --terrain, --terrain-error-px, --shadows and --white-balance.
   void AddTo(CLI::App& command, const std::string& size_help);
   RendererOptions MakeRenderOptions() const;  // validated
   Exposure MakeExposure() const;            // validated
