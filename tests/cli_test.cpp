@@ -17,8 +17,8 @@
 namespace aerial::testing {
 namespace {
 
-// rgb tables: the probe prints their three wavelengths (spectral ones print colours only), when
-// asked for them (--colour rgb).
+// rgb tables: the probe prints their three wavelengths (spectral ones print colours only). rgb is
+// the probe's default; it is named so that these tests mean rgb whatever the default.
 const std::string kProbe =
     "probe --small-tables --quiet --colour rgb --altitude-m 1 --view-zenith-deg 45 --sun-zenith-deg 30 "
     "--azimuth-deg 0";
@@ -58,15 +58,15 @@ TEST(Cli, ProbeReferencePrintsItsStandardErrors) {
   EXPECT_FALSE(nlohmann::json::parse(tables.out).contains("sky_radiance_std_error"));
 }
 
-// The probe without --colour reads spectral tables, as every other command does.
-TEST(Cli, ProbeDefaultsToSpectral) {
+// The probe without --colour reads rgb tables (its JSON is per wavelength), unlike the other commands.
+TEST(Cli, ProbeDefaultsToRgb) {
   CommandRun run = RunAerial("probe --small-tables --quiet --altitude-m 1 --view-zenith-deg 45 --sun-zenith-deg 30 "
                              "--azimuth-deg 0");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   auto json = nlohmann::json::parse(run.out);
-  EXPECT_EQ(json["colour"], "spectral");
-  EXPECT_EQ(json["channels"], "linear_srgb");
-  EXPECT_FALSE(json.contains("wavelengths_nm"));
+  EXPECT_EQ(json["colour"], "rgb");
+  EXPECT_EQ(json["channels"], "wavelengths_nm");
+  EXPECT_EQ(json["wavelengths_nm"], nlohmann::json::array({680.0, 550.0, 440.0}));
 }
 
 // Spectral channels are linear sRGB, not wavelengths: the JSON says so and lists no

@@ -22,8 +22,9 @@ inline constexpr const char* kTableOptionsGroup = "Tables, device and memory";
 struct TableOptions {
   std::filesystem::path atmosphere_file;
   std::string lut = "4d";
-  // Spectral in every command (docs/colour.md, "Defaults"); the library's PrecomputeOptions keep
-  // rgb within 1.x.
+  // Spectral by default (docs/colour.md, "Defaults"). `probe` keeps rgb, whose channels are
+  // wavelengths its JSON can name (probe_command.cpp); the library's PrecomputeOptions keep rgb
+  // within 1.x.
   std::string colour = "spectral";
   std::optional<int> wavelengths;
   int orders = 4;

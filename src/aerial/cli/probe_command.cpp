@@ -137,6 +137,9 @@ void RunProbe(const ProbeOptions& options) {
 
 void AddProbeCommand(CLI::App& app) {
   auto options = std::make_shared<ProbeOptions>();
+  // rgb unless asked: the probe reports quantities over wavelengths (`wavelengths_nm`), which
+  // the rgb tables' channels are and the spectral tables' linear sRGB channels are not.
+  options->tables.colour = "rgb";
   CLI::App* command = app.add_subcommand("probe", "Print the sky seen by one camera along one ray, as JSON");
   command->add_option("--altitude-m", options->view.altitude_m, "Camera altitude above the ground (m)")
       ->required();
