@@ -251,6 +251,7 @@ TEST_F(EnvmapCommand, BadInputIsNamed) {
       {"envmap --date 2023-06-01 --time 12:00 --latitude-deg 45 --longitude-deg 5" + out, "--time-zone = (not given)"},
       {"envmap --width 100 --height 100" + out, "--width/--height = 100x100 is invalid"},
       {"envmap --altitude-m -1" + out, "--altitude-m = -1 is invalid"},
+      {"envmap" + out + " --cube-map " + (dir_ / "sky.exr").string(), "a file other than --out"},
       {"render --date 2024-03-31 --time 02:30 --time-zone Europe/Paris --latitude-deg 48.85 --longitude-deg 2.35 --out " +
            (dir_ / "x.png").string(),
        "--time = 02:30 is invalid"},

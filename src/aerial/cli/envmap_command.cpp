@@ -13,6 +13,7 @@
 #include "aerial/cli/path_option.h"
 #include "aerial/cli/sun_date_options.h"
 #include "aerial/core/format_number.h"
+#include "aerial/core/output_conflicts.h"
 #include "aerial/envmap/environment_file.h"
 #include "aerial/error.h"
 #include "aerial/image/exposure.h"
@@ -86,6 +87,7 @@ void RunEnvmap(const EnvmapCommandOptions& options) {
   EnvironmentDescription description;
   map.sun = MakeSun(options, description.sun_from);
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
+  CheckOutputConflicts({{"--out", options.out}, {"--cube-map", options.cube_map}});
   ValidateViewAngles({.altitude_m = map.altitude_m, .sun_zenith_deg = map.sun.zenith_deg}, atmosphere);
 
   PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
@@ -115,7 +117,7 @@ void RunEnvmap(const EnvmapCommandOptions& options) {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("wrote %s: %dx%d lat-long, sun zenith %.3f deg, azimuth %.3f deg, disc %s; %.2f s\n",
-              options.out.c_str(), options.width, options.height, map.sun.zenith_deg, map.sun.azimuth_deg,
+              Printable(options.out.native()).c_str(), options.width, options.height, map.sun.zenith_deg, map.sun.azimuth_deg,
               map.sun_disc ? "in the map" : "left out (aerial:sun_irradiance)", seconds);
 }
 
