@@ -79,7 +79,9 @@ void CubeDirections(int face_size, std::span<glm::vec4> out) {
 EnvironmentMap RenderEnvironmentMap(const AtmosphereTables& tables, const EnvironmentMapOptions& options) {
   const AtmosphereParameters& atmosphere = tables.atmosphere();
   ValidateViewAngles({.altitude_m = options.altitude_m, .sun_zenith_deg = options.sun.zenith_deg}, atmosphere);
-  const auto [width, height] = EnvironmentImageSize(options);
+  // Plain variables, not a structured binding: the dispatch's lambda captures them (clang 14).
+  const std::array<int, 2> size = EnvironmentImageSize(options);
+  const int width = size[0], height = size[1];
   CheckImageSize(width, height);
   const bool lat_long = options.layout == EnvironmentLayout::kLatLong;
 
