@@ -189,8 +189,8 @@ pid_t DeadPid() {
   return dead;
 }
 
-// A write removes the temporaries that killed writers of the same path left (issue 41: only the
-// table cache's were): nothing holds their lock.
+// A write removes the temporaries that killed writers of the same path left, whatever the output
+// (not only the table cache's): nothing holds their lock.
 TEST_F(AtomicFile, StaleTemporariesOfTheTargetAreRemovedByTheNextWrite) {
   MakeRegularFile(dir_ / ("out.vdb.tmp-" + std::to_string(DeadPid()) + "-0123456789abcdef"));
   MakeRegularFile(dir_ / ("out.vdb.tmp-" + std::to_string(::getpid()) + "-0123456789abcdee"));
