@@ -96,7 +96,10 @@ std::map<std::string, long> CppOffsets() {
   AERIAL_MEMBER(FrameBlock, FrameUniforms, froxel_size);
   AERIAL_MEMBER(FrameBlock, FrameUniforms, froxel_depth);
   AERIAL_MEMBER(FrameBlock, FrameUniforms, viewport);
-  AERIAL_MEMBER(ShadowBlock, ShadowUniforms, light_axes);
+  AERIAL_MEMBER(ShadowBlock, ShadowUniforms, toward_sun);
+  AERIAL_MEMBER(ShadowBlock, ShadowUniforms, cascade_right);
+  AERIAL_MEMBER(ShadowBlock, ShadowUniforms, cascade_up);
+  AERIAL_MEMBER(ShadowBlock, ShadowUniforms, cascade_toward_sun);
   AERIAL_MEMBER(ShadowBlock, ShadowUniforms, view_forward);
   AERIAL_MEMBER(ShadowBlock, ShadowUniforms, cascade_far_m);
   AERIAL_MEMBER(ShadowBlock, ShadowUniforms, cascade_origin);
@@ -129,7 +132,7 @@ std::map<std::string, long> CppOffsets() {
 TEST(UniformLayout, GlslBlocksMatchTheCppStructs) {
   Reflection reflection = ReflectFroxelShader();
   std::map<std::string, long> cpp = CppOffsets();
-  ASSERT_EQ(cpp.size(), 42u + 3 * 2 * 8);  // every member of the three blocks, once
+  ASSERT_EQ(cpp.size(), 45u + 3 * 2 * 8);  // every member of the three blocks, once
   // Every member on each side, at the same offset: 90 members.
   EXPECT_EQ(reflection.member_offsets.size(), cpp.size());
   for (const auto& [name, offset] : cpp) {

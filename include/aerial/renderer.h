@@ -78,7 +78,8 @@ struct FrameInfo {
   // (opaque_fragment.glsl) instead of looking it up.
   bool sun_visibility_cached = false;
   // Nothing was left for later (terrain chunks of the frame or of the shadow map deferred for the
-  // build budget): the next frame of the same camera, sun and options is this frame's image.
+  // build budget, shadow tiles still drawn for an earlier sun): the next frame of the same camera,
+  // sun and options is this frame's image.
   bool settled = false;
 };
 

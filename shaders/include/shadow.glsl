@@ -30,8 +30,13 @@ const int kShadowAtlasTilesPerRow = 2;  // the cascades' tiles in the atlas: 2x2
 // Mirrored by aerial::ShadowUniforms (aerial/shader_abi/shadow_block.h). Light coordinates
 // are relative to the camera, in meters along the light's axes.
 layout(std140, set = 0, binding = SHADOW_BINDING) uniform ShadowBlock {
-  vec4 light_axes[3];                      // xyz: right, up, toward the sun
+  vec4 toward_sun;                         // xyz: the sun's direction now
   vec4 view_forward;                       // xyz: the camera's forward axis
+  // Per cascade, the light's axes of the sun its tile was drawn for: under a moving sun the tiles
+  // catch up one a frame (src/aerial/render/frame_cache_policy.h).
+  vec4 cascade_right[kShadowCascades];
+  vec4 cascade_up[kShadowCascades];
+  vec4 cascade_toward_sun[kShadowCascades];
   vec4 cascade_far_m;                      // each cascade's last view depth (m)
   vec4 cascade_origin[kShadowCascades];    // xy: the tile's centre; w: the light coordinate of depth 0
   vec4 cascade_scale[kShadowCascades];     // x: tile units per m; y: depth per m; z: texel (m)
@@ -60,35 +65,35 @@ layout(set = 0, binding = SHADOW_BINDING + 1) uniform sampler2DShadow shadow_map
 // The float depth's rounding (range 200 km at 2^-24 relative: 1.2 cm) stays far below k t.
 const float kNormalOffsetTexels = 1.5;
 
-// A camera-relative vector in light coordinates (a direction as well as a position).
-vec3 GetLightCoordinates(vec3 relative_position) {
-  return vec3(dot(shadow.light_axes[0].xyz, relative_position), dot(shadow.light_axes[1].xyz, relative_position),
-              dot(shadow.light_axes[2].xyz, relative_position));
-}
-
-// The visibility of a point moved by kNormalOffsetTexels texels of its cascade along a unit
-// direction given in light coordinates, or 1 beyond the cascades. The cascade is the one whose
-// slice of view depth holds the point (each tile holds its slice with a margin for the filter
-// and the offset: shadow_cascades.h, kShadowMarginTexels). Picked by comparisons and selects of
-// uniform values, with no loop over a dynamic count and no dynamic indexing of the block: a
-// CPU rasterizer gathers a dynamically indexed uniform lane by lane.
-float SunVisibilityOffset(vec3 relative_position, vec3 light_direction) {
+// The visibility of a point moved by kNormalOffsetTexels texels of its cascade along the unit
+// normal n of its surface, or toward the cascade's sun for a point in the air (in_air), or 1
+// beyond the cascades. The cascade is the one whose slice of view depth holds the point (each
+// tile holds its slice with a margin for the filter and the offset: shadow_cascades.h,
+// kShadowMarginTexels). Picked by comparisons and selects of uniform values, with no loop over a
+// dynamic count and no dynamic indexing of the block: a CPU rasterizer gathers a dynamically
+// indexed uniform lane by lane.
+float SunVisibilityOffset(vec3 relative_position, vec3 n, bool in_air) {
   float depth = dot(shadow.view_forward.xyz, relative_position);
   // The point's depth is tested first, so that no branch depends on uniform values alone:
   // lavapipe 22.x inlines such values into the shader and compiles it anew at every bind of its
-  // pipeline. `cascades.x == 0 ||` first made the opaque and transparent passes compile four
-  // shaders a frame (a still frame two, now none; gdb on LLVM's getHostCPUName, 2026-11-28).
+  // pipeline (a test of `cascades.x == 0` first made the opaque and transparent passes compile
+  // four shaders a frame).
   if (depth > shadow.cascade_far_m[kShadowCascades - 1] || shadow.cascades.x == 0) return 1.0;
   vec4 origin = shadow.cascade_origin[0], scale = shadow.cascade_scale[0];
+  vec3 right = shadow.cascade_right[0].xyz, up = shadow.cascade_up[0].xyz, sun = shadow.cascade_toward_sun[0].xyz;
   vec2 tile = vec2(0.0);
   [[unroll]] for (int i = 1; i < kShadowCascades; ++i) {
     if (depth > shadow.cascade_far_m[i - 1]) {
       origin = shadow.cascade_origin[i];
       scale = shadow.cascade_scale[i];
+      right = shadow.cascade_right[i].xyz;
+      up = shadow.cascade_up[i].xyz;
+      sun = shadow.cascade_toward_sun[i].xyz;
       tile = vec2(i % kShadowAtlasTilesPerRow, i / kShadowAtlasTilesPerRow);
     }
   }
-  vec3 light = GetLightCoordinates(relative_position) + light_direction * (kNormalOffsetTexels * scale.z);
+  vec3 moved = relative_position + (in_air ? sun : n) * (kNormalOffsetTexels * scale.z);
+  vec3 light = vec3(dot(right, moved), dot(up, moved), dot(sun, moved));
   vec3 p = vec3((light.xy - origin.xy) * scale.x + 0.5, (light.z - origin.w) * scale.y);
   vec2 atlas = (p.xy + tile) / float(kShadowAtlasTilesPerRow);
   return texture(shadow_map, vec3(atlas, p.z));
@@ -99,7 +104,7 @@ float SunVisibilityOffset(vec3 relative_position, vec3 light_direction) {
 // grows there (r(t)^2 = r^2 + 2 t r mu_s + t^2), so no caster can lie on it.
 bool AboveEveryCaster(vec3 planet_position) {
   return dot(planet_position, planet_position) > shadow.casters.x * shadow.casters.x &&
-         dot(planet_position, shadow.light_axes[2].xyz) >= 0.0;
+         dot(planet_position, shadow.toward_sun.xyz) >= 0.0;
 }
 
 // The sun's visibility in [0, 1] at a point in the air (the froxels' ray march), given relative
@@ -107,13 +112,13 @@ bool AboveEveryCaster(vec3 planet_position) {
 // above every caster, or with shadows off; those three read no shadow map.
 float SunVisibilityInAir(vec3 relative_position, vec3 planet_position) {
   if (kSunShadows == 0 || AboveEveryCaster(planet_position)) return 1.0;
-  return SunVisibilityOffset(relative_position, vec3(0.0, 0.0, 1.0));
+  return SunVisibilityOffset(relative_position, vec3(0.0), true);
 }
 
 // The sun's visibility in [0, 1] at a point of a surface with the unit normal n (either side).
 float SunVisibility(vec3 relative_position, vec3 normal) {
   if (kSunShadows == 0) return 1.0;
-  return SunVisibilityOffset(relative_position, GetLightCoordinates(normal));
+  return SunVisibilityOffset(relative_position, normal, false);
 }
 
 #endif

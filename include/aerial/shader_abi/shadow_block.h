@@ -3,10 +3,12 @@
 // shadow map lies, as the frame's shaders look it up (render/shadow_uniforms.h fills it).
 // tests/uniform_layout_test.cpp checks it member by member against the GLSL compiler's layout.
 //
-// All cascades share the light's axes, so a lookup projects a point once (three dot products
-// with the axes) and each cascade only shifts and scales the result: far cheaper per fragment on
-// a CPU rasterizer than a 4x4 matrix per cascade. Light coordinates here are relative to the
-// camera (in meters along right, up and toward the sun), which keeps them small in float.
+// Each cascade has the light's axes of the sun it was drawn for: under a moving sun the tiles are
+// redrawn one a frame (render/frame_cache_policy.h), so for a few frames they may hold different
+// suns. A lookup picks its cascade's axes by selects of uniform values, then projects the point
+// with three dot products and shifts and scales the result: far cheaper per fragment on a CPU
+// rasterizer than a 4x4 matrix per cascade. Light coordinates here are relative to the camera (in
+// meters along right, up and toward the sun), which keeps them small in float.
 #include <array>
 
 namespace aerial {
@@ -19,9 +21,13 @@ inline constexpr int kShadowAtlasTilesPerRow = 2;
 static_assert(kShadowAtlasTilesPerRow * kShadowAtlasTilesPerRow >= kShadowCascades);
 
 struct alignas(16) ShadowUniforms {
-  std::array<std::array<float, 4>, 3> light_axes;  // right, up, toward the sun (xyz)
-  std::array<float, 4> view_forward;               // the camera's forward axis (xyz)
-  std::array<float, 4> cascade_far_m;              // each cascade's last view depth
+  std::array<float, 4> toward_sun;    // xyz: the sun's direction now
+  std::array<float, 4> view_forward;  // xyz: the camera's forward axis
+  // Per cascade: the light's axes of the sun its tile was drawn for (xyz; w unused).
+  std::array<std::array<float, 4>, kShadowCascades> cascade_right;
+  std::array<std::array<float, 4>, kShadowCascades> cascade_up;
+  std::array<std::array<float, 4>, kShadowCascades> cascade_toward_sun;
+  std::array<float, 4> cascade_far_m;  // each cascade's last view depth
   // Per cascade: its tile's centre in camera-relative light coordinates (x, y) and the light
   // coordinate of depth 0 (w); z unused.
   std::array<std::array<float, 4>, kShadowCascades> cascade_origin;
@@ -33,6 +39,6 @@ struct alignas(16) ShadowUniforms {
   // farther out with the sun above its horizon sees the sun past every caster.
   std::array<float, 4> casters;
 };
-static_assert(sizeof(ShadowUniforms) == (3 + 2 + 2 * kShadowCascades + 2) * 16);
+static_assert(sizeof(ShadowUniforms) == (2 + 5 * kShadowCascades + 3) * 16);
 
 }  // namespace aerial

@@ -89,8 +89,32 @@ std::array<bool, kShadowCascades> ShadowWindowsMoved(const std::optional<ShadowK
 
 bool TerrainSelectionKept(bool still_view, bool selection_whole) { return still_view && selection_whole; }
 
-bool ShadowMapKept(bool still_view, bool selection_whole, const std::array<bool, kShadowCascades>& moved) {
-  return still_view && selection_whole && std::find(moved.begin(), moved.end(), true) == moved.end();
+std::array<bool, kShadowCascades> ShadowTilesKeepingTheirSun(const std::optional<ShadowKey>& drawn,
+                                                             const glm::dvec3& sun, bool exact) {
+  std::array<bool, kShadowCascades> keep{};
+  if (!drawn || exact) return keep;
+  int most_behind = -1;
+  double lowest_cosine = 2.0;  // of the angle between a tile's sun and this one
+  for (int i = 0; i < kShadowCascades; ++i) {
+    const glm::dvec3& drawn_for = drawn->cascades[i].toward_sun;
+    if (drawn_for == sun) continue;
+    keep[i] = true;
+    if (double cosine = glm::dot(drawn_for, sun); cosine < lowest_cosine) {
+      lowest_cosine = cosine;
+      most_behind = i;
+    }
+  }
+  if (most_behind >= 0) keep[most_behind] = false;
+  return keep;
+}
+
+bool ShadowTilesCaughtUp(const ShadowCascades& cascades, const glm::dvec3& sun) {
+  return std::all_of(cascades.begin(), cascades.end(), [&](const ShadowCascade& c) { return c.toward_sun == sun; });
+}
+
+bool ShadowMapKept(bool still_view, bool selection_whole, const std::array<bool, kShadowCascades>& moved,
+                   bool caught_up) {
+  return still_view && selection_whole && caught_up && std::find(moved.begin(), moved.end(), true) == moved.end();
 }
 
 CasterSelection MakeCasterSelection(const terrain::LodView& view, const ShadowCascade& cascade,

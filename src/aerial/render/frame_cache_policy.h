@@ -115,9 +115,22 @@ HeldCascades HeldShadowWindows(const std::optional<ShadowKey>& drawn, bool exact
 // Per cascade, whether its window moved (every one on the first frame).
 std::array<bool, kShadowCascades> ShadowWindowsMoved(const std::optional<ShadowKey>& drawn,
                                                      const ShadowCascades& now);
-// A still view whose terrain selection lacked no chunk, with no window moved, draws what the map
-// holds without selecting its casters again.
-bool ShadowMapKept(bool still_view, bool selection_whole, const std::array<bool, kShadowCascades>& moved);
+// A moving sun: each tile is drawn for the sun of its own frame (its cascade's light axes go to
+// the shaders with it, shader_abi/shadow_block.h), and when the sun moves the tiles catch up one a
+// frame, the one whose sun lags the most first (the nearest on a tie), as engines time-slice the
+// updates of their cascades: a frame under a moving sun redraws one tile instead of all four.
+// While the sun keeps moving each tile lags by at most three frames' motion; once it stops the
+// map has caught up three frames later (a still view keeps drawing until then: FrameInfo::settled).
+// Per cascade, whether its held window may keep the sun it was drawn for this frame
+// (FitShadowCascades' keep_held_sun): all but the one that catches up. An exact frame keeps none.
+std::array<bool, kShadowCascades> ShadowTilesKeepingTheirSun(const std::optional<ShadowKey>& drawn,
+                                                             const glm::dvec3& sun, bool exact);
+// Whether every tile was drawn for this sun.
+bool ShadowTilesCaughtUp(const ShadowCascades& cascades, const glm::dvec3& sun);
+// A still view whose terrain selection lacked no chunk, with no window moved and no tile behind
+// the sun, draws what the map holds without selecting its casters again.
+bool ShadowMapKept(bool still_view, bool selection_whole, const std::array<bool, kShadowCascades>& moved,
+                   bool caught_up);
 // A frame of a moving camera keeps a tile too, without selecting its terrain casters again, when
 // its window did not move and its last selection lacked no chunk and would pick the same chunks for
 // this frame: the same box and level-of-detail rule, and the camera closer than the selection's

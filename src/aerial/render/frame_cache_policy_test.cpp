@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "aerial/scene/camera.h"
+
 namespace aerial {
 namespace {
 
@@ -177,10 +179,37 @@ TEST(FrameCachePolicy, ShadowWindowsMovedPerCascade) {
 TEST(FrameCachePolicy, ShadowMapKeptByAStillWholeViewWithNoWindowMoved) {
   std::array<bool, kShadowCascades> none{}, one{};
   one[kShadowCascades - 1] = true;
-  EXPECT_TRUE(ShadowMapKept(/*still_view=*/true, /*selection_whole=*/true, none));
-  EXPECT_FALSE(ShadowMapKept(false, true, none)) << "the view moved";
-  EXPECT_FALSE(ShadowMapKept(true, false, none)) << "chunks were missing from the selection";
-  EXPECT_FALSE(ShadowMapKept(true, true, one)) << "a window moved";
+  EXPECT_TRUE(ShadowMapKept(/*still_view=*/true, /*selection_whole=*/true, none, /*caught_up=*/true));
+  EXPECT_FALSE(ShadowMapKept(false, true, none, true)) << "the view moved";
+  EXPECT_FALSE(ShadowMapKept(true, false, none, true)) << "chunks were missing from the selection";
+  EXPECT_FALSE(ShadowMapKept(true, true, one, true)) << "a window moved";
+  EXPECT_FALSE(ShadowMapKept(true, true, none, false)) << "a tile lags the sun";
+}
+
+// Under a moving sun one tile a frame catches up, the one drawn for the sun farthest from this
+// one (the nearest cascade on a tie); the others keep theirs. An exact frame and a first frame
+// keep none, and a tile drawn for this sun has nothing to keep.
+TEST(FrameCachePolicy, ShadowTilesCatchUpWithTheSunOneAFrame) {
+  const glm::dvec3 sun = DirectionFromZenithAzimuth(80.0, 250.0);
+  ShadowKey drawn = Drawn();
+  for (ShadowCascade& c : drawn.cascades) c.toward_sun = sun;
+  EXPECT_TRUE(ShadowTilesCaughtUp(drawn.cascades, sun));
+  for (bool keep : ShadowTilesKeepingTheirSun(drawn, sun, false)) EXPECT_FALSE(keep) << "nothing lags";
+
+  const glm::dvec3 later = DirectionFromZenithAzimuth(81.0, 250.0);
+  EXPECT_FALSE(ShadowTilesCaughtUp(drawn.cascades, later));
+  std::array<bool, kShadowCascades> keep = ShadowTilesKeepingTheirSun(drawn, later, false);
+  for (int i = 0; i < kShadowCascades; ++i) EXPECT_EQ(keep[i], i != 0) << "a tie: the nearest first, cascade " << i;
+
+  drawn.cascades[0].toward_sun = later;
+  drawn.cascades[2].toward_sun = DirectionFromZenithAzimuth(79.0, 250.0);  // two degrees behind
+  keep = ShadowTilesKeepingTheirSun(drawn, later, false);
+  EXPECT_FALSE(keep[0]) << "drawn for this sun";
+  EXPECT_TRUE(keep[1]);
+  EXPECT_FALSE(keep[2]) << "the farthest behind";
+  EXPECT_TRUE(keep[3]);
+  for (bool k : ShadowTilesKeepingTheirSun(drawn, later, /*exact=*/true)) EXPECT_FALSE(k) << "an exact frame";
+  for (bool k : ShadowTilesKeepingTheirSun(std::nullopt, later, false)) EXPECT_FALSE(k) << "the first frame";
 }
 
 TEST(FrameCachePolicy, CastersKeptWithinTheSelectionsSlack) {

@@ -388,21 +388,23 @@ void Renderer::RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& fra
 
 // The cascades are fitted to every frame's camera (cheap), keeping the windows the shadow map holds
 // while their slices fit (shadow_cascades.h), and a tile of the shadow map is redrawn only when
-// what it shows changed (frame_cache_policy.h: its window, the sun, or its terrain casters as its
-// texels resolve them).
+// what it shows changed (frame_cache_policy.h: its window, the sun, one tile a frame, or its
+// terrain casters as its texels resolve them).
 void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene, bool exact) {
-  glm::dvec3 sun = scene.sun.Direction();
+  const glm::dvec3 sun = scene.sun.Direction();
   const CascadeFitInput fit{.camera = scene.camera,
                             .aspect = double(options_.render_width()) / options_.render_height(),
                             .sun = sun,
                             .tile_texels = kShadowTileTexels,
                             .casters = casters_};
-  shadow_cascades_ = FitShadowCascades(fit, HeldShadowWindows(shadow_key_, exact));
+  shadow_cascades_ = FitShadowCascades(fit, HeldShadowWindows(shadow_key_, exact),
+                                       ShadowTilesKeepingTheirSun(shadow_key_, sun, exact));
   if (!options_.shadows) return;
   const std::array<bool, kShadowCascades> moved = ShadowWindowsMoved(shadow_key_, shadow_cascades_);
+  const bool caught_up = shadow_key_ && ShadowTilesCaughtUp(shadow_key_->cascades, sun);
   if (!shadow_key_) shadow_key_.emplace();
   ShadowKey& key = *shadow_key_;
-  if (ShadowMapKept(still_view_, shadow_selection_whole_, moved)) return;
+  if (ShadowMapKept(still_view_, shadow_selection_whole_, moved, caught_up)) return;
   const terrain::LodView lod_view = FrameLodView(scene);
   const bool select_terrain = terrain_ && options_.passes.terrain;
   std::array<bool, kShadowCascades> redraw{};
@@ -657,8 +659,9 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   const bool shadowed_terrain = options_.shadows && terrain_ && options_.passes.terrain;
   const bool lattice_caught_up = options_.mode != AerialMode::kFroxel ||
                                  SkyViewLatticeCaughtUp(sky_view_lattice_keys_, MakeSkyViewKey(frame_uniforms_));
-  frame_info_.settled =
-      frame_info_.deferred == 0 && (!shadowed_terrain || shadow_selection_whole_) && lattice_caught_up;
+  const bool shadows_caught_up = !options_.shadows || ShadowTilesCaughtUp(shadow_cascades_, scene.sun.Direction());
+  frame_info_.settled = frame_info_.deferred == 0 && (!shadowed_terrain || shadow_selection_whole_) &&
+                        lattice_caught_up && shadows_caught_up;
   ++frames_recorded_;
   last_slot_ = slot;
 }

@@ -69,31 +69,55 @@ Rectangle SliceFootprint(const Camera& camera, double n, double f, double tan_x,
 
 }  // namespace
 
-ShadowCascades FitShadowCascades(const CascadeFitInput& in, const HeldCascades& held) {
+namespace {
+
+// The slice's bounding sphere's centre in light coordinates, and its footprint across.
+struct SliceInLight {
+  glm::dvec3 center;
+  Rectangle footprint;
+};
+SliceInLight LocateSlice(const Camera& camera, double n, double f, double center_depth, double tan_x, double tan_y,
+                         const LightBasis& b) {
+  glm::dvec3 center = camera.position + Forward(camera) * center_depth;
+  return {{glm::dot(center, b.right), glm::dot(center, b.up), glm::dot(center, b.toward_sun)},
+          SliceFootprint(camera, n, f, tan_x, tan_y, b)};
+}
+
+double CastersTop(const CasterBounds& casters, const LightBasis& b) {
+  return glm::dot(casters.center, b.toward_sun) + casters.radius_m;
+}
+
+}  // namespace
+
+ShadowCascades FitShadowCascades(const CascadeFitInput& in, const HeldCascades& held,
+                                 const std::array<bool, kShadowCascades>& keep_held_sun) {
   const LightBasis b = MakeLightBasis(in.sun);
-  const glm::dvec3 forward = Forward(in.camera);
   const double tan_y = std::tan(in.camera.vertical_fov_deg * std::numbers::pi / 360.0), tan_x = tan_y * in.aspect;
-  const double casters_top = glm::dot(in.casters.center, b.toward_sun) + in.casters.radius_m;
+  const double casters_top = CastersTop(in.casters, b);
   ShadowCascades cascades;
   for (int i = 0; i < kShadowCascades; ++i) {
     const double near_m = ShadowSplitM(in.camera, i), far_m = ShadowSplitM(in.camera, i + 1);
     SliceSphere sphere = BoundSlice(near_m, far_m, tan_x, tan_y);
-    glm::dvec3 center = in.camera.position + forward * sphere.center_depth;
-    glm::dvec3 light(glm::dot(center, b.right), glm::dot(center, b.up), glm::dot(center, b.toward_sun));
-    const Rectangle footprint = SliceFootprint(in.camera, near_m, far_m, tan_x, tan_y, b);
     const double slack_m = kShadowWindowSlack[i] * sphere.radius;
     if (const std::optional<ShadowCascade>& h = held[i];
-        h && h->toward_sun == b.toward_sun && h->slice_radius_m == sphere.radius &&
-        h->casters_top_m == casters_top && h->near_m == near_m && h->far_m == far_m &&
-        Rectangle{h->casters_min, h->casters_max}.Holds(footprint)) {
-      glm::dvec3 offset = glm::abs(light - h->center_light);
-      double drift = std::max({offset.x, offset.y, offset.z}) / slack_m;
-      if (drift <= 1.0) {
-        cascades[i] = *h;
-        cascades[i].drift = drift;
-        continue;
+        h && (h->toward_sun == b.toward_sun || keep_held_sun[i])) {
+      // A held window is checked in the light's axes of the sun it was drawn for.
+      const LightBasis held_basis = MakeLightBasis(h->toward_sun);
+      const SliceInLight slice = LocateSlice(in.camera, near_m, far_m, sphere.center_depth, tan_x, tan_y, held_basis);
+      if (h->slice_radius_m == sphere.radius && h->casters_top_m == CastersTop(in.casters, held_basis) &&
+          h->near_m == near_m && h->far_m == far_m && Rectangle{h->casters_min, h->casters_max}.Holds(slice.footprint)) {
+        glm::dvec3 offset = glm::abs(slice.center - h->center_light);
+        double drift = std::max({offset.x, offset.y, offset.z}) / slack_m;
+        if (drift <= 1.0) {
+          cascades[i] = *h;
+          cascades[i].drift = drift;
+          continue;
+        }
       }
     }
+    const SliceInLight slice = LocateSlice(in.camera, near_m, far_m, sphere.center_depth, tan_x, tan_y, b);
+    const glm::dvec3& light = slice.center;
+    const Rectangle& footprint = slice.footprint;
     ShadowCascade& c = cascades[i];
     c.near_m = near_m;
     c.far_m = far_m;

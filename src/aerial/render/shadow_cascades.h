@@ -97,7 +97,8 @@ struct ShadowCascade {
   // when dot(plane.xyz, p) + plane.w >= 0 for the four sides and the far side (away from the sun).
   std::array<glm::dvec4, 5> planes{};
   // What the window was fitted for: the sun, its slice's bounding sphere radius and the casters'
-  // top along the sun; a held window is kept only for the same three and the same slice.
+  // top along the sun; a held window is kept only for the same slice and casters, and for the
+  // same sun unless FitShadowCascades is allowed to keep the sun it was drawn for.
   glm::dvec3 toward_sun{0.0};
   double slice_radius_m = 0.0;
   double casters_top_m = 0.0;
@@ -115,7 +116,11 @@ using HeldCascades = std::array<std::optional<ShadowCascade>, kShadowCascades>;
 double ShadowSplitM(const Camera& camera, int i);
 
 // The cascades for the input's view: each held one where its slice still fits inside its window
-// and its casters' rectangle (its drift updated), a new window around the slice elsewhere.
-ShadowCascades FitShadowCascades(const CascadeFitInput& input, const HeldCascades& held = {});
+// and its casters' rectangle (its drift updated), a new window around the slice elsewhere. A held
+// window is kept only for the input's sun, unless keep_held_sun allows it to keep the sun it was
+// drawn for (a moving sun's tiles catch up one a frame: frame_cache_policy.h); a new window is
+// always fitted for the input's sun.
+ShadowCascades FitShadowCascades(const CascadeFitInput& input, const HeldCascades& held = {},
+                                 const std::array<bool, kShadowCascades>& keep_held_sun = {});
 
 }  // namespace aerial

@@ -155,14 +155,32 @@ TEST(ShadowCascades, HeldWindowsAreKeptWhileTheirSlicesFit) {
   for (int i = 0; i < kShadowCascades; ++i) EXPECT_NE(resunned[i].clip_from_world, moved[i].clip_from_world) << i;
 }
 
-// However a camera walks and turns, the windows it keeps hold every slice corner inside the tile
-// (kShadowMarginTexels from its edges), inside the depth range and inside the casters' rectangle,
-// as fresh fits do: a walk of 60 steps of 7 m that turns 1.5 degrees a step and climbs.
+// Every slice corner of the view lies inside its cascade's tile (kShadowMarginTexels from its
+// edges), inside the depth range and inside the casters' rectangle, in the light's axes of the sun
+// the cascade was drawn for.
+void ExpectSlicesCovered(const CascadeFitInput& in, const ShadowCascades& cascades, int step) {
+  const double inner = 1.0 - 2.0 * kShadowMarginTexels / in.tile_texels;
+  for (const ShadowCascade& c : cascades) {
+    const LightBasis light_axes = MakeLightBasis(c.toward_sun);
+    for (const glm::dvec3& corner : SliceCorners(in, c)) {
+      glm::dvec3 clip = Clip(c, corner);
+      ASSERT_LE(std::fabs(clip.x), inner + 1e-9) << "step " << step << " far " << c.far_m;
+      ASSERT_LE(std::fabs(clip.y), inner + 1e-9) << "step " << step << " far " << c.far_m;
+      ASSERT_GE(clip.z, 0.0);
+      ASSERT_LE(clip.z, 1.0);
+      glm::dvec2 light(glm::dot(corner, light_axes.right), glm::dot(corner, light_axes.up));
+      ASSERT_TRUE(glm::all(glm::lessThanEqual(c.casters_min, light + 1e-6)) &&
+                  glm::all(glm::lessThanEqual(light, c.casters_max + 1e-6)))
+          << "step " << step << " far " << c.far_m;
+    }
+  }
+}
+
+// However a camera walks and turns, the windows it keeps hold every slice corner as fresh fits
+// do: a walk of 60 steps of 7 m that turns 1.5 degrees a step and climbs.
 TEST(ShadowCascades, KeptWindowsCoverTheirSlicesAlongAWalk) {
   CascadeFitInput in = NoonView();
   ShadowCascades cascades = FitShadowCascades(in);
-  const double inner = 1.0 - 2.0 * kShadowMarginTexels / in.tile_texels;
-  const LightBasis light_axes = MakeLightBasis(in.sun);
   int refits = 0;
   for (int step = 0; step < 60; ++step) {
     in.camera.position += 7.0 * Forward(in.camera) + glm::dvec3(0.0, 0.0, 1.5);
@@ -170,24 +188,53 @@ TEST(ShadowCascades, KeptWindowsCoverTheirSlicesAlongAWalk) {
     ShadowCascades next = FitShadowCascades(in, Held(cascades));
     for (int i = 0; i < kShadowCascades; ++i) refits += next[i].clip_from_world != cascades[i].clip_from_world;
     cascades = next;
-    for (const ShadowCascade& c : cascades)
-      for (const glm::dvec3& corner : SliceCorners(in, c)) {
-        glm::dvec3 clip = Clip(c, corner);
-        ASSERT_LE(std::fabs(clip.x), inner + 1e-9) << "step " << step << " far " << c.far_m;
-        ASSERT_LE(std::fabs(clip.y), inner + 1e-9) << "step " << step << " far " << c.far_m;
-        ASSERT_GE(clip.z, 0.0);
-        ASSERT_LE(clip.z, 1.0);
-        glm::dvec2 light(glm::dot(corner, light_axes.right), glm::dot(corner, light_axes.up));
-        ASSERT_TRUE(glm::all(glm::lessThanEqual(c.casters_min, light + 1e-6)) &&
-                    glm::all(glm::lessThanEqual(light, c.casters_max + 1e-6)))
-            << "step " << step << " far " << c.far_m;
-      }
+    ExpectSlicesCovered(in, cascades, step);
   }
   // Without kept windows all 240 tiles would be fitted anew (and redrawn); the walk takes the first
   // slice out of its 14 m of slack every few steps and the larger ones seldom (measured: 45).
   std::printf("kept windows: %d refits in 60 steps of 4 cascades\n", refits);
   EXPECT_LT(refits, 60);
   EXPECT_GT(refits, 5);
+}
+
+// A window allowed to keep the sun it was drawn for stays with that sun (its projection, so its
+// tile, unchanged) while its slice fits in its own light axes; one that must be fitted anew is
+// fitted for the new sun, and one not allowed to keep its sun is refitted too.
+TEST(ShadowCascades, HeldWindowsMayKeepTheSunTheyWereDrawnFor) {
+  CascadeFitInput in = NoonView();
+  const ShadowCascades first = FitShadowCascades(in);
+  CascadeFitInput later = in;
+  later.sun = DirectionFromZenithAzimuth(70.5, 161.0);
+  later.camera.position += glm::dvec3(3.0, 4.0, 0.0);
+  std::array<bool, kShadowCascades> keep{true, true, true, true};
+  keep[2] = false;
+  const ShadowCascades kept = FitShadowCascades(later, Held(first), keep);
+  for (int i = 0; i < kShadowCascades; ++i) {
+    EXPECT_EQ(kept[i].clip_from_world == first[i].clip_from_world, keep[i]) << "cascade " << i;
+    EXPECT_EQ(kept[i].toward_sun, keep[i] ? in.sun : later.sun) << "cascade " << i;
+  }
+  later.camera.position += glm::dvec3(40.0, 0.0, 0.0);
+  const ShadowCascades moved = FitShadowCascades(later, Held(kept), keep);
+  EXPECT_EQ(moved[0].toward_sun, later.sun) << "the first slice left its window: a new one, for the new sun";
+  EXPECT_EQ(moved[1].clip_from_world, first[1].clip_from_world);
+  ExpectSlicesCovered(later, moved, 0);
+}
+
+// A walk under a sun that sinks 0.4 degrees a step, the tiles catching up one a step in turn (as
+// the renderer's policy does): every kept window still covers its slice in its own sun's axes.
+TEST(ShadowCascades, KeptWindowsCoverTheirSlicesUnderAMovingSun) {
+  CascadeFitInput in = NoonView();
+  ShadowCascades cascades = FitShadowCascades(in);
+  for (int step = 0; step < 40; ++step) {
+    in.camera.position += 7.0 * Forward(in.camera);
+    in.camera.yaw_deg += 1.0;
+    in.sun = DirectionFromZenithAzimuth(70.0 + 0.4 * (step + 1), 160.0);
+    std::array<bool, kShadowCascades> keep{true, true, true, true};
+    keep[step % kShadowCascades] = false;
+    cascades = FitShadowCascades(in, Held(cascades), keep);
+    EXPECT_EQ(cascades[step % kShadowCascades].toward_sun, in.sun) << "step " << step;
+    ExpectSlicesCovered(in, cascades, step);
+  }
 }
 
 }  // namespace

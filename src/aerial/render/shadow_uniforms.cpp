@@ -12,17 +12,18 @@ glm::dmat4 ClipFromRelative(const ShadowCascade& cascade, const glm::dvec3& came
 
 ShadowUniforms MakeShadowUniforms(const ShadowCascades& cascades, const glm::dvec3& sun, const Camera& view,
                                   const CasterBounds& casters, bool enabled) {
-  const LightBasis b = MakeLightBasis(sun);
-  const glm::dvec3& camera_position = view.position;
-  const glm::dvec3 camera(glm::dot(camera_position, b.right), glm::dot(camera_position, b.up),
-                          glm::dot(camera_position, b.toward_sun));
+  auto vec4 = [](const glm::dvec3& v) { return std::array<float, 4>{float(v.x), float(v.y), float(v.z), 0.0f}; };
   ShadowUniforms u{};
-  int axis = 0;
-  for (const glm::dvec3& a : {b.right, b.up, b.toward_sun}) u.light_axes[axis++] = {float(a.x), float(a.y), float(a.z), 0.0f};
-  glm::dvec3 forward = Forward(view);
-  u.view_forward = {float(forward.x), float(forward.y), float(forward.z), 0.0f};
+  u.toward_sun = vec4(sun);
+  u.view_forward = vec4(Forward(view));
   for (int i = 0; i < kShadowCascades; ++i) {
     const ShadowCascade& c = cascades[i];
+    const LightBasis b = MakeLightBasis(c.toward_sun);
+    const glm::dvec3 camera(glm::dot(view.position, b.right), glm::dot(view.position, b.up),
+                            glm::dot(view.position, b.toward_sun));
+    u.cascade_right[i] = vec4(b.right);
+    u.cascade_up[i] = vec4(b.up);
+    u.cascade_toward_sun[i] = vec4(b.toward_sun);
     u.cascade_far_m[i] = float(c.far_m);
     u.cascade_origin[i] = {float(c.center_light.x - camera.x), float(c.center_light.y - camera.y), 0.0f,
                            float(c.depth_min_m - camera.z)};
