@@ -10,6 +10,7 @@
 #include <vulkan/vulkan.hpp>  // the out-of-memory exceptions below
 
 #include "aerial/cli/commands.h"
+#include "aerial/cli/huge_pages.h"
 #include "aerial/cli/option_values.h"
 #include "aerial/device.h"
 #include "aerial/error.h"
@@ -35,6 +36,7 @@ aerial::Error OutOfMemory(const std::string& memory, const std::string& reason) 
 }  // namespace
 
 int main(int argc, char** argv) {
+  aerial::cli::RestartWithHugePages(argv);
   CLI::App app{"aerial: precomputed atmospheric scattering (Bruneton 2008) on Vulkan"};
   app.require_subcommand(1);
   app.set_version_flag("--version", AERIAL_VERSION);
