@@ -397,8 +397,8 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
                             .sun = sun,
                             .tile_texels = kShadowTileTexels,
                             .casters = casters_};
-  shadow_cascades_ = FitShadowCascades(fit, HeldShadowWindows(shadow_key_, exact),
-                                       ShadowTilesKeepingTheirSun(shadow_key_, sun, exact));
+  const std::array<bool, kShadowCascades> keep_sun = ShadowTilesKeepingTheirSun(shadow_key_, sun, exact);
+  shadow_cascades_ = FitShadowCascades(fit, HeldShadowWindows(shadow_key_, exact), keep_sun);
   if (!options_.shadows) return;
   const std::array<bool, kShadowCascades> moved = ShadowWindowsMoved(shadow_key_, shadow_cascades_);
   const bool caught_up = shadow_key_ && ShadowTilesCaughtUp(shadow_key_->cascades, sun);
@@ -410,7 +410,9 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
   std::array<bool, kShadowCascades> redraw{};
   for (int i = 0; i < kShadowCascades; ++i) {
     key.cascades[i] = shadow_cascades_[i];
-    if (CastersKept(key.selections[i], lod_view, shadow_cascades_[i], moved[i])) continue;
+    // A tile waiting for its turn to catch up with the sun is not redrawn for chunks that arrived.
+    if ((keep_sun[i] && !moved[i]) || CastersKept(key.selections[i], lod_view, shadow_cascades_[i], moved[i]))
+      continue;
     std::vector<terrain::SelectedChunk> casters;
     if (select_terrain) {
       CascadeCasters selected = SelectCascadeCasters(lod_view, shadow_cascades_[i], *terrain_);
