@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <vulkan/vulkan_core.h>
@@ -26,6 +27,9 @@ struct DeviceHandoff {
   VkDevice device = VK_NULL_HANDLE;
   uint32_t queue_family = 0;
   uint32_t queue_index = 0;
+  // The device was made with the optional feature pipelineStatisticsQuery: passes then count their
+  // fragment-shader invocations (PassTime).
+  bool pipeline_statistics = false;
 };
 
 // The device extensions aerial uses (descriptors are pushed, not allocated from pools).
@@ -53,6 +57,9 @@ struct RequiredDeviceFeatures {
 struct PassTime {
   std::string pass;
   double milliseconds = 0.0;
+  // Fragment-shader invocations of the pass, where the device counts them
+  // (DeviceHandoff::pipeline_statistics; aerial's own device enables it where it exists).
+  std::optional<uint64_t> fragment_shader_invocations;
 };
 
 // aerial's own device.

@@ -20,6 +20,7 @@
 #include <functional>
 #include <tuple>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -229,6 +230,28 @@ void Bench(const BenchOptions& cli) {
     doc["froxel_reads"]["per_pixel_minus_frame"] =
         PrintDifference("per pixel everywhere, minus the frame", *per_pixel, frame, unit.median);
   }
+
+  // Fragment-shader invocations (pipeline statistics, where the device counts them): the opaque
+  // pass's count over the pixels its surfaces cover is how many times each covered pixel was
+  // shaded, by overdraw and by the rasterizer's stamps (llvmpipe shades 4x4 stamps and counts them
+  // before the depth test: its sky, drawn only where nothing is, counts about every screen pixel).
+  nlohmann::json shading;
+  const double covered = double(aerial::bench::CoveredPixels(*renderers.front()));
+  for (const Configuration& c : configurations) {
+    std::optional<double> opaque = aerial::bench::MedianFragmentInvocations(c.frames, "opaque raster");
+    std::optional<double> sky = aerial::bench::MedianFragmentInvocations(c.frames, "sky");
+    if (!opaque || !sky || c.motion == aerial::bench::Motion::kSun || c.part_left_out) continue;
+    const double pixels = double(base.render_width()) * base.render_height();
+    if (shading.empty())
+      std::printf("\n=== fragment-shader invocations (pipeline statistics, medians): the opaque pass's per pixel "
+                  "its surfaces cover (%.1f%% of the screen, the last frame's), and the sky's per screen pixel "
+                  "===\n", 100.0 * covered / pixels);
+    std::printf("  %-40s %11.0f opaque: %.3f per covered pixel; sky %.3f per pixel\n", c.name.c_str(), *opaque,
+                *opaque / covered, *sky / pixels);
+    shading[c.key] = {{"opaque_invocations", *opaque}, {"sky_invocations", *sky}, {"covered_pixels", covered},
+                      {"opaque_per_covered_pixel", *opaque / covered}};
+  }
+  if (!shading.empty()) doc["fragment_invocations_median"] = shading;
 
   // lavapipe defers rasterization and takes a timestamp when its threads reach it, so the
   // interval of a pass that drew nothing can hold other work: the tiles redrawn say what the

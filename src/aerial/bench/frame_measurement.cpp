@@ -3,6 +3,9 @@
 #include <chrono>
 #include <ctime>
 
+#include "aerial/api/impl.h"
+#include "aerial/validation/image_metrics.h"
+
 namespace aerial::bench {
 namespace {
 
@@ -45,6 +48,14 @@ std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<FrameSource>
       if (on_frame) on_frame();
     }
   return measured;
+}
+
+size_t CoveredPixels(const SceneRenderer& renderer) {
+  const ImageRgbF surface = ImplOf(renderer).renderer.ReadSurface();
+  size_t covered = 0;
+  for (int y = 0; y < surface.height; ++y)
+    for (int x = 0; x < surface.width; ++x) covered += !validation::IsSky(surface, x, y);
+  return covered;
 }
 
 }  // namespace aerial::bench

@@ -43,4 +43,8 @@ std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<FrameSource>
                                                   int warmup, int frames,
                                                   const std::function<void()>& on_frame);
 
+// The pixels that the renderer's last frame's opaque surfaces cover (the rest is sky), from its
+// surface image (Renderer::ReadSurface).
+size_t CoveredPixels(const SceneRenderer& renderer);
+
 }  // namespace aerial::bench

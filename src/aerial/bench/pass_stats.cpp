@@ -43,6 +43,18 @@ double MeanShadowTilesRedrawn(const std::vector<RunResult>& runs) {
   return tiles / double(runs.size());
 }
 
+std::optional<double> MedianFragmentInvocations(const std::vector<RunResult>& runs, const std::string& pass) {
+  std::vector<double> counts;
+  for (const RunResult& run : runs) {
+    std::optional<double> count;
+    for (const PassTime& p : run.passes)
+      if (p.pass == pass && p.fragment_shader_invocations) count = count.value_or(0.0) + double(*p.fragment_shader_invocations);
+    if (count) counts.push_back(*count);
+  }
+  if (counts.empty()) return std::nullopt;
+  return Summarize(std::move(counts)).median;
+}
+
 Stats Summarize(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   size_t n = values.size();

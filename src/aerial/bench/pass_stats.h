@@ -3,6 +3,7 @@
 // work, lavapipe running the "GPU" on them), so a benchmark reports the median of each pass with
 // its min and max instead of a mean that one disturbed run would drag.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,9 @@ std::vector<double> CpuTotals(const std::vector<RunResult>& runs);
 std::vector<double> CallerCpuTotals(const std::vector<RunResult>& runs);
 // The shadow map's tiles redrawn per run, on average.
 double MeanShadowTilesRedrawn(const std::vector<RunResult>& runs);
+// The median over runs of the named pass's fragment-shader invocations (summed within a run where
+// it ran more than once); nullopt where the device did not count them or the pass never ran.
+std::optional<double> MedianFragmentInvocations(const std::vector<RunResult>& runs, const std::string& pass);
 
 struct Stats {
   double median = 0.0, min = 0.0, max = 0.0;

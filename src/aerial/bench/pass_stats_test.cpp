@@ -15,5 +15,18 @@ TEST(PassKind, DropsTheOrderAndTheSpectralGroup) {
   EXPECT_EQ(PassKind("[not a group"), "[not a group");
 }
 
+// Counts are summed within a run (a pass recorded twice, as a caching frame's opaque scopes) and
+// the median taken over runs; runs that did not count leave nothing.
+TEST(MedianFragmentInvocations, SumsWithinARunAndTakesTheMedianOverRuns) {
+  auto run = [](std::optional<uint64_t> a, std::optional<uint64_t> b) {
+    return RunResult{.passes = {{"opaque raster", 1.0, a}, {"sky", 1.0, 7}, {"opaque raster", 1.0, b}}};
+  };
+  std::vector<RunResult> runs = {run(10, 5), run(40, std::nullopt), run(20, 1)};
+  EXPECT_EQ(MedianFragmentInvocations(runs, "opaque raster"), 21.0);
+  EXPECT_EQ(MedianFragmentInvocations(runs, "sky"), 7.0);
+  EXPECT_EQ(MedianFragmentInvocations(runs, "froxel build"), std::nullopt);
+  EXPECT_EQ(MedianFragmentInvocations({run(std::nullopt, std::nullopt)}, "opaque raster"), std::nullopt);
+}
+
 }  // namespace
 }  // namespace aerial::bench

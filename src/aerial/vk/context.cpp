@@ -143,6 +143,9 @@ Context::Context(const ContextCreateInfo& info) {
   std::vector<const char*> device_extensions(kRequiredDeviceExtensions.begin(), kRequiredDeviceExtensions.end());
   if (!info.window_extensions.empty()) device_extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
   RequiredDeviceFeatures features;
+  // Optional: fragment-shader counts per pass (GpuTimer), for the bench.
+  pipeline_statistics_ = physical_device_.getFeatures().pipelineStatisticsQuery;
+  features.core.pipelineStatisticsQuery = pipeline_statistics_ ? VK_TRUE : VK_FALSE;
   device_ = ::vk::raii::Device(
       physical_device_, ::vk::DeviceCreateInfo{.pNext = features.Chain(),
                                                .queueCreateInfoCount = 1,
@@ -154,7 +157,7 @@ Context::Context(const ContextCreateInfo& info) {
   CreateSubmitObjects();
 }
 
-Context::Context(const DeviceHandoff& external) : external_(true) {
+Context::Context(const DeviceHandoff& external) : external_(true), pipeline_statistics_(external.pipeline_statistics) {
   if (!external.instance || !external.physical_device || !external.device)
     throw Error("external device", "a null handle", "the caller's instance, physical device and device");
   instance_ = ::vk::raii::Instance(loader_, external.instance);
@@ -227,7 +230,8 @@ void Context::CreateSubmitObjects() {
 }
 
 DeviceHandoff Context::Handoff() const {
-  return {.instance = *instance_, .physical_device = *physical_device_, .device = *device_, .queue_family = queue_family_};
+  return {.instance = *instance_, .physical_device = *physical_device_, .device = *device_, .queue_family = queue_family_,
+          .pipeline_statistics = pipeline_statistics_};
 }
 
 std::string Context::device_name() const {

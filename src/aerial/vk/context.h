@@ -54,6 +54,8 @@ class Context {
   // How this context's pipelines read the tables: AERIAL_TABLE_FILTERING (table_filtering.h).
   TableFiltering table_filtering() const { return table_filtering_; }
   double timestamp_period_ns() const { return timestamp_period_ns_; }
+  // Whether pipeline-statistics queries may be used (the optional feature pipelineStatisticsQuery).
+  bool pipeline_statistics() const { return pipeline_statistics_; }
 
   // Records commands, submits them and waits for completion: for one-off work (uploads,
   // readbacks, a single frame). The command buffer and fence are the context's own, reused by
@@ -88,6 +90,7 @@ class Context {
   TableFiltering table_filtering_ = TableFilteringFromEnvironment();
   bool external_ = false;  // the instance and the device are the caller's (DeviceHandoff)
   double timestamp_period_ns_ = 1.0;
+  bool pipeline_statistics_ = false;
 };
 
 // A caller's command buffer (the public API's VkCommandBuffer) as aerial's passes record into

@@ -1,7 +1,10 @@
 #pragma once
 // GPU timestamps around passes. Begin/End record timestamps into a command buffer; Collect reads
 // them after the submission completed. On lavapipe a command buffer runs synchronously on the CPU,
-// so the timestamps equal wall-clock time of the pass.
+// so the timestamps equal wall-clock time of the pass. Where the context allows pipeline
+// statistics, each pass also counts its fragment-shader invocations (a pass is then begun and
+// ended in the same raster scope, or both outside one, and passes do not nest).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +27,7 @@ class GpuTimer {
  private:
   const Context& context_;
   ::vk::raii::QueryPool pool_;
+  std::optional<::vk::raii::QueryPool> statistics_;  // fragment-shader invocations, one query a pass
   uint32_t capacity_;
   std::vector<std::string> passes_;
 };
