@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "aerial/cli/commands.h"
 #include "aerial/cli/common_options.h"
@@ -10,25 +11,45 @@
 #include "aerial/cli/path_option.h"
 #include "aerial/cli/scene_options.h"
 #include "aerial/core/output_conflicts.h"
+#include "aerial/error.h"
 #include "aerial/image.h"
+#include "aerial/image/image_writer.h"
+#include "aerial/image/resample.h"
 #include "aerial/precompute/spectral_precompute.h"
 #include "aerial/render/renderer_options.h"
 
 namespace aerial::cli {
 namespace {
 
+// Samples per pixel on each side: the frame is rendered this many times larger and each block
+// averaged, so that edges (ridges against the sky, the landmarks) show no stair steps.
+constexpr int kDefaultSupersample = 2;
+constexpr int kMaxSupersample = 4;
+
 struct RenderCommandOptions {
   TableOptions tables;
   SceneOptions scene;
   FrameOptions frame;
   bool timings = false;
+  int supersample = kDefaultSupersample;
   std::filesystem::path out;
 };
 
 void RunRender(const RenderCommandOptions& options) {
   CheckImageOutputPath(options.out);
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
+  if (options.supersample < 1 || options.supersample > kMaxSupersample)
+    throw Error("--supersample", std::to_string(options.supersample), "1 to " + std::to_string(kMaxSupersample));
   RendererOptions render = options.frame.MakeRenderOptions();
+  render.width *= options.supersample;
+  render.height *= options.supersample;
+  try {
+    render.Validate();
+  } catch (const Error& e) {
+    throw Error("--supersample", std::to_string(options.supersample),
+                "a factor that keeps the rendered frame valid (" + e.field() + " " + e.value() + ": " + e.allowed() +
+                    ")");
+  }
   Scene scene = options.scene.Load(atmosphere.bottom_radius_m, options.tables.MakeHostMemoryBudget());
   CheckOutputConflicts({{"--out", options.out}});
   PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
@@ -40,9 +61,18 @@ void RunRender(const RenderCommandOptions& options) {
   SceneRenderer renderer = MakeSceneRenderer(tables, scene, render);
   renderer.Render(scene);  // the first frame includes lavapipe's shader compilation
   std::vector<PassTime> times = renderer.Render(scene);
-  ImageRgbF frame = renderer.ReadOutput();
-  WriteImage(options.out, frame,
-             options.frame.MakeToneMap(frame, ShaderAtmosphere(atmosphere, precompute).solar_irradiance));
+  ImageRgbF frame = DownsampleBox(renderer.ReadOutput(), options.supersample);
+  ToneMapOptions tone_map =
+      options.frame.MakeToneMap(frame, ShaderAtmosphere(atmosphere, precompute).solar_irradiance);
+  WriteImage(options.out, frame, tone_map);
+  const std::string out = Printable(options.out.native());
+  if (ImageFormatFromPath(options.out) == ImageFormat::kExr) {
+    std::printf("wrote %s: %dx%d linear radiance\n", out.c_str(), frame.width, frame.height);
+  } else {
+    std::printf("wrote %s: %dx%d, EV100 %.2f (%s)\n", out.c_str(), frame.width, frame.height,
+                Ev100FromRadianceMultiplier(tone_map.exposure),
+                options.frame.ev100 || options.frame.exposure ? "fixed" : "metered");
+  }
   if (options.timings) {
     double total = 0.0;
     for (const auto& pass : times) {
@@ -66,6 +96,9 @@ void AddRenderCommand(CLI::App& app) {
   AddPathOption(*command, "--out", options->out, "Output image, .exr (linear radiance) or .png (exposed, sRGB)")
       ->required();
   options->frame.AddTo(*command, "Image");
+  command->add_option("--supersample", options->supersample,
+                      "Anti-aliasing: render N times larger on each side and average each N x N block "
+                      "(1 to 4; default 2; 1: one sample per pixel)");
   command->add_flag("--timings", options->timings, "Print the GPU time of each pass");
   options->tables.AddTo(*command);
   command->callback([options] { RunRender(*options); });
