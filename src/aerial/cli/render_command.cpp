@@ -22,7 +22,9 @@ namespace aerial::cli {
 namespace {
 
 // Samples per pixel on each side: the frame is rendered this many times larger and each block
-// averaged, so that edges (ridges against the sky, the landmarks) show no stair steps.
+// averaged, so that edges (ridges against the sky, the landmarks) show no stair steps. The default
+// falls back to one sample where the larger frame would not fit (the image limits or the memory
+// budget); a factor asked for must fit.
 constexpr int kDefaultSupersample = 2;
 constexpr int kMaxSupersample = 4;
 
@@ -31,46 +33,55 @@ struct RenderCommandOptions {
   SceneOptions scene;
   FrameOptions frame;
   bool timings = false;
-  int supersample = kDefaultSupersample;
+  std::optional<int> supersample;
   std::filesystem::path out;
 };
 
 void RunRender(const RenderCommandOptions& options) {
   CheckImageOutputPath(options.out);
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
-  if (options.supersample < 1 || options.supersample > kMaxSupersample)
-    throw Error("--supersample", std::to_string(options.supersample), "1 to " + std::to_string(kMaxSupersample));
+  if (options.supersample && (*options.supersample < 1 || *options.supersample > kMaxSupersample))
+    throw Error("--supersample", std::to_string(*options.supersample), "1 to " + std::to_string(kMaxSupersample));
   RendererOptions render = options.frame.MakeRenderOptions();
-  render.width *= options.supersample;
-  render.height *= options.supersample;
-  try {
-    render.Validate();
-  } catch (const Error& e) {
-    throw Error("--supersample", std::to_string(options.supersample),
-                "a factor that keeps the rendered frame valid (" + e.field() + " " + e.value() + ": " + e.allowed() +
-                    ")");
-  }
   Scene scene = options.scene.Load(atmosphere.bottom_radius_m, options.tables.MakeHostMemoryBudget());
   CheckOutputConflicts({{"--out", options.out}});
   PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
   Device device(options.tables.MakeDeviceOptions());
-  options.tables.MakeMemoryBudget(device.largest_heap_bytes())
-      .Check(Combined(SceneMemoryUses(scene, options.scene.Source()),
-                      Combined(TableMemoryUses(precompute), FrameMemoryUses(render))));
+  const MemoryBudget budget = options.tables.MakeMemoryBudget(device.largest_heap_bytes());
+  auto check_memory = [&](const RendererOptions& frame) {
+    budget.Check(Combined(SceneMemoryUses(scene, options.scene.Source()),
+                          Combined(TableMemoryUses(precompute), FrameMemoryUses(frame))));
+  };
+  check_memory(render);  // the frame as asked: its errors name --width/--height
+  int supersample = options.supersample.value_or(kDefaultSupersample);
+  try {
+    RendererOptions larger = render;
+    larger.width *= supersample;
+    larger.height *= supersample;
+    larger.Validate();
+    check_memory(larger);
+    render = larger;
+  } catch (const Error& e) {
+    if (options.supersample)
+      throw Error("--supersample", std::to_string(supersample),
+                  "a factor whose frame fits (" + e.field() + " = " + e.value() + ": " + e.allowed() + ")");
+    supersample = 1;
+  }
   Tables tables = Tables::LoadOrPrecompute(device, atmosphere, precompute, options.tables.MakeLoadOptions());
   SceneRenderer renderer = MakeSceneRenderer(tables, scene, render);
   renderer.Render(scene);  // the first frame includes lavapipe's shader compilation
   std::vector<PassTime> times = renderer.Render(scene);
-  ImageRgbF frame = DownsampleBox(renderer.ReadOutput(), options.supersample);
+  ImageRgbF frame = DownsampleBox(renderer.ReadOutput(), supersample);
   ToneMapOptions tone_map =
       options.frame.MakeToneMap(frame, ShaderAtmosphere(atmosphere, precompute).solar_irradiance);
   WriteImage(options.out, frame, tone_map);
   const std::string out = Printable(options.out.native());
   if (ImageFormatFromPath(options.out) == ImageFormat::kExr) {
-    std::printf("wrote %s: %dx%d linear radiance\n", out.c_str(), frame.width, frame.height);
+    std::printf("wrote %s: %dx%d, %dx%d samples per pixel, linear radiance\n", out.c_str(), frame.width,
+                frame.height, supersample, supersample);
   } else {
-    std::printf("wrote %s: %dx%d, EV100 %.2f (%s)\n", out.c_str(), frame.width, frame.height,
-                Ev100FromRadianceMultiplier(tone_map.exposure),
+    std::printf("wrote %s: %dx%d, %dx%d samples per pixel, EV100 %.2f (%s)\n", out.c_str(), frame.width,
+                frame.height, supersample, supersample, Ev100FromRadianceMultiplier(tone_map.exposure),
                 options.frame.ev100 || options.frame.exposure ? "fixed" : "metered");
   }
   if (options.timings) {
@@ -98,7 +109,7 @@ void AddRenderCommand(CLI::App& app) {
   options->frame.AddTo(*command, "Image");
   command->add_option("--supersample", options->supersample,
                       "Anti-aliasing: render N times larger on each side and average each N x N block "
-                      "(1 to 4; default 2; 1: one sample per pixel)");
+                      "(1 to 4; default 2, or 1 where the larger frame would not fit)");
   command->add_flag("--timings", options->timings, "Print the GPU time of each pass");
   options->tables.AddTo(*command);
   command->callback([options] { RunRender(*options); });
