@@ -7,18 +7,23 @@
 // Khronos PBR Neutral (2024): a toe, the identity up to 0.76, then the brightest channel
 // compressed toward 1 with the colour scaled with it and mixed toward white as far as it is
 // compressed, so that hues are kept.
-vec3 PbrNeutral(vec3 color) {
-  const float kStartCompression = 0.8 - 0.04;
-  const float kDesaturation = 0.15;
-  float x = min(color.r, min(color.g, color.b));
-  float offset = x < 0.08 ? x - 6.25 * x * x : 0.04;
-  color -= offset;
+const float kStartCompression = 0.8 - 0.04;
+const float kDesaturation = 0.15;
+
+// The curve's shoulder alone.
+vec3 NeutralShoulder(vec3 color) {
   float peak = max(color.r, max(color.g, color.b));
   if (peak < kStartCompression) return color;
   const float d = 1.0 - kStartCompression;
   float new_peak = 1.0 - d * d / (peak + d - kStartCompression);
   float g = 1.0 - 1.0 / (kDesaturation * (peak - new_peak) + 1.0);
   return mix(color * (new_peak / peak), vec3(new_peak), g);
+}
+
+vec3 PbrNeutral(vec3 color) {
+  float x = min(color.r, min(color.g, color.b));
+  float offset = x < 0.08 ? x - 6.25 * x * x : 0.04;
+  return NeutralShoulder(color - offset);
 }
 
 // sRGB opto-electronic transfer function (IEC 61966-2-1): linear toe below 0.0031308, then a
@@ -42,10 +47,16 @@ vec3 ToneMapLinear(vec3 exposed_radiance) {
   return clamp(PbrNeutral(SanitizeRadiance(exposed_radiance)), 0.0, 1.0);
 }
 
+// The debug views of one term (inscatter.frag, froxel_slice.frag): the shoulder without the toe,
+// which takes a dim colour's darkest channel to about 0 and so would hide the term's own colour.
+vec3 ToneMapLinearWithoutToe(vec3 exposed_radiance) {
+  return clamp(NeutralShoulder(SanitizeRadiance(exposed_radiance)), 0.0, 1.0);
+}
+
 // Radiance times exposure to sRGB-encoded values in [0, 1] (ToneMapColour in tone_map.cpp).
 vec3 ToneMap(vec3 exposed_radiance) { return SrgbOetf(ToneMapLinear(exposed_radiance)); }
 
-// Chris Wellons' "lowbias32" integer hash.
+// Chris Wellons' "lowbias32" integer hash (Hash in src/aerial/scene/noise.cpp).
 uint DitherHash(uint v) {
   v ^= v >> 16;
   v *= 0x7feb352du;

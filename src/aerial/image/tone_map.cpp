@@ -6,6 +6,7 @@
 
 #include "aerial/core/format_number.h"
 #include "aerial/error.h"
+#include "aerial/scene/noise.h"
 
 namespace aerial {
 namespace {
@@ -31,16 +32,6 @@ uint8_t Quantize(double unit) {
 double SanitizeRadiance(double x) {
   if (!(x > 0.0)) return 0.0;
   return std::min(x, 1e4);
-}
-
-// A 32-bit integer hash (Chris Wellons' "lowbias32"), exact in GLSL's uint arithmetic.
-uint32_t Hash(uint32_t v) {
-  v ^= v >> 16;
-  v *= 0x7feb352dU;
-  v ^= v >> 15;
-  v *= 0x846ca68bU;
-  v ^= v >> 16;
-  return v;
 }
 
 }  // namespace
@@ -70,9 +61,10 @@ std::array<double, 3> ToneMapColour(const std::array<double, 3>& exposed_radianc
 double DitherSteps(uint32_t x, uint32_t y) {
   // Two uniform numbers in [0, 1) from one hash each; their difference is triangular on (-1, 1),
   // whose noise does not depend on the signal (Lipshitz, Wannamaker & Vanderkooy 1992).
+  // The one-input Hash is exact in GLSL's uint arithmetic, which tone_map.glsl repeats.
   uint32_t a = Hash(x + Hash(y));
   uint32_t b = Hash(a);
-  return double(a >> 8) / 16777216.0 - double(b >> 8) / 16777216.0;
+  return UnitFromHash(a) - UnitFromHash(b);
 }
 
 std::vector<uint8_t> ToneMapToSrgb8(const ImageRgbF& image, const ToneMapOptions& options) {
