@@ -40,8 +40,8 @@ TEST(ViewCli, RendersFramesLikeRenderAndWritesStats) {
   EXPECT_EQ(view.err.find("validation"), std::string::npos) << view.err;
 
   // The path starts at the noon preset's view; the 5th frame is at path time 4/30 s, 2/15 of the
-  // way to the second keyframe. Render that same pose.
-  CommandRun render = RunAerial("render" + kSmall + " --camera-position-m 0,80,46 --camera-yaw-deg 1.0666666666666667" +
+  // way to the second keyframe. Render that same pose, one sample per pixel as the viewer draws.
+  CommandRun render = RunAerial("render" + kSmall + " --supersample 1 --camera-position-m 0,80,46 --camera-yaw-deg 1.0666666666666667" +
                                 " --camera-pitch-deg 3.7333333333333334 --out " + (dir / "render.exr").string());
   ASSERT_EQ(render.exit_code, 0) << render.err;
   ImageRgbF a = ReadExr(dir / "view.exr"), b = ReadExr(dir / "render.exr");
@@ -73,7 +73,8 @@ TEST(ViewCli, RenderScaleKeepsTheWindowSize) {
                                   (dir / "view.exr").string(),
                               kXvfb);
   ASSERT_EQ(view.exit_code, 0) << view.err;
-  CommandRun render = RunAerial("render" + kSmall + " --render-scale 0.5 --out " + (dir / "render.exr").string());
+  CommandRun render =
+      RunAerial("render" + kSmall + " --supersample 1 --render-scale 0.5 --out " + (dir / "render.exr").string());
   ASSERT_EQ(render.exit_code, 0) << render.err;
   ImageRgbF a = ReadExr(dir / "view.exr"), b = ReadExr(dir / "render.exr");
   EXPECT_EQ(a.width, 160);

@@ -3,6 +3,7 @@
 // same frame holds.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 
@@ -18,8 +19,9 @@ namespace {
 
 constexpr uint32_t kRampSize = 1024;
 
-// Radiance from 0 to 12 (past the curve's saturation near 7.24), cubed so that the sRGB toe
-// (below 0.0031308) and the ACES knee get most of the samples; each channel a different slice.
+// Radiance from 0 to 12 (far into the curve's shoulder, which starts at 0.76), cubed so that the
+// sRGB toe (below 0.0031308) and the curve's toe (below 0.08) get most of the samples; each channel
+// a different slice, so that the colour changes along the ramp as the curve's mixing needs.
 ImageRgbF Ramp(double scale) {
   ImageRgbF ramp{int(kRampSize), 1, std::vector<float>(kRampSize * 4)};
   for (uint32_t i = 0; i < kRampSize; ++i) {
@@ -35,7 +37,7 @@ ImageRgbF Ramp(double scale) {
 class ViewerToneMap : public GpuTest {};
 
 // Before rounding to 8 bits. The GPU evaluates the same expressions in float32 against the CPU's
-// double: the rational ACES fit and pow(x, 1/2.4) each lose a few ulps (~1e-6 relative), so 1e-3
+// double: the curve's rational shoulder and pow(x, 1/2.4) each lose a few ulps (~1e-6 relative), so 1e-3
 // (a quarter of an 8-bit step) leaves three orders of magnitude of margin and still catches any
 // change of a constant or of a branch point.
 TEST_F(ViewerToneMap, GpuMatchesCpuBeforeRounding) {
@@ -55,15 +57,19 @@ TEST_F(ViewerToneMap, GpuMatchesCpuBeforeRounding) {
   std::vector<float> gpu(kRampSize * 4);
   std::memcpy(gpu.data(), bytes.data(), bytes.size());
   double worst = 0.0;
-  for (size_t i = 0; i < kRampSize; ++i)
-    for (size_t c = 0; c < 3; ++c)
-      worst = std::max(worst, std::abs(gpu[4 * i + c] - ToneMapChannel(ramp.rgba[4 * i + c])));
+  for (size_t i = 0; i < kRampSize; ++i) {
+    const float* in = &ramp.rgba[4 * i];
+    std::array<double, 3> cpu = ToneMapColour({in[0], in[1], in[2]});
+    for (size_t c = 0; c < 3; ++c) worst = std::max(worst, std::abs(gpu[4 * i + c] - cpu[c]));
+  }
   std::printf("GPU vs CPU tone map, worst difference before rounding: %.2e\n", worst);
   EXPECT_LT(worst, 1e-3);
 }
 
-// The viewer's present pass, exposure included, against the PNG encoder: equal bytes except where
-// the two sit on either side of a rounding boundary (1 step, given the 1e-3 above). In every display
+// The viewer's present pass, exposure and dither included, against the PNG encoder: equal bytes
+// except where the two sit on either side of a rounding boundary (1 step, given the 1e-3 above; an
+// _SRGB target's dither goes through the encoding's slope approximated, within a fraction of a
+// step). In every display
 // format: the swapchain's is often BGRA, and the shader's store must land in the right channels;
 // an _SRGB one encodes with the driver's conversion instead of the shader's.
 TEST_F(ViewerToneMap, PresentPassMatchesPngBytes) {

@@ -39,17 +39,20 @@ void CheckImageSize(int width, int height, const std::string& where = "");
 void CheckImageSize(const ImageRgbF& image);
 
 struct ToneMapOptions {
-  // Radiance multiplier applied before the curve. The filmic curve reaches mid grey near 0.18,
-  // so exposure should map the scene's typical radiance to roughly that.
+  // Radiance multiplier applied before the curve. The curve is the identity up to 0.76 (but for a
+  // small toe), so exposure should map the scene's typical radiance to about mid grey, 0.18.
   double exposure = 1.0;
   // Per-channel gains before the exposure: {1, 1, 1}, or a white balance such as the sun's
   // (aerial render --white-balance). Each finite and > 0.
   std::array<double, 3> white_balance = {1.0, 1.0, 1.0};
+  // Triangular noise of one 8-bit step, a fixed function of the pixel, added before rounding so
+  // that a smooth sky shows no bands; off gives the plain rounding.
+  bool dither = true;
 };
 
 // Linear radiance to 8-bit display values, for PNG previews.
-// Per channel: exposure, then the ACES filmic fit (Narkowicz 2015), then the sRGB OETF
-// (IEC 61966-2-1), rounded to 8 bits. Alpha is coverage, not light: it is only clamped to [0, 1]
+// Per pixel: white balance and exposure, then the Khronos PBR Neutral curve (which keeps each
+// colour's hue), then the sRGB OETF (IEC 61966-2-1), dithered and rounded to 8 bits. Alpha is coverage, not light: it is only clamped to [0, 1]
 // and scaled. Returns RGBA8, row-major, top row first. Throws Error("image size") on a malformed
 // image and Error("exposure") unless exposure is finite and > 0.
 std::vector<uint8_t> ToneMapToSrgb8(const ImageRgbF& image, const ToneMapOptions& options);

@@ -29,9 +29,9 @@ void main() {
                        clamp(push.slice, 0, grid.z - 1));
   vec3 value;
   if (column == 0) {
-    value = ToneMapLinear(texelFetch(rayleigh_froxels, froxel, 0).rgb * push.exposure / (4.0 * PI));
+    value = ToneMapLinearWithoutToe(texelFetch(rayleigh_froxels, froxel, 0).rgb * push.exposure / (4.0 * PI));
   } else if (column == 1) {
-    value = ToneMapLinear(texelFetch(mie_froxels, froxel, 0).rgb * push.exposure / (4.0 * PI));
+    value = ToneMapLinearWithoutToe(texelFetch(mie_froxels, froxel, 0).rgb * push.exposure / (4.0 * PI));
   } else {
     value = (clamp(texelFetch(transmittance_froxels, froxel, 0).rgb, 0.0, 1.0));
   }

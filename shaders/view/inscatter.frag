@@ -48,9 +48,9 @@ void main() {
   }
   vec3 value;
   if (push.term == 0) {
-    value = ToneMapLinear(segment.rayleigh * RayleighPhaseFunction(nu) * push.exposure);
+    value = ToneMapLinearWithoutToe(segment.rayleigh * RayleighPhaseFunction(nu) * push.exposure);
   } else if (push.term == 1) {
-    value = ToneMapLinear(segment.mie * MiePhaseFunction(atmosphere.mie_phase_g, nu) * push.exposure);
+    value = ToneMapLinearWithoutToe(segment.mie * MiePhaseFunction(atmosphere.mie_phase_g, nu) * push.exposure);
   } else {
     value = (clamp(segment.transmittance, 0.0, 1.0));
   }

@@ -1,8 +1,8 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // The viewer's picture, drawn straight into the window's image: the renderer's linear radiance,
-// times the white balance's gains and the exposure, through the same ACES and sRGB curves as a PNG
-// (tone_map.glsl). A frame of the window's size is read texel for texel; one rendered at a lower
+// times the white balance's gains and the exposure, through the same curve, encoding and dither as
+// a PNG (tone_map.glsl). A frame of the window's size is read texel for texel; one rendered at a lower
 // --render-scale is sampled bilinearly at the window pixel's center (upscaled). Which of the two
 // is a pipeline's constant, so that each pixel makes one read (a CPU rasterizer would make both
 // under a branch).
@@ -19,5 +19,6 @@ layout(location = 0) out vec4 color;  // 8-bit, RGBA or BGRA
 void main() {
   vec3 radiance = kResampled ? textureLod(radiance_image, gl_FragCoord.xy / push.target_size, 0.0).rgb
                              : texelFetch(radiance_image, ivec2(gl_FragCoord.xy), 0).rgb;
-  color = DisplayColor(ToneMapLinear(radiance * push.white_balance * push.exposure));
+  color = DitheredDisplayColor(ToneMapLinear(radiance * push.white_balance * push.exposure),
+                               DitherSteps(uvec2(gl_FragCoord.xy)));
 }

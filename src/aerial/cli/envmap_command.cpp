@@ -102,8 +102,10 @@ void RunEnvmap(const EnvmapCommandOptions& options) {
   EnvironmentMap lat_long = RenderEnvironmentMap(gpu_tables, map);
   std::string extension = options.out.extension().string();
   if (extension == ".png" || extension == ".PNG") {
-    ToneMapOptions tone_map{.exposure = Exposure{}.MultiplierFor(lat_long.image),
-                            .white_balance = WhiteBalanceForSun(ShaderAtmosphere(atmosphere, precompute).solar_irradiance)};
+    const std::array<double, 3> white_balance =
+        WhiteBalanceForSun(ShaderAtmosphere(atmosphere, precompute).solar_irradiance);
+    ToneMapOptions tone_map{.exposure = Exposure{}.MultiplierFor(lat_long.image, white_balance),
+                            .white_balance = white_balance};
     WriteImage(options.out, lat_long.image, tone_map);
   } else {
     WriteEnvironmentExr(options.out, lat_long, EnvironmentHeader(lat_long, map, description));

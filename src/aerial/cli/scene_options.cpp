@@ -133,7 +133,8 @@ void FrameOptions::AddTo(CLI::App& command, const std::string& size_help) {
 }
 
 ToneMapOptions FrameOptions::MakeToneMap(const ImageRgbF& frame, const Spectrum& sun_colour) const {
-  return {.exposure = MakeExposure().MultiplierFor(frame), .white_balance = WhiteBalance(sun_colour)};
+  std::array<double, 3> white_balance = WhiteBalance(sun_colour);
+  return {.exposure = MakeExposure().MultiplierFor(frame, white_balance), .white_balance = white_balance};
 }
 
 std::array<double, 3> FrameOptions::WhiteBalance(const Spectrum& sun_colour) const {

@@ -26,7 +26,32 @@ double LogAverageLuminance(const ImageRgbF& image) {
   return std::exp(sum_log / double(last - first));
 }
 
-double Ev100FromAverageLuminance(double luminance) { return std::log2(luminance * 100.0 / 12.5); }
+MeterReading ReadMeter(const ImageRgbF& image, const std::array<double, 3>& white_balance) {
+  MeterReading reading{.average_luminance = LogAverageLuminance(image)};
+  size_t pixels = size_t(image.width) * size_t(image.height);
+  if (pixels == 0) return reading;
+  std::vector<double> brightest(pixels);
+  for (size_t i = 0; i < pixels; ++i) {
+    const float* rgb = &image.rgba[4 * i];
+    double value = kRadiancePerNmToLuminance *
+                   std::max({rgb[0] * white_balance[0], rgb[1] * white_balance[1], rgb[2] * white_balance[2]});
+    brightest[i] = std::isfinite(value) && value > kMinLuminance ? value : kMinLuminance;
+  }
+  size_t rank = std::min(pixels - 1, size_t(kHighlightFraction * double(pixels)));
+  std::nth_element(brightest.begin(), brightest.begin() + rank, brightest.end());
+  reading.highlight = brightest[rank];
+  return reading;
+}
+
+double Ev100FromMeter(const MeterReading& reading) {
+  // The multipliers that take the average to mid grey and the highlight to the white point; the
+  // EV100 of a multiplier m is Ev100FromRadianceMultiplier(m), and a multiplier in luminance units
+  // is one in radiance units divided by kRadiancePerNmToLuminance.
+  double grey = kMeteredGrey * kRadiancePerNmToLuminance / std::max(reading.average_luminance, kMinLuminance);
+  double white = kHighlightWhite * kRadiancePerNmToLuminance / std::max(reading.highlight, kMinLuminance);
+  double multiplier = std::max(std::min(grey, white), grey * std::exp2(-kMaxHighlightStops));
+  return Ev100FromRadianceMultiplier(multiplier);
+}
 
 double RadianceMultiplierFromEv100(double ev100) {
   return kRadiancePerNmToLuminance / (1.2 * std::exp2(ev100));
@@ -40,18 +65,18 @@ double Exposure::FixedEv100() const {
   return mode == Mode::kMultiplier ? Ev100FromRadianceMultiplier(value) : value;
 }
 
-double Exposure::MultiplierForAverage(double average_luminance) const {
+double Exposure::MultiplierForReading(const MeterReading& reading) const {
   switch (mode) {
     case Mode::kMultiplier: return value;
     case Mode::kEv100: return RadianceMultiplierFromEv100(value);
     case Mode::kAuto: break;
   }
-  return RadianceMultiplierFromEv100(Ev100FromAverageLuminance(average_luminance));
+  return RadianceMultiplierFromEv100(Ev100FromMeter(reading));
 }
 
-double Exposure::MultiplierFor(const ImageRgbF& image) const {
+double Exposure::MultiplierFor(const ImageRgbF& image, const std::array<double, 3>& white_balance) const {
   // Only a metered exposure reads the image.
-  return MultiplierForAverage(mode == Mode::kAuto ? LogAverageLuminance(image) : kMinLuminance);
+  return MultiplierForReading(mode == Mode::kAuto ? ReadMeter(image, white_balance) : MeterReading{});
 }
 
 std::array<double, 3> WhiteBalanceForSun(const std::array<double, 3>& sun_colour) {

@@ -1,8 +1,8 @@
 #pragma once
 // A camera's exposure for display images (PNG, the viewer), physically based: the exposure value
-// at ISO 100, EV100, fixed or metered from the frame's log-average luminance (Lagarde & de
-// Rousiers 2014, "Moving Frostbite to PBR", sec. 5.1). EXR output keeps the radiance and never
-// sees it.
+// at ISO 100, EV100, fixed or metered from the frame (Lagarde & de Rousiers 2014, "Moving
+// Frostbite to PBR", sec. 5.1), with a highlight-weighted meter's limit. EXR output keeps the
+// radiance and never sees it.
 #include <array>
 
 #include "aerial/image.h"
@@ -20,20 +20,34 @@ double LuminanceOfRadiance(const float* rgb);
 
 // The luminance a camera's meter reads, in cd/m^2: exp(mean(ln L)) over the middle of the image's
 // pixels sorted by luminance, from kMeteredLowFraction to kMeteredHighFraction of them (the
-// histogram-clipped average of Unreal's and Frostbite's automatic exposure). Over all pixels, a
-// dark space above a view from 30 km or a bright sky over a dim ground moved the average so far
-// that the median pixel came out at 71% (high-altitude) or 23% (sunset) of full scale; over the
-// middle 40%, every preset's median pixel is 32-57% but twilight's 24% (its ground, lit by the
-// sky alone, is 5 stops under the horizon's glow; measured on 160x90 renders of each preset).
+// histogram-clipped average of Unreal's and Frostbite's automatic exposure): over all pixels, a
+// dark space above a view from 30 km or a bright sky over a dim ground would move it by stops.
 // Non-finite and non-positive pixels count as kMinLuminance, so that a black corner cannot drag
 // the average to zero.
 inline constexpr double kMinLuminance = 1e-4;
 inline constexpr double kMeteredLowFraction = 0.3, kMeteredHighFraction = 0.7;
 double LogAverageLuminance(const ImageRgbF& image);
 
-// EV100 that exposes an average scene luminance L to the meter's calibration:
-// EV100 = log2(L S / K), S = 100, K = 12.5 (Lagarde & de Rousiers 2014, eq. 59).
-double Ev100FromAverageLuminance(double luminance);
+// What the automatic exposure reads from a frame: the log-average luminance above (cd/m^2), and
+// the highlight: the kHighlightFraction quantile of each pixel's brightest channel after the white
+// balance, in the same units (times kRadiancePerNmToLuminance), so that the sun's disc and a few
+// glints are left out but a sunset's glow is not.
+inline constexpr double kHighlightFraction = 0.99;
+struct MeterReading {
+  double average_luminance = kMinLuminance;
+  double highlight = kMinLuminance;
+};
+MeterReading ReadMeter(const ImageRgbF& image, const std::array<double, 3>& white_balance);
+
+// The EV100 a reading asks for. The average is taken to mid grey, 0.18 of the display curve's
+// input (its identity part); then, as a camera's highlight-weighted mode does, the exposure is
+// lowered until the highlight is at kHighlightWhite, the start of the curve's shoulder's last
+// stop, so that a bright sky over a dark foreground keeps its colour instead of bleaching to
+// white; by at most kMaxHighlightStops, so that the foreground is not lost to black.
+inline constexpr double kMeteredGrey = 0.18;
+inline constexpr double kHighlightWhite = 1.0;
+inline constexpr double kMaxHighlightStops = 3.0;
+double Ev100FromMeter(const MeterReading& reading);
 
 // The multiplier that takes spectral radiance to the tone map's input for a camera at EV100:
 // the luminance of the brightest unclipped point is 1.2 * 2^EV100 (saturation-based speed,
@@ -57,10 +71,11 @@ struct Exposure {
   Mode mode = Mode::kAuto;
   double value = 0.0;  // the EV100 (kEv100) or the multiplier (kMultiplier)
 
-  // The radiance multiplier for this image (ToneMapOptions::exposure).
-  double MultiplierFor(const ImageRgbF& image) const;
-  // The same for a metered average luminance (cd/m^2), as the viewer meters on the GPU.
-  double MultiplierForAverage(double average_luminance) const;
+  // The radiance multiplier for this image (ToneMapOptions::exposure), shown with these white
+  // balance gains.
+  double MultiplierFor(const ImageRgbF& image, const std::array<double, 3>& white_balance = {1.0, 1.0, 1.0}) const;
+  // The same for a meter's reading, as the viewer meters on the GPU.
+  double MultiplierForReading(const MeterReading& reading) const;
   // The EV100 of a fixed exposure (kEv100 or kMultiplier).
   double FixedEv100() const;
 };

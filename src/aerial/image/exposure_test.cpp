@@ -47,15 +47,6 @@ TEST(Exposure, WhiteBalanceIsDefinedForASunWithADarkChannel) {
   for (double gain : WhiteBalanceForSun({0.0, 0.0, 0.0})) EXPECT_EQ(gain, 1.0);
 }
 
-TEST(Exposure, Ev100OfTheMeterCalibration) {
-  // EV100 = log2(L S / K): with S = 100 and K = 12.5, L = 1 cd/m^2 is EV100 3, and each
-  // doubling one more.
-  EXPECT_NEAR(Ev100FromAverageLuminance(1.0), 3.0, 1e-12);
-  EXPECT_NEAR(Ev100FromAverageLuminance(2.0), 4.0, 1e-12);
-  // A sunny day's 4000 cd/m^2 average is close to the photographers' "sunny 16" EV100 15.
-  EXPECT_NEAR(Ev100FromAverageLuminance(4000.0), 15.0, 0.4);
-}
-
 TEST(Exposure, MultiplierAndEv100AreInverse) {
   for (double ev100 : {-4.0, 0.0, 9.5, 15.0})
     EXPECT_NEAR(Ev100FromRadianceMultiplier(RadianceMultiplierFromEv100(ev100)), ev100, 1e-12);
@@ -67,13 +58,42 @@ TEST(Exposure, MultiplierAndEv100AreInverse) {
   EXPECT_NEAR(radiance * RadianceMultiplierFromEv100(ev100), 1.0, 1e-6);
 }
 
-TEST(Exposure, AutomaticExposureMapsTheMeteredLuminanceToTheSameValue) {
-  // Whatever the scene's brightness, a grey image comes out at L / (1.2 x 2^EV100) with
-  // 2^EV100 = L x 100 / 12.5: 1 / 9.6 of the tone curve's input scale.
+TEST(Exposure, AutomaticExposureTakesAnEvenImageToMidGrey) {
+  // Whatever the scene's brightness, a grey image comes out at 0.18 of the curve's input: its
+  // highlight is its average, which mid grey keeps far under the white point.
   for (float radiance : {1e-5f, 0.03f, 2.0f}) {
     ImageRgbF image = Grey(10, radiance);
-    EXPECT_NEAR(double(radiance) * Exposure{}.MultiplierFor(image), 1.0 / 9.6, 1e-6) << radiance;
+    EXPECT_NEAR(double(radiance) * Exposure{}.MultiplierFor(image), kMeteredGrey, 1e-6) << radiance;
   }
+}
+
+// A sky 16 times brighter than the ground over 40% of the frame, orange (its red channel the
+// brightest): the average alone would take the sky's red to 0.18 x 16 x 1.6 / 1.25 = 3.6, four
+// times past the curve's white; the highlight-weighted meter takes it to the white point exactly,
+// through the white balance's gain.
+TEST(Exposure, TheHighlightKeepsABrightSkyUnderTheWhitePoint) {
+  ImageRgbF image = Grey(100, 0.001f);
+  for (int i = 60; i < 100; ++i) {
+    float* p = &image.rgba[4 * size_t(i)];
+    p[0] = 0.016f * 1.6f, p[1] = 0.016f, p[2] = 0.016f * 0.5f;
+  }
+  const std::array<double, 3> gains = {0.9, 1.0, 1.1};
+  MeterReading reading = ReadMeter(image, gains);
+  EXPECT_NEAR(reading.highlight, kRadiancePerNmToLuminance * 0.016 * 1.6 * 0.9, 1e-3);
+  double multiplier = Exposure{}.MultiplierFor(image, gains);
+  EXPECT_NEAR(0.016 * 1.6 * 0.9 * multiplier, kHighlightWhite, 1e-5);
+  double grey = kMeteredGrey * kRadiancePerNmToLuminance / reading.average_luminance;
+  EXPECT_LT(multiplier, grey / 2.0);
+}
+
+// ... but by no more than kMaxHighlightStops under the average's exposure: a sky a thousand times
+// brighter than the ground leaves the ground three stops under mid grey, not lost to black.
+TEST(Exposure, TheHighlightLowersTheExposureByAtMostThreeStops) {
+  ImageRgbF image = Grey(100, 0.001f);
+  for (int i = 60; i < 100; ++i) std::fill_n(&image.rgba[4 * size_t(i)], 3, 1.0f);
+  MeterReading reading = ReadMeter(image, {1.0, 1.0, 1.0});
+  double grey = kMeteredGrey * kRadiancePerNmToLuminance / reading.average_luminance;
+  EXPECT_NEAR(Exposure{}.MultiplierFor(image) / grey, std::exp2(-kMaxHighlightStops), 1e-9);
 }
 
 TEST(Exposure, TheMeterReadsTheMiddleOfTheImage) {

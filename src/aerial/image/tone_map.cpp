@@ -6,19 +6,15 @@
 
 #include "aerial/core/format_number.h"
 #include "aerial/error.h"
+#include "aerial/scene/noise.h"
 
 namespace aerial {
 namespace {
 
-// Krzysztof Narkowicz, "ACES Filmic Tone Mapping Curve" (2015): a rational fit
-// x (a x + b) / (x (c x + d) + e) to the ACES reference rendering + output transforms. Its
-// derivative's numerator, (a d - b c) x^2 + 2 a e x + b e, has only positive coefficients, so
-// the curve is strictly increasing on x >= 0 and maps 0 to 0; it tends to a / c > 1, hence the
-// clamp to [0, 1].
-double AcesFilmic(double x) {
-  constexpr double a = 2.51, b = 0.03, c = 2.43, d = 0.59, e = 0.14;
-  return std::clamp(x * (a * x + b) / (x * (c * x + d) + e), 0.0, 1.0);
-}
+// Khronos PBR Neutral's constants: compression starts at 0.8 less the toe's 0.04; the desaturation
+// rate of the compressed part.
+constexpr double kStartCompression = 0.8 - 0.04;
+constexpr double kDesaturation = 0.15;
 
 // sRGB opto-electronic transfer function (IEC 61966-2-1): linear toe below 0.0031308, then a
 // 1/2.4 power law, the two meeting continuously.
@@ -31,9 +27,8 @@ uint8_t Quantize(double unit) {
 }
 
 // Negative and NaN radiance (e.g. from a bad sample) show as black rather than poisoning the
-// arithmetic. The clamped curve is already 1 from x ~ 7.24 (the root of a x^2 + b x =
-// c x^2 + d x + e), so capping at 1e4 changes no output but turns +inf into white instead of
-// inf / inf = NaN.
+// arithmetic; capping at 1e4 changes no output (the curve is within 1e-5 of white there) but turns
+// +inf into white instead of inf / inf = NaN.
 double SanitizeRadiance(double x) {
   if (!(x > 0.0)) return 0.0;
   return std::min(x, 1e4);
@@ -41,8 +36,35 @@ double SanitizeRadiance(double x) {
 
 }  // namespace
 
-double ToneMapChannel(double exposed_radiance) {
-  return SrgbOetf(AcesFilmic(SanitizeRadiance(exposed_radiance)));
+std::array<double, 3> DisplayCurve(const std::array<double, 3>& exposed_radiance) {
+  std::array<double, 3> c;
+  for (int i = 0; i < 3; ++i) c[i] = SanitizeRadiance(exposed_radiance[i]);
+  // The toe: a shift down of the darkest channel, quadratic below 0.08, 0.04 above.
+  double x = std::min({c[0], c[1], c[2]});
+  double offset = x < 0.08 ? x - 6.25 * x * x : 0.04;
+  for (double& v : c) v -= offset;
+  double peak = std::max({c[0], c[1], c[2]});
+  if (peak < kStartCompression) return c;
+  constexpr double d = 1.0 - kStartCompression;
+  double new_peak = 1.0 - d * d / (peak + d - kStartCompression);
+  double g = 1.0 - 1.0 / (kDesaturation * (peak - new_peak) + 1.0);
+  for (double& v : c) v = v * new_peak / peak * (1.0 - g) + new_peak * g;
+  return c;
+}
+
+std::array<double, 3> ToneMapColour(const std::array<double, 3>& exposed_radiance) {
+  std::array<double, 3> c = DisplayCurve(exposed_radiance);
+  for (double& v : c) v = SrgbOetf(std::clamp(v, 0.0, 1.0));
+  return c;
+}
+
+double DitherSteps(uint32_t x, uint32_t y) {
+  // Two uniform numbers in [0, 1) from one hash each; their difference is triangular on (-1, 1),
+  // whose noise does not depend on the signal (Lipshitz, Wannamaker & Vanderkooy 1992).
+  // The one-input Hash is exact in GLSL's uint arithmetic, which tone_map.glsl repeats.
+  uint32_t a = Hash(x + Hash(y));
+  uint32_t b = Hash(a);
+  return UnitFromHash(a) - UnitFromHash(b);
 }
 
 std::vector<uint8_t> ToneMapToSrgb8(const ImageRgbF& image, const ToneMapOptions& options) {
@@ -54,13 +76,20 @@ std::vector<uint8_t> ToneMapToSrgb8(const ImageRgbF& image, const ToneMapOptions
     if (!(gain > 0.0) || !std::isfinite(gain))
       throw Error("white balance", FormatNumber(gain), "finite gains > 0");
   std::vector<uint8_t> out(image.rgba.size());
-  for (size_t i = 0; i < image.rgba.size(); i += 4) {
-    for (size_t c = 0; c < 3; ++c) {
-      out[i + c] =
-          Quantize(ToneMapChannel(double{image.rgba[i + c]} * options.white_balance[c] * options.exposure));
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const float* in = image.pixel(x, y);
+      size_t i = (size_t(y) * size_t(image.width) + size_t(x)) * 4;
+      std::array<double, 3> exposed;
+      for (int c = 0; c < 3; ++c) exposed[c] = double{in[c]} * options.white_balance[c] * options.exposure;
+      std::array<double, 3> display = ToneMapColour(exposed);
+      double dither = options.dither ? DitherSteps(uint32_t(x), uint32_t(y)) / 255.0 : 0.0;
+      // Black and white stay undithered: no specks in a clipped sun or a black corner.
+      for (int c = 0; c < 3; ++c)
+        out[i + c] = Quantize(display[c] > 0.0 && display[c] < 1.0 ? display[c] + dither : display[c]);
+      const double alpha = in[3];
+      out[i + 3] = Quantize(std::isnan(alpha) ? 0.0 : alpha);
     }
-    const double alpha = image.rgba[i + 3];
-    out[i + 3] = Quantize(std::isnan(alpha) ? 0.0 : alpha);
   }
   return out;
 }

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <set>
 
 #include "aerial/error.h"
 
@@ -29,8 +30,9 @@ TEST(ToneMap, ZeroMapsToZero) {
   EXPECT_EQ(out, (std::vector<uint8_t>{0, 0, 0, 255}));
 }
 
+// The curve (undithered: the dither differs from pixel to pixel by design).
 TEST(ToneMap, MonotonicOverSkyRange) {
-  const std::vector<uint8_t> out = ToneMapToSrgb8(GreyRow(Sweep()), {});
+  const std::vector<uint8_t> out = ToneMapToSrgb8(GreyRow(Sweep()), {.dither = false});
   for (size_t i = 4; i < out.size(); i += 4)
     for (size_t c = 0; c < 3; ++c) EXPECT_LE(out[i - 4 + c], out[i + c]) << "pixel " << i / 4;
   EXPECT_EQ(out[0], 0);                // 1e-6 is black in 8 bits
@@ -49,13 +51,61 @@ TEST(ToneMap, ExposureScalesRadiance) {
             ToneMapToSrgb8(GreyRow({0.18f}), {.exposure = 1.0})[0]);
 }
 
-// Reference values computed by hand from Narkowicz's constants and the sRGB OETF:
-// 0.18 -> ACES 0.26690 -> sRGB 0.55346 -> 141.13; 1.0 -> 0.80380 -> 0.90823 -> 231.60.
-// Both are far (> 0.1) from a rounding boundary, so exact equality is safe.
+// Reference values computed by hand from Khronos PBR Neutral's constants and the sRGB OETF,
+// undithered: 0.18 -> less the toe's 0.04, 0.14 -> sRGB 0.41004 -> 104.56; 1.0 -> 0.96, past the
+// shoulder's start 0.76 -> 1 - 0.24^2 / 0.44 = 0.86909 -> 0.94009 -> 239.72. Both are more than
+// 0.05 from a rounding boundary, so exact equality is safe.
 TEST(ToneMap, MatchesPublishedCurve) {
-  const std::vector<uint8_t> out = ToneMapToSrgb8(GreyRow({0.18f, 1.0f}), {});
-  EXPECT_EQ(out[0], 141);
-  EXPECT_EQ(out[4], 232);
+  const std::vector<uint8_t> out = ToneMapToSrgb8(GreyRow({0.18f, 1.0f}), {.dither = false});
+  EXPECT_EQ(out[0], 105);
+  EXPECT_EQ(out[4], 240);
+}
+
+// HSV hue, degrees.
+double Hue(const std::array<double, 3>& c) {
+  double high = std::max({c[0], c[1], c[2]}), low = std::min({c[0], c[1], c[2]});
+  if (high - low <= 0.0) return 0.0;
+  double h = high == c[0] ? (c[1] - c[2]) / (high - low) : high == c[1] ? 2.0 + (c[2] - c[0]) / (high - low)
+                                                                       : 4.0 + (c[0] - c[1]) / (high - low);
+  return std::fmod(60.0 * h + 360.0, 360.0);
+}
+
+// The curve keeps a colour's hue at every exposure, from the identity part through the shoulder:
+// a sunset's orange, a sky's blue and a twilight's pink, 1/8 to 16 times over white. A curve
+// applied to each channel alone (the ACES fit used before) turns the orange 23 degrees toward
+// yellow and the blue 17 degrees toward cyan at 2x; 0.5 degree is a wide margin for rounding.
+TEST(ToneMap, KeepsHueThroughTheShoulder) {
+  for (std::array<double, 3> colour : {std::array<double, 3>{1.0, 0.45, 0.12}, {0.25, 0.45, 1.0}, {1.0, 0.75, 0.8}}) {
+    for (double scale = 0.125; scale <= 16.0; scale *= 2.0) {
+      std::array<double, 3> exposed = {colour[0] * scale, colour[1] * scale, colour[2] * scale};
+      std::array<double, 3> display = DisplayCurve(exposed);
+      EXPECT_NEAR(Hue(display), Hue(colour), 0.5) << colour[0] << ", " << colour[1] << ", " << colour[2] << " x "
+                                                   << scale;
+      // And it stays a colour: the shoulder mixes toward white only as far as it compresses.
+      EXPECT_LT(std::min({display[0], display[1], display[2]}), std::max({display[0], display[1], display[2]}));
+    }
+  }
+}
+
+// The dither: a flat image between two 8-bit codes comes out as a mix of both whose mean is the
+// value (within 0.02 step over 16K pixels, the triangular noise's standard error being 0.003),
+// where plain rounding gives one code everywhere (a band, on a gradient). Black stays black.
+TEST(ToneMap, DitherKeepsTheMeanOfAFlatArea) {
+  // Linear 0.1 (past the toe's 0.08) -> 0.06 -> sRGB 0.27170 -> 69.28 of 255.
+  ImageRgbF flat{128, 128, std::vector<float>(128 * 128 * 4, 0.1f)};
+  std::vector<uint8_t> dithered = ToneMapToSrgb8(flat, {}), plain = ToneMapToSrgb8(flat, {.dither = false});
+  double mean = 0.0;
+  std::set<uint8_t> codes;
+  for (size_t i = 0; i < dithered.size(); i += 4) {
+    mean += dithered[i];
+    codes.insert(dithered[i]);
+    EXPECT_EQ(plain[i], 69);
+  }
+  mean /= double(dithered.size() / 4);
+  EXPECT_NEAR(mean, 69.28, 0.02);
+  EXPECT_GE(codes.size(), 2u);
+  EXPECT_LE(codes.size(), 3u);  // at most one step either side
+  EXPECT_EQ(ToneMapToSrgb8(GreyRow({0.0f}), {})[0], 0);
 }
 
 TEST(ToneMap, AlphaIsCoverageNotLight) {

@@ -1,7 +1,8 @@
 #pragma once
-// Deterministic pseudo-random numbers and 2D gradient noise for the procedural scene. Everything
-// is a pure function of its integer inputs (no clock, no global state), so the built-in scene is
-// bit-identical on every run and machine, which its tests and reference images rely on.
+// Deterministic pseudo-random numbers and 2D gradient noise for the procedural scene (and the
+// hash for the display's dither, aerial/image/tone_map.h). Everything is a pure function of its
+// integer inputs (no clock, no global state), so the built-in scene is bit-identical on every run
+// and machine, which its tests and reference images rely on.
 #include <cstdint>
 
 namespace aerial {

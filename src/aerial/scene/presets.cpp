@@ -41,11 +41,21 @@ void ApplyPresetView(Scene& scene, const std::string& name, double planet_radius
   if (name == "afternoon") {
     sun = {55.0, 235.0};
   } else if (name == "sunset") {
-    sun = {91.0, 270.0};
-    camera.yaw_deg = 90.0;
+    // Up the valley toward a sun 0.8 degrees up, its disc just behind the far end's hills: its
+    // glow, the orange band of the reddened light either side of it, the mountains as
+    // silhouettes. Raised and a little narrower than the default, so that the sky fills most of
+    // the frame.
+    sun = {89.2, 355.0};
+    camera.pitch_deg = 10.0;
+    camera.vertical_fov_deg = 40.0;
   } else if (name == "twilight") {
-    sun = {96.0, 270.0};
-    camera.yaw_deg = 265.0;
+    // Away from a sun 2 degrees down, over the valley's low eastern side: the Earth's shadow, blue
+    // grey on the horizon, and the belt of Venus, pink above it, which only the 4D tables show
+    // (the 3D tables drop the view's azimuth from the sun).
+    sun = {92.0, 270.0};
+    camera.yaw_deg = 80.0;
+    camera.pitch_deg = 6.0;
+    camera.vertical_fov_deg = 35.0;
   } else if (name == "evening") {
     sun = {79.0, 300.0};
   } else if (name == "sunrise") {

@@ -66,16 +66,25 @@ TEST(Preset, DefaultSceneIsNoon) {
 TEST(Preset, SunZenithGrowsFromNoonToTwilight) {
   EXPECT_NEAR(View("noon").sun.zenith_deg, 20.0, 5.0);
   EXPECT_NEAR(View("afternoon").sun.zenith_deg, 55.0, 5.0);
-  EXPECT_NEAR(View("sunset").sun.zenith_deg, 91.0, 1.0);
-  EXPECT_NEAR(View("twilight").sun.zenith_deg, 96.0, 1.0);
+  EXPECT_NEAR(View("sunset").sun.zenith_deg, 89.5, 1.0);
+  EXPECT_NEAR(View("twilight").sun.zenith_deg, 92.0, 1.0);
 }
 
-TEST(Preset, SunsetLooksAwayFromTheSetSun) {
-  Scene sunset = View("sunset");
-  EXPECT_GT(sunset.sun.zenith_deg, 90.0);  // below the horizon: the Earth's shadow is on the sky
+TEST(Preset, TwilightLooksAwayFromTheSetSun) {
+  Scene twilight = View("twilight");
+  EXPECT_GT(twilight.sun.zenith_deg, 90.0);  // below the horizon: the Earth's shadow is on the sky
   // Horizontally opposite within 30 degrees, so the antisolar point is in the image.
-  double facing = glm::dot(Horizontal(Forward(sunset.camera)), Horizontal(sunset.sun.Direction()));
+  double facing = glm::dot(Horizontal(Forward(twilight.camera)), Horizontal(twilight.sun.Direction()));
   EXPECT_LT(facing, -std::cos(30.0 * std::numbers::pi / 180.0));
+}
+
+TEST(Preset, SunsetLooksAtTheSunOnTheHorizon) {
+  Scene sunset = View("sunset");
+  EXPECT_LT(sunset.sun.zenith_deg, 90.0);  // the disc above the (sea-level) horizon
+  EXPECT_GT(sunset.sun.zenith_deg, 88.0);  // but low enough to be reddened
+  // Within 10 degrees of the camera's heading: in the frame.
+  double facing = glm::dot(Horizontal(Forward(sunset.camera)), Horizontal(sunset.sun.Direction()));
+  EXPECT_GT(facing, std::cos(10.0 * std::numbers::pi / 180.0));
 }
 
 TEST(Preset, HighAltitudeLooksAtTheHorizonFrom30Km) {

@@ -89,7 +89,7 @@ TEST(SceneFile, WithoutTheBuiltInSceneOnlyTheFilesMeshesStandOnTheBarePlanet) {
                       "position_m = [3000.0, 4000.0]\n");
   EXPECT_FALSE(scene.terrain);
   ASSERT_EQ(scene.meshes.size(), 1u);
-  EXPECT_EQ(scene.sun.zenith_deg, 91.0);  // the preset's view stays
+  EXPECT_EQ(scene.sun, BuildPreset("sunset", kR).sun);  // the preset's view stays
   double bottom = HUGE_VAL;
   for (const Vertex& v : scene.meshes[0].vertices) bottom = std::min<double>(bottom, v.position.z);
   EXPECT_NEAR(bottom, SurfacePoint(3000.0, 4000.0, 0.0, kR).z, 1e-3);

@@ -20,8 +20,8 @@ class DisplayPasses {
   DisplayPasses(const vk::Context& context, ::vk::RenderPass render_pass, ::vk::Format format);
 
   // Each records one draw over a target of `extent` inside the caller's render pass.
-  // The picture: radiance times the white balance's gains and the exposure through ACES and sRGB
-  // (shaders/view/present.frag), resampled bilinearly to the target.
+  // The picture: radiance times the white balance's gains and the exposure through the PNGs'
+  // curve, sRGB encoding and dither (shaders/view/present.frag), resampled bilinearly to the target.
   void RecordToneMap(const vk::CommandBuffer& cmd, ::vk::Extent2D extent, const SampledImage& radiance,
                      float exposure, const std::array<float, 3>& white_balance = {1.0f, 1.0f, 1.0f}) const;
 

@@ -1,11 +1,12 @@
 #pragma once
 // The viewer's automatic exposure: a meter on the GPU (shaders/view/meter.comp) that takes the
-// log-average luminance of each frame into a small buffer per frame in flight, read once that
+// reading of each frame (ReadMeter, aerial/image/exposure.h) into a small buffer per frame in flight, read once that
 // frame has finished, and an adaptation that moves the exposure toward it over time, as an eye
 // or a camera does, rather than jumping with every frame.
 #include <optional>
 #include <vector>
 
+#include "aerial/image/exposure.h"
 #include "aerial/renderer.h"
 #include "aerial/vk/compute_pipeline.h"
 #include "aerial/vk/resources.h"
@@ -16,11 +17,13 @@ class ExposureMeter {
  public:
   ExposureMeter(const vk::Context& context, uint32_t frames_in_flight);
 
-  // Records the metering of `radiance` for the frame in `slot` (outside any render pass).
-  void Record(const vk::CommandBuffer& cmd, uint32_t slot, const SampledImage& radiance);
-  // The log-average luminance (cd/m^2) the slot's finished frame metered; none if the slot has
-  // not metered since it was last read.
-  std::optional<double> TakeAverageLuminance(uint32_t slot);
+  // Records the metering of `radiance`, to be shown with these white balance gains, for the frame
+  // in `slot` (outside any render pass).
+  void Record(const vk::CommandBuffer& cmd, uint32_t slot, const SampledImage& radiance,
+              const std::array<double, 3>& white_balance);
+  // What the slot's finished frame metered; none if the slot has not metered since it was last
+  // read.
+  std::optional<MeterReading> TakeReading(uint32_t slot);
 
  private:
   vk::ComputePipeline pipeline_;

@@ -304,13 +304,13 @@ void Viewer::Impl::CollectFinishedFrame(uint32_t slot) {
 // Auto exposure: the slot's finished frame metered its luminance; the exposure moves toward it
 // (AdaptEv100), from the first reading on. A fixed exposure leaves the EV100 to the panel.
 void Viewer::Impl::AdaptExposure(uint32_t slot, double dt_s) {
-  std::optional<double> luminance = meter_.TakeAverageLuminance(slot);
+  std::optional<MeterReading> reading = meter_.TakeReading(slot);
   if (!settings_.auto_exposure) {
     exposure_metered_ = false;
     return;
   }
-  if (!luminance) return;
-  double target = Ev100FromAverageLuminance(*luminance);
+  if (!reading) return;
+  double target = Ev100FromMeter(*reading);
   settings_.ev100 = float(exposure_metered_ ? AdaptEv100(settings_.ev100, target, dt_s) : target);
   exposure_metered_ = true;
 }
@@ -428,7 +428,7 @@ bool Viewer::Impl::Step() {
     recorded_[slot].push_back({other, " (" + ToString(other->tables().options().variant) + ")"});
   }
   // A frame presented again has been metered already.
-  if (settings_.auto_exposure && (drawn || !exposure_metered_)) meter_.Record(cmd, slot, primary->output());
+  if (settings_.auto_exposure && (drawn || !exposure_metered_)) meter_.Record(cmd, slot, primary->output(), options_.white_balance);
   RecordDisplay(cmd, slot, *primary, other);
   bool presented = swapchain_.SubmitAndPresent(ring_);
   // Reads of the frame (screenshots, exports) are submitted after it, so they see it finished.
@@ -456,7 +456,8 @@ void Viewer::Impl::Run() {
   if (!options_.screenshot.empty() && shown_) {
     ImageRgbF frame = shown_->ReadOutput();
     WriteImage(options_.screenshot, frame,
-               {.exposure = options_.exposure.MultiplierFor(frame), .white_balance = options_.white_balance});
+               {.exposure = options_.exposure.MultiplierFor(frame, options_.white_balance),
+                .white_balance = options_.white_balance});
   }
   if (!options_.stats.empty()) stats_.Write(options_.stats);
 }
