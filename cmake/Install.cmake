@@ -11,9 +11,27 @@ install(TARGETS aerial_lib EXPORT aerialTargets ARCHIVE DESTINATION ${CMAKE_INST
 install(DIRECTORY include/aerial DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/generated/aerial/version.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aerial)
-# The shaders' shared GLSL (the lookups, the froxel read, the phase functions), for a caller's own
-# shaders to #include: aerial_perspective.glsl is the entry point.
-install(DIRECTORY shaders/include/ DESTINATION ${CMAKE_INSTALL_DATADIR}/aerial/glsl)
+# The shaders' shared GLSL that a caller's own shaders #include (the lookups, the froxel read, the
+# phase functions): the entry points aerial_perspective.glsl and blocks_not_inlined.glsl and what
+# they include, found by following their #include lines so that the set follows the files.
+set(aerial_glsl_pending aerial_perspective.glsl blocks_not_inlined.glsl)
+set(aerial_glsl_installed)
+while(aerial_glsl_pending)
+  list(POP_FRONT aerial_glsl_pending glsl)
+  if(glsl IN_LIST aerial_glsl_installed)
+    continue()
+  endif()
+  set(path ${CMAKE_CURRENT_SOURCE_DIR}/shaders/include/${glsl})
+  list(APPEND aerial_glsl_installed ${glsl})
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${path})
+  file(STRINGS ${path} includes REGEX "^#include \"")
+  foreach(line IN LISTS includes)
+    string(REGEX REPLACE "^#include \"([^\"]+)\".*" "\\1" included "${line}")
+    list(APPEND aerial_glsl_pending ${included})
+  endforeach()
+endwhile()
+list(TRANSFORM aerial_glsl_installed PREPEND shaders/include/)
+install(FILES ${aerial_glsl_installed} DESTINATION ${CMAKE_INSTALL_DATADIR}/aerial/glsl)
 
 set(aerial_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/aerial)
 install(EXPORT aerialTargets NAMESPACE aerial:: DESTINATION ${aerial_cmake_dir})
