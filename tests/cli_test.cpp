@@ -252,7 +252,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"precompute --small-tables --quiet --cache-dir /proc/aerial-cannot-write", "/proc/aerial-cannot-write"},
         BadInput{"precompute --atmosphere " AERIAL_SOURCE_DIR "/tests/data/bad_mie_g.toml", "mie.phase_g"},
         BadInput{"precompute --atmosphere " AERIAL_SOURCE_DIR "/tests/data/unknown_key.toml", "rayleigh.scatterring"},
-        // Finite doubles beyond float (issue 13): they gave null in the JSON and exit status 0.
+        // Finite doubles beyond float: they must not give null in the JSON and exit status 0.
         BadInput{"probe --small-tables --quiet --altitude-m 1 --view-zenith-deg 45 --sun-zenith-deg 30 --azimuth-deg 0 "
                  "--atmosphere " AERIAL_SOURCE_DIR "/tests/data/huge_solar_irradiance.toml",
                  "solar_irradiance[0] = 1e+300 is invalid"},
