@@ -12,7 +12,8 @@ bash tools/setup.sh
 launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
-  -DAERIAL_SANITIZE=address,undefined -DAERIAL_FUZZ=ON "${launcher[@]}" >/dev/null
+  -DAERIAL_SANITIZE=address,undefined -DAERIAL_FUZZ=ON "${launcher[@]}" \
+  -DAERIAL_WARNINGS_AS_ERRORS="${AERIAL_WARNINGS_AS_ERRORS:-OFF}" >/dev/null
 # Only what these tests run: not the offline tools (tools/bench).
 cmake --build build-sanitize --parallel "$(nproc)" --target aerial aerial_tests \
   fuzz_atmosphere_toml fuzz_scene_toml fuzz_gltf fuzz_camera_path fuzz_table_cache
