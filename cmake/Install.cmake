@@ -1,7 +1,7 @@
 # `cmake --install build --prefix P`: the library aerial::aerial, its public headers (include/aerial
 # and the generated version.h), its GLSL includes and the CMake package, so that another project
 # writes
-#   find_package(aerial 1.0 REQUIRED)
+#   find_package(aerial 2.0 REQUIRED)
 #   target_link_libraries(app PRIVATE aerial::aerial)
 # The command, the viewer and the benchmark are not part of the package, nor are the headers of
 # src/: the public headers use Vulkan's C API and nothing of aerial's implementation.
@@ -38,9 +38,11 @@ install(EXPORT aerialTargets NAMESPACE aerial:: DESTINATION ${aerial_cmake_dir})
 configure_package_config_file(cmake/aerialConfig.cmake.in
   ${CMAKE_CURRENT_BINARY_DIR}/aerialConfig.cmake INSTALL_DESTINATION ${aerial_cmake_dir}
   PATH_VARS CMAKE_INSTALL_DATADIR)
-# Semantic versioning: find_package(aerial 1.0) accepts any 1.x at or above 1.0.
+# Semantic versioning: find_package(aerial 2.0) accepts any 2.x at or above 2.0, and no 1.x (2.0
+# changed the API: docs/api.md).
 write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/aerialConfigVersion.cmake
   COMPATIBILITY SameMajorVersion)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/aerialConfig.cmake
               ${CMAKE_CURRENT_BINARY_DIR}/aerialConfigVersion.cmake
+              ${CMAKE_CURRENT_SOURCE_DIR}/cmake/OpenVDBModule.cmake
         DESTINATION ${aerial_cmake_dir})

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "aerial/export/vdb_file.h"
+#include "aerial/version.h"
 #include "command_run.h"
 
 namespace aerial::testing {
@@ -180,6 +181,16 @@ TEST(Cli, NoVulkanDriverSaysHowToInstallOne) {
   EXPECT_NE(run.err.find("Vulkan driver = none found"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("apt install mesa-vulkan-drivers"), std::string::npos) << run.err;
   EXPECT_TRUE(run.out.empty()) << run.out;
+}
+
+// --version prints the package's version, whose major is 2: 2.0 took names out of 1.x's headers
+// and renamed the GLSL's macros (docs/api.md), and find_package(aerial 2.0) asks for it.
+TEST(Cli, VersionIsTheSecondMajor) {
+  CommandRun run = RunAerial("--version");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.out, std::string(AERIAL_VERSION) + "\n");
+  EXPECT_EQ(AERIAL_VERSION_MAJOR, 2);
+  EXPECT_EQ(run.out.substr(0, 2), "2.") << run.out;
 }
 
 // The exit statuses --help's footer promises: 2 for a command line that does not parse, 1 for a
