@@ -1,7 +1,6 @@
 // `aerial bench --quick` as users run it: the report's files and structure, comparisons that cover
 // every pixel, and what the command exists to show, at the figures of docs/tables-3d-4d.md (the 3D tables are
-// smaller, close to the 4D ones in daylight and far from them at sunset), from one run (110 s
-// with the validation layers on, on 2 cores).
+// smaller, close to the 4D ones in daylight and far from them at sunset), from one run.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -158,15 +157,13 @@ void CheckThreeDAgainstFourD(const nlohmann::json& results) {
 }
 
 // What the per-pixel frame of Bruneton 2017's demo (two table reads, no march) is there to show:
-// it costs a small part of the marched per-pixel frame, and at a low sun its sky, read without the
-// correction of the Earth's shadow (sky_lookup.glsl), is further from the reference than the
-// marched path's. Measured with the small 4D tables (docs/accuracy.md, "Radiance to a point"): sunset sky
-// 0.57% against 8.0% RMSE, twilight 2.3% against 17.6%; the marched frame is 26x the other.
+// at a low sun its sky, read without the correction of the Earth's shadow (sky_lookup.glsl), is
+// further from the reference than the marched path's. Measured with the small 4D tables
+// (docs/accuracy.md, "Radiance to a point"): sunset sky 0.57% against 8.0% RMSE, twilight 2.3%
+// against 17.6%. What it costs against the march is the report's figure to show, not this test's
+// to bound: a time depends on the machine and its load.
 void CheckTableDifference(const nlohmann::json& results) {
   const nlohmann::json& lut4d = Entry(results, "4d", "small");
-  // A tenth: the march's 32 steps per pixel against two reads; equal times would mean the bench
-  // timed the same path twice.
-  EXPECT_LT(lut4d["table_difference_frame_ms"].get<double>(), 0.1 * lut4d["per_pixel_frame_ms"].get<double>());
   for (const char* view : {"sunset", "twilight"}) {
     const nlohmann::json& accuracy = lut4d["accuracy"][view];
     double marched = accuracy["per_pixel_vs_reference"]["sky"]["rel_rmse"].get<double>();
@@ -175,6 +172,15 @@ void CheckTableDifference(const nlohmann::json& results) {
     // the marched path within the reference's noise (1.3% at sunset, 8.8% at twilight).
     EXPECT_GT(two_reads, 2.0 * marched) << view;
   }
+  // In every view the two frames differ, so the bench did not render one path twice (identical
+  // frames give identical errors); and the two-read frames were timed, pass by pass.
+  for (const char* view : kViews) {
+    const nlohmann::json& accuracy = lut4d["accuracy"][view];
+    EXPECT_NE(accuracy["per_pixel_vs_reference"]["sky"]["rel_rmse"].get<double>(),
+              accuracy["table_difference_vs_reference"]["sky"]["rel_rmse"].get<double>())
+        << view;
+  }
+  EXPECT_FALSE(lut4d["frame_pass_median_ms"]["table_difference"].empty());
 }
 
 // One run (a test process each would run it again) checked for four things: its files and their

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "aerial/export/vdb_file.h"
+#include "aerial/version.h"
 #include "command_run.h"
 
 namespace aerial::testing {
@@ -182,6 +183,16 @@ TEST(Cli, NoVulkanDriverSaysHowToInstallOne) {
   EXPECT_TRUE(run.out.empty()) << run.out;
 }
 
+// --version prints the package's version, whose major is 2: 2.0 took names out of 1.x's headers
+// and renamed the GLSL's macros (docs/api.md), and find_package(aerial 2.0) asks for it.
+TEST(Cli, VersionIsTheSecondMajor) {
+  CommandRun run = RunAerial("--version");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.out, std::string(AERIAL_VERSION) + "\n");
+  EXPECT_EQ(AERIAL_VERSION_MAJOR, 2);
+  EXPECT_EQ(run.out.substr(0, 2), "2.") << run.out;
+}
+
 // The exit statuses --help's footer promises: 2 for a command line that does not parse, 1 for a
 // value that parses but is refused when the command runs, 0 for --help. (CLI11's own codes, 106
 // and 109, leaked out before.)
@@ -252,7 +263,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"precompute --small-tables --quiet --cache-dir /proc/aerial-cannot-write", "/proc/aerial-cannot-write"},
         BadInput{"precompute --atmosphere " AERIAL_SOURCE_DIR "/tests/data/bad_mie_g.toml", "mie.phase_g"},
         BadInput{"precompute --atmosphere " AERIAL_SOURCE_DIR "/tests/data/unknown_key.toml", "rayleigh.scatterring"},
-        // Finite doubles beyond float (issue 13): they gave null in the JSON and exit status 0.
+        // Finite doubles beyond float: they must not give null in the JSON and exit status 0.
         BadInput{"probe --small-tables --quiet --altitude-m 1 --view-zenith-deg 45 --sun-zenith-deg 30 --azimuth-deg 0 "
                  "--atmosphere " AERIAL_SOURCE_DIR "/tests/data/huge_solar_irradiance.toml",
                  "solar_irradiance[0] = 1e+300 is invalid"},

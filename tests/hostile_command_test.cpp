@@ -1,4 +1,4 @@
-// Hostile input, round 2 (issue 41), as the command meets it: outputs that are not regular files,
+// Hostile input as the command meets it: outputs that are not regular files,
 // empty paths, a cache path that is wrong, a broken Vulkan driver manifest, and messages in
 // aerial's own form. Each of these refusals comes before any GPU work; `timeout 30` turns a hang
 // (a FIFO opened for reading or writing) into a failure. Each case failed before the fix: the

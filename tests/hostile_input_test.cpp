@@ -1,4 +1,4 @@
-// Hostile input files (issue 13): each is refused with an aerial::Error naming the field and the
+// Hostile input files: each is refused with an aerial::Error naming the field and the
 // value, and by the command with exit status 1 and that message; never a crash, a hang, an
 // out-of-bounds read or a raw std:: exception. The crafted files are in tests/data/hostile/
 // (its README says what each one does); huge, deep and special files (FIFOs, devices,
@@ -64,7 +64,7 @@ INSTANTIATE_TEST_SUITE_P(
         CraftedGltf{"view_past_buffer.gltf", "bufferViews[0].byteLength", "40"},
         CraftedGltf{"position_as_short.gltf", "accessors[0].componentType", "5123"},
         CraftedGltf{"strided_count_past_view.gltf", "accessors[0].count", "3"},
-        // Issue 41: a DAG of 2^40 paths, an index and vertices never shown, a GLB chunk lie.
+        // A DAG of 2^40 paths, an index and vertices never shown, a GLB chunk lie.
         CraftedGltf{"node_dag.gltf", "nodes[40]", "reached twice"},
         CraftedGltf{"index_past_vertices.gltf", "meshes[0].primitives[0].indices", "element 2"},
         CraftedGltf{"translation_1e308.gltf", "meshes[0].primitives[0].POSITION",
@@ -132,7 +132,7 @@ class HostileFiles : public ::testing::Test {
   ScratchDirectory dir_{"hostile"};
 };
 
-// Issue 41: a buffer must be a file inside the model's folder, refused before it is read. The
+// A buffer must be a file inside the model's folder, refused before it is read. The
 // model is in dir_/model/, beside dir_/secret.bin (a file it must not reach).
 class BufferOutsideTheFolder : public HostileFiles, public ::testing::WithParamInterface<std::string> {};
 
@@ -211,7 +211,7 @@ TEST_F(HostileFiles, OversizeBufferIsRefusedBeforeReading) {
       << e.allowed();
 }
 
-// Issue 41: a 20 MB `extras` array peaked at 1.96 GB RSS whatever --max-memory-mib said. The
+// A 20 MB `extras` array would peak at 1.96 GB RSS whatever --max-memory-mib says. The
 // JSON parse is estimated (here 1,000,001 values, 200 MB) against the budget before it is made.
 TEST_F(HostileFiles, JsonParseBeyondTheBudgetIsRefusedBeforeParsing) {
   std::string zeros;

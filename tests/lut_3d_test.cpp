@@ -85,7 +85,7 @@ TEST_F(Lut3d, DaylightSkyWithinMeasuredBoundOf4d) {
 // (also along the rays of the multiple-scattering orders, which dominate at twilight), measure
 // 0.679 of the 4D blue radiance there. Against the reference with all orders (aerial probe
 // --reference), 4D is 4.4% high and 3D 29% low. Before the 4D sky's single scattering correction
-// (sky_lookup.glsl) the ratio was 0.581, with 4D 22% high; before issue 12's tables, 0.732. The
+// (sky_lookup.glsl) the ratio was 0.581, with 4D 22% high; with Bruneton 2017's table sizes, 0.732. The
 // ratio is pinned to [0.62, 0.75] so that the difference is neither hidden nor silently changed.
 TEST_F(Lut3d, TwilightLosesTheEarthShadowByAPinnedAmount) {
   ViewAngles view{0.0, 30.0, 96.0, 180.0};

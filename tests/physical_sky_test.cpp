@@ -35,13 +35,13 @@ const char* kTwilight = "twilight (95-108)";
 // its largest relative error (any channel), its median (the largest of the channels' medians), the
 // number of values it compares (fixed by the stored reference: those above the floor of 1e-4 of
 // the noon sky), the reference's noise there (the largest relative standard error over the compared
-// values, ChannelAccuracy::max_relative_std_error) and issue 12's target for the largest error.
+// values, ChannelAccuracy::max_relative_std_error) and the target for the largest error (docs/accuracy.md).
 //
 // Each measure is bounded on both sides by the reference's noise: a change of the tables smaller
 // than that cannot be told from the reference's own Monte Carlo error, a larger one fails, either
 // way (an improvement is then written down here and in docs/accuracy.md). The upper bound of the
 // largest error is also held at the target where the noise would reach past it; the daylight
-// medians at issue 12's 0.4%. Lower bounds stop at 0. The noise: 0.06-0.22% in daylight and the
+// medians at the 0.4% target. Lower bounds stop at 0. The noise: 0.06-0.22% in daylight and the
 // afternoon, up to 0.74% for the low sun and 1.23% at twilight.
 //
 // The tables of this commit: MU_S 36 on the arctangent mapping, 4 orders + the series' tail, the
@@ -118,7 +118,7 @@ double Noise(const validation::RegionAccuracy& region) {
 // (AERIAL_TABLE_FILTERING=emulated-hardware, table_read.glsl): measured, every region moved by
 // less than the reference's noise (the largest: afternoon sky radiance on the ground, 440 nm,
 // 0.40% to 0.42%). So the sampler's precision is not what moved four regions on an NVIDIA GPU
-// (issue 43), and a change that makes the sky depend on it fails here.
+// (docs/accuracy.md, "On a GPU"), and a change that makes the sky depend on it fails here.
 class PhysicalSky : public GpuTest, public ::testing::WithParamInterface<vk::TableFiltering> {};
 
 TEST_P(PhysicalSky, DefaultTablesAgainstTheTargets) {
@@ -185,8 +185,9 @@ TEST(PhysicalSkyReference, StoredReferenceIsTodaysReference) {
     for (int c = 0; c < 3; ++c) {
       const double combined_error = std::hypot(again.std_error[c], sample.std_error[c]);
       EXPECT_LE(std::abs(again.value[c] - sample.value[c]), 5.0 * combined_error) << i << " " << c;
-      if (kFileCompiler)
+      if (kFileCompiler) {
         EXPECT_NEAR(again.value[c], sample.value[c], 1e-9 * std::abs(sample.value[c]) + 1e-300) << i << " " << c;
+      }
     }
     ++checked;
   }

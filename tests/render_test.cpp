@@ -209,16 +209,27 @@ TEST_F(Render, SunDiscIsLimbDarkened) {
 // Small golden images of two presets, stored as EXR (tests/data/golden), made by lavapipe. Its
 // frames are bit for bit the same from run to run: the relative RMSE between two runs measured 0,
 // also with one thread (LP_NUM_THREADS=1) and with 128-bit vectors (LP_NATIVE_VECTOR_WIDTH=128).
-// The bound, 1e-6, is a floor for another CPU's rounding of the shaders' transcendentals (about
-// ten float32 ulps over the whole image) that any change of the physics or the passes exceeds; a
-// different driver needs goldens of its own. After an intended change, a run with
-// AERIAL_UPDATE_GOLDEN=1 rewrites them and fails: review them, commit them saying why, and run
-// again without the variable. The goldens hold the fixed terrain mesh: the
-// level of detail's terrain is measured against that mesh on its own
+// On lavapipe the bound, 1e-6, is a floor for another CPU's rounding of the shaders'
+// transcendentals (about ten float32 ulps over the whole image) that any change of the physics or
+// the passes exceeds. Another driver interpolates the tables with its sampler's rounded weights and
+// evaluates exp, log, acos and pow with its own approximations; its bound, kOtherDriverRmse, is
+// ten times what lavapipe's emulation of a GPU's sampler (AERIAL_TABLE_FILTERING=emulated-hardware)
+// moved these frames (noon 0.0099%, sunset 0.047%), the margin for the transcendentals, which no
+// machine here measures. After an
+// intended change, a run with AERIAL_UPDATE_GOLDEN=1 rewrites them and fails: review them, commit
+// them saying why, and run again without the variable. The goldens hold the fixed terrain mesh
+// and the built-in meshes, the same bits from every compiler (SceneDefault.IsTheSameFromEveryCompiler):
+// the level of detail's terrain is measured against that mesh on its own
 // (terrain_lod_render_test.cpp), so that a change of the passes and a change of the terrain each
 // show where they belong. They are frames without the sun's shadow map (--shadows off gives the
 // frame of before shadows; shadow_render_test.cpp checks the shadows themselves).
+constexpr double kLavapipeRmse = 1e-6;
+constexpr double kOtherDriverRmse = 5e-3;
+
 TEST_F(Render, MatchesGoldenImages) {
+  const std::string device = SharedContext().device_name();
+  const bool lavapipe = device.find("llvmpipe") != std::string::npos;
+  const double bound = lavapipe ? kLavapipeRmse : kOtherDriverRmse;
   for (const char* preset : {"noon", "sunset"}) {
     const AtmosphereTables& tables = FullTables();
     Scene scene = BuildPreset(preset, tables.atmosphere().bottom_radius_m);
@@ -227,7 +238,10 @@ TEST_F(Render, MatchesGoldenImages) {
     renderer.Render(scene);
     std::filesystem::path golden =
         std::filesystem::path(AERIAL_SOURCE_DIR) / "tests/data/golden" / (std::string(preset) + ".exr");
-    EXPECT_TRUE(MatchesGolden(renderer.ReadOutput(), golden, 1e-6));
+    EXPECT_TRUE(MatchesGolden(renderer.ReadOutput(), golden, bound))
+        << preset << " on " << device << ": "
+        << (lavapipe ? "lavapipe made the goldens, so its frame must match them to within 1e-6"
+                     : "another driver than the goldens' (lavapipe), held to 0.5% (kOtherDriverRmse)");
   }
 }
 

@@ -448,7 +448,7 @@ std::vector<std::array<SunSeen, 4>> ColumnVisibility(const ShadowedVolumes& v, i
 class FroxelShadows : public ShadowRender {};
 
 // Where the CPU finds the sun seen from every sample of a column up to a slice, the shadowed
-// volume equals the unshadowed one within 0.5% (issue 14: the shadow lookup changes nothing
+// volume equals the unshadowed one within 0.5% (the shadow lookup changes nothing
 // where nothing occludes), and where it finds the sun hidden from every sample of a stretch of
 // slices, single scattering does not grow there: the Mie channel's growth over the stretch is at
 // most 2% of the unshadowed growth (the PCF's weights of texels that see the sun, which clear

@@ -127,8 +127,8 @@ TEST_F(TableCacheIntegration, TemporariesOfDeadWritersAreRemoved) {
   EXPECT_TRUE(fs::exists(unlike));
 }
 
-// Issue 41: the cache is optional. A FIFO at the cache file's name blocked every command, and
-// without HOME the cache went to ./.aerial-cache; now each is a warning and the tables are
+// The cache is optional. A FIFO at the cache file's name could block every command, and
+// without HOME the cache could go to ./.aerial-cache; each is a warning and the tables are
 // computed, unless writing the cache is the command's job (precompute), which fails naming it.
 TEST_F(TableCacheIntegration, AFifoAtTheCacheFileIsSkipped) {
   fs::create_directories(dir_);

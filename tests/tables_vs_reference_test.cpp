@@ -59,7 +59,7 @@ TEST_F(TablesVsReference, TransmittanceWithinOneTenthPercent) {
   EXPECT_LT(grazing.value(), 1.5e-3) << grazing.Summary();
 }
 
-// Regions of the view grid: camera altitude times a band of sun zenith angles (issue 12's bands).
+// Regions of the view grid: camera altitude times a band of sun zenith angles (the accuracy targets' bands, docs/accuracy.md).
 std::string RegionName(const ViewAngles& v) {
   double z = v.sun_zenith_deg;
   const char* sun = z <= 60.0 ? "day" : z < 85.0 ? "afternoon" : z <= 95.0 ? "low sun" : "twilight";
@@ -86,7 +86,7 @@ void ExpectRegionsWithin(const std::map<std::string, WorstError>& regions,
 // Single scattering in daylight and in the afternoon (sun zenith 0-80), where its own error is
 // still visible in the total; near and below the horizon it crosses the edge of the Earth's
 // shadow, which moves across several mu_s texels per degree (70-120% on the ground, in values
-// 1e-2 to 1e-4 of the noon sky), and physical_sky_test holds the total there to issue 12's bands.
+// 1e-2 to 1e-4 of the noon sky), and physical_sky_test holds the total there to the targets' bands.
 TEST_F(TablesVsReference, SingleScatteringWithinTargetsInDaylight) {
   auto views = ViewGrid(kAltitudes, kViewZeniths, {0.0, 30.0, 60.0, 80.0}, kAzimuths);
   auto results = ProbeTables(FullTables(/*orders=*/1), ToQueries(views));
@@ -145,7 +145,7 @@ TEST_F(TablesVsReference, DirectSunIrradianceFollowsTheDiscThroughSunset) {
 // Radiance and transmittance to a point at a known distance (the aerial perspective of an object):
 // the segment marched with the multiple density table (inscatter_march.glsl) against the reference
 // with all orders, in daylight (sun zenith <= 60) at 5 to 30 km, cameras on the ground and 1 km up.
-// Issue 12's target there is 1%; measured 1.09% (blue, on the ground looking 10 degrees up, 5 km,
+// The target there is 1% (docs/accuracy.md); measured 1.09% (blue, on the ground looking 10 degrees up, 5 km,
 // sun at zenith 20; 1.35% before the density tables' azimuth axis, GetUnitRangeFromViewSunAzimuth),
 // so the bound is the measure plus 10%, [0.55%, 1.2%], two-sided so that an improvement is noticed.
 // The quick grid's daylight radiance to a point (physical_sky_test.cpp, a reference of 65,536 paths

@@ -65,7 +65,9 @@ class ViewerSession : public ::testing::Test {
     messages_before_ = Device::ValidationMessageCount();
   }
   void TearDown() override {
-    if (x_) EXPECT_EQ(Device::ValidationMessageCount(), messages_before_);
+    if (x_) {
+      EXPECT_EQ(Device::ValidationMessageCount(), messages_before_);
+    }
   }
 
  private:

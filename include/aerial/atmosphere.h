@@ -48,7 +48,7 @@ struct AtmosphereParameters {
   Spectrum ground_albedo{};          // Lambertian, in [0, 1].
   double mu_s_min = 0.0;             // cosine of the largest sun zenith angle the tables cover.
 
-  // The "earth" atmosphere of Bruneton 2017's demo (shared/design.md).
+  // The "earth" atmosphere of Bruneton 2017's demo (docs/design.md, "Conventions").
   static AtmosphereParameters Earth();
 
   // Stable FNV-1a hash of every physical field (not the name): the cache key.

@@ -31,29 +31,22 @@ struct TableResolution {
   int irradiance_r = 32;
   int scattering_r = 32;
   int scattering_mu = 128;  // even: half for rays that hit the ground, half for the others
-  // 36 on the arctangent mapping of mappings.glsl: the texels the low sun and twilight need
-  // (aerial_bench_sky measured 32, 36, 38 and 40 texels, and fewer nu for more mu_s: nu 5 or 6
-  // doubled the daylight error, see docs/accuracy.md). With the multiple density table below, the tables
-  // take 1.25x the memory of Bruneton 2017's 32 (issue 12's budget); 36 instead of 40 pays for
-  // that table. Against 38, no region got worse by more than 0.4 points (the low-sun irradiance's
-  // median on the ground, 0.58% -> 0.98%), while the low-sun radiance to a point on the ground and
-  // the twilight sky and irradiance got better (aerial_bench_sky --grid quick).
+  // 36 on the arctangent mapping of mappings.glsl: the texels the low sun and twilight need,
+  // within the memory budget (1.25x Bruneton 2017's 32, the multiple density table below
+  // included). Fewer nu slices for more mu_s texels doubles the daylight error (docs/accuracy.md,
+  // "Spending nu on mu_s instead", "38 mu_s texels instead of 40").
   int scattering_mu_s = 36;
   // 9 slices, in 16-bit floats (PrecomputeOptions::precision). An odd count puts a slice on
   // nu = 0, where the Earth's shadow changes fastest for a low sun (mappings.glsl,
-  // GetNuFromUnitRange): with 8 slices in float32 the low-sun sky was 3.5 / 5.0% off on the ground
-  // and 10 km up (target 3%), with 9 in half floats 2.5 / 2.3%, in 36.8 MB instead of 42.2, for
-  // 1.12x the precompute time (aerial_bench_sky --grid quick; docs/accuracy.md, "Nine nu slices").
+  // GetNuFromUnitRange): that brings the low-sun sky within its 3% target, which 8 slices in
+  // float32 miss, in less memory (docs/accuracy.md, "Nine nu slices in half floats").
   int scattering_nu = 9;    // 1 in the 3D variant
   // The scattering density of orders >= 2 (J_ms), which render-time marches integrate along a
   // segment instead of subtracting two table values (sky_lookup.glsl, GetSkyInscatterToPoint).
   // It is a convolution of the light field with the phase functions, smooth in r and mu, so a
-  // coarse grid holds it there. In mu_s and nu it takes the density tables' own texels: resampled
-  // to fewer (32 mu_s, 4 nu), the radiance to a point with a low sun was 13% high off the sun's
-  // plane (4.1 MB; see docs/accuracy.md, "Radiance to a point", for the sizes measured). In r too: with 16
-  // r texels, each per-order density resampled linearly from the density tables' 32 and read
-  // exponentially again, the low-sun radiance to a point on the ground read 3.9% low (red, 2
-  // degrees up toward a sun at zenith 95); with their 32, 2.5% (aerial_bench_sky --grid quick).
+  // coarse grid holds it there. In mu_s, nu and r it takes the density tables' own texels:
+  // resampled to fewer, the radiance to a point with a low sun leaves its target
+  // (docs/accuracy.md, "J_ms on the density tables' mu_s and nu texels", "... r texels").
   int multiple_density_r = 32;
   int multiple_density_mu = 56;  // even, split at the horizon like the scattering mu axis
   int multiple_density_mu_s = 36;
@@ -71,7 +64,7 @@ struct PrecomputeOptions {
   // After the last order, add the orders beyond it as a geometric series per texel (the tables then
   // stand for the whole series); off: exactly orders 1..N. Needs orders >= 3.
   bool close_series = true;
-  ColourMode colour = ColourMode::kRgb;  // within 1.x; every command defaults to spectral
+  ColourMode colour = ColourMode::kRgb;  // an embedder's cost stays; every command defaults to spectral
   // Wavelengths of the spectral mode, a multiple of 6: each has its single scattering, every other
   // one its orders >= 2 (the others read theirs between them), in precomputes of three. 12 put the
   // colour of sky light within 1.5e-4 in u'v' of the CIE integral, with weights fitted to it

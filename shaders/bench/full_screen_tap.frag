@@ -1,5 +1,5 @@
 #version 450
-// The benchmarks' unit of cost (shared/design.md, "Speed"): a full-screen pass whose fragments
+// The benchmarks' unit of cost (docs/design.md, "Conventions"): a full-screen pass whose fragments
 // each make one trilinear tap of a 3D texture, at a depth that varies across the screen so that
 // neighbouring pixels do not read the same texels.
 layout(set = 0, binding = 0) uniform sampler3D volume;

@@ -44,14 +44,14 @@ void GetTexelSpan(int x, int y, vec3 center, out vec3 across, out vec3 down) {
 
 // The sun disc's radiance through the air (ShadeBackground of the sky pass) averaged over the texel.
 vec3 GetSunDiscOverTexel(vec3 center, vec3 across, vec3 down, vec3 transmittance) {
-  float reach = atmosphere.sun_angular_radius + length(across) + length(down);
-  if (dot(center, frame.sun_direction.xyz) < cos(reach)) return vec3(0.0);
+  float reach = AERIAL_ATMOSPHERE.sun_angular_radius + length(across) + length(down);
+  if (dot(center, AERIAL_FRAME.sun_direction.xyz) < cos(reach)) return vec3(0.0);
   vec3 sum = vec3(0.0);
   for (int j = 0; j < DISC_SAMPLES; ++j) {
     for (int i = 0; i < DISC_SAMPLES; ++i) {
       vec2 offset = (vec2(i, j) + 0.5) / float(DISC_SAMPLES) - 0.5;
       vec3 ray = normalize(center + offset.x * across + offset.y * down);
-      sum += ShadeBackground(transmittance, false, dot(ray, frame.sun_direction.xyz));
+      sum += ShadeBackground(transmittance, false, dot(ray, AERIAL_FRAME.sun_direction.xyz));
     }
   }
   return sum / float(DISC_SAMPLES * DISC_SAMPLES);
@@ -74,7 +74,7 @@ void main() {
   int x = int(gl_GlobalInvocationID.x), y = int(gl_GlobalInvocationID.y);
   float r, mu, mu_s, nu;
   if (x == 0 && y == 0) {
-    GetCameraRayParameters(frame.sun_direction.xyz, r, mu, mu_s, nu);
+    GetCameraRayParameters(AERIAL_FRAME.sun_direction.xyz, r, mu, mu_s, nu);
     sun_irradiance = vec4(GetDirectSunlight(GetSunLightAt(transmittance_texture, r, mu_s)), 0.0);
   }
   if (x >= map.width || y >= map.height) return;

@@ -12,7 +12,7 @@ layout(constant_id = 2) const bool kSunHighEverywhere = false;
 #define AERIAL_SUN_HIGH_EVERYWHERE kSunHighEverywhere
 #include "froxel.glsl"
 #include "frame.glsl"
-#define SHADOW_BINDING 7
+#define AERIAL_SHADOW_BINDING 7
 #include "shadowed_march.glsl"
 // Wide in x: a CPU implementation vectorizes across the invocations of a workgroup's rows.
 layout(local_size_x = 32, local_size_y = 1) in;
@@ -28,7 +28,7 @@ layout(set = 0, binding = 6) writeonly uniform image3D transmittance_froxels;
 
 void main() {
   ivec2 column = ivec2(gl_GlobalInvocationID.xy);
-  ivec3 size = frame.froxel_size.xyz;
+  ivec3 size = AERIAL_FRAME.froxel_size.xyz;
   if (any(greaterThanEqual(column, size.xy))) return;
   vec3 ray = ViewRayFromScreen((vec2(column) + 0.5) / vec2(size.xy));
   float r, mu, mu_s, nu;
@@ -37,7 +37,7 @@ void main() {
                                              mu, mu_s, nu);
   float previous = 0.0;
   for (int slice = 0; slice < size.z; ++slice) {
-    float distance = FroxelSliceDistance(float(slice) + 0.5, float(size.z), frame.froxel_depth.x);
+    float distance = FroxelSliceDistance(float(slice) + 0.5, float(size.z), AERIAL_FRAME.froxel_depth.x);
     AdvanceInscatterMarch(transmittance_texture, multiple_density_texture, march, distance,
                           GetStepSunVisibility(ray, previous, distance));
     previous = distance;

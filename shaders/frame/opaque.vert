@@ -31,13 +31,13 @@ layout(location = 5) out vec3 vertex_mie;
 layout(location = 6) out vec3 vertex_transmittance;
 
 void main() {
-  relative_position = position - frame.camera_scene_position.xyz;
+  relative_position = position - AERIAL_FRAME.camera_scene_position.xyz;
   LambertianRadiance radiance =
       GetLambertianRadiance(transmittance_texture, irradiance_texture, relative_position, normal, albedo);
   sun_radiance = radiance.sun;
   sky_radiance = radiance.sky;
   surface_normal = normal;
-  gl_Position = frame.view_projection * vec4(relative_position, 1.0);
+  gl_Position = AERIAL_FRAME.view_projection * vec4(relative_position, 1.0);
   Inscatter segment = Inscatter(vec3(0.0), vec3(0.0), vec3(1.0));
   if (kFroxelsPerVertex) {
     segment = GetAerialPerspectiveAtVertex(rayleigh_froxels, mie_froxels, transmittance_froxels, gl_Position,

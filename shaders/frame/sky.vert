@@ -13,10 +13,10 @@ layout(location = 3) flat out vec2 horizon;  // x: its zenith angle, y: its cos 
 void main() {
   vec2 corner = vec2((gl_VertexIndex << 1) & 2, gl_VertexIndex & 2) * 2.0 - 1.0;
   gl_Position = vec4(corner, 0.0, 1.0);
-  vec4 world = frame.inverse_view_projection * vec4(corner, 0.5, 1.0);
+  vec4 world = AERIAL_FRAME.inverse_view_projection * vec4(corner, 0.5, 1.0);
   view_ray = world.xyz / world.w;
   vec3 side;
   GetSkyViewFrame(up, toward_sun, side);
-  float theta_h = HorizonZenithAngle(length(frame.camera_planet_position.xyz));
+  float theta_h = HorizonZenithAngle(length(AERIAL_FRAME.camera_planet_position.xyz));
   horizon = vec2(theta_h, cos(theta_h));
 }

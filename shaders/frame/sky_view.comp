@@ -32,7 +32,7 @@ void main() {
   SkyViewRay ray = GetSkyViewRay(texel, table.size);
   Inscatter sky = GetSkyInscatterFromTables(transmittance_texture, rayleigh_texture, mie_texture,
                                             multiple_texture, ray.r, ray.mu, ray.mu_s, ray.nu);
-  if (SkyInscatterCorrectionApplies(atmosphere.scattering_size)) {
+  if (SkyInscatterCorrectionApplies(AERIAL_ATMOSPHERE.scattering_size)) {
     ivec2 node;
     vec2 t;
     GetSkyViewLatticeCell(texel, table.size, node, t);

@@ -3,14 +3,11 @@
 // Sky-view correction pass, before the sky-view pass: the correction of the tables'
 // inscatter (GetSkyInscatterCorrection, sky_lookup.glsl) at the lattice nodes of the sky-view
 // table (sky_view.glsl), which sky_view.comp interpolates. It marches five suns along each ray
-// (seven in daylight): at every texel of the table it cost 78 ms per rebuild at sunset on lavapipe,
-// at the 1,862 nodes 14 ms with 16 steps per ray (aerial_bench_render --preset sunset); with 32
-// the moving-sun frame, which rebuilds it each frame, moved within its run-to-run noise (54-62 ms
-// GPU without shadows).
+// (seven in daylight), which at every texel of the table would cost several times the lattice's
+// 1,862 nodes at each rebuild; a frame under a moving sun rebuilds it every frame.
 // The correction changes slowly over the table except across the horizon row, which no lattice
 // cell spans. Since the correction also re-blends the multiple scattering in nu, it runs for a high
-// sun too (the 3D tables need none: every node returns at once); the frame under a moving sun at
-// noon did not move beyond its run-to-run noise (aerial_bench_render --preset noon).
+// sun too (the 3D tables need none: every node returns at once).
 #include "blocks_not_inlined.glsl"
 // The variant for a sun high over every lattice ray's marched suns (aerial/render/sun_high_variant.h,
 // Renderer::RecordSkyViewCorrection), declared before the includes so that transmittance.glsl takes it.

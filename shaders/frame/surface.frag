@@ -4,7 +4,7 @@
 // perspective, and its distance from the camera: what Renderer::ReadSurface draws on request, for
 // checks against a reference that applies its own aerial perspective. Frames use opaque.frag.
 #include "surface.glsl"
-#define SHADOW_BINDING 8
+#define AERIAL_SHADOW_BINDING 8
 #include "shadow.glsl"
 // 1: the sun's part included (times its visibility); 0: the sky's part alone (SurfaceLight).
 layout(constant_id = 2) const int kSunPart = 1;

@@ -8,7 +8,7 @@
 // this blend is exact: I + T (alpha L + (1 - alpha) L_behind).
 #include "mesh_tables.glsl"
 #include "surface.glsl"
-#define SHADOW_BINDING 8
+#define AERIAL_SHADOW_BINDING 8
 #include "shadow.glsl"
 layout(location = 0) in vec3 relative_position;
 layout(location = 1) in vec4 sun_radiance_opacity;

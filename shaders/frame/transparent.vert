@@ -25,13 +25,13 @@ layout(location = 5) out vec3 sky_radiance;
 layout(location = 6) out vec3 facing_normal;
 
 void main() {
-  relative_position = position - frame.camera_scene_position.xyz;
+  relative_position = position - AERIAL_FRAME.camera_scene_position.xyz;
   facing_normal = dot(normal, relative_position) > 0.0 ? -normal : normal;
   LambertianRadiance radiance =
       GetLambertianRadiance(transmittance_texture, irradiance_texture, relative_position, facing_normal, albedo);
   sun_radiance_opacity = vec4(radiance.sun, opacity);
   sky_radiance = radiance.sky;
-  gl_Position = frame.view_projection * vec4(relative_position, 1.0);
+  gl_Position = AERIAL_FRAME.view_projection * vec4(relative_position, 1.0);
   Inscatter inscatter = GetAerialPerspectiveAtVertex(rayleigh_froxels, mie_froxels, transmittance_froxels,
                                                      gl_Position, length(relative_position));
   vertex_rayleigh = inscatter.rayleigh;

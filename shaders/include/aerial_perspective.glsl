@@ -28,7 +28,7 @@
 Inscatter GetAerialPerspective(sampler3D rayleigh_froxels, sampler3D mie_froxels, sampler3D transmittance_froxels,
                                vec2 screen_uv, float distance) {
   return SampleFroxels(rayleigh_froxels, mie_froxels, transmittance_froxels, screen_uv, distance,
-                       float(frame.froxel_size.z), frame.froxel_depth.x);
+                       float(AERIAL_FRAME.froxel_size.z), AERIAL_FRAME.froxel_depth.x);
 }
 
 // The same read at a vertex from its clip-space position: per vertex, for transparent objects and
@@ -53,7 +53,7 @@ Inscatter GetAerialPerspectivePerPixel(sampler2D transmittance_texture, sampler3
 }
 
 // nu: the cosine between the view ray toward a camera-relative point and the sun.
-float ViewSunCosine(vec3 relative_position) { return dot(normalize(relative_position), frame.sun_direction.xyz); }
+float ViewSunCosine(vec3 relative_position) { return dot(normalize(relative_position), AERIAL_FRAME.sun_direction.xyz); }
 
 // What the camera sees of a surface of radiance L through a segment of air:
 // L T + I_R P_R(nu) + I_M P_M(g, nu) (Bruneton and Neyret 2008, eq. 16 and 17, with the

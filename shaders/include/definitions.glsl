@@ -40,7 +40,7 @@ struct DensityProfile {
 };
 
 // kMaxSpectralSunlightTerms in aerial/shader_abi/atmosphere_block.h.
-#define SPECTRAL_SUNLIGHT_MAX_TERMS 48
+#define AERIAL_SPECTRAL_SUNLIGHT_MAX_TERMS 48
 
 // The atmosphere's and the frame's blocks (frame.glsl) are each read as the one element of an
 // array, at AERIAL_BLOCK_INDEX: 0 unless the shader defines it first (blocks_not_inlined.glsl). An
@@ -81,19 +81,19 @@ struct AtmosphereParameters {
   // Spectral tables: the sunlight through a path, per wavelength (GetPathSunlight); x: the
   // wavelengths, 0 for rgb tables.
   ivec4 spectral_sunlight_terms;
-  vec4 spectral_sunlight_exponent[SPECTRAL_SUNLIGHT_MAX_TERMS];
-  vec4 spectral_sunlight_rayleigh[SPECTRAL_SUNLIGHT_MAX_TERMS];
-  vec4 spectral_sunlight_mie[SPECTRAL_SUNLIGHT_MAX_TERMS];
-  vec4 spectral_sunlight_direct[SPECTRAL_SUNLIGHT_MAX_TERMS];
+  vec4 spectral_sunlight_exponent[AERIAL_SPECTRAL_SUNLIGHT_MAX_TERMS];
+  vec4 spectral_sunlight_rayleigh[AERIAL_SPECTRAL_SUNLIGHT_MAX_TERMS];
+  vec4 spectral_sunlight_mie[AERIAL_SPECTRAL_SUNLIGHT_MAX_TERMS];
+  vec4 spectral_sunlight_direct[AERIAL_SPECTRAL_SUNLIGHT_MAX_TERMS];
 };
 layout(std140, set = 0, binding = 0) uniform AtmosphereBlock {
   AtmosphereParameters parameters[1];
 } atmosphere_block;
-#define atmosphere atmosphere_block.parameters[AERIAL_BLOCK_INDEX]
+#define AERIAL_ATMOSPHERE atmosphere_block.parameters[AERIAL_BLOCK_INDEX]
 
 float ClampCosine(float mu) { return clamp(mu, -1.0, 1.0); }
 float ClampDistance(float d) { return max(d, 0.0); }
-float ClampRadius(float r) { return clamp(r, atmosphere.bottom_radius, atmosphere.top_radius); }
+float ClampRadius(float r) { return clamp(r, AERIAL_ATMOSPHERE.bottom_radius, AERIAL_ATMOSPHERE.top_radius); }
 float SafeSqrt(float a) { return sqrt(max(a, 0.0)); }
 
 // Integral over one step of length 1 of a function known at both ends, assuming it varies

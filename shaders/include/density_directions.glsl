@@ -13,8 +13,8 @@
 #include "geometry.glsl"
 
 int DensityDirectionCount() {
-  return (atmosphere.density_directions.x + atmosphere.density_directions.y) *
-         atmosphere.density_directions.z;
+  return (AERIAL_ATMOSPHERE.density_directions.x + AERIAL_ATMOSPHERE.density_directions.y) *
+         AERIAL_ATMOSPHERE.density_directions.z;
 }
 
 // The zenith angle of the cell boundary t in [0, 1] above the horizon: quadratic, so that cells
@@ -69,16 +69,16 @@ float CellNodeZenith(float r, bool ground, float t_a, float t_b, float theta_a, 
   float d = distance_sum / weight_sum;
   // The boundary at radius b is met at distance d where b^2 = r^2 + d^2 + 2 r d mu. The distance is
   // monotonic in mu across the cell, so the node lies inside it up to rounding.
-  float b = ground ? atmosphere.bottom_radius : atmosphere.top_radius;
+  float b = ground ? AERIAL_ATMOSPHERE.bottom_radius : AERIAL_ATMOSPHERE.top_radius;
   float mu = ClampCosine(((b - r) * (b + r) - d * d) / (2.0 * r * d));
   return clamp(acos(mu), theta_a, theta_b);
 }
 
 // Direction `index` of the grid at radius r: xyz is the unit vector, w the cell's solid angle.
 vec4 GetDensityDirection(float r, int index) {
-  int theta_up = atmosphere.density_directions.x;
-  int theta_down = atmosphere.density_directions.y;
-  int phi_count = atmosphere.density_directions.z;
+  int theta_up = AERIAL_ATMOSPHERE.density_directions.x;
+  int theta_down = AERIAL_ATMOSPHERE.density_directions.y;
+  int phi_count = AERIAL_ATMOSPHERE.density_directions.z;
   int theta_index = index / phi_count;
   int phi_index = index % phi_count;
   float theta_h = HorizonZenithAngle(r);

@@ -27,28 +27,28 @@ struct FrameParameters {
 layout(std140, set = 0, binding = 1) uniform FrameBlock {
   FrameParameters parameters[1];  // at AERIAL_BLOCK_INDEX (definitions.glsl)
 } frame_block;
-#define frame frame_block.parameters[AERIAL_BLOCK_INDEX]
+#define AERIAL_FRAME frame_block.parameters[AERIAL_BLOCK_INDEX]
 
 // Unit view ray (camera-relative world) through a point of the screen, uv in [0,1]^2.
 vec3 ViewRayFromScreen(vec2 uv) {
   vec4 clip = vec4(uv * 2.0 - 1.0, 0.5, 1.0);
-  vec4 world = frame.inverse_view_projection * clip;
+  vec4 world = AERIAL_FRAME.inverse_view_projection * clip;
   return normalize(world.xyz / world.w);
 }
 
 // The distance from the camera to the point a pixel's reversed-Z depth value stands for.
 float DistanceFromDepth(vec2 uv, float depth) {
-  vec4 world = frame.inverse_view_projection * vec4(uv * 2.0 - 1.0, depth, 1.0);
+  vec4 world = AERIAL_FRAME.inverse_view_projection * vec4(uv * 2.0 - 1.0, depth, 1.0);
   return length(world.xyz / world.w);
 }
 
 // The (r, mu, mu_s, nu) of a ray from the camera, for the table lookups.
 void GetCameraRayParameters(vec3 ray, out float r, out float mu, out float mu_s, out float nu) {
-  vec3 x = frame.camera_planet_position.xyz;
+  vec3 x = AERIAL_FRAME.camera_planet_position.xyz;
   r = length(x);
   mu = dot(x, ray) / r;
-  mu_s = dot(x, frame.sun_direction.xyz) / r;
-  nu = dot(ray, frame.sun_direction.xyz);
+  mu_s = dot(x, AERIAL_FRAME.sun_direction.xyz) / r;
+  nu = dot(ray, AERIAL_FRAME.sun_direction.xyz);
 }
 
 #endif

@@ -12,17 +12,17 @@
 
 // r^2 - R_bottom^2 = rho^2, the squared distance to the horizon, without cancellation.
 float SquaredHorizonDistance(float r) {
-  return max((r - atmosphere.bottom_radius) * (r + atmosphere.bottom_radius), 0.0);
+  return max((r - AERIAL_ATMOSPHERE.bottom_radius) * (r + AERIAL_ATMOSPHERE.bottom_radius), 0.0);
 }
 
 // Zenith angle of the horizon seen from radius r.
 float HorizonZenithAngle(float r) {
-  return PI - asin(clamp(atmosphere.bottom_radius / r, 0.0, 1.0));
+  return PI - asin(clamp(AERIAL_ATMOSPHERE.bottom_radius / r, 0.0, 1.0));
 }
 
 // R_top^2 - r^2, without cancellation.
 float SquaredTopBoundaryFromRadius(float r) {
-  return (atmosphere.top_radius - r) * (atmosphere.top_radius + r);
+  return (AERIAL_ATMOSPHERE.top_radius - r) * (AERIAL_ATMOSPHERE.top_radius + r);
 }
 
 // d = -r mu + sqrt(r^2 mu^2 + R_top^2 - r^2): the positive root of |x + d v| = R_top.

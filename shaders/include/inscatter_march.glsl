@@ -97,11 +97,11 @@ void AdvanceInscatterMarch(sampler2D transmittance_texture, sampler3D multiple_d
 // to the Rayleigh part divided by P_R(nu), which the caller's product restores (nu is the same
 // along the ray, so this is exact).
 Inscatter GetInscatterMarchResult(InscatterMarch march) {
-  vec3 sun = atmosphere.solar_irradiance.rgb;
+  vec3 sun = AERIAL_ATMOSPHERE.solar_irradiance.rgb;
   Inscatter result;
-  result.rayleigh = march.rayleigh_sum * sun * atmosphere.rayleigh_scattering.rgb +
+  result.rayleigh = march.rayleigh_sum * sun * AERIAL_ATMOSPHERE.rayleigh_scattering.rgb +
                     march.multiple_sum / RayleighPhaseFunction(march.nu);
-  result.mie = march.mie_sum * sun * atmosphere.mie_scattering.rgb;
+  result.mie = march.mie_sum * sun * AERIAL_ATMOSPHERE.mie_scattering.rgb;
   result.transmittance = march.transmittance;
   return result;
 }

@@ -27,7 +27,7 @@ vec3 GetIrradianceIntegrand(sampler2D transmittance_texture, sampler2D sun_band_
   vec3 mie;
   ComputeSingleScatteringInSteps(transmittance_texture, sun_band_texture, r, omega.z, mu_s, nu,
                                  false, 32, rayleigh, mie);
-  return rayleigh * RayleighPhaseFunction(nu) + mie * MiePhaseFunction(atmosphere.mie_phase_g, nu);
+  return rayleigh * RayleighPhaseFunction(nu) + mie * MiePhaseFunction(AERIAL_ATMOSPHERE.mie_phase_g, nu);
 }
 
 // Indirect irradiance of order `order`: the radiance of that order integrated over the upper
@@ -77,13 +77,13 @@ vec3 IntegrateIrradiance(sampler2D transmittance_texture, sampler2D sun_band_tex
 // each axis. The difference is smooth in direction where the table is right, so the coarse grid
 // integrates it well. Measured (aerial_bench_sky): low-sun sky irradiance from 3.6-5.3% to
 // 1.9-2.5% at most, twilight on the ground 9.6% to 5.8%; the coarse grid at 8x8 is as accurate as
-// 16x16 or the exact single scattering on the full 32x32 grid, which cost 4.7 s instead of 0.5 s.
+// 16x16 or the exact single scattering on the full 32x32 grid, at a ninth of its cost.
 vec3 ComputeIndirectIrradiance(sampler2D transmittance_texture, sampler2D sun_band_texture,
                                sampler3D single_rayleigh_texture, sampler3D single_mie_texture,
                                sampler3D multiple_scattering_texture,
                                float r, float mu_s, int order) {
-  int zenith_samples = atmosphere.sample_counts.z;
-  int azimuth_samples = atmosphere.sample_counts.w;
+  int zenith_samples = AERIAL_ATMOSPHERE.sample_counts.z;
+  int azimuth_samples = AERIAL_ATMOSPHERE.sample_counts.w;
   vec3 irradiance = IntegrateIrradiance(transmittance_texture, sun_band_texture,
                                         single_rayleigh_texture, single_mie_texture,
                                         multiple_scattering_texture, r, mu_s, order, false,
@@ -108,7 +108,7 @@ vec3 ComputeIndirectIrradiance(sampler2D transmittance_texture, sampler2D sun_ba
 // altitudes).
 vec3 GetIrradiance(sampler2D irradiance_texture, float r, float mu_s) {
   vec2 uv = GetIrradianceTextureUvFromRMuS(r, mu_s);
-  float rows = float(atmosphere.irradiance_size.y);
+  float rows = float(AERIAL_ATMOSPHERE.irradiance_size.y);
   vec2 blend = GetTexelBlend(uv.y, rows);
   vec3 e0 = ReadTable(irradiance_texture, vec2(uv.x, (blend.x + 0.5) / rows)).rgb;
   if (blend.y == 0.0) return e0;

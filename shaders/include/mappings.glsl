@@ -36,7 +36,7 @@ vec2 GetTexelBlend(float u, float size) {
 
 // H: distance to the top boundary of a horizontal ray from the ground.
 float HorizonDistanceFromGround() {
-  return sqrt(SquaredHorizonDistance(atmosphere.top_radius));
+  return sqrt(SquaredHorizonDistance(AERIAL_ATMOSPHERE.top_radius));
 }
 
 // ---- Transmittance table: x = d/d_max mapping of mu, y = rho/H mapping of r. ----
@@ -47,28 +47,28 @@ float GetTransmittanceUnitRangeFromR(float r) {
 }
 float GetRFromTransmittanceUnitRange(float x_r) {
   float rho = HorizonDistanceFromGround() * x_r;
-  return sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
+  return sqrt(rho * rho + AERIAL_ATMOSPHERE.bottom_radius * AERIAL_ATMOSPHERE.bottom_radius);
 }
 
 vec2 GetTransmittanceTextureUvFromRMu(float r, float mu) {
   float H = HorizonDistanceFromGround();
   float rho = sqrt(SquaredHorizonDistance(r));
   float d = DistanceToTopAtmosphereBoundary(r, mu);
-  float d_min = atmosphere.top_radius - r;
+  float d_min = AERIAL_ATMOSPHERE.top_radius - r;
   float d_max = rho + H;
   float x_mu = (d - d_min) / (d_max - d_min);
-  return vec2(GetTextureCoordFromUnitRange(x_mu, atmosphere.transmittance_size.x),
+  return vec2(GetTextureCoordFromUnitRange(x_mu, AERIAL_ATMOSPHERE.transmittance_size.x),
               GetTextureCoordFromUnitRange(GetTransmittanceUnitRangeFromR(r),
-                                           atmosphere.transmittance_size.y));
+                                           AERIAL_ATMOSPHERE.transmittance_size.y));
 }
 
 void GetRMuFromTransmittanceTextureUv(vec2 uv, out float r, out float mu) {
-  float x_mu = GetUnitRangeFromTextureCoord(uv.x, atmosphere.transmittance_size.x);
-  float x_r = GetUnitRangeFromTextureCoord(uv.y, atmosphere.transmittance_size.y);
+  float x_mu = GetUnitRangeFromTextureCoord(uv.x, AERIAL_ATMOSPHERE.transmittance_size.x);
+  float x_r = GetUnitRangeFromTextureCoord(uv.y, AERIAL_ATMOSPHERE.transmittance_size.y);
   float H = HorizonDistanceFromGround();
   float rho = H * x_r;
   r = GetRFromTransmittanceUnitRange(x_r);
-  float d_min = atmosphere.top_radius - r;
+  float d_min = AERIAL_ATMOSPHERE.top_radius - r;
   float d_max = rho + H;
   float d = d_min + x_mu * (d_max - d_min);
   // H^2 - rho^2 = R_top^2 - r^2, taken without cancellation.
@@ -94,13 +94,13 @@ const float MU_S_DENSEST = -0.1;
 const float MU_S_SPREAD = 7.0;
 
 float GetUnitRangeFromMuS(float mu_s) {
-  float low = atan(MU_S_SPREAD * (atmosphere.mu_s_min - MU_S_DENSEST));
+  float low = atan(MU_S_SPREAD * (AERIAL_ATMOSPHERE.mu_s_min - MU_S_DENSEST));
   float high = atan(MU_S_SPREAD * (1.0 - MU_S_DENSEST));
   return clamp((atan(MU_S_SPREAD * (mu_s - MU_S_DENSEST)) - low) / (high - low), 0.0, 1.0);
 }
 
 float GetMuSFromUnitRange(float x) {
-  float low = atan(MU_S_SPREAD * (atmosphere.mu_s_min - MU_S_DENSEST));
+  float low = atan(MU_S_SPREAD * (AERIAL_ATMOSPHERE.mu_s_min - MU_S_DENSEST));
   float high = atan(MU_S_SPREAD * (1.0 - MU_S_DENSEST));
   return ClampCosine(MU_S_DENSEST + tan(low + x * (high - low)) / MU_S_SPREAD);
 }
@@ -173,13 +173,13 @@ float GetMuSTextureCoordLinearInDaylight(float mu_s, int texels) {
 // apart (and exact with 64 rows).
 vec2 GetIrradianceTextureUvFromRMuS(float r, float mu_s) {
   float x_r = GetUnitRangeFromR(r);
-  return vec2(GetMuSTextureCoordLinearInDaylight(mu_s, atmosphere.irradiance_size.x),
-              GetTextureCoordFromUnitRange(x_r, atmosphere.irradiance_size.y));
+  return vec2(GetMuSTextureCoordLinearInDaylight(mu_s, AERIAL_ATMOSPHERE.irradiance_size.x),
+              GetTextureCoordFromUnitRange(x_r, AERIAL_ATMOSPHERE.irradiance_size.y));
 }
 
 void GetRMuSFromIrradianceTextureUv(vec2 uv, out float r, out float mu_s) {
-  float x_mu_s = GetUnitRangeFromTextureCoord(uv.x, atmosphere.irradiance_size.x);
-  r = GetRFromUnitRange(GetUnitRangeFromTextureCoord(uv.y, atmosphere.irradiance_size.y));
+  float x_mu_s = GetUnitRangeFromTextureCoord(uv.x, AERIAL_ATMOSPHERE.irradiance_size.x);
+  r = GetRFromUnitRange(GetUnitRangeFromTextureCoord(uv.y, AERIAL_ATMOSPHERE.irradiance_size.y));
   mu_s = GetMuSFromUnitRange(x_mu_s);
 }
 
@@ -237,13 +237,13 @@ float GetUnitRangeFromMuInHalf(int mu_axis, float r, float mu, bool ray_r_mu_int
   if (ray_r_mu_intersects_ground) {
     // Distance to the ground, from r - R (nadir) to rho (horizon).
     float d = -r * mu - SafeSqrt(GroundDiscriminant(r, mu));
-    float d_min = r - atmosphere.bottom_radius;
+    float d_min = r - AERIAL_ATMOSPHERE.bottom_radius;
     float d_max = rho;
     return d_max == d_min ? 0.0 : (d - d_min) / (d_max - d_min);
   }
   // Distance to the top boundary, from R_top - r (zenith) to rho + H (horizon).
   float d = DistanceToTopAtmosphereBoundary(r, mu);
-  float d_min = atmosphere.top_radius - r;
+  float d_min = AERIAL_ATMOSPHERE.top_radius - r;
   float d_max = rho + HorizonDistanceFromGround();
   return (d - d_min) / (d_max - d_min);
 }
@@ -255,11 +255,11 @@ float GetMuFromUnitRangeInHalf(int mu_axis, float r, float x, bool ray_r_mu_inte
   }
   float rho = sqrt(SquaredHorizonDistance(r));
   if (ray_r_mu_intersects_ground) {
-    float d_min = r - atmosphere.bottom_radius;
+    float d_min = r - AERIAL_ATMOSPHERE.bottom_radius;
     float d = d_min + (rho - d_min) * x;
     return d == 0.0 ? -1.0 : ClampCosine(-(rho * rho + d * d) / (2.0 * r * d));
   }
-  float d_min = atmosphere.top_radius - r;
+  float d_min = AERIAL_ATMOSPHERE.top_radius - r;
   float d = d_min + (rho + HorizonDistanceFromGround() - d_min) * x;
   return d == 0.0 ? 1.0 : ClampCosine((SquaredTopBoundaryFromRadius(r) - d * d) / (2.0 * r * d));
 }

@@ -10,8 +10,8 @@
 layout(constant_id = 4) const bool kSunHighEverywhere = false;
 #define AERIAL_SUN_HIGH_EVERYWHERE kSunHighEverywhere
 #include "aerial_perspective.glsl"
-#ifndef SHADOW_BINDING
-#define SHADOW_BINDING 8
+#ifndef AERIAL_SHADOW_BINDING
+#define AERIAL_SHADOW_BINDING 8
 #endif
 #include "shadowed_march.glsl"
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;

@@ -21,7 +21,7 @@
 #define AERIAL_OPAQUE_FRAGMENT_GLSL
 #include "mesh_tables.glsl"
 #include "surface.glsl"
-#define SHADOW_BINDING 8
+#define AERIAL_SHADOW_BINDING 8
 #include "shadow.glsl"
 layout(constant_id = 3) const int kSunVisibilityFromCache = 0;
 layout(constant_id = 5) const bool kFroxelsPerVertex = false;
@@ -54,7 +54,7 @@ Inscatter GetFragmentSegment(vec3 ray, float r, float mu, float mu_s, float nu, 
   if ((kReadsLeftOut & kLeaveOutFroxelReads) != 0) return Inscatter(vec3(1e-3), vec3(1e-4), vec3(0.9));
   if (kFroxelsPerVertex) return Inscatter(vertex_rayleigh, vertex_mie, vertex_transmittance);
   return GetAerialPerspective(rayleigh_froxels, mie_froxels, transmittance_froxels,
-                              gl_FragCoord.xy / frame.viewport.xy, distance);
+                              gl_FragCoord.xy / AERIAL_FRAME.viewport.xy, distance);
 }
 
 // The fragment's radiance at the camera, its surface's sun part times sun_visibility.

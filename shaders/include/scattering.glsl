@@ -13,7 +13,7 @@
 // depends on (r, mu, mu_s) only; what is lost is the sun setting along the ray, i.e. the Earth's
 // shadow cast on the atmosphere, and the sun's changing elevation over long (near-horizontal)
 // paths. Phase functions still use each ray's true nu.
-bool TablesDropNu() { return atmosphere.scattering_size.w == 1; }
+bool TablesDropNu() { return AERIAL_ATMOSPHERE.scattering_size.w == 1; }
 
 // The orders beyond the last one computed, N, as a geometric series. Each order is the previous
 // one through the same scattering operator, so the ratio of consecutive orders settles to a
@@ -60,10 +60,10 @@ float GetStepDistance(float ray_length, int i, int steps, float spacing_exponent
 // sunlight that path lets through (GetPathSunlight), times the density of each species there.
 void ComputeSingleScatteringIntegrandAt(float r_d, vec3 optical_depth, vec3 spread,
                                         out vec3 rayleigh, out vec3 mie) {
-  float altitude = r_d - atmosphere.bottom_radius;
+  float altitude = r_d - AERIAL_ATMOSPHERE.bottom_radius;
   PathSunlight sunlight = GetPathSunlight(optical_depth);
-  rayleigh = sunlight.rayleigh * spread * GetProfileDensity(atmosphere.rayleigh_density, altitude);
-  mie = sunlight.mie * spread * GetProfileDensity(atmosphere.mie_density, altitude);
+  rayleigh = sunlight.rayleigh * spread * GetProfileDensity(AERIAL_ATMOSPHERE.rayleigh_density, altitude);
+  mie = sunlight.mie * spread * GetProfileDensity(AERIAL_ATMOSPHERE.mie_density, altitude);
 }
 
 // The same at distance d along the ray (r, mu), with the sunlight read from the sun band.
@@ -108,16 +108,16 @@ void ComputeSingleScatteringInSteps(sampler2D transmittance_texture, sampler2D s
     rayleigh_previous = rayleigh_i;
     mie_previous = mie_i;
   }
-  vec3 sun = atmosphere.solar_irradiance.rgb;
-  rayleigh = rayleigh_sum * sun * atmosphere.rayleigh_scattering.rgb;
-  mie = mie_sum * sun * atmosphere.mie_scattering.rgb;
+  vec3 sun = AERIAL_ATMOSPHERE.solar_irradiance.rgb;
+  rayleigh = rayleigh_sum * sun * AERIAL_ATMOSPHERE.rayleigh_scattering.rgb;
+  mie = mie_sum * sun * AERIAL_ATMOSPHERE.mie_scattering.rgb;
 }
 
 void ComputeSingleScattering(sampler2D transmittance_texture, sampler2D sun_band_texture, float r,
                              float mu, float mu_s, float nu, bool ray_r_mu_intersects_ground,
                              out vec3 rayleigh, out vec3 mie) {
   ComputeSingleScatteringInSteps(transmittance_texture, sun_band_texture, r, mu, mu_s, nu,
-                                 ray_r_mu_intersects_ground, atmosphere.sample_counts.y, rayleigh,
+                                 ray_r_mu_intersects_ground, AERIAL_ATMOSPHERE.sample_counts.y, rayleigh,
                                  mie);
 }
 
@@ -185,8 +185,8 @@ vec3 GetScattering(sampler3D scattering_texture, ivec4 size, float r, float mu, 
 // the other tables, linearly. Both blends agree on the texels, so the read stays continuous.
 //  - The precompute's integration of order 2's density along the rays too
 //    (multiple_scattering.comp), where most of the multiple scattering in the shadow comes from:
-//    the low-sun sky on the ground 3.3% -> 2.1%, 10 km up 4.9% -> 3.2%, for 0.47 s of precompute
-//    (7.67 s). Every order: 1.7 s, over the 8 s target.
+//    the low-sun sky on the ground 3.3% -> 2.1%, 10 km up 4.9% -> 3.2%, for a sixteenth more
+//    precompute time. Every order would take the precompute over its 8 s target.
 //  - Not for the 3D tables, which have no Earth's shadow: their low-sun radiance to a point on the
 //    ground got worse that way (47% -> 54% at most in blue, aerial_bench_sky --lut 3d).
 vec3 GetDensityBlended(sampler3D density_texture, ivec4 size, vec2 nu_blend, vec3 uvw) {
@@ -278,7 +278,7 @@ vec3 GetScatteringExponentialInR(sampler3D scattering_texture, ivec4 size, float
 // axis, exponential in r: the density follows the air's density).
 vec3 GetMultipleScatteringDensity(sampler3D multiple_density_texture, float r, float mu,
                                   float mu_s, float nu, bool ray_r_mu_intersects_ground) {
-  ivec4 size = atmosphere.multiple_density_size;
+  ivec4 size = AERIAL_ATMOSPHERE.multiple_density_size;
   vec4 uvwz = GetDensityTextureUvwz(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
   return GetScatteringBlendedExponentialInR(multiple_density_texture, size, true,
                                             GetNominalNuBlend(size, uvwz), uvwz);
@@ -291,13 +291,13 @@ vec3 GetScatteringOfOrder(sampler3D single_rayleigh_texture, sampler3D single_mi
                           sampler3D multiple_scattering_texture, float r, float mu, float mu_s,
                           float nu, bool ray_r_mu_intersects_ground, int order) {
   if (order == 1) {
-    vec3 rayleigh = GetScattering(single_rayleigh_texture, atmosphere.scattering_size, r, mu, mu_s,
+    vec3 rayleigh = GetScattering(single_rayleigh_texture, AERIAL_ATMOSPHERE.scattering_size, r, mu, mu_s,
                                   nu, ray_r_mu_intersects_ground);
-    vec3 mie = GetScattering(single_mie_texture, atmosphere.scattering_size, r, mu, mu_s, nu,
+    vec3 mie = GetScattering(single_mie_texture, AERIAL_ATMOSPHERE.scattering_size, r, mu, mu_s, nu,
                              ray_r_mu_intersects_ground);
-    return rayleigh * RayleighPhaseFunction(nu) + mie * MiePhaseFunction(atmosphere.mie_phase_g, nu);
+    return rayleigh * RayleighPhaseFunction(nu) + mie * MiePhaseFunction(AERIAL_ATMOSPHERE.mie_phase_g, nu);
   }
-  return GetScatteringClampedNu(multiple_scattering_texture, atmosphere.density_size,
+  return GetScatteringClampedNu(multiple_scattering_texture, AERIAL_ATMOSPHERE.density_size,
                                 MU_AXIS_RAY_LENGTH, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
 }
 
@@ -311,7 +311,7 @@ vec3 MultipleScatteringIntegrand(sampler2D transmittance_texture,
   float r_d = RadiusAtDistance(r, mu, d);
   float mu_d = MuAtDistance(r, mu, d, r_d);
   float mu_s_d = SunCosineAlongRay(r, mu_s, nu, d, r_d);
-  return GetDensityOfOrder(scattering_density_texture, atmosphere.density_size, density_blended,
+  return GetDensityOfOrder(scattering_density_texture, AERIAL_ATMOSPHERE.density_size, density_blended,
                            r_d, mu_d, mu_s_d, nu, ray_r_mu_intersects_ground) *
          GetTransmittanceFromOrigin(transmittance_texture, origin, r, mu, d,
                                     ray_r_mu_intersects_ground);
@@ -320,7 +320,7 @@ vec3 MultipleScatteringIntegrand(sampler2D transmittance_texture,
 vec3 ComputeMultipleScattering(sampler2D transmittance_texture, sampler3D scattering_density_texture,
                                float r, float mu, float mu_s, float nu,
                                bool ray_r_mu_intersects_ground, bool density_blended) {
-  int steps = atmosphere.multiple_scattering_steps.x;
+  int steps = AERIAL_ATMOSPHERE.multiple_scattering_steps.x;
   float dx = DistanceToNearestAtmosphereBoundary(r, mu, ray_r_mu_intersects_ground) / float(steps);
   vec3 origin = GetRayOpticalDepthOrigin(transmittance_texture, r, mu, ray_r_mu_intersects_ground);
   vec3 previous = MultipleScatteringIntegrand(transmittance_texture, scattering_density_texture,

@@ -3,9 +3,9 @@
 // terrain or a mesh hides it, in between across a soft edge about one texel wide.
 //
 // Usable from any stage: a fragment shader (surfaces) or a compute shader (the froxels' ray
-// march). The including shader defines SHADOW_BINDING first: the ShadowBlock is bound there and
-// the shadow map (a depth atlas sampled with comparison) at SHADOW_BINDING + 1, in set 0.
-//   #define SHADOW_BINDING 8
+// march). The including shader defines AERIAL_SHADOW_BINDING first: the ShadowBlock is bound there and
+// the shadow map (a depth atlas sampled with comparison) at AERIAL_SHADOW_BINDING + 1, in set 0.
+//   #define AERIAL_SHADOW_BINDING 8
 //   #include "shadow.glsl"
 //   float v = SunVisibility(relative_position, normal);  // on a surface
 //   float a = SunVisibilityInAir(relative_position, planet_position);  // a point in the air
@@ -14,8 +14,8 @@
 #define AERIAL_SHADOW_GLSL
 #extension GL_EXT_control_flow_attributes : require
 
-#ifndef SHADOW_BINDING
-#error "define SHADOW_BINDING (the ShadowBlock's binding; the shadow map takes the next) before shadow.glsl"
+#ifndef AERIAL_SHADOW_BINDING
+#error "define AERIAL_SHADOW_BINDING (the ShadowBlock's binding; the shadow map takes the next) before shadow.glsl"
 #endif
 
 // 0: no shadows, every visibility is 1 and the shadow map is never read. A specialization
@@ -29,7 +29,7 @@ const int kShadowAtlasTilesPerRow = 2;  // the cascades' tiles in the atlas: 2x2
 
 // Mirrored by aerial::ShadowUniforms (aerial/shader_abi/shadow_block.h). Light coordinates
 // are relative to the camera, in meters along the light's axes.
-layout(std140, set = 0, binding = SHADOW_BINDING) uniform ShadowBlock {
+layout(std140, set = 0, binding = AERIAL_SHADOW_BINDING) uniform ShadowBlock {
   vec4 toward_sun;                         // xyz: the sun's direction now
   vec4 view_forward;                       // xyz: the camera's forward axis
   // Per cascade, the light's axes of the sun its tile was drawn for: under a moving sun the tiles
@@ -43,7 +43,7 @@ layout(std140, set = 0, binding = SHADOW_BINDING) uniform ShadowBlock {
   ivec4 cascades;  // x: cascades in use (0: shadows off)
   vec4 casters;    // x: the largest distance of any caster from the planet's centre (m)
 } shadow;
-layout(set = 0, binding = SHADOW_BINDING + 1) uniform sampler2DShadow shadow_map;
+layout(set = 0, binding = AERIAL_SHADOW_BINDING + 1) uniform sampler2DShadow shadow_map;
 
 // PCF (Reeves et al. 1987) in its cheapest form: one lookup through the sampler's bilinear
 // comparison, which compares the point's depth with the four nearest texels and blends the four

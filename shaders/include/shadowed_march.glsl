@@ -2,7 +2,7 @@
 // (shadow.glsl): the froxel volume's columns (froxel.comp) and the marched per-pixel path
 // (mesh_tables.glsl) shadow the single scattering of each step by the same rule, so that the one
 // is measured against the other with shadows on (light shafts, mountain shadows in the air).
-// The includer defines SHADOW_BINDING first (shadow.glsl).
+// The includer defines AERIAL_SHADOW_BINDING first (shadow.glsl).
 #ifndef AERIAL_SHADOWED_MARCH_GLSL
 #define AERIAL_SHADOWED_MARCH_GLSL
 #include "frame.glsl"
@@ -20,7 +20,7 @@ float GetStepSunVisibility(vec3 ray, float from, float to) {
   for (int i = 0; i < VISIBILITY_SAMPLES; ++i) {
     float t = (float(i) + 0.5) / float(VISIBILITY_SAMPLES);
     vec3 relative = ray * mix(from, to, t);
-    visible += SunVisibilityInAir(relative, frame.camera_planet_position.xyz + relative);
+    visible += SunVisibilityInAir(relative, AERIAL_FRAME.camera_planet_position.xyz + relative);
   }
   return visible / float(VISIBILITY_SAMPLES);
 }

@@ -12,12 +12,12 @@
 // 3D approximation).
 vec3 GetRayleighScattering(sampler3D rayleigh_texture, sampler3D multiple_texture, float r,
                            float mu, float mu_s, float nu, bool ray_r_mu_intersects_ground) {
-  vec3 rayleigh = GetScatteringExponentialInR(rayleigh_texture, atmosphere.scattering_size, r, mu,
+  vec3 rayleigh = GetScatteringExponentialInR(rayleigh_texture, AERIAL_ATMOSPHERE.scattering_size, r, mu,
                                               mu_s, nu, ray_r_mu_intersects_ground);
   if (TablesDropNu()) {
     // Linear in mu_s in daylight, as the 4D tables' multiple scattering is blended there
     // (GetMultipleScatteringBlendCorrection).
-    ivec4 size = atmosphere.scattering_size;
+    ivec4 size = AERIAL_ATMOSPHERE.scattering_size;
     vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, MU_AXIS_RAY_LENGTH, r, mu, mu_s, nu,
                                                      ray_r_mu_intersects_ground);
     uvwz.y = GetMuSTextureCoordLinearInDaylight(mu_s, size.z);
@@ -51,13 +51,10 @@ vec3 GetRayleighScattering(sampler3D rayleigh_texture, sampler3D multiple_textur
 //    still runs, for the multiple scattering's blend in nu (GetMultipleScatteringBlendCorrection),
 //    which needs the nodes' single scattering (six in daylight, for its quadratic blend in mu_s)
 //    only to take it out of the table's value and moves by the difference between that blend's
-//    weights and the read's times any error in it: in MULTIPLE_SCATTERING_BLEND_STEPS steps, 16
-//    since the daylight blend takes weights of its own (below; 4 were enough while it took the
-//    read's). With 8 steps and the query's sun too, the noon frame under a moving sun, which
-//    remakes the sky-view lattice, was 10-17 ms slower; 16 steps for the nodes only against 4:
-//    the sky-view correction pass 0.18 -> 0.22 ms and the frame under a moving sun 131 -> 137 ms
-//    GPU, within the run's noise (aerial_bench_render --frames 15, min 93 / 100 ms, max 181 /
-//    161 ms).
+//    weights and the read's times any error in it: in MULTIPLE_SCATTERING_BLEND_STEPS steps, 16,
+//    since the daylight blend takes weights of its own (below), and for the nodes only: the query's
+//    sun does not need them, and every step is paid again at each node of the sky-view lattice
+//    whenever the sun moves.
 const int SINGLE_SCATTERING_CORRECTION_STEPS = 32;
 const float SINGLE_SCATTERING_CORRECTION_MU_S = 0.26;
 const int MULTIPLE_SCATTERING_BLEND_STEPS = 16;
@@ -156,10 +153,10 @@ void MarchSingleScatteringSuns(sampler2D transmittance_texture, float r, float m
       mie_previous[k] = mie_i;
     }
   }
-  vec3 sun = atmosphere.solar_irradiance.rgb;
+  vec3 sun = AERIAL_ATMOSPHERE.solar_irradiance.rgb;
   for (int k = 0; k < SINGLE_SCATTERING_SUNS; ++k) {
-    rayleigh[k] *= sun * atmosphere.rayleigh_scattering.rgb;
-    mie[k] *= sun * atmosphere.mie_scattering.rgb;
+    rayleigh[k] *= sun * AERIAL_ATMOSPHERE.rayleigh_scattering.rgb;
+    mie[k] *= sun * AERIAL_ATMOSPHERE.mie_scattering.rgb;
   }
 }
 
@@ -270,7 +267,7 @@ float GetNodeNuWeight(SingleScatteringSuns suns, int a, float nu) {
 vec3 GetMultipleScatteringBlendCorrection(sampler3D rayleigh_texture, float r, float mu,
                                           float mu_s, float nu, SingleScatteringSuns suns,
                                           vec3 rayleigh_single[SINGLE_SCATTERING_SUNS]) {
-  ivec4 size = atmosphere.scattering_size;
+  ivec4 size = AERIAL_ATMOSPHERE.scattering_size;
   vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(size, MU_AXIS_RAY_LENGTH, r, mu, mu_s, nu,
                                                    RayIntersectsGround(r, mu));
   float phase0 = RayleighPhaseFunction(GetNominalNuOfSlice(size, suns.nu_slice));
@@ -320,7 +317,7 @@ void GetSkyInscatterCorrection(sampler2D transmittance_texture, sampler3D raylei
   rayleigh = vec3(0.0);
   mie = vec3(0.0);
   SingleScatteringSuns suns;
-  if (!GetSingleScatteringSuns(atmosphere.scattering_size, mu, mu_s, nu, suns)) return;
+  if (!GetSingleScatteringSuns(AERIAL_ATMOSPHERE.scattering_size, mu, mu_s, nu, suns)) return;
   bool low_sun = suns.mu_s[1] <= SINGLE_SCATTERING_CORRECTION_MU_S;
   vec3 rayleigh_single[SINGLE_SCATTERING_SUNS], mie_single[SINGLE_SCATTERING_SUNS];
   MarchSingleScatteringSuns(
@@ -350,7 +347,7 @@ void GetTableInscatter(sampler3D rayleigh_texture, sampler3D mie_texture, sample
                        out vec3 rayleigh, out vec3 mie) {
   rayleigh = GetRayleighScattering(rayleigh_texture, multiple_texture, r, mu, mu_s, nu,
                                    ray_r_mu_intersects_ground);
-  mie = GetScatteringExponentialInR(mie_texture, atmosphere.scattering_size, r, mu, mu_s, nu,
+  mie = GetScatteringExponentialInR(mie_texture, AERIAL_ATMOSPHERE.scattering_size, r, mu, mu_s, nu,
                                     ray_r_mu_intersects_ground);
 }
 
@@ -432,13 +429,13 @@ Inscatter GetSkyInscatterToPointFromTables(sampler2D transmittance_texture,
 
 vec3 ApplyPhaseFunctions(Inscatter inscatter, float nu) {
   return inscatter.rayleigh * RayleighPhaseFunction(nu) +
-         inscatter.mie * MiePhaseFunction(atmosphere.mie_phase_g, nu);
+         inscatter.mie * MiePhaseFunction(AERIAL_ATMOSPHERE.mie_phase_g, nu);
 }
 
 // Radiance of the sun disc at the top of the atmosphere: irradiance over the disc's solid angle.
 vec3 GetSolarRadiance() {
-  return atmosphere.solar_irradiance.rgb /
-         (PI * atmosphere.sun_angular_radius * atmosphere.sun_angular_radius);
+  return AERIAL_ATMOSPHERE.solar_irradiance.rgb /
+         (PI * AERIAL_ATMOSPHERE.sun_angular_radius * AERIAL_ATMOSPHERE.sun_angular_radius);
 }
 
 #endif

@@ -45,8 +45,8 @@ vec2 GetSkyViewDirection(float r, vec2 uv, ivec2 size) {
 // The world-space basis of the camera's local frame: up, and the horizontal direction toward the
 // sun (any horizontal direction when the sun is at the zenith).
 void GetSkyViewFrame(out vec3 up, out vec3 toward_sun, out vec3 side) {
-  up = normalize(frame.camera_planet_position.xyz);
-  vec3 sun = frame.sun_direction.xyz;
+  up = normalize(AERIAL_FRAME.camera_planet_position.xyz);
+  vec3 sun = AERIAL_FRAME.sun_direction.xyz;
   vec3 horizontal = sun - dot(sun, up) * up;
   toward_sun = dot(horizontal, horizontal) > 1e-12
                    ? normalize(horizontal)
@@ -63,7 +63,7 @@ struct SkyViewRay {
 
 SkyViewRay GetSkyViewRay(ivec2 texel, ivec2 size) {
   SkyViewRay ray;
-  ray.r = length(frame.camera_planet_position.xyz);
+  ray.r = length(AERIAL_FRAME.camera_planet_position.xyz);
   vec2 angles = GetSkyViewDirection(ray.r, (vec2(texel) + 0.5) / vec2(size), size);
   vec3 up, toward_sun, side;
   GetSkyViewFrame(up, toward_sun, side);
@@ -71,8 +71,8 @@ SkyViewRay GetSkyViewRay(ivec2 texel, ivec2 size) {
   ray.direction = up * cos(angles.y) +
                   sin_theta * (toward_sun * angles.x + side * sqrt(max(1.0 - angles.x * angles.x, 0.0)));
   ray.mu = dot(up, ray.direction);
-  ray.mu_s = dot(up, frame.sun_direction.xyz);
-  ray.nu = dot(ray.direction, frame.sun_direction.xyz);
+  ray.mu_s = dot(up, AERIAL_FRAME.sun_direction.xyz);
+  ray.nu = dot(ray.direction, AERIAL_FRAME.sun_direction.xyz);
   return ray;
 }
 

@@ -20,10 +20,10 @@ struct LambertianRadiance {
 
 LambertianRadiance GetLambertianRadiance(sampler2D transmittance_texture, sampler2D irradiance_texture,
                                          vec3 relative_position, vec3 normal, vec3 albedo) {
-  vec3 point = frame.camera_planet_position.xyz + relative_position;
+  vec3 point = AERIAL_FRAME.camera_planet_position.xyz + relative_position;
   float r = length(point);
   vec3 up = point / r;
-  vec3 sun = frame.sun_direction.xyz;
+  vec3 sun = AERIAL_FRAME.sun_direction.xyz;
   float mu_s = dot(up, sun);
   vec3 sun_irradiance = GetDirectSunlight(GetSunLightAt(transmittance_texture, r, mu_s));
   vec3 sky_irradiance = GetIrradiance(irradiance_texture, r, mu_s) * (1.0 + dot(normal, up)) * 0.5;
@@ -33,7 +33,7 @@ LambertianRadiance GetLambertianRadiance(sampler2D transmittance_texture, sample
 // The surface's radiance where its unit normal is `normal` and the fraction sun_visibility of the
 // sun is seen (shadow.glsl).
 vec3 ShadeLambertian(LambertianRadiance radiance, vec3 normal, float sun_visibility) {
-  return radiance.sun * (max(dot(normal, frame.sun_direction.xyz), 0.0) * sun_visibility) + radiance.sky;
+  return radiance.sun * (max(dot(normal, AERIAL_FRAME.sun_direction.xyz), 0.0) * sun_visibility) + radiance.sky;
 }
 
 // What a view ray from the camera sees behind the atmosphere, through it: where the ray meets the
@@ -43,9 +43,9 @@ vec3 GetBackgroundThroughAtmosphere(sampler2D transmittance_texture, sampler2D i
                                     vec3 ray, float r, float mu, vec3 transmittance) {
   if (!RayIntersectsGround(r, mu)) return transmittance;
   vec3 ground = ray * DistanceToBottomAtmosphereBoundary(r, mu);
-  vec3 normal = normalize(frame.camera_planet_position.xyz + ground);
+  vec3 normal = normalize(AERIAL_FRAME.camera_planet_position.xyz + ground);
   return transmittance * ShadeLambertian(GetLambertianRadiance(transmittance_texture, irradiance_texture,
-                                                               ground, normal, atmosphere.ground_albedo.rgb),
+                                                               ground, normal, AERIAL_ATMOSPHERE.ground_albedo.rgb),
                                          normal, 1.0);
 }
 
@@ -58,7 +58,7 @@ vec3 GetBackgroundThroughAtmosphere(sampler2D transmittance_texture, sampler2D i
 // the disc's irradiance.
 vec3 SunLimbDarkening(float nu) {
   const vec3 alpha = vec3(0.406, 0.508, 0.641);
-  float sin_radius = sin(atmosphere.sun_angular_radius);
+  float sin_radius = sin(AERIAL_ATMOSPHERE.sun_angular_radius);
   float off_centre = max(1.0 - nu * nu, 0.0) / (sin_radius * sin_radius);  // sin^2 of the angle on the surface
   return pow(vec3(SafeSqrt(1.0 - off_centre)), alpha) * (1.0 + 0.5 * alpha);
 }
@@ -68,8 +68,8 @@ vec3 SunLimbDarkening(float nu) {
 // through the atmosphere.
 vec3 ShadeBackground(vec3 background, bool meets_ground, float nu) {
   if (meets_ground) return background;
-  return nu > cos(atmosphere.sun_angular_radius) ? GetSolarRadiance() * SunLimbDarkening(nu) * background
-                                                 : vec3(0.0);
+  return nu > cos(AERIAL_ATMOSPHERE.sun_angular_radius) ? GetSolarRadiance() * SunLimbDarkening(nu) * background
+                                                        : vec3(0.0);
 }
 
 #endif

@@ -6,12 +6,12 @@
 
 // Extinction coefficient at radius r: sum of Rayleigh, Mie and ozone, each scaled by its density.
 vec3 GetExtinction(float r) {
-  float altitude = r - atmosphere.bottom_radius;
-  return atmosphere.rayleigh_scattering.rgb *
-             GetProfileDensity(atmosphere.rayleigh_density, altitude) +
-         atmosphere.mie_extinction.rgb * GetProfileDensity(atmosphere.mie_density, altitude) +
-         atmosphere.absorption_extinction.rgb *
-             GetProfileDensity(atmosphere.absorption_density, altitude);
+  float altitude = r - AERIAL_ATMOSPHERE.bottom_radius;
+  return AERIAL_ATMOSPHERE.rayleigh_scattering.rgb *
+             GetProfileDensity(AERIAL_ATMOSPHERE.rayleigh_density, altitude) +
+         AERIAL_ATMOSPHERE.mie_extinction.rgb * GetProfileDensity(AERIAL_ATMOSPHERE.mie_density, altitude) +
+         AERIAL_ATMOSPHERE.absorption_extinction.rgb *
+             GetProfileDensity(AERIAL_ATMOSPHERE.absorption_density, altitude);
 }
 
 // The transmittance table stores the optical depth tau(r, mu) to the top boundary, and readers
@@ -20,7 +20,7 @@ vec3 GetExtinction(float r) {
 // is several tenths of a percent. tau is integrated with the trapezoidal rule (Bruneton 2017
 // "ComputeOpticalLengthToTopAtmosphereBoundary").
 vec3 ComputeOpticalDepthToTopAtmosphereBoundary(float r, float mu) {
-  int steps = atmosphere.sample_counts.x;
+  int steps = AERIAL_ATMOSPHERE.sample_counts.x;
   float dx = DistanceToTopAtmosphereBoundary(r, mu) / float(steps);
   vec3 optical_depth = vec3(0.0);
   for (int i = 0; i <= steps; ++i) {
@@ -46,18 +46,18 @@ struct PathSunlight {
 
 PathSunlight GetPathSunlight(vec3 optical_depth) {
   // The count is a uniform, but the loop's bound must not depend on uniforms alone: lavapipe 22.3
-  // inlines such uniforms and compiles the pipeline anew at each bind, which cost rgb frames
-  // 20 ms (docs/colour.md, "What it costs"). optical_depth is never negative.
-  int terms = optical_depth.x >= 0.0 ? atmosphere.spectral_sunlight_terms.x : 0;
+  // inlines such uniforms and compiles the pipeline anew at each bind (docs/colour.md, "What it
+  // costs"). optical_depth is never negative.
+  int terms = optical_depth.x >= 0.0 ? AERIAL_ATMOSPHERE.spectral_sunlight_terms.x : 0;
   vec3 rgb_tables = exp(-optical_depth) * float(terms == 0);
   PathSunlight light = PathSunlight(rgb_tables, rgb_tables, rgb_tables);
   vec3 log2_transmittance = optical_depth * -1.4426950409;
   for (int j = 0; j < terms; ++j) {
     // min: a wavelength's optical depth is >= 0 (rounding in the tables could make it < 0).
-    float t = exp2(min(dot(atmosphere.spectral_sunlight_exponent[j].xyz, log2_transmittance), 0.0));
-    light.rayleigh += atmosphere.spectral_sunlight_rayleigh[j].xyz * t;
-    light.mie += atmosphere.spectral_sunlight_mie[j].xyz * t;
-    light.direct += atmosphere.spectral_sunlight_direct[j].xyz * t;
+    float t = exp2(min(dot(AERIAL_ATMOSPHERE.spectral_sunlight_exponent[j].xyz, log2_transmittance), 0.0));
+    light.rayleigh += AERIAL_ATMOSPHERE.spectral_sunlight_rayleigh[j].xyz * t;
+    light.mie += AERIAL_ATMOSPHERE.spectral_sunlight_mie[j].xyz * t;
+    light.direct += AERIAL_ATMOSPHERE.spectral_sunlight_direct[j].xyz * t;
   }
   return light;
 }
@@ -137,14 +137,14 @@ const float SUN_DISC_ONE_TAP_ELEVATION = 0.1745;  // 10 degrees
 
 // The zenith cosine of the disc's point y disc radii above its centre, to O(alpha^4) = 1e-9.
 float GetDiscPointCosine(float mu_s, float sin_s, float y) {
-  float y_alpha = y * atmosphere.sun_angular_radius;
+  float y_alpha = y * AERIAL_ATMOSPHERE.sun_angular_radius;
   return mu_s * (1.0 - 0.5 * y_alpha * y_alpha) + sin_s * y_alpha;
 }
 
 // Elevation of the disc centre above the cut-off, in disc radii (to first order in the angle).
 float GetSunElevationInDiscRadii(float mu_s, float cut_off_cosine) {
   float sin_cut_off = sqrt(max(1.0 - cut_off_cosine * cut_off_cosine, 0.0));
-  return (mu_s - cut_off_cosine) / (sin_cut_off * atmosphere.sun_angular_radius);
+  return (mu_s - cut_off_cosine) / (sin_cut_off * AERIAL_ATMOSPHERE.sun_angular_radius);
 }
 
 // Visible fraction of a uniform disc cut by a straight line x radii below its centre.
@@ -189,7 +189,7 @@ SunDiscLight GetSunDiscLight(sampler2D transmittance_texture, float r, float mu_
   float x = GetSunElevationInDiscRadii(mu_s, cut_off_cosine);
   if (x <= -1.0) return SunDiscLight(vec3(0.0), vec3(0.0));
   // x alpha >= mu_s for a cut-off at or below the horizontal: AERIAL_SUN_HIGH_EVERYWHERE implies it.
-  bool one_tap = AERIAL_SUN_HIGH_EVERYWHERE || x * atmosphere.sun_angular_radius > SUN_DISC_ONE_TAP_ELEVATION;
+  bool one_tap = AERIAL_SUN_HIGH_EVERYWHERE || x * AERIAL_ATMOSPHERE.sun_angular_radius > SUN_DISC_ONE_TAP_ELEVATION;
   bool whole = x >= 1.0 && !cosine_weighted;
   int taps = one_tap ? 1 : (whole ? (x > 5.0 ? 2 : 3) : 4);
   float sin_s = sqrt(max(1.0 - mu_s * mu_s, 0.0));
@@ -224,7 +224,7 @@ SunDiscLight GetSunLightAt(sampler2D transmittance_texture, float r, float mu_s)
 // The sun's direct irradiance (W/m^2/nm) through the disc's average, per unit area normal to the
 // sun (times its cosine where the disc was averaged with cosine_weighted).
 vec3 GetDirectSunlight(SunDiscLight disc) {
-  return atmosphere.solar_irradiance.rgb * GetPathSunlight(disc.optical_depth).direct * disc.spread;
+  return AERIAL_ATMOSPHERE.solar_irradiance.rgb * GetPathSunlight(disc.optical_depth).direct * disc.spread;
 }
 
 vec3 GetTransmittanceToSun(sampler2D transmittance_texture, float r, float mu_s) {
@@ -234,9 +234,9 @@ vec3 GetTransmittanceToSun(sampler2D transmittance_texture, float r, float mu_s)
 
 // ---- The sun band: GetTransmittanceToSun tabulated for the precomputation. ----
 // The single scattering passes evaluate the disc's average at every step of every ray. Near each
-// point's horizon that is 2 to 4 table reads with trigonometry, and on lavapipe it took 1.7 of the
-// single scattering pass's 2.7 s (the lanes of a SIMD group, neighbouring mu_s texels, take
-// different branches, and each runs them all). It depends on (r, mu_s) alone, so a pass
+// point's horizon that is 2 to 4 table reads with trigonometry, most of the single scattering
+// pass's time on lavapipe (the lanes of a SIMD group, neighbouring mu_s texels, take different
+// branches, and each runs them all). It depends on (r, mu_s) alone, so a pass
 // (precompute/sun_band.comp) tabulates it where it differs from the centre's value: x, the
 // centre's elevation above the horizon in disc radii, from -1 to SUN_DISC_ONE_TAP_ELEVATION (37.4
 // radii), uniformly on the u axis; r on the transmittance table's rho/H mapping on the v axis (its
@@ -244,7 +244,7 @@ vec3 GetTransmittanceToSun(sampler2D transmittance_texture, float r, float mu_s)
 // The band holds the optical depth of the visible part's average, -ln(average / visible), which
 // is smooth where the visible fraction is not; a read multiplies by the exact visible fraction.
 float GetSunBandMaxElevationInDiscRadii() {
-  return SUN_DISC_ONE_TAP_ELEVATION / atmosphere.sun_angular_radius;
+  return SUN_DISC_ONE_TAP_ELEVATION / AERIAL_ATMOSPHERE.sun_angular_radius;
 }
 
 vec2 GetSunBandTextureUv(ivec2 size, float r, float x) {
@@ -261,7 +261,7 @@ void GetRMuSFromSunBandTextureUv(ivec2 size, vec2 uv, out float r, out float mu_
   float x = max(-1.0 + GetUnitRangeFromTextureCoord(uv.x, size.x) * x_range,
                 -1.0 + 0.5 * x_range / float(size.x - 1));
   float cut_off = GetHorizonCosine(r);
-  mu_s = cut_off + x * sqrt(1.0 - cut_off * cut_off) * atmosphere.sun_angular_radius;
+  mu_s = cut_off + x * sqrt(1.0 - cut_off * cut_off) * AERIAL_ATMOSPHERE.sun_angular_radius;
 }
 
 // GetSunLightAt, read from the sun band where the disc takes more than its centre.

@@ -36,10 +36,10 @@ layout(push_constant) uniform Step {
 vec3 ReadOrder(sampler3D order_texture, float r, float mu, float mu_s, float nu,
                bool ray_r_mu_intersects_ground) {
   if (pass.mu_axis == MU_AXIS_VIEW_ZENITH) {
-    return GetDensityOfOrder(order_texture, atmosphere.density_size, true, r, mu, mu_s, nu,
+    return GetDensityOfOrder(order_texture, AERIAL_ATMOSPHERE.density_size, true, r, mu, mu_s, nu,
                              ray_r_mu_intersects_ground);
   }
-  return GetScatteringClampedNu(order_texture, atmosphere.density_size, pass.mu_axis, r, mu, mu_s,
+  return GetScatteringClampedNu(order_texture, AERIAL_ATMOSPHERE.density_size, pass.mu_axis, r, mu, mu_s,
                                 nu, ray_r_mu_intersects_ground);
 }
 

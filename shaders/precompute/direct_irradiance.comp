@@ -10,10 +10,10 @@ layout(set = 0, binding = 2) writeonly uniform image2D delta_irradiance_image;
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(texel, atmosphere.irradiance_size.xy))) return;
+  if (any(greaterThanEqual(texel, AERIAL_ATMOSPHERE.irradiance_size.xy))) return;
   float r;
   float mu_s;
-  GetRMuSFromIrradianceTextureUv((vec2(texel) + 0.5) / vec2(atmosphere.irradiance_size.xy), r, mu_s);
+  GetRMuSFromIrradianceTextureUv((vec2(texel) + 0.5) / vec2(AERIAL_ATMOSPHERE.irradiance_size.xy), r, mu_s);
   imageStore(delta_irradiance_image, texel,
              vec4(ComputeDirectIrradiance(transmittance_texture, r, mu_s), 1.0));
 }

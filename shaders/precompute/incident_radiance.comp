@@ -27,7 +27,7 @@ void main() {
   int mu_s_index = int(gl_GlobalInvocationID.y);
   int r_index = int(gl_GlobalInvocationID.z);
   if (direction_index >= direction_count) return;
-  ivec4 size = atmosphere.density_size;
+  ivec4 size = AERIAL_ATMOSPHERE.density_size;
   float r = GetRFromScatteringUR(size, (float(r_index) + 0.5) / float(size.x));
   float mu_s = GetMuSFromScatteringUMuS(size, (float(mu_s_index) + 0.5) / float(size.z));
   vec4 omega_i = GetDensityDirection(r, direction_index);
@@ -41,10 +41,10 @@ void main() {
     // Light of order n-2 reflected by the Lambertian ground at q = x + d omega_i.
     float d = DistanceToBottomAtmosphereBoundary(r, omega_i.z);
     vec3 ground_normal = normalize(vec3(0.0, 0.0, r) + omega_i.xyz * d);
-    vec3 ground_irradiance = GetIrradiance(delta_irradiance_texture, atmosphere.bottom_radius,
+    vec3 ground_irradiance = GetIrradiance(delta_irradiance_texture, AERIAL_ATMOSPHERE.bottom_radius,
                                            dot(ground_normal, omega_s));
     radiance += GetTransmittance(transmittance_texture, r, omega_i.z, d, true) *
-                atmosphere.ground_albedo.rgb * (1.0 / PI) * ground_irradiance;
+                AERIAL_ATMOSPHERE.ground_albedo.rgb * (1.0 / PI) * ground_irradiance;
   }
   int slot = (r_index * size.z + mu_s_index) * direction_count + direction_index;
   weighted_radiance[slot] = vec4(radiance * omega_i.w, 0.0);

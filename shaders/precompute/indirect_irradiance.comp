@@ -20,10 +20,10 @@ layout(push_constant) uniform Order {
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(texel, atmosphere.irradiance_size.xy))) return;
+  if (any(greaterThanEqual(texel, AERIAL_ATMOSPHERE.irradiance_size.xy))) return;
   float r;
   float mu_s;
-  GetRMuSFromIrradianceTextureUv((vec2(texel) + 0.5) / vec2(atmosphere.irradiance_size.xy), r, mu_s);
+  GetRMuSFromIrradianceTextureUv((vec2(texel) + 0.5) / vec2(AERIAL_ATMOSPHERE.irradiance_size.xy), r, mu_s);
   vec3 irradiance = ComputeIndirectIrradiance(transmittance_texture, sun_band_texture,
                                               single_rayleigh_texture, single_mie_texture,
                                               multiple_scattering_texture, r, mu_s, pass.order);

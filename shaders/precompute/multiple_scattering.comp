@@ -16,10 +16,10 @@ layout(constant_id = 0) const int kDensityExponentialInShadow = 0;
 
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
-  if (!IsScatteringTexel(atmosphere.density_size, texel)) return;
+  if (!IsScatteringTexel(AERIAL_ATMOSPHERE.density_size, texel)) return;
   float r, mu, mu_s, nu;
   bool ray_r_mu_intersects_ground;
-  GetRMuMuSNuFromScatteringTexel(atmosphere.density_size, MU_AXIS_RAY_LENGTH, texel, r, mu,
+  GetRMuMuSNuFromScatteringTexel(AERIAL_ATMOSPHERE.density_size, MU_AXIS_RAY_LENGTH, texel, r, mu,
                                  mu_s, nu, ray_r_mu_intersects_ground);
   vec3 radiance = ComputeMultipleScattering(transmittance_texture, scattering_density_texture, r,
                                             mu, mu_s, nu, ray_r_mu_intersects_ground,

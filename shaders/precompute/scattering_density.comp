@@ -27,7 +27,7 @@ shared vec4 shared_ring[kMaxRings];
 
 // 4D: J for the view direction omega (sun frame), summing the grid and its mirror image.
 void ConvolveWithPhases(vec3 omega, int direction_count, out vec3 rayleigh, out vec3 mie) {
-  float g = atmosphere.mie_phase_g;
+  float g = AERIAL_ATMOSPHERE.mie_phase_g;
   vec3 omega_mirror = vec3(omega.x, -omega.y, omega.z);
   vec3 rayleigh_sum = vec3(0.0);
   vec3 mie_sum = vec3(0.0);
@@ -54,14 +54,14 @@ void ConvolveWithPhases(vec3 omega, int direction_count, out vec3 rayleigh, out 
 // P_bar(mu, mu_i) = 1/pi integral_0^pi P(mu mu_i + sin sin_i cos psi) dpsi (midpoint rule).
 void ConvolveWithAveragedPhases(float mu, int ring_count, out vec3 rayleigh, out vec3 mie) {
   const int kAzimuths = 16;
-  float g = atmosphere.mie_phase_g;
+  float g = AERIAL_ATMOSPHERE.mie_phase_g;
   float sin_theta = sqrt(max(1.0 - mu * mu, 0.0));
   vec3 rayleigh_sum = vec3(0.0);
   vec3 mie_sum = vec3(0.0);
   float rayleigh_norm = 0.0;
   float mie_norm = 0.0;
   for (int m = 0; m < ring_count; ++m) {
-    float mu_i = shared_direction[m * atmosphere.density_directions.z].z;
+    float mu_i = shared_direction[m * AERIAL_ATMOSPHERE.density_directions.z].z;
     float sin_theta_i = sqrt(max(1.0 - mu_i * mu_i, 0.0));
     float rayleigh_phase = 0.0;
     float mie_phase = 0.0;
@@ -82,10 +82,10 @@ void ConvolveWithAveragedPhases(float mu, int ring_count, out vec3 rayleigh, out
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID.y, gl_GlobalInvocationID.x, gl_GlobalInvocationID.z);
   int direction_count = DensityDirectionCount();
-  int phi_count = atmosphere.density_directions.z;
+  int phi_count = AERIAL_ATMOSPHERE.density_directions.z;
   int ring_count = direction_count / phi_count;
-  bool drop_nu = atmosphere.density_size.w == 1;
-  int mu_s_size = atmosphere.density_size.z;
+  bool drop_nu = AERIAL_ATMOSPHERE.density_size.w == 1;
+  int mu_s_size = AERIAL_ATMOSPHERE.density_size.z;
   int mu_s_index = texel.x % mu_s_size;
   int first = (texel.z * mu_s_size + mu_s_index) * direction_count;
   for (int k = int(gl_LocalInvocationIndex); k < direction_count; k += 64) {
@@ -104,11 +104,11 @@ void main() {
     }
     barrier();
   }
-  if (!IsScatteringTexel(atmosphere.density_size, texel)) return;
+  if (!IsScatteringTexel(AERIAL_ATMOSPHERE.density_size, texel)) return;
 
   float r, mu, mu_s, nu;
   bool ray_r_mu_intersects_ground;
-  GetRMuMuSNuFromScatteringTexel(atmosphere.density_size, MU_AXIS_VIEW_ZENITH, texel, r, mu,
+  GetRMuMuSNuFromScatteringTexel(AERIAL_ATMOSPHERE.density_size, MU_AXIS_VIEW_ZENITH, texel, r, mu,
                                  mu_s, nu, ray_r_mu_intersects_ground);
   vec3 rayleigh;
   vec3 mie;
@@ -125,10 +125,10 @@ void main() {
         vec3(sin_theta * cos_phi, sin_theta * sqrt(max(1.0 - cos_phi * cos_phi, 0.0)), mu);
     ConvolveWithPhases(omega, direction_count, rayleigh, mie);
   }
-  float altitude = r - atmosphere.bottom_radius;
+  float altitude = r - AERIAL_ATMOSPHERE.bottom_radius;
   vec3 density =
-      atmosphere.rayleigh_scattering.rgb * GetProfileDensity(atmosphere.rayleigh_density, altitude) *
+      AERIAL_ATMOSPHERE.rayleigh_scattering.rgb * GetProfileDensity(AERIAL_ATMOSPHERE.rayleigh_density, altitude) *
           rayleigh +
-      atmosphere.mie_scattering.rgb * GetProfileDensity(atmosphere.mie_density, altitude) * mie;
+      AERIAL_ATMOSPHERE.mie_scattering.rgb * GetProfileDensity(AERIAL_ATMOSPHERE.mie_density, altitude) * mie;
   imageStore(scattering_density_image, texel, vec4(density, 0.0));
 }

@@ -12,10 +12,10 @@ layout(set = 0, binding = 5) uniform sampler2D sun_band_texture;
 
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
-  if (!IsScatteringTexel(atmosphere.scattering_size, texel)) return;
+  if (!IsScatteringTexel(AERIAL_ATMOSPHERE.scattering_size, texel)) return;
   float r, mu, mu_s, nu;
   bool ray_r_mu_intersects_ground;
-  GetRMuMuSNuFromScatteringTexel(atmosphere.scattering_size, MU_AXIS_RAY_LENGTH, texel, r, mu,
+  GetRMuMuSNuFromScatteringTexel(AERIAL_ATMOSPHERE.scattering_size, MU_AXIS_RAY_LENGTH, texel, r, mu,
                                  mu_s, nu, ray_r_mu_intersects_ground);
   vec3 rayleigh;
   vec3 mie;

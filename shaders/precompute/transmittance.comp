@@ -8,10 +8,10 @@ layout(set = 0, binding = 1) writeonly uniform image2D transmittance_image;
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(texel, atmosphere.transmittance_size.xy))) return;
+  if (any(greaterThanEqual(texel, AERIAL_ATMOSPHERE.transmittance_size.xy))) return;
   float r;
   float mu;
-  GetRMuFromTransmittanceTextureUv((vec2(texel) + 0.5) / vec2(atmosphere.transmittance_size.xy),
+  GetRMuFromTransmittanceTextureUv((vec2(texel) + 0.5) / vec2(AERIAL_ATMOSPHERE.transmittance_size.xy),
                                    r, mu);
   imageStore(transmittance_image, texel, vec4(ComputeOpticalDepthToTopAtmosphereBoundary(r, mu), 1.0));
 }

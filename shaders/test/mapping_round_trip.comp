@@ -17,7 +17,7 @@ void Record(int slot, float error_in_texels) {
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
   if (test.table == 0) {
-    ivec2 size = atmosphere.transmittance_size.xy;
+    ivec2 size = AERIAL_ATMOSPHERE.transmittance_size.xy;
     if (any(greaterThanEqual(texel.xy, size)) || texel.z > 0) return;
     vec2 uv = (vec2(texel.xy) + 0.5) / vec2(size);
     float r, mu;
@@ -25,7 +25,7 @@ void main() {
     vec2 error = (GetTransmittanceTextureUvFromRMu(r, mu) - uv) * vec2(size);
     Record(0, max(abs(error.x), abs(error.y)));
   } else if (test.table == 1) {
-    ivec2 size = atmosphere.irradiance_size.xy;
+    ivec2 size = AERIAL_ATMOSPHERE.irradiance_size.xy;
     if (any(greaterThanEqual(texel.xy, size)) || texel.z > 0) return;
     vec2 uv = (vec2(texel.xy) + 0.5) / vec2(size);
     float r, mu_s;
@@ -33,7 +33,7 @@ void main() {
     vec2 error = (GetIrradianceTextureUvFromRMuS(r, mu_s) - uv) * vec2(size);
     Record(1, max(abs(error.x), abs(error.y)));
   } else {
-    ivec4 size = atmosphere.scattering_size;
+    ivec4 size = AERIAL_ATMOSPHERE.scattering_size;
     if (!IsScatteringTexel(size, texel)) return;
     int mu_axis = test.table == 2 ? MU_AXIS_RAY_LENGTH : MU_AXIS_VIEW_ZENITH;
     float r, mu, mu_s, nu;

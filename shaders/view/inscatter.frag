@@ -34,7 +34,7 @@ void main() {
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
   // The renderer's own depth texel under the pixel (its frame may be smaller: --render-scale).
-  float depth = texelFetch(depth_texture, ivec2(uv * frame.viewport.xy), 0).r;
+  float depth = texelFetch(depth_texture, ivec2(uv * AERIAL_FRAME.viewport.xy), 0).r;
   float distance = DistanceFromDepth(uv, depth);
   Inscatter segment;
   if (depth == 0.0) {
@@ -50,7 +50,7 @@ void main() {
   if (push.term == 0) {
     value = ToneMapLinearWithoutToe(segment.rayleigh * RayleighPhaseFunction(nu) * push.exposure);
   } else if (push.term == 1) {
-    value = ToneMapLinearWithoutToe(segment.mie * MiePhaseFunction(atmosphere.mie_phase_g, nu) * push.exposure);
+    value = ToneMapLinearWithoutToe(segment.mie * MiePhaseFunction(AERIAL_ATMOSPHERE.mie_phase_g, nu) * push.exposure);
   } else {
     value = (clamp(segment.transmittance, 0.0, 1.0));
   }

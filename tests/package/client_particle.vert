@@ -12,8 +12,8 @@ layout(location = 1) out vec3 vertex_mie;
 layout(location = 2) out vec3 vertex_transmittance;
 
 void main() {
-  vec3 relative_position = scene_position - frame.camera_scene_position.xyz;
-  gl_Position = frame.view_projection * vec4(relative_position, 1.0);
+  vec3 relative_position = scene_position - AERIAL_FRAME.camera_scene_position.xyz;
+  gl_Position = AERIAL_FRAME.view_projection * vec4(relative_position, 1.0);
   Inscatter segment = GetAerialPerspectiveAtVertex(client_rayleigh, client_mie, client_transmittance, gl_Position,
                                                    length(relative_position));
   vertex_rayleigh = segment.rayleigh;

@@ -26,6 +26,6 @@ void main() {
     return;
   }
   Inscatter segment = GetAerialPerspective(client_rayleigh, client_mie, client_transmittance,
-                                           gl_FragCoord.xy / frame.viewport.xy, length(relative_position));
+                                           gl_FragCoord.xy / AERIAL_FRAME.viewport.xy, length(relative_position));
   color = vec4(ApplyAerialPerspective(lit_radiance, segment, ViewSunCosine(relative_position)), 1.0);
 }

@@ -17,7 +17,14 @@ echo "public headers installed: $(cd "$work/prefix/include" && find aerial -name
 cmake -S "$here" -B "$work/client" -G Ninja -DCMAKE_BUILD_TYPE=Debug \
   -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
 cmake --build "$work/client" >/dev/null
-for shader in client_surface.frag client_particle.vert; do
+# The installed GLSL lives in the client's shaders: each macro it defines starts with AERIAL_.
+foreign_macros=$(grep -rhE '^[[:space:]]*#[[:space:]]*define[[:space:]]' "$work/prefix/share/aerial/glsl" |
+  sed -E 's/^[[:space:]]*#[[:space:]]*define[[:space:]]+([A-Za-z0-9_]+).*/\1/' | grep -v '^AERIAL_' || true)
+if [ -n "$foreign_macros" ]; then
+  echo "the installed GLSL defines macros without the AERIAL_ prefix: $foreign_macros" >&2
+  exit 1
+fi
+for shader in client_surface.frag client_particle.vert client_own_names.frag; do
   glslangValidator --quiet --target-env vulkan1.2 -I"$work/prefix/share/aerial/glsl" \
     -o "$work/$shader.spv" "$here/$shader"
   echo "client shader compiled against the installed GLSL: $shader"

@@ -15,7 +15,7 @@ layout(location = 0) out vec4 color;
 void main() {
   float distance = length(relative_position);
   Inscatter segment = GetAerialPerspective(rayleigh_froxels, mie_froxels, transmittance_froxels,
-                                           gl_FragCoord.xy / frame.viewport.xy, distance);
+                                           gl_FragCoord.xy / AERIAL_FRAME.viewport.xy, distance);
   // The whole sun is seen: this example has no shadow map.
   vec3 surface = ShadeLambertian(LambertianRadiance(sun_radiance, sky_radiance), normalize(surface_normal), 1.0);
   color = vec4(ApplyAerialPerspective(surface, segment, ViewSunCosine(relative_position)), distance);

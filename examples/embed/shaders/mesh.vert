@@ -15,11 +15,11 @@ layout(location = 2) out vec3 sky_radiance;
 layout(location = 3) out vec3 surface_normal;
 
 void main() {
-  relative_position = position - frame.camera_scene_position.xyz;
+  relative_position = position - AERIAL_FRAME.camera_scene_position.xyz;
   LambertianRadiance radiance =
       GetLambertianRadiance(transmittance_texture, irradiance_texture, relative_position, normal, albedo);
   sun_radiance = radiance.sun;
   sky_radiance = radiance.sky;
   surface_normal = normal;
-  gl_Position = frame.view_projection * vec4(relative_position, 1.0);
+  gl_Position = AERIAL_FRAME.view_projection * vec4(relative_position, 1.0);
 }

@@ -9,7 +9,7 @@
 layout(location = 0) out vec4 color;
 
 void main() {
-  vec3 ray = ViewRayFromScreen(gl_FragCoord.xy / frame.viewport.xy);
+  vec3 ray = ViewRayFromScreen(gl_FragCoord.xy / AERIAL_FRAME.viewport.xy);
   vec3 sky = GetSkyRadianceAlongRay(transmittance_texture, rayleigh_texture, mie_texture, multiple_texture,
                                     irradiance_texture, ray);
   color = vec4(sky, uintBitsToFloat(0x7f800000u));

@@ -5,7 +5,7 @@
 // orders and the sky irradiance are path traced (path_tracer.h) with standard errors. The sun is
 // a disc, each part of it seen through its own slant of the atmosphere (solar_disc.h).
 //
-// Conventions (shared/design.md): r is the distance to the planet centre in meters, mu the
+// Conventions (docs/design.md, "Conventions"): r is the distance to the planet centre in meters, mu the
 // cosine of the view zenith angle, mu_s of the sun zenith angle, nu of the view-sun angle. nu is
 // clamped to the range mu and mu_s allow. Inputs out of range throw aerial::Error; r may exceed
 // [bottom, top] by rounding (1 mm) and is then clamped.

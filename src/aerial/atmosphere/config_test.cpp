@@ -152,7 +152,7 @@ TEST(AtmosphereConfig, ValidateNamesFieldOfParametersMadeInCode) {
   }
 }
 
-// The values of issue 13, finite as doubles but inf as the floats the shaders receive: the
+// Values finite as doubles but inf as the floats the shaders receive: the
 // message names the key and the value.
 TEST(AtmosphereConfig, ValuesBeyondFloatAreNamedWithTheirValue) {
   for (auto [text, message] :
@@ -167,7 +167,7 @@ TEST(AtmosphereConfig, ValuesBeyondFloatAreNamedWithTheirValue) {
   }
 }
 
-// Issue 41: the bounds a message states are in the range, as float: 0.1 was refused as
+// The bounds a message states are in the range, as float: 0.1 must not be refused as
 // 0.100000001 by a message allowing [0.0, 0.1].
 TEST(AtmosphereConfig, StatedBoundsAreAccepted) {
   EXPECT_NO_THROW(ParseAtmosphereToml("[rayleigh]\nscattering = [0.1, 0.1, 0.1]", "snippet.toml"));

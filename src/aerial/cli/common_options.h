@@ -23,8 +23,8 @@ struct TableOptions {
   std::filesystem::path atmosphere_file;
   std::string lut = "4d";
   // Spectral by default (docs/colour.md, "Defaults"). `probe` keeps rgb, whose channels are
-  // wavelengths its JSON can name (probe_command.cpp); the library's PrecomputeOptions keep rgb
-  // within 1.x.
+  // wavelengths its JSON can name (probe_command.cpp); the library's PrecomputeOptions keep rgb,
+  // so that an embedder's tables and their cost do not change under it.
   std::string colour = "spectral";
   std::optional<int> wavelengths;
   int orders = 4;

@@ -44,9 +44,9 @@ TEST(MemoryUses, TableMemoryCountsEveryTable) {
   EXPECT_EQ(t3.multiple_density, 36u * 56 * 32 * 16);
 }
 
-// Issue 12's memory budget: the default 4D tables take at most 1.25 times the defaults before it
-// (transmittance 256x64, irradiance 64x32, scattering R32 MU128 MU_S32 NU8, Bruneton 2017's
-// scattering resolution). They take 1.22 times: 1.09 with the nine nu slices in half floats
+// The memory budget (docs/design.md): the default 4D tables take at most 1.25 times the tables at
+// Bruneton 2017's scattering resolution (transmittance 256x64, irradiance 64x32, scattering R32
+// MU128 MU_S32 NU8). They take 1.22 times: 1.09 with the nine nu slices in half floats
 // (docs/accuracy.md, "Nine nu slices in half floats"; 11 would take 1.33), and the multiple density table's
 // 32 r texels, the density tables' own, the rest (docs/accuracy.md, "J_ms on the density tables' r texels").
 TEST(MemoryUses, DefaultTablesWithinTheLowSunMemoryBudget) {

@@ -122,7 +122,7 @@ TEST_F(AtomicFile, CheckWritableRejectsDirectoryTarget) {
   EXPECT_THROW(CheckWritable(dir_), Error);
 }
 
-// Issue 41: outputs write into what exists, or refuse it.
+// Outputs write into what exists, or refuse it.
 
 TEST_F(AtomicFile, ReplacedFileKeepsItsModeAndOwner) {
   WriteFileAtomically(dir_ / "out.txt", std::string_view("old"));
@@ -131,7 +131,7 @@ TEST_F(AtomicFile, ReplacedFileKeepsItsModeAndOwner) {
   WriteFileAtomically(dir_ / "out.txt", std::string_view("new"));
   struct stat info;
   ASSERT_EQ(::stat((dir_ / "out.txt").c_str(), &info), 0);
-  EXPECT_EQ(info.st_mode & 07777, 0600u) << "was 0644 before issue 41";
+  EXPECT_EQ(info.st_mode & 07777, 0600u) << "the replacement must keep the mode, not take 0644";
   EXPECT_EQ(info.st_uid, 1234u);
   EXPECT_EQ(info.st_gid, 5678u);
 }
@@ -176,7 +176,7 @@ TEST_F(AtomicFile, CheckOutputFileCreatesNothing) {
     EXPECT_EQ(e.field(), "--stats");
     EXPECT_EQ(e.value(), (dir_ / "missing" / "dir" / "s.json").string());
   }
-  EXPECT_TRUE(Entries().empty()) << "the directory chain was created before issue 41";
+  EXPECT_TRUE(Entries().empty()) << "a refused output must not create its directory chain";
   EXPECT_THROW(CheckOutputFile("", "--stats"), Error);
   EXPECT_NO_THROW(CheckOutputFile(dir_ / "s.json", "--stats"));
 }

@@ -85,7 +85,7 @@ TEST_F(ImageWriter, AbsurdSizeIsRejectedBeforeWriting) {
   EXPECT_TRUE(Entries().empty());
 }
 
-// Issue 41: a frame of NaN pixels (a yaw of 5.8e307 degrees) was written with exit status 0.
+// A frame of NaN pixels (from a yaw of 5.8e307 degrees) must not be written with exit status 0.
 TEST_F(ImageWriter, NonFiniteFrameIsRefusedNamingThePixel) {
   ImageRgbF image = Grey(3, 2);
   image.rgba[4 * 4 + 1] = std::numeric_limits<float>::quiet_NaN();  // pixel (1, 1), green

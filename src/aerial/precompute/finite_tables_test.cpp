@@ -21,7 +21,8 @@ CachedTable Ones(const std::string& name) {
   return table;
 }
 
-// Issue 41: a thick atmosphere with 16 orders gave NaN tables, a NaN sky and exit status 0.
+// A thick atmosphere with 16 orders overflows float: the NaN tables must not give a NaN sky and
+// exit status 0.
 TEST(FiniteTables, ANanIsNamedWithItsTableAndPass) {
   TableCache tables;
   tables.tables = {Ones("transmittance"), Ones("multiple_density")};

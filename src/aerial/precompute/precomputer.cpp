@@ -342,7 +342,7 @@ std::vector<vk::PassTime> PrecomputeRadiance(AtmosphereTables& tables, Progress*
     // Nothing of order 2 has reached the tables yet: the accumulations come below.
     if (order == 2 && after_single_scattering) after_single_scattering();
     // The 3D tables have no Earth's shadow (GetDensityBlended is linear there), and lavapipe
-    // would pay for the exponential branch all the same (3D order 2: 56 -> 124 ms).
+    // would pay for the exponential branch all the same (it runs both sides of a branch).
     const vk::ComputePipeline& multiple_scattering =
         order == 2 && tables.options().variant == LutVariant::k4D ? pipelines.multiple_scattering_order2
                                                                   : pipelines.multiple_scattering;

@@ -36,7 +36,7 @@ constexpr uint32_t kTerrainChunkSlots = 8192;
 
 // Opaque and transparent meshes read the same resources: the atmosphere and frame blocks, the
 // transmittance and irradiance tables (lighting), the multiple density table (marched per-pixel
-// mode), the froxels, the shadow block and map (shadow.glsl, SHADOW_BINDING 8), the screen's cached
+// mode), the froxels, the shadow block and map (shadow.glsl, AERIAL_SHADOW_BINDING 8), the screen's cached
 // sun visibility (opaque_fragment.glsl) and the scattering tables (table-difference mode,
 // mesh_tables.glsl).
 const vk::SlotLayout kMeshSlots = {

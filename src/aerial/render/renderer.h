@@ -1,5 +1,5 @@
 #pragma once
-// One frame, recorded into one command buffer (shared/design.md, "The pipeline at a glance"):
+// One frame, recorded into one command buffer (docs/design.md, "The frame"):
 //   0. the sun's shadow map of the opaque scene (shadow_map.h), when the sun, the cascades' fit
 //      or the terrain it draws changed since it was last drawn;
 //   1. compute: the froxel volume of phase-free inscatter and transmittance, and, when the

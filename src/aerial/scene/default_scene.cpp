@@ -98,7 +98,11 @@ Mesh BuildParticleCloud(double planet_radius_m) {
   for (int i = 0; i < kParticles; ++i) {
     glm::dvec3 offset;
     do {  // rejection sampling of the ball from its bounding cube
-      offset = glm::dvec3(uniform(), uniform(), uniform()) * 2.0 - 1.0;
+      // One draw per statement: the order in which a call's arguments are evaluated is
+      // unspecified (gcc and clang take them in opposite orders), and the cloud must be the same
+      // from every compiler. z first, as the golden images hold it.
+      double z = uniform(), y = uniform(), x = uniform();
+      offset = glm::dvec3(x, y, z) * 2.0 - 1.0;
     } while (glm::dot(offset, offset) > 1.0);
     // Shoemake's uniform random rotation ("Uniform random rotations", Graphics Gems III).
     double u1 = uniform(), u2 = 2 * std::numbers::pi * uniform(),

@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <map>
 #include <string>
 
 #include "aerial/scene.h"
@@ -206,6 +209,43 @@ TEST(SceneDefault, IsDeterministic) {
     for (size_t j = 0; j < a.vertices.size(); ++j)
       ASSERT_EQ(a.vertices[j].position, b.vertices[j].position) << a.name;
   }
+}
+
+// FNV-1a over a mesh's vertices (every float's bits) and indices.
+uint64_t MeshHash(const Mesh& mesh) {
+  uint64_t hash = 14695981039346656037ull;
+  auto add = [&](uint32_t word) {
+    for (int byte = 0; byte < 4; ++byte) hash = (hash ^ ((word >> (8 * byte)) & 0xffu)) * 1099511628211ull;
+  };
+  for (const Vertex& v : mesh.vertices)
+    for (float f : {v.position.x, v.position.y, v.position.z, v.normal.x, v.normal.y, v.normal.z, v.albedo.x,
+                    v.albedo.y, v.albedo.z, v.opacity})
+      add(std::bit_cast<uint32_t>(f));
+  for (uint32_t index : mesh.indices) add(index);
+  return hash;
+}
+
+// The scene the golden images hold (tests/render_test.cpp), bit for bit, from every compiler: the
+// sanitizer build (clang) renders the goldens of the main build (gcc). A scene changed on purpose
+// changes these hashes with its goldens; a compiler that builds another scene (an argument order,
+// a contracted multiply-add) fails here, naming the mesh.
+TEST(SceneDefault, IsTheSameFromEveryCompiler) {
+  const std::map<std::string, uint64_t> expected = {
+      {"terrain", 0x8ab4fe4943f74e0eull},        {"landmark_1km", 0xf023a3f0b68dca68ull},
+      {"landmark_2km", 0x80a942deb944bffeull},   {"landmark_5km", 0x8f77a6aa6c7c0de2ull},
+      {"landmark_10km", 0x015b172e7ba4af3eull},  {"landmark_20km", 0x43d1f6d85910f0e9ull},
+      {"landmark_40km", 0x8f5848810eecbf63ull},  {"glass_300m", 0x3ccb71060bbca11full},
+      {"glass_1500m", 0xa837baa58e66ffe2ull},    {"balloon", 0xa31da6fbb807f583ull},
+      {"particle_cloud", 0x1262e6b067b70ca4ull},
+  };
+  std::map<std::string, uint64_t> actual = {{"terrain", MeshHash(TerrainMesh())}};
+  for (const Mesh& mesh : DefaultScene().meshes) actual[mesh.name] = MeshHash(mesh);
+  for (const auto& [name, hash] : actual) {
+    auto it = expected.find(name);
+    EXPECT_TRUE(it != expected.end() && it->second == hash)
+        << name << ": 0x" << std::hex << hash << (it == expected.end() ? " (no hash stored)" : "");
+  }
+  EXPECT_EQ(actual.size(), expected.size());
 }
 
 }  // namespace

@@ -137,7 +137,7 @@ TEST(SceneFile, EachInvalidFieldIsNamedWithItsLine) {
   ExpectError(cube + "position_m = [1, 2, 3, 4]", "mesh[0].position_m", 3);
   ExpectError(cube + "position_m = [1, inf]", "mesh[0].position_m[1]", 3);
   ExpectError(cube + "yaw_deg = nan", "mesh[0].yaw_deg", 3);
-  // Issue 41: finite, but degrees x pi overflowed (every pixel NaN) or the mesh vanished.
+  // Finite, but degrees x pi would overflow (every pixel NaN) or the mesh would vanish.
   ExpectError("[camera]\nyaw_deg = 5.8e307", "camera.yaw_deg", 2);
   ExpectError("[sun]\nazimuth_deg = -1e308", "sun.azimuth_deg", 2);
   ExpectError(cube + "yaw_deg = 1e308", "mesh[0].yaw_deg", 3);

@@ -36,7 +36,7 @@ TEST(SceneOverrides, InvalidValuesAreNamedAndNothingChanges) {
   cases[3] = {{.camera_fov_deg = 0.5}, "--camera-fov-deg"};
   cases[4] = {{.sun_zenith_deg = 200.0}, "--sun-zenith-deg"};
   cases[5] = {{.sun_azimuth_deg = INFINITY}, "--sun-azimuth-deg"};
-  cases[6] = {{.camera_yaw_deg = 5.8e307}, "--camera-yaw-deg"};  // issue 41: finite, NaN frames
+  cases[6] = {{.camera_yaw_deg = 5.8e307}, "--camera-yaw-deg"};  // finite, yet NaN frames
   cases[7] = {{.sun_azimuth_deg = -1e308}, "--sun-azimuth-deg"};
   for (Case& c : cases) {
     c.overrides.camera_yaw_deg = c.overrides.camera_yaw_deg.value_or(45.0);  // a valid change

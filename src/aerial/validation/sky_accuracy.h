@@ -4,7 +4,7 @@
 // reads from them: sky radiance along a whole ray, radiance to a point 10 km along it (aerial
 // perspective, S(x) - T S(p)), and sky irradiance on the ground. The reference computes the orders
 // the tables stand for (PrecomputeOptions::RepresentedOrders: the whole series by default), with
-// the sun's whole disc. Issue 12's targets are stated in these terms.
+// the sun's whole disc. The accuracy targets (docs/accuracy.md) are stated in these terms.
 //
 // The reference's noise is held at each quantity's noise goal (NoiseGoal) where 64x the base path
 // count allows. The reference is the slow part (~0.1 s per query), so it is computed once per grid
@@ -24,7 +24,7 @@ namespace aerial::validation {
 enum class SkyQuantity { kSkyRadiance, kRadianceToPoint, kSkyIrradiance };
 std::string ToString(SkyQuantity quantity);
 
-// Sun zenith bands (issue 12): daylight 0-60, the afternoon 60-85 (no target of its own), the low
+// Sun zenith bands of the accuracy targets: daylight 0-60, the afternoon 60-85 (no target of its own), the low
 // sun 85-95 and twilight 95-108 degrees.
 struct SunBand {
   std::string name;
@@ -37,7 +37,7 @@ struct SunBand {
   double noise_goal = 0.01;
 };
 
-// The sky irradiance's noise goal in every band: a quarter of issue 12's 0.4% median target. A
+// The sky irradiance's noise goal in every band: a quarter of the 0.4% median target. A
 // region holds one irradiance per sun angle (3 in the quick grid's daylight), so its median is one
 // sample's error, and at the band's 0.25% the noise alone moved it by as much as the distance to
 // the target: the daylight irradiance on the ground read 0.42% at the median against 65,536 paths
@@ -77,7 +77,7 @@ struct SkyReference {
   int paths_per_query = 0;
   double point_distance_m = 0.0;
   std::vector<SkySample> samples;
-  // Per quantity, values below these are not compared (issue 12's floor): 1e-4 of the noon zenith
+  // Per quantity, values below these are not compared (the targets' floor): 1e-4 of the noon zenith
   // sky on the ground for the radiances, 1e-4 of the noon sky irradiance for the irradiance.
   std::array<Spectrum, 3> floors{};
 };
