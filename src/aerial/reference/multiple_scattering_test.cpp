@@ -153,7 +153,7 @@ TEST(MultipleScattering, RussianRouletteIsUnbiasedAndEndsTheSeries) {
     for (int c = 0; c < 3; ++c) {
       double sigma = std::hypot(with.orders[k].std_error[c], without.orders[k].std_error[c]);
       EXPECT_NEAR(with.orders[k].value[c], without.orders[k].value[c], 4.0 * sigma) << k << " " << c;
-      if (c == 2) EXPECT_LT(sigma, 0.05 * without.orders[k].value[c]) << k << " " << c;
+      if (c == 2) { EXPECT_LT(sigma, 0.05 * without.orders[k].value[c]) << k << " " << c; }
     }
   }
   OrderEstimates all = EstimateRadianceOrders(medium, q.r, q.mu, q.mu_s, q.nu, q.length, 1, kAllOrders, roulette);
