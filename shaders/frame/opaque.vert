@@ -5,13 +5,16 @@
 // varies slowly across a triangle of the terrain or a face of a landmark, and a CPU rasterizer
 // then pays for the two table lookups once per vertex instead of once per fragment block of
 // every triangle. The sun's part and the sky's part go out separately, because the sun's
-// shadow (shadow.glsl) is sharp and is applied per fragment.
+// shadow (shadow.glsl) is sharp and is applied per fragment, from the shadow map coordinates
+// computed here for every cascade and interpolated.
 //
 // On triangles thin in depth (kFroxelsPerVertex, chosen per draw by the renderer:
 // src/aerial/render/surface_reads.h), the froxel volume is read here too and interpolated, as for
 // transparent objects: O'Neil's split (GPU Gems 2, ch. 16), the scattering per vertex and the
 // phase functions per pixel (opaque_fragment.glsl).
 #include "aerial_perspective.glsl"
+#define AERIAL_SHADOW_BINDING 8
+#include "shadow.glsl"
 layout(constant_id = 5) const bool kFroxelsPerVertex = false;
 layout(set = 0, binding = 2) uniform sampler2D transmittance_texture;
 layout(set = 0, binding = 3) uniform sampler2D irradiance_texture;
@@ -29,6 +32,7 @@ layout(location = 3) out vec3 surface_normal;
 layout(location = 4) out vec3 vertex_rayleigh;
 layout(location = 5) out vec3 vertex_mie;
 layout(location = 6) out vec3 vertex_transmittance;
+layout(location = 7) out vec3 shadow_coordinates[kShadowCascades];
 
 void main() {
   relative_position = position - AERIAL_FRAME.camera_scene_position.xyz;
@@ -37,6 +41,7 @@ void main() {
   sun_radiance = radiance.sun;
   sky_radiance = radiance.sky;
   surface_normal = normal;
+  if (kSunShadows != 0) SurfaceShadowCoordinates(relative_position, normal, shadow_coordinates);
   gl_Position = AERIAL_FRAME.view_projection * vec4(relative_position, 1.0);
   Inscatter segment = Inscatter(vec3(0.0), vec3(0.0), vec3(1.0));
   if (kFroxelsPerVertex) {

@@ -12,11 +12,12 @@ layout(location = 0) in vec3 relative_position;
 layout(location = 1) in vec3 sun_radiance;
 layout(location = 2) in vec3 sky_radiance;
 layout(location = 3) in vec3 surface_normal;
+layout(location = 7) in vec3 shadow_coordinates[kShadowCascades];
 layout(location = 0) out vec4 radiance_and_distance;
 
 void main() {
   vec3 normal = normalize(surface_normal);
-  float visibility = kSunPart == 0 ? 0.0 : SunVisibility(relative_position, normal);
+  float visibility = kSunPart == 0 ? 0.0 : SunVisibilityFromCoordinates(relative_position, shadow_coordinates);
   radiance_and_distance = vec4(ShadeLambertian(LambertianRadiance(sun_radiance, sky_radiance), normal, visibility),
                                length(relative_position));
 }

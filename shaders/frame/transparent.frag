@@ -17,6 +17,7 @@ layout(location = 3) in vec3 vertex_mie;
 layout(location = 4) in vec3 vertex_transmittance;
 layout(location = 5) in vec3 sky_radiance;
 layout(location = 6) in vec3 facing_normal;
+layout(location = 7) in vec3 shadow_coordinates[kShadowCascades];
 layout(location = 0) out vec4 color;
 
 void main() {
@@ -35,7 +36,7 @@ void main() {
   float alpha = sun_radiance_opacity.a;
   vec3 normal = normalize(facing_normal);
   vec3 surface_radiance = ShadeLambertian(LambertianRadiance(sun_radiance_opacity.rgb, sky_radiance), normal,
-                                          SunVisibility(relative_position, normal));
+                                          SunVisibilityFromCoordinates(relative_position, shadow_coordinates));
   vec3 radiance = ApplyAerialPerspective(surface_radiance, segment, nu);
   color = vec4(radiance * alpha, alpha);
 }

@@ -40,12 +40,13 @@ layout(location = 3) in vec3 surface_normal;
 layout(location = 4) in vec3 vertex_rayleigh;
 layout(location = 5) in vec3 vertex_mie;
 layout(location = 6) in vec3 vertex_transmittance;
+layout(location = 7) in vec3 shadow_coordinates[kShadowCascades];
 
 // The sun's visibility at the fragment (see above).
 float GetFragmentSunVisibility() {
   if ((kReadsLeftOut & kLeaveOutSunVisibility) != 0) return 1.0;
   if (kSunVisibilityFromCache == 1) return texelFetch(cached_sun_visibility, ivec2(gl_FragCoord.xy), 0).r;
-  return SunVisibility(relative_position, normalize(surface_normal));
+  return SunVisibilityFromCoordinates(relative_position, shadow_coordinates);
 }
 
 // The segment of air between the camera and the fragment (see above).

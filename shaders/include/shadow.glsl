@@ -65,20 +65,64 @@ layout(set = 0, binding = AERIAL_SHADOW_BINDING + 1) uniform sampler2DShadow sha
 // The float depth's rounding (range 200 km at 2^-24 relative: 1.2 cm) stays far below k t.
 const float kNormalOffsetTexels = 1.5;
 
-// The visibility of a point moved by kNormalOffsetTexels texels of its cascade along the unit
-// normal n of its surface, or toward the cascade's sun for a point in the air (in_air), or 1
-// beyond the cascades. The cascade is the one whose slice of view depth holds the point (each
-// tile holds its slice with a margin for the filter and the offset: shadow_cascades.h,
-// kShadowMarginTexels). Picked by comparisons and selects of uniform values, with no loop over a
-// dynamic count and no dynamic indexing of the block: a CPU rasterizer gathers a dynamically
-// indexed uniform lane by lane.
-float SunVisibilityOffset(vec3 relative_position, vec3 n, bool in_air) {
+// A point's coordinates in a cascade's tile of the atlas: xy the atlas position, z the depth
+// compared with the map's.
+vec3 ShadowAtlasCoordinates(vec3 point, vec3 right, vec3 up, vec3 sun, vec4 origin, vec4 scale, vec2 tile) {
+  vec3 light = vec3(dot(right, point), dot(up, point), dot(sun, point));
+  vec2 p = (light.xy - origin.xy) * scale.x + 0.5;
+  return vec3((p + tile) / float(kShadowAtlasTilesPerRow), (light.z - origin.w) * scale.y);
+}
+
+// Whether the cascades hold a point at this view depth (m): false beyond the last one and with
+// shadows off. The point's depth is tested first, so that no branch depends on uniform values
+// alone: lavapipe 22.x inlines such values into the shader and compiles it anew at every bind of
+// its pipeline (a test of `cascades.x == 0` first made the opaque and transparent passes compile
+// four shaders a frame).
+bool InShadowCascades(float view_depth) {
+  return !(view_depth > shadow.cascade_far_m[kShadowCascades - 1] || shadow.cascades.x == 0);
+}
+
+// A surface point's atlas coordinates in every cascade, moved by kNormalOffsetTexels texels of
+// that cascade along its unit normal n. Each is an affine function of the point, so a vertex
+// shader computes them and the rasterizer interpolates them exactly (perspective-correct), and a
+// fragment only picks one (SunVisibilityFromCoordinates): on a CPU rasterizer the cascade's
+// projection per fragment cost about as much as the filtered comparison itself. Only the normal
+// offset is interpolated instead of computed from the normalized normal, a difference of the
+// order of the normal's change across the triangle times 1.5 texels.
+void SurfaceShadowCoordinates(vec3 relative_position, vec3 n, out vec3 coordinates[kShadowCascades]) {
+  [[unroll]] for (int i = 0; i < kShadowCascades; ++i) {
+    vec3 moved = relative_position + n * (kNormalOffsetTexels * shadow.cascade_scale[i].z);
+    coordinates[i] = ShadowAtlasCoordinates(moved, shadow.cascade_right[i].xyz, shadow.cascade_up[i].xyz,
+                                            shadow.cascade_toward_sun[i].xyz, shadow.cascade_origin[i],
+                                            shadow.cascade_scale[i],
+                                            vec2(i % kShadowAtlasTilesPerRow, i / kShadowAtlasTilesPerRow));
+  }
+}
+
+// The sun's visibility in [0, 1] at a surface point, from its coordinates in every cascade
+// (SurfaceShadowCoordinates): those of the cascade whose slice of view depth holds the point
+// (each tile holds its slice with a margin for the filter and the offset: shadow_cascades.h,
+// kShadowMarginTexels), or 1 beyond the cascades and with shadows off. Picked by comparisons and
+// selects, with no dynamic indexing: a CPU rasterizer gathers a dynamically indexed value lane by
+// lane.
+float SunVisibilityFromCoordinates(vec3 relative_position, vec3 coordinates[kShadowCascades]) {
+  if (kSunShadows == 0) return 1.0;
   float depth = dot(shadow.view_forward.xyz, relative_position);
-  // The point's depth is tested first, so that no branch depends on uniform values alone:
-  // lavapipe 22.x inlines such values into the shader and compiles it anew at every bind of its
-  // pipeline (a test of `cascades.x == 0` first made the opaque and transparent passes compile
-  // four shaders a frame).
-  if (depth > shadow.cascade_far_m[kShadowCascades - 1] || shadow.cascades.x == 0) return 1.0;
+  if (!InShadowCascades(depth)) return 1.0;
+  vec3 p = coordinates[0];
+  [[unroll]] for (int i = 1; i < kShadowCascades; ++i) {
+    if (depth > shadow.cascade_far_m[i - 1]) p = coordinates[i];
+  }
+  return texture(shadow_map, p);
+}
+
+// The visibility of a point in the air moved kNormalOffsetTexels texels of its cascade toward
+// that cascade's sun, or 1 beyond the cascades. The cascade is picked as in
+// SunVisibilityFromCoordinates, its uniforms by selects, and only its projection computed: the
+// froxels' march looks up many points per invocation.
+float SunVisibilityOffsetInAir(vec3 relative_position) {
+  float depth = dot(shadow.view_forward.xyz, relative_position);
+  if (!InShadowCascades(depth)) return 1.0;
   vec4 origin = shadow.cascade_origin[0], scale = shadow.cascade_scale[0];
   vec3 right = shadow.cascade_right[0].xyz, up = shadow.cascade_up[0].xyz, sun = shadow.cascade_toward_sun[0].xyz;
   vec2 tile = vec2(0.0);
@@ -92,11 +136,8 @@ float SunVisibilityOffset(vec3 relative_position, vec3 n, bool in_air) {
       tile = vec2(i % kShadowAtlasTilesPerRow, i / kShadowAtlasTilesPerRow);
     }
   }
-  vec3 moved = relative_position + (in_air ? sun : n) * (kNormalOffsetTexels * scale.z);
-  vec3 light = vec3(dot(right, moved), dot(up, moved), dot(sun, moved));
-  vec3 p = vec3((light.xy - origin.xy) * scale.x + 0.5, (light.z - origin.w) * scale.y);
-  vec2 atlas = (p.xy + tile) / float(kShadowAtlasTilesPerRow);
-  return texture(shadow_map, vec3(atlas, p.z));
+  vec3 moved = relative_position + sun * (kNormalOffsetTexels * scale.z);
+  return texture(shadow_map, ShadowAtlasCoordinates(moved, right, up, sun, origin, scale, tile));
 }
 
 // Whether a point, given relative to the planet's centre, is farther from it than every caster
@@ -112,13 +153,7 @@ bool AboveEveryCaster(vec3 planet_position) {
 // above every caster, or with shadows off; those three read no shadow map.
 float SunVisibilityInAir(vec3 relative_position, vec3 planet_position) {
   if (kSunShadows == 0 || AboveEveryCaster(planet_position)) return 1.0;
-  return SunVisibilityOffset(relative_position, vec3(0.0), true);
-}
-
-// The sun's visibility in [0, 1] at a point of a surface with the unit normal n (either side).
-float SunVisibility(vec3 relative_position, vec3 normal) {
-  if (kSunShadows == 0) return 1.0;
-  return SunVisibilityOffset(relative_position, normal, false);
+  return SunVisibilityOffsetInAir(relative_position);
 }
 
 #endif
