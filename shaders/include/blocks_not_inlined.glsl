@@ -7,7 +7,7 @@
 // a loop, then compiles the pipeline anew at every bind, keeping no variant (lvp_execute.c,
 // update_inline_shader_state). The three passes held such branches (the tables' sizes, the sunlight
 // terms, the froxel grid's depth), so a moving frame compiled all three: a third of its wall clock
-// on a 2-core machine (docs/speed.md, "What the tenth round did"). A uniform read at an offset that
+// on a 2-core machine (docs/speed.md, "No pipeline compiled per frame"). A uniform read at an offset that
 // is not a constant is never inlined. A GPU driver reads the same values from the block either way.
 #ifndef AERIAL_BLOCKS_NOT_INLINED_GLSL
 #define AERIAL_BLOCKS_NOT_INLINED_GLSL

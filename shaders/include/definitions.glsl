@@ -19,7 +19,7 @@ const float PI = 3.14159265358979323846;
 //  - where a whole frame takes one case, a pipeline specialized for it folds the test away (the
 //    froxel pass, the sky-view lattice and the marched per-pixel path under a high sun:
 //    AERIAL_SUN_HIGH_EVERYWHERE, aerial/render/sun_high_variant.h).
-// A GPU runs the same code at the same cost. Measured in docs/speed.md ("The eleventh round").
+// A GPU runs the same code at the same cost. Measured in docs/speed.md ("Reads on both sides of a branch").
 
 // One layer of a density profile (Bruneton 2017, DensityProfileLayer):
 // density(h) = exp_term * exp(exp_scale * h) + linear_term * h + constant_term, clamped to [0, 1].
