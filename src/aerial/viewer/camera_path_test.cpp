@@ -176,10 +176,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "keyframe[1].roll_deg"},
         BadPath{kFirst + "[[keyframe]]\ntime_s = \"soon\"\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 0.0\npitch_deg = 0.0\n",
                 "keyframe[1].time_s"},
-        // Issue 41: a finite yaw whose arithmetic overflowed to NaN frames.
+        // A finite yaw large enough that the interpolation's arithmetic overflows to NaN frames.
         BadPath{kFirst + "[[keyframe]]\ntime_s = 1.0\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 1.7e308\npitch_deg = 0.0\n",
                 "keyframe[1].yaw_deg"},
-        // Issue 41: 40,000 dotted parts overflowed toml++'s stack.
+        // 40,000 dotted parts, which overflow toml++'s recursion stack unless the depth is bounded first.
         BadPath{DottedKey(40000) + " = 1\n", "TOML nesting"},
         // The sun's keys: a pair, in every keyframe or in none, each in its range.
         BadPath{kFirst + "sun_zenith_deg = 60.0\n[[keyframe]]\ntime_s = 1.0\nposition_m = [0.0, 0.0, 30.0]\nyaw_deg = 0.0\npitch_deg = 0.0\n",
