@@ -43,7 +43,8 @@ Picture Render(const std::string& preset, LutVariant variant = LutVariant::k4D) 
   renderer.Render(picture.scene);
   picture.radiance = renderer.ReadOutput();
   const Spectrum sun = ShaderAtmosphere(AtmosphereParameters::Earth(), tables.options()).solar_irradiance;
-  picture.rgba = ToneMapToSrgb8(picture.radiance, cli::FrameOptions{}.MakeToneMap(picture.radiance, sun));
+  const cli::FrameOptions defaults;
+  picture.rgba = ToneMapToSrgb8(picture.radiance, defaults.MakeToneMap(picture.radiance, sun));
   return picture;
 }
 
