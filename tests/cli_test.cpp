@@ -1,3 +1,4 @@
+// CTest label "sanitizer": the command end to end: run under the sanitizers too.
 // The aerial command as users run it: bad input gives a clear message naming the field and a
 // non-zero exit, and the probe prints the JSON keys other tools script against. (The viewer's
 // runs under Xvfb are in view_cli_test.cpp.)

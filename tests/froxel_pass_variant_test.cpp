@@ -1,3 +1,4 @@
+// CTest label "sanitizer": the froxel pass's variants: run under the sanitizers too.
 // The froxel pass's variant for a high sun (froxel/froxel_pass_variant.h) against the general
 // pass, both built from the same frame block: the same volume where the renderer would pick it,
 // and a different one where the sun is low, which is why it is not picked there.

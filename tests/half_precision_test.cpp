@@ -1,3 +1,4 @@
+// CTest label "sanitizer": the half-float tables: run under the sanitizers too.
 // Half-precision tables (--precision float16, the 4D default) read like the float32 ones: the
 // Rayleigh table stores 16-bit floats, while Mie's single scattering and the multiple density table
 // J_ms, whose values fall below half floats' normal range, stay float32 (atmosphere_tables.cpp).

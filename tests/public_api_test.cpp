@@ -1,3 +1,4 @@
+// CTest label "sanitizer": the public API's seams: run under the sanitizers too.
 // The public API (include/aerial/) as a renderer that embeds aerial uses it: its own command
 // buffer, aerial's froxel volume for its camera, the tables as images it binds.
 #include <gtest/gtest.h>

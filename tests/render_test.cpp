@@ -1,3 +1,4 @@
+// CTest label "sanitizer": the frame: run under the sanitizers too.
 // The per-frame renderer on the built-in scene: froxel aerial perspective against the per-pixel
 // reference path, transparent objects per vertex against per pixel, clean output.
 #include <gtest/gtest.h>

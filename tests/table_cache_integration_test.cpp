@@ -1,3 +1,4 @@
+// CTest label "sanitizer": the table cache's reads and writes: run under the sanitizers too.
 // The table cache end to end: tables read back from the cache equal the computed ones, and a
 // damaged, truncated or foreign file is detected, reported and rebuilt instead of used.
 #include <gtest/gtest.h>

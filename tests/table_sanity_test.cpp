@@ -1,3 +1,4 @@
+// CTest label "sanitizer": the small tables' precompute: run under the sanitizers too.
 // Every precomputed table is finite and non-negative, in every variant and precision the tests
 // build: a NaN in one texel spreads through every later order and every frame.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// CTest label "sanitizer": the table worker's hand-over between threads: run under the sanitizers too.
 // The viewer's table supply (viewer/table_supply.h) with its background worker, without a window.
 #include "aerial/viewer/table_supply.h"
 

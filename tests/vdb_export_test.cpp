@@ -1,3 +1,4 @@
+// CTest label "sanitizer": the VDB export: run under the sanitizers too.
 // `aerial export-vdb`: the froxel volume of one frame, written to OpenVDB and read back. The
 // frustum grid's OpenVDB frustum transform puts each voxel where the camera saw it and the voxel
 // holds the GPU's froxels read there; the world grid samples them at its voxel centers; neither
