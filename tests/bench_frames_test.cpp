@@ -1,4 +1,3 @@
-// CTest label "sanitizer": the bench's frames: run under the sanitizers too.
 // The benchmarks' frame loop (bench/frame_measurement.h): every source gets its warm-up frames and
 // then its measured frames, all of them unless it sets max_frames (the quick bench's marched
 // per-pixel path), each with positive GPU and wall-clock times.

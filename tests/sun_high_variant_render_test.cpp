@@ -1,4 +1,3 @@
-// CTest label "sanitizer": the high-sun variants' frames: run under the sanitizers too.
 // The frame's passes in their variants for a high sun (aerial/render/sun_high_variant.h) against the
 // general passes: on the marched per-pixel path the mesh passes (opaque and transparent,
 // Renderer::MeshPipelinesFor) and the sky (Renderer::SkyPipelineFor); in froxel mode the froxel
