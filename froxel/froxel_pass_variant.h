@@ -1,8 +1,8 @@
 #pragma once
 // Which froxel pass a frame builds its volume with (shaders/frame/froxel.comp): the general one,
-// or its variant for a sun high over every froxel (aerial/render/sun_high_variant.h says why it
-// is faster on a CPU rasterizer and when it computes the same values).
-#include "aerial/render/sun_high_variant.h"
+// or its variant for a sun high over every froxel (sun_high_variant.h says why it is faster on
+// a CPU rasterizer and when it computes the same values).
+#include "froxel/sun_high_variant.h"
 
 namespace aerial {
 

@@ -2,7 +2,7 @@
 // sun_high_mirrors.comp) and held against their C++ side: the froxel depth mapping (FroxelGrid
 // against shaders/include/froxel_depth.glsl), the sky-view lattice's size (the renderer's images
 // against what shaders/include/sky_view_lattice.glsl gives the passes), and what the choice of the
-// variants for a high sun mirrors (aerial/render/sun_high_variant.h against mappings.glsl and
+// variants for a high sun mirrors (froxel/sun_high_variant.h against mappings.glsl and
 // transmittance.glsl).
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 #include "aerial/froxel_grid.h"
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/render/sky_view_layout.h"
-#include "aerial/render/sun_high_variant.h"
+#include "froxel/sun_high_variant.h"
 #include "aerial/vk/compute_pipeline.h"
 #include "gpu_fixture.h"
 

@@ -18,7 +18,7 @@ const AtmosphereTables& CachedTables(const PrecomputeOptions& options) {
   auto it = loaded.find(options.Hash());
   if (it == loaded.end()) {
     it = loaded.emplace(options.Hash(), LoadOrPrecompute(context, AtmosphereParameters::Earth(),
-                                                         options, {.quiet = true}))
+                                                         options, {}))
              .first;
   }
   return *it->second.tables;

@@ -3,12 +3,19 @@
 // buffer, aerial's froxel volume for its camera, the tables as images it binds.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdio>
+#include <string>
+#include <thread>
+#include <vector>
 
 #include "aerial/aerial.h"
 #include "aerial/api/impl.h"
 #include "aerial/render/renderer.h"
 #include "gpu_fixture.h"
+#include "pseudo_terminal.h"
 
 namespace aerial::testing {
 namespace {
@@ -46,6 +53,44 @@ TEST_F(PublicApi, FroxelsRecordedByTheCallerEqualTheRenderersUnshadowedVolume) {
   EXPECT_TRUE(built.transmittance == expected.transmittance);
   EXPECT_GT(*std::max_element(built.rayleigh.begin(), built.rayleigh.end()), 0.0f);
   EXPECT_LT(*std::min_element(built.transmittance.begin(), built.transmittance.end()), 0.9f);
+}
+
+// The precompute tells the caller's callback of every pass, in order, on the caller's thread, and
+// draws nothing itself: stderr is a terminal meanwhile, where a progress bar would show.
+TEST_F(PublicApi, PrecomputeReportsEachPassToTheCallbackAndDrawsNothing) {
+  PseudoTerminal terminal;
+  if (!terminal.available()) GTEST_SKIP() << "no pseudo-terminal available";
+  Device device;
+  struct Step {
+    int done, total;
+    std::string pass;
+    std::thread::id thread;
+  };
+  std::vector<Step> steps;
+  TableLoadOptions load{.read_cache = false,
+                        .write_cache = false,
+                        .progress = [&](int done, int total, std::string_view pass) {
+                          steps.push_back({done, total, std::string(pass), std::this_thread::get_id()});
+                        }};
+  std::fflush(stderr);
+  const int saved_stderr = ::dup(STDERR_FILENO);
+  ::dup2(::fileno(terminal.file()), STDERR_FILENO);
+  Tables tables = Tables::LoadOrPrecompute(device, AtmosphereParameters::Earth(), PrecomputeOptions::Small(), load);
+  std::fflush(stderr);
+  ::dup2(saved_stderr, STDERR_FILENO);
+  ::close(saved_stderr);
+  std::fputs("end", terminal.file());
+  EXPECT_EQ(terminal.ReadUntil("end"), "end");
+
+  const std::vector<PassTime>& passes = tables.precompute_times();
+  ASSERT_GT(passes.size(), 3u);
+  ASSERT_EQ(steps.size(), passes.size());
+  for (size_t i = 0; i < steps.size(); ++i) {
+    EXPECT_EQ(steps[i].done, int(i) + 1);
+    EXPECT_EQ(steps[i].total, int(passes.size()));
+    EXPECT_EQ(steps[i].pass, passes[i].pass);
+    EXPECT_EQ(steps[i].thread, std::this_thread::get_id());
+  }
 }
 
 // The images a caller binds are aerial's tables and volume, with their sizes, in the GENERAL

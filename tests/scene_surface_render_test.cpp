@@ -10,7 +10,7 @@
 
 #include "aerial/render/renderer.h"
 #include "aerial/scene.h"
-#include "aerial/scene_surface.h"
+#include "aerial/terrain/scene_surface.h"
 #include "aerial/validation/image_metrics.h"
 #include "aerial/validation/reference_sampling.h"
 #include "gpu_fixture.h"

@@ -63,8 +63,8 @@ ViewsCompared CompareViews(ColourMode colour, const std::vector<ViewAngles>& vie
     queries.push_back({ToRayParameters(view, AtmosphereParameters::Earth()), kPointDistanceM});
   ViewsCompared compared{ProbeTables(tables, queries), {}};
   for (const ProbeQuery& query : queries)
-    compared.reference.push_back(ProbeReferenceSpectral(AtmosphereParameters::Earth(), query.ray, kPointDistanceM, 1,
-                                                        spectrum::SpectralSampling::Midpoint(48)));
+    compared.reference.push_back(ProbeReferenceSpectral(AtmosphereParameters::Earth(), query.ray, kPointDistanceM,
+                                                        spectrum::SpectralSampling::Midpoint(48), {.orders = 1}));
   return compared;
 }
 

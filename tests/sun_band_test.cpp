@@ -1,7 +1,7 @@
 // CTest label "sanitizer": the sun band's tables: run under the sanitizers too.
 // The sun band (shaders/include/transmittance.glsl), the precomputation's table of the sunlight's
 // transmittance over the sun's disc near each radius's horizon, against the reference's exact disc
-// average (include/aerial/reference/solar_disc.h), at elevations between its texels.
+// average (src/aerial/reference/solar_disc.h), at elevations between its texels.
 #include <gtest/gtest.h>
 
 #include <array>

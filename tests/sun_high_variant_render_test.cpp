@@ -1,4 +1,4 @@
-// The frame's passes in their variants for a high sun (aerial/render/sun_high_variant.h) against the
+// The frame's passes in their variants for a high sun (froxel/sun_high_variant.h) against the
 // general passes: on the marched per-pixel path the mesh passes (opaque and transparent,
 // Renderer::MeshPipelinesFor) and the sky (Renderer::SkyPipelineFor); in froxel mode the froxel
 // pass and the sky-view lattice's correction (Renderer::SkyViewCorrectionPipelineFor). The same

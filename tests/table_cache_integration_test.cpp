@@ -36,7 +36,7 @@ class TableCacheIntegration : public GpuTest {
   }
   LoadedTables Load(const AtmosphereParameters& atmosphere = AtmosphereParameters::Earth()) {
     return LoadOrPrecompute(SharedContext(), atmosphere, PrecomputeOptions::Small(),
-                            {.cache_dir = dir_, .quiet = true});
+                            {.cache_dir = dir_});
   }
   fs::path dir_;
 };
@@ -154,7 +154,7 @@ TEST_F(TableCacheIntegration, ASymlinkLoopAtTheCacheFileIsSkipped) {
 TEST_F(TableCacheIntegration, WithoutHomeThereIsNoCache) {
   std::string home = std::getenv("HOME") ? std::getenv("HOME") : "";
   for (const char* name : {"HOME", "XDG_CACHE_HOME", "AERIAL_CACHE_DIR"}) ::unsetenv(name);
-  TableStoreOptions store{.quiet = true};
+  TableStoreOptions store;
   LoadedTables loaded = LoadOrPrecompute(SharedContext(), AtmosphereParameters::Earth(), PrecomputeOptions::Small(), store);
   EXPECT_TRUE(loaded.cache_file.empty());
   EXPECT_FALSE(fs::exists(".aerial-cache"));

@@ -17,7 +17,6 @@
 #include "aerial/probe.h"
 #include "aerial/renderer.h"
 #include "aerial/scene.h"
-#include "aerial/scene_surface.h"
 #include "aerial/tables.h"
 #include "aerial/vdb_export.h"
 #include "aerial/version.h"

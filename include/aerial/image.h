@@ -65,13 +65,14 @@ std::vector<std::byte> EncodePng(std::span<const uint8_t> rgba8, int width, int 
 // Image files, in the format the extension names (.exr or .png, any case), written atomically
 // (a temporary file, then a rename): a failed, full-disk or killed write leaves the previous file
 // or nothing.
-// Format, an existing directory and writability, so a command fails before spending minutes
-// rendering. Errors name `field`.
-void CheckImageOutputPath(const std::filesystem::path& path, const std::string& field = "--out");
+// Format, an existing directory and writability, so that a caller fails before spending minutes
+// rendering. Errors name `field`: what the caller calls the path (a command line's option, a
+// setting's key).
+void CheckImageOutputPath(const std::filesystem::path& path, const std::string& field);
 
 // EXR: float R, G, B, A linear radiance; tone_map is ignored. PNG: ToneMapToSrgb8(image,
-// tone_map). Throws Error("image size") for sides outside 1..kMaxImageSide, Error("--out") for an
-// unknown extension and Error("file", path) for I/O failures; no partial file remains.
+// tone_map). Throws Error("image size") for sides outside 1..kMaxImageSide, Error("image path")
+// for an unknown extension and Error("file", path) for I/O failures; no partial file remains.
 void WriteImage(const std::filesystem::path& path, const ImageRgbF& image,
                 const ToneMapOptions& tone_map);
 

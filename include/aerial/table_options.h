@@ -85,7 +85,7 @@ struct PrecomputeOptions {
   bool ClosesSeries() const { return close_series && orders >= 3; }
 
   // The scattering orders the tables stand for: 1..orders, or the whole series (INT_MAX, which is
-  // reference::kAllOrders) when it is closed.
+  // ReferenceOptions::orders' default) when it is closed.
   int RepresentedOrders() const;
 
   // Sets the scattering tables' size (the four resolution fields); the precompute's per-order

@@ -34,7 +34,8 @@ struct UniformBlock {
   VkDeviceSize size = 0;
 };
 
-// Called after each precompute pass: done of total passes, and the pass's name.
+// Called on the calling thread after each precompute pass: done of total passes (1..total, total
+// the same at every call of one precompute), and the pass's name. aerial itself draws no progress.
 using ProgressCallback = std::function<void(int done, int total, std::string_view pass)>;
 
 struct TableLoadOptions {
@@ -45,9 +46,6 @@ struct TableLoadOptions {
   // is the point, as for `aerial precompute`); false: a warning, and the tables are still used.
   bool require_cache_write = false;
   ProgressCallback progress;        // told of each precompute pass, if set
-  // A progress bar on stderr when it is a terminal, and notes on the cache (what aerial's command
-  // line shows). A library caller reports progress through the callback instead.
-  bool print_progress = false;
 };
 
 class TableSnapshot;
@@ -58,7 +56,8 @@ class Tables {
   // exactly them by this version of aerial is there and intact (a version, a key and XXH64
   // checksums guard it), precomputed on the device otherwise and then written to the cache
   // atomically. A cache that cannot be written is a warning on stderr (unless
-  // require_cache_write), and the tables still work.
+  // require_cache_write), and the tables still work; so is a damaged cache file, which is
+  // recomputed, and a note says when stale temporaries of a killed write are removed.
   // Throws aerial::Error for invalid atmospheres or options, naming the field and the value.
   static Tables LoadOrPrecompute(const Device& device, const AtmosphereParameters& atmosphere,
                                  const PrecomputeOptions& options, const TableLoadOptions& load = {});

@@ -5,7 +5,7 @@
 #   tests/headers/run.sh BUILD_DIR
 source "$(dirname "$0")/../package/install.sh"
 include="$work/prefix/include"
-if grep -rnE 'namespace (aerial::)?(vk|bench|viewer|cli|terrain)\b|\bvk::' "$include/aerial"; then
+if grep -rnE 'namespace (aerial::)?(vk|bench|viewer|cli|terrain|reference)\b|\b(vk|reference)::' "$include/aerial"; then
   echo "an installed header names aerial's implementation (above)" >&2
   exit 1
 fi

@@ -1,6 +1,7 @@
 // aerial::Probe and aerial::ProbeReference (include/aerial/probe.h) over ProbeTables and the CPU
 // reference.
 #include <cmath>
+#include <limits>
 
 #include "aerial/api/impl.h"
 #include "aerial/probe.h"
@@ -14,8 +15,12 @@ std::vector<ProbeResult> Probe(const Tables& tables, std::span<const ProbeQuery>
 }
 
 ProbeResult ProbeReference(const AtmosphereParameters& atmosphere, const RayParameters& ray,
-                           std::optional<double> distance, int orders,
-                           const reference::MonteCarloOptions& monte_carlo) {
+                           std::optional<double> distance, const ReferenceOptions& options) {
+  static_assert(reference::kChunkPaths == 256 && reference::kAllOrders == std::numeric_limits<int>::max(),
+                "ReferenceOptions (aerial/probe.h) documents the chunk size and INT_MAX for all orders");
+  const int orders = options.orders;
+  const reference::MonteCarloOptions monte_carlo{
+      .paths_per_query = options.paths_per_query, .seed = options.seed, .threads = options.threads};
   reference::Reference model(atmosphere);
   ProbeResult result{};
   reference::Estimate sky = model.ComputeRadiance(ray.r, ray.mu, ray.mu_s, ray.nu, orders, INFINITY, monte_carlo);

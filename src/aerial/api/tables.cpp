@@ -49,7 +49,6 @@ Tables Tables::LoadOrPrecompute(const Device& device, const AtmosphereParameters
                           .read_cache = load.read_cache,
                           .write_cache = load.write_cache,
                           .require_cache_write = load.require_cache_write,
-                          .quiet = !load.print_progress,
                           .progress = load.progress};
   return Tables(std::make_unique<Impl>(
       Impl{aerial::LoadOrPrecompute(*ImplOf(device).context, atmosphere, options, store)}));

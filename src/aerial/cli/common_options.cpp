@@ -2,6 +2,7 @@
 
 #include "aerial/atmosphere.h"
 #include "aerial/cli/path_option.h"
+#include "aerial/cli/terminal_progress.h"
 #include "aerial/error.h"
 #include "aerial/precompute/table_store.h"
 
@@ -100,7 +101,10 @@ PrecomputeOptions TableOptions::MakePrecomputeOptions() const {
 DeviceOptions TableOptions::MakeDeviceOptions() const { return {.device_name = device, .validation = validation}; }
 
 TableLoadOptions TableOptions::MakeLoadOptions() const {
-  return {.cache_dir = cache_dir, .read_cache = !no_cache, .write_cache = true, .print_progress = !quiet};
+  return {.cache_dir = cache_dir,
+          .read_cache = !no_cache,
+          .write_cache = true,
+          .progress = quiet ? ProgressCallback() : TerminalProgress("precompute " + lut)};
 }
 
 std::optional<std::filesystem::path> TableOptions::CacheFile(const AtmosphereParameters& atmosphere,

@@ -47,7 +47,8 @@ struct TableOptions {
   AtmosphereParameters LoadAtmosphere() const;
   PrecomputeOptions MakePrecomputeOptions() const;
   DeviceOptions MakeDeviceOptions() const;  // --device, --validation
-  TableLoadOptions MakeLoadOptions() const;  // --cache-dir, --no-cache, --quiet
+  // --cache-dir, --no-cache; the progress bar unless --quiet.
+  TableLoadOptions MakeLoadOptions() const;
   // The cache file of these tables (in --cache-dir, else the default directory), if any.
   std::optional<std::filesystem::path> CacheFile(const AtmosphereParameters& atmosphere,
                                                  const PrecomputeOptions& precompute) const;

@@ -72,7 +72,7 @@ std::vector<MemoryUse> EnvmapMemoryUses(const EnvmapCommandOptions& options) {
 
 void RunEnvmap(const EnvmapCommandOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  CheckImageOutputPath(options.out);
+  CheckImageOutputPath(options.out, "--out");
   if (!options.cube_map.empty()) {
     CheckImageOutputPath(options.cube_map, "--cube-map");
     if (options.cube_map.extension() == ".png" || options.cube_map.extension() == ".PNG")

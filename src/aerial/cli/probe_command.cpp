@@ -83,10 +83,11 @@ void RunProbe(const ProbeOptions& options) {
   ProbeResult result;
   std::vector<ProbeResult> at_wavelengths;  // the spectral reference's, group by group
   if (options.reference) {
-    result = spectral ? ProbeReferenceSpectral(atmosphere, ray, options.distance_m, precompute.RepresentedOrders(),
+    const ReferenceOptions reference{.orders = precompute.RepresentedOrders()};
+    result = spectral ? ProbeReferenceSpectral(atmosphere, ray, options.distance_m,
                                                spectrum::SpectralSampling::ForTables(precompute.spectral_wavelengths),
-                                               {}, &at_wavelengths)
-                      : ProbeReference(atmosphere, ray, options.distance_m, precompute.RepresentedOrders());
+                                               reference, &at_wavelengths)
+                      : ProbeReference(atmosphere, ray, options.distance_m, reference);
   } else {
     Device device(options.tables.MakeDeviceOptions());
     options.tables.MakeMemoryBudget(device.largest_heap_bytes()).Check(TableMemoryUses(precompute));

@@ -38,7 +38,7 @@ struct RenderCommandOptions {
 };
 
 void RunRender(const RenderCommandOptions& options) {
-  CheckImageOutputPath(options.out);
+  CheckImageOutputPath(options.out, "--out");
   AtmosphereParameters atmosphere = options.tables.LoadAtmosphere();
   if (options.supersample && (*options.supersample < 1 || *options.supersample > kMaxSupersample))
     throw Error("--supersample", std::to_string(*options.supersample), "1 to " + std::to_string(kMaxSupersample));
@@ -76,7 +76,7 @@ void RunRender(const RenderCommandOptions& options) {
       options.frame.MakeToneMap(frame, ShaderAtmosphere(atmosphere, precompute).solar_irradiance);
   WriteImage(options.out, frame, tone_map);
   const std::string out = Printable(options.out.native());
-  if (ImageFormatFromPath(options.out) == ImageFormat::kExr) {
+  if (ImageFormatFromPath(options.out, "--out") == ImageFormat::kExr) {
     std::printf("wrote %s: %dx%d, %dx%d samples per pixel, linear radiance\n", out.c_str(), frame.width,
                 frame.height, supersample, supersample);
   } else {

@@ -31,7 +31,7 @@ void WriteImage(const std::filesystem::path& path, const ImageRgbF& image,
                 const ToneMapOptions& tone_map) {
   // Validate everything before touching the disk, and encode fully in memory, so any failure
   // happens before the atomic write starts.
-  const ImageFormat format = ImageFormatFromPath(path);
+  const ImageFormat format = ImageFormatFromPath(path, "image path");
   CheckImageSize(image);
   CheckFinitePixels(image);
   std::vector<std::byte> bytes;

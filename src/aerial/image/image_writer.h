@@ -17,8 +17,8 @@ enum class ImageFormat {
 };
 
 // By extension, case-insensitive (".exr", ".PNG"). Throws Error(field, path, ".exr or .png"); field
-// names the option the path came from.
-ImageFormat ImageFormatFromPath(const std::filesystem::path& path, const std::string& field = "--out");
+// names where the path came from.
+ImageFormat ImageFormatFromPath(const std::filesystem::path& path, const std::string& field);
 
 // Reads an EXR written by WriteImage (or any EXR with R, G, B). Throws Error naming the path.
 ImageRgbF ReadExr(const std::filesystem::path& path);

@@ -60,8 +60,7 @@ LoadedTables LoadOrPrecompute(const vk::Context& context, const AtmosphereParame
     const std::string value = vk::ToString(filtering);
     if (store.require_cache_write)
       throw Error("AERIAL_TABLE_FILTERING", value, "unset: only tables read through the sampler are cached");
-    if (!store.quiet)
-      std::fprintf(stderr, "aerial: AERIAL_TABLE_FILTERING=%s: the tables are precomputed, not cached\n", value.c_str());
+    std::fprintf(stderr, "aerial: AERIAL_TABLE_FILTERING=%s: the tables are precomputed, not cached\n", value.c_str());
     use_cache = false;
   } else if (!dir) {
     const char* home = std::getenv("HOME");
@@ -70,11 +69,9 @@ LoadedTables LoadOrPrecompute(const vk::Context& context, const AtmosphereParame
                         "place the table cache (relative ones are ignored, as the XDG specification says)"));
   } else {
     loaded.cache_file = CacheFilePath(*dir, atmosphere, options);
-    for (const std::filesystem::path& stale : RemoveStaleTemporaries(*dir, "tables-")) {
-      if (!store.quiet)
-        std::fprintf(stderr, "aerial: removed %s, left by a table cache write that was killed\n",
-                     Printable(stale.native()).c_str());
-    }
+    for (const std::filesystem::path& stale : RemoveStaleTemporaries(*dir, "tables-"))
+      std::fprintf(stderr, "aerial: removed %s, left by a table cache write that was killed\n",
+                   Printable(stale.native()).c_str());
   }
   std::error_code ec;  // a symbolic link loop at the path: no cache to read, and writing fails below
   if (use_cache && store.read_cache && std::filesystem::exists(loaded.cache_file, ec)) {
@@ -94,8 +91,9 @@ LoadedTables LoadOrPrecompute(const vk::Context& context, const AtmosphereParame
       without_cache(e);
     }
   }
-  Progress progress("precompute " + ToString(options.variant), PrecomputePassCount(options), stderr,
-                    store.quiet);
+  // Counted, never drawn: a caller shows progress its own way (the command line's bar is
+  // cli/terminal_progress.h).
+  Progress progress("precompute", PrecomputePassCount(options), /*out=*/nullptr);
   progress.set_observer(store.progress);
   loaded.pass_times = Precompute(*loaded.tables, &progress);
   TableCache texels = loaded.tables->Download();

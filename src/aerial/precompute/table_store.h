@@ -22,8 +22,7 @@ struct TableStoreOptions {
   // false: a cache that cannot be written (found before the work, or failing while written: a
   // full disk) is a warning, and the tables are used without being cached.
   bool require_cache_write = false;
-  bool quiet = false;               // no progress bar, no cache notes
-  Progress::Observer progress;      // told of each precompute pass, if set (quiet or not)
+  Progress::Observer progress;      // told of each precompute pass, if set; nothing is drawn
 };
 
 struct LoadedTables {

@@ -17,16 +17,15 @@ Spectrum Over(const Spectrum& a, const Spectrum& b) { return {a[0] / b[0], a[1] 
 }  // namespace
 
 ProbeResult ProbeReferenceSpectral(const AtmosphereParameters& atmosphere, const RayParameters& ray,
-                                   std::optional<double> distance_m, int orders,
-                                   const spectrum::SpectralSampling& sampling,
-                                   const reference::MonteCarloOptions& monte_carlo,
+                                   std::optional<double> distance_m,
+                                   const spectrum::SpectralSampling& sampling, const ReferenceOptions& options,
                                    std::vector<ProbeResult>* at_wavelengths) {
   const spectrum::SpectralAtmosphere spectral(atmosphere);
   LinearSrgbSum sky, sky_variance, irradiance, irradiance_variance, to_point, to_point_variance;
   LinearSrgbSum sun_irradiance, solar_radiance, sun, sunlit, sunlit_to_point;
   for (int g = 0; g < sampling.groups(); ++g) {
     AtmosphereParameters group = spectral.At(sampling.Group(g));
-    ProbeResult r = ProbeReference(group, ray, distance_m, orders, monte_carlo);
+    ProbeResult r = ProbeReference(group, ray, distance_m, options);
     if (at_wavelengths) at_wavelengths->push_back(r);
     const Matrix3 m = sampling.GroupToLinearSrgb(g);
     sky.Add(m, r.sky_radiance);

@@ -17,9 +17,9 @@ namespace aerial {
 // propagate through the conversion's weights as independent errors. at_wavelengths (may be null)
 // receives the unconverted results, one per group of three wavelengths (SpectralSampling::Group).
 ProbeResult ProbeReferenceSpectral(const AtmosphereParameters& atmosphere, const RayParameters& ray,
-                                   std::optional<double> distance_m, int orders,
+                                   std::optional<double> distance_m,
                                    const spectrum::SpectralSampling& sampling,
-                                   const reference::MonteCarloOptions& monte_carlo = {},
+                                   const ReferenceOptions& options = {},
                                    std::vector<ProbeResult>* at_wavelengths = nullptr);
 
 }  // namespace aerial

@@ -9,7 +9,7 @@
 #include "aerial/image/resample.h"
 #include "aerial/render/shadow_uniforms.h"
 #include "aerial/render/sky_view_layout.h"
-#include "aerial/render/sun_high_variant.h"
+#include "froxel/sun_high_variant.h"
 #include "aerial/render/surface_reads.h"
 #include "aerial/scene/terrain.h"
 #include "aerial/terrain/terrain_chunk.h"

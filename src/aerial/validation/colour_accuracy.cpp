@@ -34,8 +34,8 @@ const ColourBand& BandNamed(const std::string& name) {
 ProbeResult ProbeView(const AtmosphereParameters& atmosphere, const ColourReference& reference, const ViewAngles& view,
                       int paths) {
   return ProbeReferenceSpectral(atmosphere, ToRayParameters(view, atmosphere), kColourPointDistanceM,
-                                reference.orders, spectrum::SpectralSampling::Midpoint(reference.wavelengths),
-                                {.paths_per_query = paths});
+                                spectrum::SpectralSampling::Midpoint(reference.wavelengths),
+                                {.orders = reference.orders, .paths_per_query = paths});
 }
 
 // Whether every compared value of a sample is within its band's noise goal.

@@ -21,7 +21,7 @@
 #include <glm/glm.hpp>
 
 #include "aerial/reference/reference.h"
-#include "aerial/scene_surface.h"
+#include "aerial/terrain/scene_surface.h"
 
 namespace aerial::validation {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <optional>
 
-#include "aerial/scene_surface.h"
+#include "aerial/terrain/scene_surface.h"
 #include "aerial/spectrum/linear_srgb_sum.h"
 #include "aerial/spectrum/spectral_atmosphere.h"
 #include "aerial/spectrum/spectral_sampling.h"

@@ -76,7 +76,7 @@ TEST(SampleSpectralReference, SkyPixelsAreTheSpectralProbesRadiance) {
     glm::dvec3 ray = PixelRay(frame, pixel.x, pixel.y);
     RayParameters parameters{r, glm::dot(camera, ray) / r, glm::dot(camera, sun) / r, glm::dot(ray, sun)};
     ProbeResult probe =
-        ProbeReferenceSpectral(earth, parameters, std::nullopt, 1, spectrum::SpectralSampling::ForTables(12));
+        ProbeReferenceSpectral(earth, parameters, std::nullopt, spectrum::SpectralSampling::ForTables(12), {.orders = 1});
     const bool ground = parameters.mu < -std::sqrt(1.0 - std::pow(earth.bottom_radius_m / r, 2.0));
     ground_pixels += ground;
     Spectrum expected = pixel.Expected();

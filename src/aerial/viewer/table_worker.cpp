@@ -60,7 +60,6 @@ void TableWorker::Run() {
 
 TableResult TableWorker::Make(TableRequest request) {
   TableResult result{.request = request};
-  request.load.print_progress = false;
   request.load.progress = [this](int done, int total, std::string_view) {
     std::lock_guard lock(mutex_);
     status_.done_steps = done;

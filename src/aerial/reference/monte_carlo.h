@@ -1,6 +1,6 @@
 #pragma once
 // The reference's Monte Carlo estimates and their options (the machinery that computes them is
-// src/aerial/reference/monte_carlo_chunks.h).
+// monte_carlo_chunks.h).
 //
 // Paths are traced in chunks of kChunkPaths. Chunk c draws from its own stream (seed, c), so the
 // result depends on the seed and the path count but not on the thread count or scheduling. The

@@ -1,4 +1,4 @@
-#include "aerial/scene_surface.h"
+#include "aerial/terrain/scene_surface.h"
 
 #include <gtest/gtest.h>
 

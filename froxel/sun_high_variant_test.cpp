@@ -1,4 +1,4 @@
-#include "aerial/render/sun_high_variant.h"
+#include "froxel/sun_high_variant.h"
 
 #include <cmath>
 #include <numbers>

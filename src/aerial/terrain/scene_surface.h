@@ -1,16 +1,16 @@
 #pragma once
 // The surface the scene itself has where a renderer drew opaque geometry, for checking that
-// renderer's lighting against a reference (src/aerial/validation/reference_sampling.h,
-// with aerial/reference/): the renderer's depth along the pixel's ray says where (geometry), the
-// scene's description says what is there (point, normal, albedo), never the renderer's lighting.
-//  - Meshes: the nearest hit of a CPU ray cast (src/aerial/scene/mesh_ray_cast.h), taken where it is at the
+// renderer's lighting against the CPU reference (validation/reference_sampling.h): the renderer's
+// depth along the pixel's ray says where (geometry), the scene's description says what is there
+// (point, normal, albedo), never the renderer's lighting.
+//  - Meshes: the nearest hit of a CPU ray cast (scene/mesh_ray_cast.h), taken where it is at the
 //    renderer's depth d within kMeshDepthTolerance d + 1 cm. Both draw the same float triangles;
 //    the depth is interpolated in float (~1e-7 relative) and the ray rebuilt from the frame's float
 //    matrices (~1e-6 rad), which moves the hit along a face seen at a grazing angle g by
 //    ~1e-6 d / tan g: 1e-4 d allows g down to 0.6 degrees.
 //  - The terrain: the renderer draws a level of detail whose triangles lie within a radial
 //    distance eps of the height function's surface, eps K / d' <= error_px for the chunk's nearest
-//    distance d' <= d and K its pixels per radian (terrain/lod_selection.h); eps is measured at
+//    distance d' <= d and K its pixels per radian (lod_selection.h); eps is measured at
 //    sample points, and the gap found between them reaches 1.25 times the bound (docs/design.md,
 //    "Terrain"); skirts hang up to 0.1 m below that. So where the renderer's point at depth d lies
 //    radially within 1.25 error_px d / K + 0.1 m of the surface, and the CPU finds no mesh in front
