@@ -67,7 +67,7 @@ Mesh BuildLandmark(const Landmark& landmark, double planet_radius_m) {
 }
 
 // A vertical glass pane facing the camera, its center at least at eye level, in an opaque frame
-// of dark painted steel (albedo 0.05) a fortieth of its width. Glass reflects ~4-8% and transmits
+// of weathered aluminium (albedo 0.3) a fortieth of its width. Glass reflects ~4-8% and transmits
 // most light; opacity 0.3 stands for a tinted, dirty pane.
 struct Pane {
   Mesh glass, frame;
@@ -87,19 +87,19 @@ Pane BuildPane(const std::string& name, const Placement& at, double width_m, dou
   pane.glass.transparent = true;
   AppendGrid(pane.glass, center, right, up, width_m, height_m, 16, 12, {{0.55f, 0.62f, 0.68f}, 0.3f});
   pane.frame.name = name + "_frame";
-  const SurfaceLook steel{{0.05f, 0.05f, 0.05f}, 1.0f};
+  const SurfaceLook metal{{0.3f, 0.3f, 0.3f}, 1.0f};
   double bar = width_m / 40.0, half_w = width_m / 2.0 + bar / 2.0, half_h = height_m / 2.0 + bar / 2.0;
   for (double side : {-1.0, 1.0}) {
     AppendBox(pane.frame, center + right * (side * half_w) - up * (half_h + bar / 2.0), right, forward,
-              {bar, bar, height_m + 2.0 * bar}, steel);
-    AppendBox(pane.frame, center + up * (side * half_h - bar / 2.0), right, forward, {width_m, bar, bar}, steel);
+              {bar, bar, height_m + 2.0 * bar}, metal);
+    AppendBox(pane.frame, center + up * (side * half_h - bar / 2.0), right, forward, {width_m, bar, bar}, metal);
   }
   // The legs: from the frame's bottom down into the ground, deep enough for the hills' slope
   // (< 0.1) across the pane's width.
   double leg = center_height - height_m / 2.0 - ground + 1.0 + 0.1 * width_m;
   for (double side : {-1.0, 1.0})
     AppendBox(pane.frame, center + right * (side * half_w) - up * (half_h + bar / 2.0 + leg), right, forward,
-              {bar, bar, leg}, steel);
+              {bar, bar, leg}, metal);
   return pane;
 }
 

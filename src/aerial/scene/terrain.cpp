@@ -71,28 +71,15 @@ double Noise(double x, double y, double lambda_m, uint32_t seed) {
   return GradientNoise(x / lambda_m, y / lambda_m, seed) / kGradientNoiseMax;
 }
 
-// Fine detail of the ground's brightness, band-limited to the grid that samples it: octaves from
-// 160 m down to 10 m, of equal amplitude so that near ground shows the finest, each faded in as
-// the grid's step falls from a half to a quarter of its wavelength (a wavelength sampled fewer
-// than twice aliases into noise that changes with the level of detail). The chunked terrain's step follows the distance, so the detail's size on screen does
-// too, and the haze over it shows how far away it is. In [-1, 1].
-double GroundDetail(double x, double y, double step_m) {
-  double sum = 0.0;
-  for (double lambda = 160.0; lambda >= 10.0; lambda *= 0.5) {
-    double fade = SmoothStep(2.0, 4.0, lambda / step_m);
-    if (fade == 0.0) break;
-    sum += 0.5 * fade * Noise(x, y, lambda, 211 + uint32_t(lambda));
-  }
-  return std::clamp(sum, -1.0, 1.0);
-}
-
-// Meadows of green and dry grass with bare soil on the slopes below the rocks; rock above ~1 km and
-// on slopes steeper than ~37 degrees (cos slope < 0.8), in light and dark outcrops; snow above
-// ~2.5 km where the slope holds it (cos slope > 0.7). Noise moves every boundary (the rock line by
-// +-300 m, the snow line by +-250 m, the slope limits by +-0.05) so they wander like real ones,
-// and the ground's detail (GroundDetail) changes the brightness by up to +-45% within each.
-glm::dvec3 TerrainAlbedo(double x, double y, double height_m, double cos_slope, double step_m) {
-  double wander = Noise(x, y, 900.0, 31), patches = Noise(x, y, 700.0, 37) + 0.5 * Noise(x, y, 250.0, 41);
+// Meadows of lush, green and dry grass with bare soil on the slopes below the rocks; rock above
+// ~1 km and on slopes steeper than ~37 degrees (cos slope < 0.8), in light and dark outcrops; snow
+// above ~2.5 km where the slope holds it (cos slope > 0.7). Noise moves every boundary (the rock
+// line by +-300 m, the snow line by +-250 m, the slope limits by +-0.05) so they wander like real
+// ones. The patches are 1 km and larger: every grid the renderer draws near enough to show them
+// samples them finely, so its level of detail and the fixed mesh agree on them (a finer detail,
+// sampled per vertex, changes with the grid and so with the level of detail).
+glm::dvec3 TerrainAlbedo(double x, double y, double height_m, double cos_slope) {
+  double wander = Noise(x, y, 2000.0, 31), patches = Noise(x, y, 3000.0, 37) + 0.5 * Noise(x, y, 1000.0, 41);
   double slope = cos_slope + 0.05 * wander;
   glm::dvec3 grass = patches < 0.0 ? glm::mix(kGrass, kLushGrass, SmoothStep(-0.1, -0.6, patches))
                                    : glm::mix(kGrass, kDryGrass, SmoothStep(0.2, 0.7, patches));
@@ -100,21 +87,18 @@ glm::dvec3 TerrainAlbedo(double x, double y, double height_m, double cos_slope, 
   glm::dvec3 rock = glm::mix(kDarkRock, kGranite, SmoothStep(-0.2, 0.8, patches));
   double rocky = std::max(SmoothStep(600.0, 1600.0, height_m + 300.0 * wander), SmoothStep(0.85, 0.7, slope));
   double snow = SmoothStep(2400.0, 2700.0, height_m - 250.0 * wander) * SmoothStep(0.55, 0.75, slope);
-  glm::dvec3 albedo = glm::mix(glm::mix(ground, rock, rocky), kSnow, snow);
-  return glm::clamp(albedo * (1.0 + 0.45 * GroundDetail(x, y, step_m)), 0.0, 1.0);
+  return glm::mix(glm::mix(ground, rock, rocky), kSnow, snow);
 }
 
-// The surface at p whose normal is across_x x across_y, with its albedo; the grid's step is half the
-// horizontal length of across_x (its points are a step to either side of p).
+// The surface at p whose normal is across_x x across_y, with its albedo.
 TerrainSurface SurfaceFromDifferences(const glm::dvec3& p, const glm::dvec3& across_x,
                                       const glm::dvec3& across_y, double planet_radius_m) {
   const glm::dvec3 center(0.0, 0.0, -planet_radius_m);
   glm::dvec3 normal = glm::normalize(glm::cross(across_x, across_y));
   glm::dvec3 up = glm::normalize(p - center);
   double height = glm::length(p - center) - planet_radius_m;
-  double step = 0.5 * glm::length(across_x - up * glm::dot(across_x, up));
   glm::dvec3 sea_level = center + planet_radius_m * up;
-  return {p, normal, TerrainAlbedo(sea_level.x, sea_level.y, height, glm::dot(normal, up), step)};
+  return {p, normal, TerrainAlbedo(sea_level.x, sea_level.y, height, glm::dot(normal, up))};
 }
 
 }  // namespace
