@@ -63,7 +63,7 @@ double EdgeRmse(const std::vector<uint8_t>& image, const std::vector<uint8_t>& r
 class Antialiasing : public GpuTest {};
 
 // One sample per pixel is far from the 16-sample reference on the edges; the command's default 2x2
-// is less than half as far (0.031 and 0.012 measured at this size; `aerial render` at 640x360
+// is less than half as far (0.029 and 0.013 measured at this size; `aerial render` at 640x360
 // gives the figures of docs/speed.md, "Figures"). The bounds sit between the two.
 TEST_F(Antialiasing, SupersamplingRemovesTheStairSteps) {
   ImageRgbF reference = RenderSupersampled(4);

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "aerial/device.h"
 #include "aerial/export/vdb_file.h"
 #include "aerial/version.h"
 #include "command_run.h"
@@ -174,6 +175,24 @@ TEST(Cli, ExportVdbWritesTheFroxelVolume) {
   std::filesystem::remove_all(dir);
 }
 
+// render --timings prints the compute passes' GPU times and the frame's wall-clock time. A CPU
+// rasterizer (lavapipe) draws a raster pass's draws when the pass ends, after the timestamps
+// around them, so there the raster passes are left out and the output says why; a GPU lists them.
+TEST(Cli, RenderTimingsLeaveOutWhatTheDeviceCannotTime) {
+  std::filesystem::path out = std::filesystem::temp_directory_path() / ("aerial-cli-timings-" + std::to_string(::getpid()) + ".png");
+  CommandRun run = RunAerial("render --small-tables --quiet --width 64 --height 36 --timings --out " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  std::filesystem::remove(out);
+  EXPECT_NE(run.out.find("wrote " + out.string()), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("froxel build"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("ms wall clock"), std::string::npos) << run.out;
+  const bool cpu = Device().name().find("llvmpipe") != std::string::npos;
+  const bool explained = run.out.find("rasterizes a pass's draws at its end") != std::string::npos;
+  EXPECT_EQ(explained, cpu) << run.out;
+  for (const char* raster : {"opaque raster", "transparent raster"})
+    EXPECT_EQ(run.out.find(raster) == std::string::npos, cpu) << raster << "\n" << run.out;
+}
+
 // Without a Vulkan driver the message says so and how to install one, instead of the loader's
 // "vkCreateInstance: ErrorIncompatibleDriver".
 TEST(Cli, NoVulkanDriverSaysHowToInstallOne) {
@@ -307,6 +326,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"view --frames 2 --screenshot /tmp/aerial-cli-test.jpg", "--screenshot"},
         BadInput{"view --screenshot /tmp/aerial-cli-test.png", "--frames"},
         BadInput{"view --frames 0", "--frames"},
+        BadInput{"view --frames 2 --screenshot /tmp/aerial-cli-test.exr --screenshot-panel", "--screenshot-panel"},
+        BadInput{"view --frames 2 --screenshot-panel", "--screenshot-panel"},
         BadInput{"view --camera-path /nonexistent-aerial-dir/path.toml", "--camera-path"},
         BadInput{"view --camera-path " AERIAL_SOURCE_DIR "/tests/data/bad_camera_path.toml", "keyframe[1].pitch_deg"},
         BadInput{"bench --quick --out /proc/aerial-bench-out", "/proc/aerial-bench-out"},

@@ -71,9 +71,10 @@ struct Scene {
   std::string name;
 };
 
-// The built-in scene (default_scene.cpp): the procedural terrain with mountains 5-80 km away, opaque
-// landmarks named "landmark_<d>km" at d = 1, 2, 5, 10, 20 and 40 km, and transparent glass panes,
-// a balloon and a particle cloud; camera and sun from the "noon" preset (below).
+// The built-in scene (default_scene.cpp): the procedural terrain with mountains 5-80 km away, stone
+// towers named "landmark_<d>km" at d = 1, 2, 5, 10, 20 and 40 km, glass panes in opaque frames
+// ("glass_<d>m" and "glass_<d>m_frame"), a balloon and a particle cloud; camera and sun from the
+// "noon" preset (below).
 Scene BuildDefaultScene(double planet_radius_m);
 
 // Named views of the built-in scene: where the camera stands and looks, and where the sun is.

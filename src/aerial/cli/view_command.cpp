@@ -24,6 +24,7 @@ struct ViewCommandOptions {
   FrameOptions frame;
   int frames = 0;
   std::filesystem::path screenshot;
+  bool screenshot_panel = false;
   std::filesystem::path stats;
   std::filesystem::path camera_path;
   double target_ms = 0.0;
@@ -65,6 +66,9 @@ void RunView(const ViewCommandOptions& options) {
     }
     CheckImageOutputPath(options.screenshot, "--screenshot");
   }
+  if (options.screenshot_panel &&
+      (options.screenshot.empty() || ImageFormatFromPath(options.screenshot, "--screenshot") != ImageFormat::kPng))
+    throw Error("--screenshot-panel", options.screenshot.string(), "with --screenshot FILE.png (the window's 8-bit picture)");
   if (!options.stats.empty()) CheckOutputFile(options.stats, "--stats");
   viewer::ViewerOptions viewer;
   viewer.atmosphere = options.tables.LoadAtmosphere();
@@ -84,6 +88,7 @@ void RunView(const ViewCommandOptions& options) {
       ShaderAtmosphere(viewer.atmosphere, viewer.tables.at(viewer.variant)).solar_irradiance);
   viewer.frames = options.frames;
   viewer.screenshot = options.screenshot;
+  viewer.screenshot_panel = options.screenshot_panel;
   viewer.stats = options.stats;
   viewer.target_ms = options.target_ms;
   viewer::RunViewer(std::move(viewer));
@@ -100,6 +105,8 @@ void AddViewCommand(CLI::App& app) {
       ->check(CLI::Range(1, 100000000));
   AddPathOption(*command, "--screenshot", options->screenshot,
                       "With --frames: save the last frame, .exr (linear) or .png (sRGB)");
+  command->add_flag("--screenshot-panel", options->screenshot_panel,
+                    "The --screenshot PNG is the window as shown, the panel included");
   AddPathOption(*command, "--stats", options->stats,
                       "Write frame statistics (median and p95 frame ms, FPS, GPU ms per pass) as JSON");
   command->add_option("--target-ms", options->target_ms,

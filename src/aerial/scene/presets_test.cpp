@@ -30,7 +30,7 @@ TEST(Preset, EveryNamedPresetBuildsAValidScene) {
     Scene scene = BuildPreset(name, kR);
     EXPECT_EQ(scene.name, name);
     EXPECT_TRUE(scene.terrain) << name;
-    EXPECT_EQ(scene.meshes.size(), 10u) << name;  // 6 landmarks, 4 transparent
+    EXPECT_EQ(scene.meshes.size(), 12u) << name;  // 6 landmarks, 2 pane frames, 4 transparent
     const Camera& c = scene.camera;
     // The same limits a scene file must meet; these throw on violation.
     EXPECT_NO_THROW(CheckCameraPosition(c.position, kR, name + " camera", ""));

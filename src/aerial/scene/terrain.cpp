@@ -58,16 +58,36 @@ double MountainMask(double x, double y) {
   return mask;
 }
 
-// Linear albedos (0.1-0.2, like grass, soil and rock in the ASTER/ECOSTRESS spectral library at
-// visible wavelengths) and fresh-ish snow at 0.75.
-constexpr glm::dvec3 kGrass{0.10, 0.14, 0.07}, kRock{0.18, 0.17, 0.15}, kSnow{0.75, 0.76, 0.80};
+// Linear sRGB albedos at visible wavelengths. Grass: the ColorChecker's "foliage" patch (X-Rite's
+// published sRGB 87, 108, 67); lush and dry grass, bare soil and rock: the ECOSTRESS spectral
+// library (Meerdink et al. 2019; green and dry grass, brown loam, granite and basalt at
+// 450-650 nm); snow: aged snow, ~0.8 in the visible (Warren 1982, "Optical properties of snow").
+constexpr glm::dvec3 kLushGrass{0.05, 0.09, 0.035}, kGrass{0.10, 0.14, 0.07}, kDryGrass{0.22, 0.20, 0.11},
+    kSoil{0.17, 0.13, 0.09}, kGranite{0.27, 0.25, 0.23}, kDarkRock{0.09, 0.09, 0.08}, kSnow{0.75, 0.76, 0.80};
 
-// Grass low, rock above ~1 km and on steep slopes (cos slope < 0.8, steeper than 37 degrees),
-// snow above ~2.5 km where the slope holds it (cos slope > 0.7).
-glm::dvec3 TerrainAlbedo(double height_m, double cos_slope) {
-  double rock = std::max(SmoothStep(600.0, 1600.0, height_m), SmoothStep(0.85, 0.7, cos_slope));
-  double snow = SmoothStep(2400.0, 2700.0, height_m) * SmoothStep(0.55, 0.75, cos_slope);
-  return glm::mix(glm::mix(kGrass, kRock, rock), kSnow, snow);
+// Gradient noise in [-1, 1] with wavelength lambda_m.
+double Noise(double x, double y, double lambda_m, uint32_t seed) {
+  constexpr double kGradientNoiseMax = 0.7071;  // sqrt(2)/2, the 2D extreme
+  return GradientNoise(x / lambda_m, y / lambda_m, seed) / kGradientNoiseMax;
+}
+
+// Meadows of lush, green and dry grass with bare soil on the slopes below the rocks; rock above
+// ~1 km and on slopes steeper than ~37 degrees (cos slope < 0.8), in light and dark outcrops; snow
+// above ~2.5 km where the slope holds it (cos slope > 0.7). Noise moves every boundary (the rock
+// line by +-300 m, the snow line by +-250 m, the slope limits by +-0.05) so they wander like real
+// ones. The patches are 1 km and larger: every grid the renderer draws near enough to show them
+// samples them finely, so its level of detail and the fixed mesh agree on them (a finer detail,
+// sampled per vertex, changes with the grid and so with the level of detail).
+glm::dvec3 TerrainAlbedo(double x, double y, double height_m, double cos_slope) {
+  double wander = Noise(x, y, 2000.0, 31), patches = Noise(x, y, 3000.0, 37) + 0.5 * Noise(x, y, 1000.0, 41);
+  double slope = cos_slope + 0.05 * wander;
+  glm::dvec3 grass = patches < 0.0 ? glm::mix(kGrass, kLushGrass, SmoothStep(-0.1, -0.6, patches))
+                                   : glm::mix(kGrass, kDryGrass, SmoothStep(0.2, 0.7, patches));
+  glm::dvec3 ground = glm::mix(grass, kSoil, SmoothStep(0.93, 0.85, slope));
+  glm::dvec3 rock = glm::mix(kDarkRock, kGranite, SmoothStep(-0.2, 0.8, patches));
+  double rocky = std::max(SmoothStep(600.0, 1600.0, height_m + 300.0 * wander), SmoothStep(0.85, 0.7, slope));
+  double snow = SmoothStep(2400.0, 2700.0, height_m - 250.0 * wander) * SmoothStep(0.55, 0.75, slope);
+  return glm::mix(glm::mix(ground, rock, rocky), kSnow, snow);
 }
 
 // The surface at p whose normal is across_x x across_y, with its albedo.
@@ -77,7 +97,8 @@ TerrainSurface SurfaceFromDifferences(const glm::dvec3& p, const glm::dvec3& acr
   glm::dvec3 normal = glm::normalize(glm::cross(across_x, across_y));
   glm::dvec3 up = glm::normalize(p - center);
   double height = glm::length(p - center) - planet_radius_m;
-  return {p, normal, TerrainAlbedo(height, glm::dot(normal, up))};
+  glm::dvec3 sea_level = center + planet_radius_m * up;
+  return {p, normal, TerrainAlbedo(sea_level.x, sea_level.y, height, glm::dot(normal, up))};
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "aerial/viewer/dynamic_resolution.h"
+#include "aerial/viewer/key_commands.h"
 
 namespace aerial::viewer {
 namespace {
@@ -168,10 +169,22 @@ PanelEvents DrawPanel(ViewSettings& s, const PanelInfo& info) {
   ImGui::SameLine();
   events.export_vdb = ImGui::Button("Froxels to VDB (V)");
   if (!info.message.empty()) ImGui::TextWrapped("%s", info.message.c_str());
-  ImGui::TextDisabled("WASD QE: fly, right-drag: look, Shift/Ctrl: faster/slower");
+  ImGui::TextDisabled("WASD QE: fly, right-drag: look; F1: all keys, Tab: hide this panel");
   ImGui::PopItemWidth();
   ImGui::End();
   return events;
+}
+
+void DrawKeyHelp() {
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x / 2, viewport->WorkPos.y + viewport->WorkSize.y / 2),
+                          ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowBgAlpha(0.8f);
+  ImGui::Begin("Keys", nullptr,
+               ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoSavedSettings);
+  for (const char* line : KeyHelpLines()) ImGui::TextUnformatted(line);
+  ImGui::End();
 }
 
 }  // namespace aerial::viewer

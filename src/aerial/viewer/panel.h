@@ -29,4 +29,7 @@ struct PanelEvents {
 
 PanelEvents DrawPanel(ViewSettings& settings, const PanelInfo& info);
 
+// The keys' help (key_commands.h) in a window at the centre of the screen.
+void DrawKeyHelp();
+
 }  // namespace aerial::viewer

@@ -9,6 +9,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "aerial/core/atomic_file.h"
 #include "aerial/error.h"
 #include "aerial/image.h"
 #include "aerial/image/exposure.h"
@@ -19,6 +20,7 @@
 #include "aerial/viewer/froxel_export.h"
 #include "aerial/viewer/imgui_layer.h"
 #include "aerial/viewer/input.h"
+#include "aerial/viewer/key_commands.h"
 #include "aerial/viewer/panel.h"
 #include "aerial/viewer/render_stack.h"
 #include "aerial/viewer/screenshot.h"
@@ -157,9 +159,15 @@ class Viewer::Impl {
   std::optional<DrawnView> settled_view_;
   std::vector<bool> slot_used_ = std::vector<bool>(kFramesInFlight, false);
   std::string message_;
+  const Camera start_camera_;  // where R puts the camera back
+  bool panel_shown_ = true, help_shown_ = false;
   int frames_ = 0;
   Clock::time_point last_frame_end_;
   std::optional<DynamicResolution> resolution_;  // with --target-ms
+  // The last frame's window picture (--screenshot-panel) and its size.
+  std::optional<vk::Buffer> window_picture_;
+  ::vk::Extent2D window_picture_extent_;
+  void WriteWindowPicture() const;
 };
 
 Viewer::Impl::Impl(ViewerOptions options)
@@ -176,7 +184,8 @@ Viewer::Impl::Impl(ViewerOptions options)
       imgui_(context_, window_.handle(), swapchain_),
       input_(window_.handle()),
       display_(context_, swapchain_.render_pass(), swapchain_.format()),
-      meter_(context_, kFramesInFlight) {
+      meter_(context_, kFramesInFlight),
+      start_camera_(options_.scene.camera) {
   for (uint32_t slot = 0; slot < kFramesInFlight; ++slot)
     timers_.push_back(std::make_unique<vk::GpuTimer>(context_));
   settings_.variant = options_.variant;
@@ -261,13 +270,14 @@ void Viewer::Impl::FollowSunClock() {
   SteerSun(options_.scene.sun, 0.0, 0.0, MaxSunZenithDeg());
 }
 
-// Screenshots and exports of the frame just rendered.
+// The keys' commands (key_commands.h), and screenshots and exports of the frame just rendered.
 void Viewer::Impl::Act(const PanelEvents& events, const std::vector<int>& keys, const SceneRenderer& renderer) {
-  bool screenshot = events.screenshot, export_vdb = events.export_vdb;
-  for (int key : keys) {
-    screenshot |= key == GLFW_KEY_F12 || key == GLFW_KEY_P;
-    export_vdb |= key == GLFW_KEY_V;
-  }
+  KeyCommands commands = ReadKeyCommands(keys);
+  if (commands.quit) glfwSetWindowShouldClose(window_.handle(), GLFW_TRUE);
+  if (commands.reset_camera) options_.scene.camera = start_camera_;
+  panel_shown_ ^= commands.toggle_panel;
+  help_shown_ ^= commands.toggle_help;
+  bool screenshot = events.screenshot || commands.screenshot, export_vdb = events.export_vdb || commands.export_vdb;
   if (screenshot) {
     try {
       Say(SaveScreenshots(renderer, {.exposure = DisplayExposure(), .white_balance = options_.white_balance}));
@@ -390,7 +400,8 @@ bool Viewer::Impl::Step() {
   RendererOptions render = CurrentRenderOptions();
   SceneRenderer* primary = stack_.Get(settings_.variant, render);
   if (!primary) primary = stack_.Get(Other(settings_.variant), render);
-  PanelEvents events = DrawPanel(settings_, MakePanelInfo(*primary));
+  PanelEvents events = panel_shown_ ? DrawPanel(settings_, MakePanelInfo(*primary)) : PanelEvents{};
+  if (help_shown_) DrawKeyHelp();
   imgui_.EndFrame();
   if (events.sun_clock_moved) FollowSunClock();
   if (events.tables_changed) applied_knobs_ = settings_.knobs;
@@ -430,6 +441,13 @@ bool Viewer::Impl::Step() {
   // A frame presented again has been metered already.
   if (settings_.auto_exposure && (drawn || !exposure_metered_)) meter_.Record(cmd, slot, primary->output(), options_.white_balance);
   RecordDisplay(cmd, slot, *primary, other);
+  if (last && options_.screenshot_panel) {
+    window_picture_extent_ = swapchain_.extent();
+    window_picture_.emplace(context_, vk::BufferCreateInfo{.size = 4ull * window_picture_extent_.width * window_picture_extent_.height,
+                                                           .usage = ::vk::BufferUsageFlagBits::eTransferDst,
+                                                           .host_visible = true});
+    swapchain_.RecordCopyToBuffer(cmd, window_picture_->handle());
+  }
   bool presented = swapchain_.SubmitAndPresent(ring_);
   // Reads of the frame (screenshots, exports) are submitted after it, so they see it finished.
   std::vector<int> keys = window_.TakeKeyPresses();
@@ -453,13 +471,31 @@ void Viewer::Impl::Run() {
   }
   ring_.WaitAll();
   // Exposed as `aerial render` exposes the same frame, so that the two can be compared.
-  if (!options_.screenshot.empty() && shown_) {
+  if (options_.screenshot_panel && window_picture_) {
+    WriteWindowPicture();
+  } else if (!options_.screenshot.empty() && shown_) {
     ImageRgbF frame = shown_->ReadOutput();
     WriteImage(options_.screenshot, frame,
                {.exposure = options_.exposure.MultiplierFor(frame, options_.white_balance),
                 .white_balance = options_.white_balance});
   }
   if (!options_.stats.empty()) stats_.Write(options_.stats);
+}
+
+// The window's 8-bit sRGB texels, as the swapchain's format orders them, to an opaque RGBA PNG.
+void Viewer::Impl::WriteWindowPicture() const {
+  const bool bgra = swapchain_.format() == ::vk::Format::eB8G8R8A8Srgb || swapchain_.format() == ::vk::Format::eB8G8R8A8Unorm;
+  size_t texels = size_t(window_picture_extent_.width) * window_picture_extent_.height;
+  std::vector<uint8_t> rgba(4 * texels);
+  const auto* bytes = reinterpret_cast<const uint8_t*>(window_picture_->mapped());
+  for (size_t i = 0; i < texels; ++i) {
+    rgba[4 * i + 0] = bytes[4 * i + (bgra ? 2 : 0)];
+    rgba[4 * i + 1] = bytes[4 * i + 1];
+    rgba[4 * i + 2] = bytes[4 * i + (bgra ? 0 : 2)];
+    rgba[4 * i + 3] = 255;
+  }
+  WriteFileAtomically(options_.screenshot,
+                      EncodePng(rgba, int(window_picture_extent_.width), int(window_picture_extent_.height)));
 }
 
 Viewer::Viewer(ViewerOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}

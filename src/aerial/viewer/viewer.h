@@ -41,6 +41,7 @@ struct ViewerOptions {
   std::array<double, 3> white_balance = {1.0, 1.0, 1.0};
   int frames = 0;                   // > 0: close after that many presented frames
   std::filesystem::path screenshot;  // written after the last frame, .png or .exr (checked by the caller)
+  bool screenshot_panel = false;     // the screenshot (.png) is the window's picture, panel and all
   std::filesystem::path stats;       // frame statistics (frame_stats.h), written at exit
   std::optional<CameraPath> camera_path;
   double target_ms = 0.0;            // > 0: dynamic resolution toward this frame time (dynamic_resolution.h)

@@ -60,9 +60,10 @@ void Swapchain::Recreate(::vk::Extent2D wanted) {
 
 void Swapchain::Create(::vk::Extent2D wanted) {
   auto caps = context_.physical_device().getSurfaceCapabilitiesKHR(surface_);
-  const auto usage = ::vk::ImageUsageFlagBits::eColorAttachment;
+  // Copies out of the images take the window's picture, panel and all (RecordCopyToBuffer).
+  const auto usage = ::vk::ImageUsageFlagBits::eColorAttachment | ::vk::ImageUsageFlagBits::eTransferSrc;
   if ((caps.supportedUsageFlags & usage) != usage)
-    throw Error("swapchain image usage", ::vk::to_string(caps.supportedUsageFlags), "color attachment");
+    throw Error("swapchain image usage", ::vk::to_string(caps.supportedUsageFlags), "color attachment and transfer source");
   // 0xFFFFFFFF: the surface takes the swapchain's size (Vulkan spec, VkSurfaceCapabilitiesKHR).
   extent_ = caps.currentExtent.width != 0xFFFFFFFFu
                 ? caps.currentExtent
@@ -125,6 +126,31 @@ void Swapchain::RecordDraw(const CommandBuffer& cmd, const Recorder& draw) const
   BeginRenderPass(cmd, *render_pass_, *framebuffers_[image_], extent_);
   draw(cmd);
   cmd.endRenderPass();
+}
+
+void Swapchain::RecordCopyToBuffer(const CommandBuffer& cmd, ::vk::Buffer buffer) const {
+  const ::vk::ImageSubresourceRange color{.aspectMask = ::vk::ImageAspectFlagBits::eColor, .levelCount = 1, .layerCount = 1};
+  auto transition = [&](::vk::ImageLayout from, ::vk::ImageLayout to, ::vk::AccessFlags src, ::vk::AccessFlags dst,
+                        ::vk::PipelineStageFlags src_stage, ::vk::PipelineStageFlags dst_stage) {
+    cmd.pipelineBarrier(src_stage, dst_stage, {}, {}, {},
+                        ::vk::ImageMemoryBarrier{.srcAccessMask = src, .dstAccessMask = dst, .oldLayout = from,
+                                                 .newLayout = to, .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                                                 .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                                                 .image = images_[image_], .subresourceRange = color});
+  };
+  transition(::vk::ImageLayout::ePresentSrcKHR, ::vk::ImageLayout::eTransferSrcOptimal,
+             ::vk::AccessFlagBits::eColorAttachmentWrite, ::vk::AccessFlagBits::eTransferRead,
+             ::vk::PipelineStageFlagBits::eColorAttachmentOutput, ::vk::PipelineStageFlagBits::eTransfer);
+  cmd.copyImageToBuffer(images_[image_], ::vk::ImageLayout::eTransferSrcOptimal, buffer,
+                        ::vk::BufferImageCopy{.imageSubresource = {.aspectMask = ::vk::ImageAspectFlagBits::eColor,
+                                                                   .layerCount = 1},
+                                              .imageExtent = {extent_.width, extent_.height, 1}});
+  transition(::vk::ImageLayout::eTransferSrcOptimal, ::vk::ImageLayout::ePresentSrcKHR, ::vk::AccessFlagBits::eTransferRead,
+             {}, ::vk::PipelineStageFlagBits::eTransfer, ::vk::PipelineStageFlagBits::eBottomOfPipe);
+  cmd.pipelineBarrier(::vk::PipelineStageFlagBits::eTransfer, ::vk::PipelineStageFlagBits::eHost, {},
+                      ::vk::MemoryBarrier{.srcAccessMask = ::vk::AccessFlagBits::eTransferWrite,
+                                          .dstAccessMask = ::vk::AccessFlagBits::eHostRead},
+                      {}, {});
 }
 
 bool Swapchain::SubmitAndPresent(CommandRing& ring) {

@@ -40,6 +40,9 @@ class Swapchain {
   bool Acquire(const CommandRing& ring);
   // Records the render pass over the acquired image: `draw` must write every pixel.
   void RecordDraw(const CommandBuffer& cmd, const Recorder& draw) const;
+  // Records a copy of the drawn image (after RecordDraw) into buffer, which holds
+  // extent().width * height 4-byte texels of format(), row by row.
+  void RecordCopyToBuffer(const CommandBuffer& cmd, ::vk::Buffer buffer) const;
   // Submits the ring's command buffer (waiting for the acquire) and presents the image. False
   // when the swapchain is out of date or suboptimal: Recreate.
   bool SubmitAndPresent(CommandRing& ring);
