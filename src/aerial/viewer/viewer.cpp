@@ -186,6 +186,8 @@ Viewer::Impl::Impl(ViewerOptions options)
       display_(context_, swapchain_.render_pass(), swapchain_.format()),
       meter_(context_, kFramesInFlight),
       start_camera_(options_.scene.camera) {
+  if (options_.screenshot_panel && !swapchain_.can_copy_out())
+    throw Error("--screenshot-panel", "on", "a window whose images can be copied out (this surface does not allow it)");
   for (uint32_t slot = 0; slot < kFramesInFlight; ++slot)
     timers_.push_back(std::make_unique<vk::GpuTimer>(context_));
   settings_.variant = options_.variant;

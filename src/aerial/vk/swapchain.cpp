@@ -60,10 +60,14 @@ void Swapchain::Recreate(::vk::Extent2D wanted) {
 
 void Swapchain::Create(::vk::Extent2D wanted) {
   auto caps = context_.physical_device().getSurfaceCapabilitiesKHR(surface_);
-  // Copies out of the images take the window's picture, panel and all (RecordCopyToBuffer).
-  const auto usage = ::vk::ImageUsageFlagBits::eColorAttachment | ::vk::ImageUsageFlagBits::eTransferSrc;
-  if ((caps.supportedUsageFlags & usage) != usage)
-    throw Error("swapchain image usage", ::vk::to_string(caps.supportedUsageFlags), "color attachment and transfer source");
+  if (!(caps.supportedUsageFlags & ::vk::ImageUsageFlagBits::eColorAttachment))
+    throw Error("swapchain image usage", ::vk::to_string(caps.supportedUsageFlags), "color attachment");
+  // Copies out of the images take the window's picture, panel and all (RecordCopyToBuffer). Only
+  // color attachment is guaranteed by the specification, so the copy is asked for where offered.
+  can_copy_out_ = bool(caps.supportedUsageFlags & ::vk::ImageUsageFlagBits::eTransferSrc);
+  const ::vk::ImageUsageFlags usage =
+      ::vk::ImageUsageFlagBits::eColorAttachment |
+      (can_copy_out_ ? ::vk::ImageUsageFlagBits::eTransferSrc : ::vk::ImageUsageFlags{});
   // 0xFFFFFFFF: the surface takes the swapchain's size (Vulkan spec, VkSurfaceCapabilitiesKHR).
   extent_ = caps.currentExtent.width != 0xFFFFFFFFu
                 ? caps.currentExtent

@@ -41,12 +41,14 @@ class Swapchain {
   // Records the render pass over the acquired image: `draw` must write every pixel.
   void RecordDraw(const CommandBuffer& cmd, const Recorder& draw) const;
   // Records a copy of the drawn image (after RecordDraw) into buffer, which holds
-  // extent().width * height 4-byte texels of format(), row by row.
+  // extent().width * height 4-byte texels of format(), row by row. Only where can_copy_out().
   void RecordCopyToBuffer(const CommandBuffer& cmd, ::vk::Buffer buffer) const;
   // Submits the ring's command buffer (waiting for the acquire) and presents the image. False
   // when the swapchain is out of date or suboptimal: Recreate.
   bool SubmitAndPresent(CommandRing& ring);
 
+  // Whether the surface lets its images be copied out (RecordCopyToBuffer).
+  bool can_copy_out() const { return can_copy_out_; }
   ::vk::Extent2D extent() const { return extent_; }
   ::vk::Format format() const { return format_; }
   uint32_t min_image_count() const { return min_image_count_; }
@@ -74,6 +76,7 @@ class Swapchain {
   std::vector<::vk::raii::Semaphore> acquired_;
   uint32_t image_ = 0;
   bool suboptimal_ = false;
+  bool can_copy_out_ = false;
 };
 
 }  // namespace aerial::vk
