@@ -47,10 +47,13 @@ struct Mesh {
 // A pinhole camera. yaw_deg is the compass azimuth of the view direction, pitch_deg its elevation
 // above the horizontal plane of the world frame (+90 looks straight up). There is no roll: the
 // image's right edge stays horizontal. near_m is the near clipping plane; there is no far plane
-// (see ProjectionMatrix in camera.h).
+// (see ProjectionMatrix in camera.h). jitter_px moves the image plane by a fraction of a pixel of
+// the rendered frame, as engines jitter frames they average for antialiasing: the pixel whose
+// centre is c shows what the unjittered frame shows at c + jitter_px (x right, y down).
 struct Camera {
   glm::dvec3 position{0, 0, 2};
   double yaw_deg = 0, pitch_deg = 0, vertical_fov_deg = 60, near_m = 0.5;
+  glm::dvec2 jitter_px{0, 0};
   bool operator==(const Camera&) const = default;
 };
 

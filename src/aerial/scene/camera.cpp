@@ -60,7 +60,12 @@ FrameCamera MakeFrameCamera(const Scene& scene, uint32_t width, uint32_t height)
   // Shaders see camera-relative positions, so the view matrix drops the camera's translation.
   Camera at_origin = scene.camera;
   at_origin.position = glm::dvec3(0.0);
-  glm::dmat4 view_projection = ProjectionMatrix(scene.camera, double(width) / double(height)) * ViewMatrix(at_origin);
+  glm::dmat4 projection = ProjectionMatrix(scene.camera, double(width) / double(height));
+  // clip.w = -z_view, so these terms subtract themselves from x_ndc and y_ndc, which span 2 over
+  // the frame's width and height: the image moves by -jitter_px pixels.
+  projection[2][0] = 2.0 * scene.camera.jitter_px.x / double(width);
+  projection[2][1] = 2.0 * scene.camera.jitter_px.y / double(height);
+  glm::dmat4 view_projection = projection * ViewMatrix(at_origin);
   FrameCamera camera{.width = width, .height = height};
   std::copy_n(glm::value_ptr(view_projection), 16, camera.view_projection.begin());
   glm::dvec3 sun = scene.sun.Direction();

@@ -5,6 +5,11 @@
 #include <cmath>
 #include <numbers>
 
+#include <glm/gtc/type_ptr.hpp>
+
+#include "aerial/froxels.h"
+#include "aerial/scene.h"
+
 namespace aerial {
 namespace {
 
@@ -103,6 +108,32 @@ TEST(CameraView, MapsCameraToOriginAndForwardToMinusZ) {
   EXPECT_NEAR(glm::length(glm::dvec3(eye)), 0.0, 1e-9 * glm::length(camera.position));
   glm::dvec4 forward = view * glm::dvec4(Forward(camera), 0.0);
   EXPECT_NEAR(glm::distance(glm::dvec3(forward), glm::dvec3(0, 0, -1)), 0.0, kEps);
+}
+
+// The frame's pixel coordinates (x right, y down, pixel centres at half integers) of a point.
+glm::dvec2 FramePixel(const FrameCamera& frame, const glm::dvec3& relative) {
+  glm::dvec4 clip = glm::make_mat4(frame.view_projection.data()) * glm::dvec4(relative, 1.0);
+  return {(clip.x / clip.w + 1.0) * 0.5 * frame.width, (clip.y / clip.w + 1.0) * 0.5 * frame.height};
+}
+
+// A jittered frame shows at pixel c what the unjittered one shows at c + jitter: every point moves
+// by -jitter pixels, wherever it is in the frame.
+TEST(CameraJitter, MovesTheImageByMinusTheJitterInPixels) {
+  Scene scene;
+  scene.camera = Tilted(37.0, 4.0);
+  const glm::dvec2 jitter{0.25, -0.375};
+  Scene jittered = scene;
+  jittered.camera.jitter_px = jitter;
+  FrameCamera plain = MakeFrameCamera(scene, 160, 90), moved = MakeFrameCamera(jittered, 160, 90);
+  Camera& camera = scene.camera;
+  for (glm::dvec3 direction : {Forward(camera), Forward(camera) + 0.3 * Right(camera) - 0.2 * Up(camera),
+                               Forward(camera) - 0.5 * Right(camera) + 0.25 * Up(camera)}) {
+    for (double distance : {3.0, 900.0, 4.0e4}) {
+      glm::dvec2 shift = FramePixel(moved, distance * direction) - FramePixel(plain, distance * direction);
+      EXPECT_NEAR(shift.x, -jitter.x, 1e-9) << distance;  // doubles: rounding only (kEps)
+      EXPECT_NEAR(shift.y, -jitter.y, 1e-9) << distance;
+    }
+  }
 }
 
 TEST(CameraSun, DirectionFollowsZenithAndCompassAzimuth) {
