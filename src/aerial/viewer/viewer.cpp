@@ -13,9 +13,11 @@
 #include "aerial/error.h"
 #include "aerial/image.h"
 #include "aerial/image/exposure.h"
+#include "aerial/image/resample.h"
 #include "aerial/viewer/display_passes.h"
 #include "aerial/viewer/dynamic_resolution.h"
 #include "aerial/viewer/exposure_meter.h"
+#include "aerial/viewer/frame_accumulator.h"
 #include "aerial/viewer/frame_stats.h"
 #include "aerial/viewer/froxel_export.h"
 #include "aerial/viewer/imgui_layer.h"
@@ -125,6 +127,7 @@ class Viewer::Impl {
   void ForgetRecordedFrames();
   void RecordDisplay(const vk::CommandBuffer& cmd, uint32_t slot, const SceneRenderer& primary,
                      const SceneRenderer* other);
+  ImageRgbF ShownFrame() const;
   PanelInfo MakePanelInfo(const SceneRenderer& primary) const;
 
   ViewerOptions options_;
@@ -143,12 +146,14 @@ class Viewer::Impl {
   InputReader input_;
   DisplayPasses display_;
   ExposureMeter meter_;
+  FrameAccumulator accumulator_;  // the still view's antialiasing
   bool exposure_metered_ = false;  // auto exposure has had a first reading to start from
   std::vector<std::unique_ptr<vk::GpuTimer>> timers_;  // the display passes', per slot
   FrameStats stats_;
-  // What the renderer's image shows, when the frame that drew it left nothing for later: a frame of
-  // the same view then only presents it again (the display pass and the panel), as an idle view
-  // in an editor does. A still view on a CPU rasterizer then costs its present, not a frame.
+  // What the renderer's image shows, when the frame that drew it left nothing for later: the next
+  // frames of the same view are drawn jittered into the accumulator's mean (frame_accumulator.h),
+  // and once it is complete a frame only presents it again (the display pass and the panel), as an
+  // idle view in an editor does. A still view on a CPU rasterizer then costs its present, not a frame.
   struct DrawnView {
     const SceneRenderer* renderer;
     Camera camera;
@@ -185,6 +190,7 @@ Viewer::Impl::Impl(ViewerOptions options)
       input_(window_.handle()),
       display_(context_, swapchain_.render_pass(), swapchain_.format()),
       meter_(context_, kFramesInFlight),
+      accumulator_(context_),
       start_camera_(options_.scene.camera) {
   if (options_.screenshot_panel && !swapchain_.can_copy_out())
     throw Error("--screenshot-panel", "on", "a window whose images can be copied out (this surface does not allow it)");
@@ -282,12 +288,22 @@ void Viewer::Impl::Act(const PanelEvents& events, const std::vector<int>& keys, 
   bool screenshot = events.screenshot || commands.screenshot, export_vdb = events.export_vdb || commands.export_vdb;
   if (screenshot) {
     try {
-      Say(SaveScreenshots(renderer, {.exposure = DisplayExposure(), .white_balance = options_.white_balance}));
+      Say(SaveScreenshots(ShownFrame(), {.exposure = DisplayExposure(), .white_balance = options_.white_balance}));
     } catch (const Error& e) {
       Say(std::string("screenshot: ") + e.what());
     }
   }
   if (export_vdb) Say(ExportFroxelsToVdb(renderer, options_.scene));
+}
+
+// The picture the window shows, at the window's size: the still view's mean while it has one,
+// the renderer's last frame otherwise.
+ImageRgbF Viewer::Impl::ShownFrame() const {
+  if (accumulator_.frames() == 0) return shown_->ReadOutput();
+  ImageRgbF mean = accumulator_.Read();
+  const ::vk::Extent2D window = swapchain_.extent();
+  if (mean.width == int(window.width) && mean.height == int(window.height)) return mean;
+  return ResizeBilinear(mean, int(window.width), int(window.height));
 }
 
 // Before a renderer is destroyed: no frame in flight may still use it, and its pass times are not
@@ -339,7 +355,8 @@ void Viewer::Impl::RecordDisplay(const vk::CommandBuffer& cmd, uint32_t slot,
     timer.Begin(cmd, PassName(view));
     switch (view) {
       case DebugView::kFinal:
-        display_.RecordToneMap(cmd, extent, primary.output(), DisplayExposure(),
+        display_.RecordToneMap(cmd, extent, accumulator_.frames() > 0 ? accumulator_.mean() : primary.output(),
+                               DisplayExposure(),
                                {float(options_.white_balance[0]), float(options_.white_balance[1]),
                                 float(options_.white_balance[2])});
         break;
@@ -415,6 +432,11 @@ bool Viewer::Impl::Step() {
     other = stack_.Get(Other(settings_.variant), render);
   }
 
+  // The accumulator's mean takes the frame's size; the frames in flight may still show the old one.
+  if (!accumulator_.Fits(primary->output().extent)) {
+    ring_.WaitAll();
+    accumulator_.Resize(primary->output().extent);
+  }
   const vk::CommandBuffer& cmd = ring_.Begin();
   uint32_t slot = ring_.slot();
   CollectFinishedFrame(slot);
@@ -426,14 +448,27 @@ bool Viewer::Impl::Step() {
   }
   // The last frame of a scripted run is saved: it is completed like `aerial render`'s.
   bool last = options_.frames > 0 && frames_ + 1 == options_.frames;
+  // A still view is refined one jittered frame at a time; the last frame of a scripted run is the
+  // complete mean or, short of it, a complete frame without jitter.
   DrawnView view{primary, options_.scene.camera, options_.scene.sun, render.terrain_error_px};
-  bool drawn = last || settled_view_ != view;
+  const bool still = settled_view_ == view;
+  const bool refine = still && !last && !accumulator_.complete() && settings_.view == DebugView::kFinal;
+  const bool drawn = refine || !still || (last && !accumulator_.complete());
   if (drawn) {
+    if (refine) options_.scene.camera.jitter_px = accumulator_.next_jitter();
     primary->Record(*cmd, options_.scene, slot, last);
+    options_.scene.camera.jitter_px = {0.0, 0.0};
     recorded_[slot].push_back({primary, ""});
     shown_ = primary;
-    if (primary->frame_info().settled) settled_view_ = view;
-    else settled_view_.reset();
+    if (refine) {
+      // A jittered frame that left work for later is not yet the view's picture: start again.
+      if (primary->frame_info().settled) accumulator_.Record(cmd, primary->output());
+      else accumulator_.Reset();
+    } else {
+      accumulator_.Reset();
+      if (primary->frame_info().settled) settled_view_ = view;
+      else settled_view_.reset();
+    }
   }
   slot_used_[slot] = true;
   if (other) {
@@ -476,7 +511,7 @@ void Viewer::Impl::Run() {
   if (options_.screenshot_panel && window_picture_) {
     WriteWindowPicture();
   } else if (!options_.screenshot.empty() && shown_) {
-    ImageRgbF frame = shown_->ReadOutput();
+    ImageRgbF frame = ShownFrame();
     WriteImage(options_.screenshot, frame,
                {.exposure = options_.exposure.MultiplierFor(frame, options_.white_balance),
                 .white_balance = options_.white_balance});
