@@ -129,9 +129,10 @@ TEST_F(ViewerSession, ResizesSwitchesAndRecomputesWithoutValidationMessages) {
   EXPECT_LE(StepUntil(viewer, [&] { return HasPass(viewer, "(4d)"); }, 2000), 2000);
 }
 
-// A still view is drawn until its frame left nothing for later (FrameInfo::settled), then only
-// presented again: its frames time the display pass and no pass of the renderer. A change of the
-// view (here the terrain's error bound, applied without a new renderer) draws again.
+// A still view is drawn until its frame left nothing for later (FrameInfo::settled), refined by
+// four jittered frames (frame_accumulator.h), then only presented again: its frames time the
+// display pass and no pass of the renderer. A change of the view (here the terrain's error bound,
+// applied without a new renderer) draws again.
 TEST_F(ViewerSession, AStillViewIsPresentedWithoutRedrawing) {
   viewer::Viewer viewer(SmallViewerOptions());
   StepFrames(viewer, kFramesUntilTimed);
