@@ -58,6 +58,9 @@ std::array<double, 3> ToneMapColour(const std::array<double, 3>& exposed_radianc
   return c;
 }
 
+// Encoded values from here up round to 255 without the dither (display.glsl's kDitheredBelowLinear).
+constexpr double kDitheredBelow = 1.0 - 0.5 / 255.0;
+
 double DitherSteps(uint32_t x, uint32_t y) {
   // Two uniform numbers in [0, 1) from one hash each; their difference is triangular on (-1, 1),
   // whose noise does not depend on the signal (Lipshitz, Wannamaker & Vanderkooy 1992).
@@ -84,9 +87,10 @@ std::vector<uint8_t> ToneMapToSrgb8(const ImageRgbF& image, const ToneMapOptions
       for (int c = 0; c < 3; ++c) exposed[c] = double{in[c]} * options.white_balance[c] * options.exposure;
       std::array<double, 3> display = ToneMapColour(exposed);
       double dither = options.dither ? DitherSteps(uint32_t(x), uint32_t(y)) / 255.0 : 0.0;
-      // Black and white stay undithered: no specks in a clipped sun or a black corner.
+      // Black and white stay undithered: no specks in a clipped sun or a black corner. White is
+      // whatever rounds to 255 undithered, since the curve only nears 1.
       for (int c = 0; c < 3; ++c)
-        out[i + c] = Quantize(display[c] > 0.0 && display[c] < 1.0 ? display[c] + dither : display[c]);
+        out[i + c] = Quantize(display[c] > 0.0 && display[c] < kDitheredBelow ? display[c] + dither : display[c]);
       const double alpha = in[3];
       out[i + 3] = Quantize(std::isnan(alpha) ? 0.0 : alpha);
     }
