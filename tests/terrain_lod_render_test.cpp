@@ -149,6 +149,26 @@ TEST_F(LeanFrame, RenderScaleUpscalesToTheOutputSize) {
   EXPECT_LT(rmse, 0.05);
 }
 
+// A renderer whose scale changes (SetRenderScale: the viewer's dynamic resolution) draws what one
+// built at that scale draws, to float rounding: only its targets were made again, and nothing it
+// kept for the old size (the cached sun visibility, the terrain's selection) is used at the new.
+TEST_F(LeanFrame, ChangingTheRenderScaleDrawsTheFrameOfThatScale) {
+  Scene scene = BuildPreset("noon", FullTables().atmosphere().bottom_radius_m);
+  const int width = kWidth / 2, height = kHeight / 2;
+  Renderer renderer(FullTables(), scene, {.width = width, .height = height});
+  renderer.Render(scene, kStream);
+  for (float scale : {0.5f, 1.0f}) {
+    renderer.SetRenderScale(scale);
+    renderer.Render(scene, kStream);
+    renderer.Render(scene, kStream);  // a still frame, which may reuse what the last one kept
+    Renderer built(FullTables(), scene, {.width = width, .height = height, .render_scale = scale});
+    built.Render(scene);
+    double rmse = validation::EnergyWeightedRelativeRmse(renderer.ReadOutput(), built.ReadOutput());
+    std::printf("scale %.2f set against built: relative RMSE %.2e\n", scale, rmse);
+    EXPECT_LT(rmse, 1e-5) << "scale " << scale;
+  }
+}
+
 // The sky-view table depends on the camera's r and mu_s only: in a stream of frames (the viewer's),
 // remade on the first frame, when the sun moves and when the camera climbs more than 10 m, not
 // when the camera turns. The froxel volume is kept while nothing moves.

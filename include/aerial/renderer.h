@@ -107,6 +107,10 @@ class SceneRenderer {
   // The terrain's error bound for the next frames (RenderOptions::terrain_error_px, validated):
   // only the chunk selection uses it, so it may change from frame to frame without a rebuild.
   void SetTerrainErrorPx(double error_px);
+  // The render scale of the next frames (RenderOptions::render_scale, validated): the render size's
+  // images (output(), depth()) are made again, nothing else, so a dynamic resolution may step
+  // without a rebuild. The caller waits first for the frames in flight that use the old ones.
+  void SetRenderScale(double render_scale);
 
   // What the caller's own passes may read of the last frame (a viewer's tone map and debug
   // views): the radiance and the reversed-Z depth at the render size, the FrameBlock of the

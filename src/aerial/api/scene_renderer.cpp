@@ -32,6 +32,7 @@ std::vector<PassTime> SceneRenderer::Render(const Scene& scene, bool complete) {
 std::vector<PassTime> SceneRenderer::PassTimes(uint32_t slot) const { return impl_->renderer.PassTimes(slot); }
 ImageRgbF SceneRenderer::ReadOutput() const { return impl_->renderer.ReadOutput(); }
 void SceneRenderer::SetTerrainErrorPx(double error_px) { impl_->renderer.SetTerrainErrorPx(error_px); }
+void SceneRenderer::SetRenderScale(double render_scale) { impl_->renderer.SetRenderScale(render_scale); }
 
 SampledImage SceneRenderer::output() const {
   return SampledLikeTheTables(impl_->renderer.tables(), impl_->renderer.output_image());

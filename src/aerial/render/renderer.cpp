@@ -298,6 +298,23 @@ void Renderer::SetTerrainErrorPx(double error_px) {
   shadow_selection_whole_ = false;  // the shadow pass selects with the same bound
 }
 
+void Renderer::SetRenderScale(double render_scale) {
+  if (render_scale == options_.render_scale) return;
+  RendererOptions changed = options_;
+  changed.render_scale = render_scale;
+  changed.Validate();
+  options_ = changed;
+  // The targets of the render size; the pipelines, tables, froxel volume and terrain stay. The
+  // next frame's uniforms hold the new viewport, so nothing kept for the old size is reused.
+  const vk::Context& context = tables_.context();
+  depth_ = vk::Image(context, Target(options_, vk::kDepth32f));
+  output_ = vk::Image(context, Target(options_, vk::kRgba32f));
+  sun_visibility_ = vk::Image(context, SunVisibilityTarget(options_));
+  context.Submit([&](const auto& cmd) {
+    for (const vk::Image* image : {&depth_, &output_, &sun_visibility_}) image->InitializeLayout(cmd);
+  });
+}
+
 terrain::LodView Renderer::FrameLodView(const Scene& scene) const {
   double aspect = double(options_.render_width()) / double(options_.render_height());
   return terrain::MakeLodView(scene.camera, aspect, options_.render_height(), options_.terrain_error_px,

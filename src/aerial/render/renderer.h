@@ -76,6 +76,10 @@ class Renderer {
   // The terrain's error bound for the next frames (RenderOptions::terrain_error_px, validated):
   // only the selection uses it, so it may change from frame to frame.
   void SetTerrainErrorPx(double error_px);
+  // The render scale of the next frames (RenderOptions::render_scale, validated): only the render
+  // size's targets are made again, so a dynamic resolution's steps cost no pipeline builds. No
+  // frame in flight may still use the old targets.
+  void SetRenderScale(double render_scale);
   // GPU time of each pass of the slot's last frame; call once that frame has finished.
   std::vector<vk::PassTime> PassTimes(uint32_t slot = 0) const;
   // Records one frame, submits it and waits for it. Returns the GPU time of each pass. A one-off

@@ -5,8 +5,7 @@
 namespace aerial::viewer {
 
 bool SameRenderOptions(const RendererOptions& a, const RendererOptions& b) {
-  return a.width == b.width && a.height == b.height && a.mode == b.mode &&
-         a.render_scale == b.render_scale && a.terrain == b.terrain &&
+  return a.width == b.width && a.height == b.height && a.mode == b.mode && a.terrain == b.terrain &&
          a.frames_in_flight == b.frames_in_flight && a.shadows == b.shadows &&
          a.froxels.width == b.froxels.width && a.froxels.height == b.froxels.height &&
          a.froxels.depth == b.froxels.depth && a.froxels.far_m == b.froxels.far_m;
@@ -28,6 +27,10 @@ SceneRenderer* RenderStack::Get(LutVariant variant, const RendererOptions& optio
     before_rebuild_();
     entry.renderer.reset();
     entry.renderer = std::make_unique<SceneRenderer>(MakeSceneRenderer(*entry.tables, scene_, options));
+  }
+  if (entry.renderer->options().render_scale != options.render_scale) {
+    before_rebuild_();  // the frames in flight use the targets of the old scale
+    entry.renderer->SetRenderScale(options.render_scale);
   }
   entry.renderer->SetTerrainErrorPx(options.terrain_error_px);
   return entry.renderer.get();

@@ -1,10 +1,10 @@
 #pragma once
 // The table sets and renderers the viewer draws with: one per table variant, the current one and,
 // for the 3D-vs-4D view, the other. Every renderer is aerial's SceneRenderer (aerial/renderer.h),
-// rebuilt when its tables or its options change: the size (a resize or the render scale), the
-// froxel grid, the aerial mode and the shadows, which are specialization constants of its
-// pipelines (and the shadows its shadow map); the terrain's error bound is passed on without a
-// rebuild. Frames in flight may still use a renderer, so the stack calls its owner's
+// rebuilt when its tables or its options change: the size (a resize), the froxel grid, the
+// aerial mode and the shadows, which are specialization constants of its pipelines (and the
+// shadows its shadow map); the render scale (its targets alone) and the terrain's error bound are
+// passed on without a rebuild. Frames in flight may still use a renderer, so the stack calls its owner's
 // before_rebuild (which waits for them) first.
 #include <functional>
 #include <map>
