@@ -11,6 +11,8 @@
 #include <optional>
 
 #include "aerial/scene.h"
+#include "aerial/viewer/camera_path.h"
+#include "aerial/viewer/dynamic_resolution.h"
 #include "aerial/viewer/viewer.h"
 #include "xvfb_display.h"
 
@@ -145,6 +147,23 @@ TEST_F(ViewerSession, AStillViewIsPresentedWithoutRedrawing) {
   viewer.settings().terrain_error_px = 3.0f;
   StepFrames(viewer, kFramesUntilTimed);
   EXPECT_TRUE(HasPass(viewer, "opaque raster")) << "a changed view draws again";
+}
+
+// Under dynamic resolution a moving view steps its scale down, and once it stops it is drawn at
+// scale 1, as `aerial render` draws it (and then refined, frame_accumulator.h).
+TEST_F(ViewerSession, DynamicResolutionLowersAMovingViewAndDrawsAStillOneWhole) {
+  viewer::ViewerOptions options = SmallViewerOptions();
+  options.target_ms = 0.01;  // never met: every step the controller may take goes down
+  options.camera_path = viewer::CameraPath::Load(AERIAL_SOURCE_DIR "/examples/paths/corridor.toml",
+                                                 options.atmosphere.bottom_radius_m);
+  const double path_frames = options.camera_path->duration_s() * 30.0;  // 1/30 s of path a frame
+  viewer::Viewer viewer(std::move(options));
+  StepFrames(viewer, 2 * viewer::DynamicResolution::kSettleFrames + 1);
+  EXPECT_EQ(viewer.renderer().options().render_scale, 0.5) << "two steps down while the path moves";
+  StepFrames(viewer, int(path_frames) - 2 * viewer::DynamicResolution::kSettleFrames + 1);
+  EXPECT_EQ(viewer.renderer().options().render_scale, 1.0) << "the path has ended: a still view";
+  StepFrames(viewer, kFramesUntilTimed);
+  EXPECT_EQ(viewer.renderer().options().render_scale, 1.0);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // --stats, --camera-path) check every path and file before the window opens, the outputs against
 // each other and the inputs too.
 #include <memory>
+#include <optional>
 
 #include "aerial/cli/commands.h"
 #include "aerial/cli/common_options.h"
@@ -27,7 +28,8 @@ struct ViewCommandOptions {
   bool screenshot_panel = false;
   std::filesystem::path stats;
   std::filesystem::path camera_path;
-  double target_ms = 0.0;
+  std::optional<double> target_ms;
+  bool render_scale_given = false;
 };
 
 // The precompute options of both variants, for the panel's 3D/4D switch: the command line's
@@ -90,7 +92,8 @@ void RunView(const ViewCommandOptions& options) {
   viewer.screenshot = options.screenshot;
   viewer.screenshot_panel = options.screenshot_panel;
   viewer.stats = options.stats;
-  viewer.target_ms = options.target_ms;
+  // A scale asked for is kept; else the viewer chooses (dynamic on a CPU device).
+  viewer.target_ms = options.render_scale_given ? options.target_ms.value_or(0.0) : options.target_ms;
   viewer::RunViewer(std::move(viewer));
 }
 
@@ -110,13 +113,17 @@ void AddViewCommand(CLI::App& app) {
   AddPathOption(*command, "--stats", options->stats,
                       "Write frame statistics (median and p95 frame ms, FPS, GPU ms per pass) as JSON");
   command->add_option("--target-ms", options->target_ms,
-                      "Dynamic resolution: the render scale (1, 0.75, 0.5, 0.25) follows the frame time "
-                      "toward this many milliseconds (default 0: off, the scale stays --render-scale)")
+                      "Dynamic resolution: while the view moves, the render scale (1, 0.75, 0.5, 0.25) "
+                      "follows the frame time toward this many milliseconds; 0: off (default: 33.3 on a "
+                      "CPU device unless --render-scale is given, off on a GPU)")
       ->check(CLI::Range(0.0, 1000.0));
   AddPathOption(*command, "--camera-path", options->camera_path,
                       "Camera path to play, 1/30 s of path time per frame (TOML, examples/paths/)");
   options->tables.AddTo(*command);
-  command->callback([options] { RunView(*options); });
+  command->callback([options, command] {
+    options->render_scale_given = command->get_option("--render-scale")->count() > 0;
+    RunView(*options);
+  });
 }
 
 }  // namespace aerial::cli

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numbers>
 #include <optional>
+#include <tuple>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -168,7 +169,9 @@ class Viewer::Impl {
   bool panel_shown_ = true, help_shown_ = false;
   int frames_ = 0;
   Clock::time_point last_frame_end_;
-  std::optional<DynamicResolution> resolution_;  // with --target-ms
+  std::optional<DynamicResolution> resolution_;  // with --target-ms, or by default on a CPU device
+  // The camera, sun and terrain error bound of the last frame: a view that keeps them is still.
+  std::optional<std::tuple<Camera, Sun, double>> last_pose_;
   // The last frame's window picture (--screenshot-panel) and its size.
   std::optional<vk::Buffer> window_picture_;
   ::vk::Extent2D window_picture_extent_;
@@ -205,7 +208,9 @@ Viewer::Impl::Impl(ViewerOptions options)
   settings_.terrain_error_px = float(options_.render.terrain_error_px);
   settings_.auto_exposure = options_.exposure.mode == Exposure::Mode::kAuto;
   if (!settings_.auto_exposure) settings_.ev100 = float(options_.exposure.FixedEv100());
-  if (options_.target_ms > 0.0) resolution_.emplace(options_.target_ms);
+  const bool cpu_device = context_.physical_device().getProperties().deviceType == ::vk::PhysicalDeviceType::eCpu;
+  const double target_ms = options_.target_ms.value_or(cpu_device ? kCpuDeviceTargetMs : 0.0);
+  if (target_ms > 0.0) resolution_.emplace(target_ms);
   last_frame_end_ = Clock::now();
 }
 
@@ -417,6 +422,11 @@ bool Viewer::Impl::Step() {
   imgui_.NewFrame();
   Steer(input_.Read(dt_s, imgui_.wants_mouse(), imgui_.wants_keyboard()), dt_s);
   RendererOptions render = CurrentRenderOptions();
+  // Dynamic resolution lowers the scale of a moving view; a still one is drawn whole.
+  const auto pose = std::make_tuple(options_.scene.camera, options_.scene.sun, render.terrain_error_px);
+  const bool resting = last_pose_ == pose;
+  last_pose_ = pose;
+  if (resolution_ && resting) render.render_scale = 1.0;
   SceneRenderer* primary = stack_.Get(settings_.variant, render);
   if (!primary) primary = stack_.Get(Other(settings_.variant), render);
   PanelEvents events = panel_shown_ ? DrawPanel(settings_, MakePanelInfo(*primary)) : PanelEvents{};
@@ -497,7 +507,7 @@ bool Viewer::Impl::Step() {
   Clock::time_point now = Clock::now();
   double frame_ms = std::chrono::duration<double, std::milli>(now - last_frame_end_).count();
   stats_.AddFrame(frame_ms, render.render_scale);
-  if (resolution_) settings_.render_scale = resolution_->Update(frame_ms, render.render_scale);
+  if (resolution_ && !resting) settings_.render_scale = resolution_->Update(frame_ms, render.render_scale);
   last_frame_end_ = now;
   ++frames_;
   return true;

@@ -44,7 +44,9 @@ struct ViewerOptions {
   bool screenshot_panel = false;     // the screenshot (.png) is the window's picture, panel and all
   std::filesystem::path stats;       // frame statistics (frame_stats.h), written at exit
   std::optional<CameraPath> camera_path;
-  double target_ms = 0.0;            // > 0: dynamic resolution toward this frame time (dynamic_resolution.h)
+  // Dynamic resolution toward this frame time (dynamic_resolution.h); 0: off, the scale stays the
+  // render options'. None: kCpuDeviceTargetMs on a CPU device (lavapipe), off on a GPU.
+  std::optional<double> target_ms;
 };
 
 class Viewer {
