@@ -114,6 +114,28 @@ TEST(ViewCli, AStillViewIsAntialiasedAsRenderAntialiases) {
   std::filesystem::remove_all(dir);
 }
 
+// Under dynamic resolution (an unreachable --target-ms) the moving frames step down, but the last
+// frame of a scripted run is drawn whole, as `aerial render` draws its pose: 26 frames of the
+// corridor, the last at path time 25/30 s.
+TEST(ViewCli, TheLastFrameIsWholeUnderDynamicResolution) {
+  if (std::string why = MissingXServer("xvfb-run"); !why.empty()) GTEST_SKIP() << why;
+  std::filesystem::path dir = ScratchDir();
+  CommandRun view = RunAerial("view" + kSmall + " --frames 26 --target-ms 0.01 --screenshot " +
+                                  (dir / "view.exr").string() + " --stats " + (dir / "stats.json").string() +
+                                  " --camera-path " AERIAL_SOURCE_DIR "/examples/paths/corridor.toml",
+                              kXvfb);
+  ASSERT_EQ(view.exit_code, 0) << view.err;
+  std::ifstream file(dir / "stats.json");
+  EXPECT_LT(nlohmann::json::parse(file)["median_render_scale"].get<double>(), 1.0);
+  CommandRun render = RunAerial("render" + kSmall + " --supersample 1 --camera-position-m 0,500,130 --camera-yaw-deg " +
+                                "6.666666666666667 --camera-pitch-deg 2.3333333333333335 --out " +
+                                (dir / "render.exr").string());
+  ASSERT_EQ(render.exit_code, 0) << render.err;
+  // The same computation, as in the first test.
+  EXPECT_LT(validation::EnergyWeightedRelativeRmse(ReadExr(dir / "view.exr"), ReadExr(dir / "render.exr")), 1e-4);
+  std::filesystem::remove_all(dir);
+}
+
 // --white-balance reaches the viewer's pictures as it reaches render's PNG: the spectral sun is not
 // white, so balancing it changes the picture. Before, the viewer ignored the option and both
 // screenshots were byte for byte the same.

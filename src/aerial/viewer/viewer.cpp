@@ -422,11 +422,13 @@ bool Viewer::Impl::Step() {
   imgui_.NewFrame();
   Steer(input_.Read(dt_s, imgui_.wants_mouse(), imgui_.wants_keyboard()), dt_s);
   RendererOptions render = CurrentRenderOptions();
-  // Dynamic resolution lowers the scale of a moving view; a still one is drawn whole.
+  // The last frame of a scripted run is saved: it is completed like `aerial render`'s.
+  const bool last = options_.frames > 0 && frames_ + 1 == options_.frames;
+  // Dynamic resolution lowers the scale of a moving view; a still one, and the last, is drawn whole.
   const auto pose = std::make_tuple(options_.scene.camera, options_.scene.sun, render.terrain_error_px);
   const bool resting = last_pose_ == pose;
   last_pose_ = pose;
-  if (resolution_ && resting) render.render_scale = 1.0;
+  if (resolution_ && (resting || last)) render.render_scale = 1.0;
   SceneRenderer* primary = stack_.Get(settings_.variant, render);
   if (!primary) primary = stack_.Get(Other(settings_.variant), render);
   PanelEvents events = panel_shown_ ? DrawPanel(settings_, MakePanelInfo(*primary)) : PanelEvents{};
@@ -456,8 +458,6 @@ bool Viewer::Impl::Step() {
     Resize(window_.framebuffer_extent());
     return true;
   }
-  // The last frame of a scripted run is saved: it is completed like `aerial render`'s.
-  bool last = options_.frames > 0 && frames_ + 1 == options_.frames;
   // A still view is refined one jittered frame at a time; the last frame of a scripted run is the
   // complete mean or, short of it, a complete frame without jitter.
   DrawnView view{primary, options_.scene.camera, options_.scene.sun, render.terrain_error_px};
