@@ -43,7 +43,9 @@ endfunction()
 
 # Discovers `target`'s tests in four groups and labels them once ctest has read the groups (the
 # labels are set by a script ctest includes after the discovery's own, since gtest_discover_tests
-# splits a list given in PROPERTIES). `slow_filter`: the gtest filter of the slow tests.
+# splits a list given in PROPERTIES). `slow_filter`: the gtest filter of the slow tests. Their
+# COST starts them first in a parallel run that has no timings of an earlier one (a fresh clone,
+# CI): started last, the longest test would run alone at the end.
 function(aerial_discover_labelled_tests target slow_filter)
   get_target_property(sources ${target} SOURCES)
   aerial_gpu_test_filter(gpu_filter "" ${sources})
@@ -61,7 +63,7 @@ function(aerial_discover_labelled_tests target slow_filter)
   file(WRITE ${script}
     "set_tests_properties(\${aerial_gpu_tests} PROPERTIES LABELS gpu)\n"
     "set_tests_properties(\${aerial_sanitizer_tests} PROPERTIES LABELS \"gpu;sanitizer\")\n"
-    "set_tests_properties(\${aerial_slow_tests} PROPERTIES LABELS \"gpu;slow\")\n"
+    "set_tests_properties(\${aerial_slow_tests} PROPERTIES LABELS \"gpu;slow\" COST 1000)\n"
     "set_tests_properties(\${aerial_cpu_tests} PROPERTIES LABELS cpu\n"
     "                    ENVIRONMENT \"VK_DRIVER_FILES=${no_driver}\")\n")
   set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${script})

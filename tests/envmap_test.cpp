@@ -18,6 +18,8 @@
 #include <fstream>
 #include <random>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 #include "aerial/envmap/environment_map.h"
 #include "aerial/precompute/spectral_precompute.h"
@@ -45,25 +47,38 @@ ProbeQuery QueryAlong(const glm::dvec3& direction, double altitude_m, const Sun&
   return {{planet_radius_m + altitude_m, direction.z, toward_sun.z, glm::dot(direction, toward_sun)}};
 }
 
-// What the map should hold along `direction`: the probe's sky radiance (no sun disc) and, where
-// the direction meets the planet, the ground lit by the sun and the sky (Lambertian, the
+// What the map should hold along each of `directions`: the probe's sky radiance (no sun disc)
+// and, where the direction meets the planet, the ground lit by the sun and the sky (Lambertian, the
 // atmosphere's albedo, the probe's irradiances at the ground point) times the probe's
-// transmittance to it.
-glm::dvec3 Expected(const AtmosphereTables& tables, const glm::dvec3& direction, double altitude_m, const Sun& sun) {
-  const double radius = tables.atmosphere().bottom_radius_m, r = radius + altitude_m, mu = direction.z;
-  const ProbeQuery along = QueryAlong(direction, altitude_m, sun, radius);
-  const ProbeResult sky = ProbeTables(tables, std::span(&along, 1)).front();
-  glm::dvec3 radiance(sky.sky_radiance[0], sky.sky_radiance[1], sky.sky_radiance[2]);
-  const double discriminant = r * r * (mu * mu - 1.0) + radius * radius;
-  if (mu < 0.0 && discriminant >= 0.0) {
-    const double distance = -r * mu - std::sqrt(discriminant);
-    const glm::dvec3 ground = glm::dvec3(0, 0, r) + distance * direction;  // from the planet's centre
-    const glm::dvec3 up = glm::normalize(ground);
-    const ProbeQuery at_ground{{radius, 1.0, glm::dot(up, sun.Direction()), 0.0}};
-    const ProbeResult lit = ProbeTables(tables, std::span(&at_ground, 1)).front();
-    const Spectrum albedo = ShaderAtmosphere(tables.atmosphere(), tables.options()).ground_albedo;
+// transmittance to it. The probe answers all the directions in one batch, the ground points in
+// another: each call of it builds its compute pipeline.
+std::vector<glm::dvec3> Expected(const AtmosphereTables& tables, const std::vector<glm::dvec3>& directions,
+                                 double altitude_m, const Sun& sun) {
+  const double radius = tables.atmosphere().bottom_radius_m, r = radius + altitude_m;
+  std::vector<ProbeQuery> along;
+  for (const glm::dvec3& direction : directions) along.push_back(QueryAlong(direction, altitude_m, sun, radius));
+  const std::vector<ProbeResult> sky = ProbeTables(tables, along);
+  std::vector<glm::dvec3> radiance;
+  std::vector<ProbeQuery> at_ground;
+  std::vector<size_t> seeing_ground;
+  for (size_t i = 0; i < directions.size(); ++i) {
+    radiance.emplace_back(sky[i].sky_radiance[0], sky[i].sky_radiance[1], sky[i].sky_radiance[2]);
+    const glm::dvec3& direction = directions[i];
+    const double mu = direction.z, discriminant = r * r * (mu * mu - 1.0) + radius * radius;
+    if (mu < 0.0 && discriminant >= 0.0) {
+      const double distance = -r * mu - std::sqrt(discriminant);
+      const glm::dvec3 ground = glm::dvec3(0, 0, r) + distance * direction;  // from the planet's centre
+      const glm::dvec3 up = glm::normalize(ground);
+      at_ground.push_back({{radius, 1.0, glm::dot(up, sun.Direction()), 0.0}});
+      seeing_ground.push_back(i);
+    }
+  }
+  const std::vector<ProbeResult> lit = ProbeTables(tables, at_ground);
+  const Spectrum albedo = ShaderAtmosphere(tables.atmosphere(), tables.options()).ground_albedo;
+  for (size_t g = 0; g < seeing_ground.size(); ++g) {
+    const size_t i = seeing_ground[g];
     for (int c = 0; c < 3; ++c)
-      radiance[c] += sky.transmittance[c] * albedo[c] / M_PI * (lit.sun_irradiance[c] + lit.sky_irradiance[c]);
+      radiance[i][c] += sky[i].transmittance[c] * albedo[c] / M_PI * (lit[g].sun_irradiance[c] + lit[g].sky_irradiance[c]);
   }
   return radiance;
 }
@@ -87,13 +102,20 @@ TEST_F(Envmap, LatLongAgreesWithTheProbeAlongRandomDirections) {
   ASSERT_EQ(map.image.width, 128);
   ASSERT_EQ(map.image.height, 64);
   std::mt19937 random(68);
-  double worst = 0.0;
-  int below = 0;
+  std::vector<std::pair<int, int>> texels;
+  std::vector<glm::dvec3> directions;
   for (int n = 0; n < 100; ++n) {
     const int x = int(random() % 128), y = int(random() % 64);
-    const glm::dvec3 direction = LatLongDirection(x, y, 128, 64);
-    const glm::dvec3 expected = Expected(tables, direction, options.altitude_m, options.sun);
-    below += direction.z < 0.0;
+    texels.emplace_back(x, y);
+    directions.push_back(LatLongDirection(x, y, 128, 64));
+  }
+  const std::vector<glm::dvec3> expected_radiance = Expected(tables, directions, options.altitude_m, options.sun);
+  double worst = 0.0;
+  int below = 0;
+  for (size_t n = 0; n < texels.size(); ++n) {
+    const auto [x, y] = texels[n];
+    const glm::dvec3& expected = expected_radiance[n];
+    below += directions[n].z < 0.0;
     for (int c = 0; c < 3; ++c) {
       const double error = std::abs(map.image.pixel(x, y)[c] / expected[c] - 1.0);
       worst = std::max(worst, error);
@@ -121,21 +143,30 @@ TEST_F(Envmap, CubeTexelsLookWhereOpenExrSays) {
   ASSERT_EQ(map.image.width, 16);
   ASSERT_EQ(map.image.height, 96);
   const Imath::Box2i window(Imath::V2i(0, 0), Imath::V2i(15, 95));
-  double worst = 0.0;
+  struct Sample {
+    int face, i, j;
+    Imath::V2f pixel;
+  };
+  std::vector<Sample> samples;
+  std::vector<glm::dvec3> directions;
   for (int face = 0; face < 6; ++face)
     for (int j : {0, 5, 15})
       for (int i : {0, 9, 15}) {
         const Imath::V2f in_face{float(i), float(j)};
-        const Imath::V2f pixel = Imf::CubeMap::pixelPosition(Imf::CubeMapFace(face), window, in_face);
+        samples.push_back({face, i, j, Imf::CubeMap::pixelPosition(Imf::CubeMapFace(face), window, in_face)});
         const Imath::V3f exr = Imf::CubeMap::direction(Imf::CubeMapFace(face), window, in_face);
-        const glm::dvec3 direction = glm::normalize(glm::dvec3(exr.z, exr.x, exr.y));  // east, north, up
-        const glm::dvec3 expected = Expected(tables, direction, options.altitude_m, options.sun);
-        const float* read = map.image.pixel(int(std::lround(pixel.x)), int(std::lround(pixel.y)));
-        for (int c = 0; c < 3; ++c) {
-          worst = std::max(worst, std::abs(read[c] / expected[c] - 1.0));
-          EXPECT_LT(std::abs(read[c] / expected[c] - 1.0), 0.005) << "face " << face << " texel " << i << ", " << j;
-        }
+        directions.push_back(glm::normalize(glm::dvec3(exr.z, exr.x, exr.y)));  // east, north, up
       }
+  const std::vector<glm::dvec3> expected = Expected(tables, directions, options.altitude_m, options.sun);
+  double worst = 0.0;
+  for (size_t n = 0; n < samples.size(); ++n) {
+    const Sample& s = samples[n];
+    const float* read = map.image.pixel(int(std::lround(s.pixel.x)), int(std::lround(s.pixel.y)));
+    for (int c = 0; c < 3; ++c) {
+      worst = std::max(worst, std::abs(read[c] / expected[n][c] - 1.0));
+      EXPECT_LT(std::abs(read[c] / expected[n][c] - 1.0), 0.005) << "face " << s.face << " texel " << s.i << ", " << s.j;
+    }
+  }
   std::printf("cube map against the probe along OpenEXR's directions: worst relative error %.2e\n", worst);
 }
 

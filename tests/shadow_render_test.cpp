@@ -87,9 +87,14 @@ double CascadeTexelM(const Scene& scene, double aspect, const glm::dvec3& point)
 // within the filter's reach and the normal offset.
 // on_surface: the point is on the terrain (the shifted starts are put back onto it); otherwise it
 // is a point in the air, and the starts stay where the shift puts them.
+// A march stops as soon as nothing further along can change the verdict: once the ray is hidden
+// (and so not visible); once it is not visible where only its staying visible could still matter;
+// and once it is higher above the planet than the highest terrain by more than the margin while
+// climbing faster than the margin grows (its height's rate, the cosine to the local vertical, only
+// grows along a straight ray; the margin's is at most 0.01), so that it stays clear of the terrain.
 SunSeen MarchTowardTheSun(const glm::dvec3& point, const Scene& scene, double aspect, double R,
                           bool on_surface = true) {
-  const glm::dvec3 sun = scene.sun.Direction(), camera = scene.camera.position;
+  const glm::dvec3 sun = scene.sun.Direction(), camera = scene.camera.position, center(0.0, 0.0, -R);
   glm::dvec3 side = glm::normalize(glm::cross(sun, glm::dvec3(0, 0, 1)));
   glm::dvec3 across = glm::cross(side, sun);
   double offset = 3.5 * CascadeTexelM(scene, aspect, point);
@@ -103,9 +108,13 @@ SunSeen MarchTowardTheSun(const glm::dvec3& point, const Scene& scene, double as
       double h = HeightAboveTerrainM(p, R), margin = 2.0 + 0.01 * glm::length(p - camera);
       if (h < -margin) hidden = true;
       if (h < (t > 50.0 ? margin : 0.0)) visible = false;
+      if (hidden || (!visible && !all_hidden)) break;
+      const double altitude = glm::length(p - center) - R;
+      if (altitude - kTerrainMaxHeightM > margin && glm::dot(glm::normalize(p - center), sun) >= 0.01) break;
     }
     all_hidden = all_hidden && hidden;
     all_visible = all_visible && visible;
+    if (!all_hidden && !all_visible) return SunSeen::kUnsure;
   }
   return all_hidden ? SunSeen::kHidden : all_visible ? SunSeen::kVisible : SunSeen::kUnsure;
 }

@@ -6,4 +6,5 @@ bash tools/setup.sh
 bash tools/build.sh
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-/tmp}
 cd build
-ctest --output-on-failure --timeout 1500
+# As many tests at once as there are cores (the slow end-to-end bench starts first: its COST).
+ctest --output-on-failure --timeout 1500 -j"$(nproc)"

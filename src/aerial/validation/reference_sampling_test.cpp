@@ -55,7 +55,8 @@ TEST(GridPixels, CellCentersInRowOrder) {
 // ProbeReference with none), both deterministic quadratures with single scattering, so they agree
 // to rounding (1e-9). A ray that meets the bare planet adds the lit ground seen through the air
 // (the ground's albedo at each group's wavelengths), above the probe's inscatter alone; the
-// transmittance is the sunlit one, like the probe's.
+// transmittance is the sunlit one, like the probe's. (The probe's path count sets only the Monte
+// Carlo of its sky irradiance, not compared here: the fewest paths it takes.)
 TEST(SampleSpectralReference, SkyPixelsAreTheSpectralProbesRadiance) {
   const AtmosphereParameters earth = AtmosphereParameters::Earth();
   Scene scene;
@@ -76,7 +77,8 @@ TEST(SampleSpectralReference, SkyPixelsAreTheSpectralProbesRadiance) {
     glm::dvec3 ray = PixelRay(frame, pixel.x, pixel.y);
     RayParameters parameters{r, glm::dot(camera, ray) / r, glm::dot(camera, sun) / r, glm::dot(ray, sun)};
     ProbeResult probe =
-        ProbeReferenceSpectral(earth, parameters, std::nullopt, spectrum::SpectralSampling::ForTables(12), {.orders = 1});
+        ProbeReferenceSpectral(earth, parameters, std::nullopt, spectrum::SpectralSampling::ForTables(12),
+                               {.orders = 1, .paths_per_query = 512});
     const bool ground = parameters.mu < -std::sqrt(1.0 - std::pow(earth.bottom_radius_m / r, 2.0));
     ground_pixels += ground;
     Spectrum expected = pixel.Expected();

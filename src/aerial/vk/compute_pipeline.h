@@ -2,10 +2,11 @@
 // A compute pipeline built from an embedded SPIR-V module, with its descriptors pushed per dispatch
 // (VK_KHR_push_descriptor): a pass declares its bindings once and binds resources by slot.
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "aerial/vk/descriptors.h"
+#include "aerial/vk/pipeline_cache.h"
 
 namespace aerial::vk {
 
@@ -15,7 +16,8 @@ class ComputePipeline {
   // shader: the path under shaders/ ("precompute/transmittance.comp"). slots: one named slot per
   // binding, from 0, checked against the shader's (shader_bindings.h). push_constant_bytes: 0
   // when the shader has none. specialization: constant_id i takes specialization[i]
-  // (specialization.h).
+  // (specialization.h). A pipeline the context built before for the same arguments is shared
+  // (pipeline_cache.h).
   ComputePipeline(const Context& context, const std::string& shader, SlotLayout slots,
                   uint32_t push_constant_bytes = 0, std::vector<int32_t> specialization = {});
 
@@ -29,8 +31,7 @@ class ComputePipeline {
 
  private:
   std::string name_;
-  PushDescriptorLayout layout_;
-  ::vk::raii::Pipeline pipeline_{nullptr};
+  std::shared_ptr<const BuiltPipeline> built_;
 };
 
 }  // namespace aerial::vk

@@ -6,6 +6,7 @@
 
 #include "aerial/error.h"
 #include "aerial/vk/loader_files.h"
+#include "aerial/vk/pipeline_cache.h"
 
 namespace aerial::vk {
 namespace {
@@ -65,7 +66,7 @@ bool HasLayer(const ::vk::raii::Context& loader, const char* name) {
 
 int Context::ValidationMessageCount() { return g_validation_messages.load(); }
 
-Context::Context(const ContextCreateInfo& info) {
+Context::Context(const ContextCreateInfo& info) : pipelines_(std::make_unique<PipelineCache>()) {
   CheckLoaderFiles();  // before the loader opens them
   validation_ = info.validation || EnvironmentFlag("AERIAL_VALIDATION");
   const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
@@ -157,7 +158,9 @@ Context::Context(const ContextCreateInfo& info) {
   CreateSubmitObjects();
 }
 
-Context::Context(const DeviceHandoff& external) : external_(true), pipeline_statistics_(external.pipeline_statistics) {
+Context::Context(const DeviceHandoff& external)
+    : external_(true), pipeline_statistics_(external.pipeline_statistics),
+      pipelines_(std::make_unique<PipelineCache>()) {
   if (!external.instance || !external.physical_device || !external.device)
     throw Error("external device", "a null handle", "the caller's instance, physical device and device");
   instance_ = ::vk::raii::Instance(loader_, external.instance);
@@ -197,6 +200,7 @@ Context::~Context() {
 
 // What aerial made on the caller's device goes; the device and the instance stay the caller's.
 void Context::ReleaseCallersHandles() {
+  pipelines_->Clear();
   submit_done_.clear();
   submit_buffer_.clear();
   command_pool_.clear();

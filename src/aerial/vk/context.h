@@ -4,6 +4,7 @@
 #include <array>
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,8 @@
 #include "aerial/vk/table_filtering.h"
 
 namespace aerial::vk {
+
+class PipelineCache;
 
 // The command buffer that passes record into: the caller's own per frame, the context's for
 // one-off work (Context::Submit).
@@ -63,6 +66,10 @@ class Context {
   // threads at once. Frames that should not wait use a CommandRing (command_ring.h).
   void Submit(const std::function<void(const CommandBuffer&)>& record) const;
 
+  // The pipelines built on this context, shared by the passes that ask for the same one
+  // (pipeline_cache.h).
+  PipelineCache& pipelines() const { return *pipelines_; }
+
   // The size of the device's largest device-local memory heap, in bytes.
   uint64_t largest_heap_bytes() const;
 
@@ -91,6 +98,8 @@ class Context {
   bool external_ = false;  // the instance and the device are the caller's (DeviceHandoff)
   double timestamp_period_ns_ = 1.0;
   bool pipeline_statistics_ = false;
+  // Last: its pipelines go before the device does.
+  std::unique_ptr<PipelineCache> pipelines_;
 };
 
 // A caller's command buffer (the public API's VkCommandBuffer) as aerial's passes record into

@@ -5,10 +5,11 @@
 
 namespace aerial::vk {
 
-GraphicsPipeline::GraphicsPipeline(const Context& context, const GraphicsPipelineCreateInfo& info)
-    : name_(info.vertex_shader + "+" + info.fragment_shader),
-      layout_(context, info.slots, info.push_constant_bytes,
-              ::vk::ShaderStageFlagBits::eVertex | ::vk::ShaderStageFlagBits::eFragment) {
+namespace {
+
+std::shared_ptr<const BuiltPipeline> Build(const Context& context, const GraphicsPipelineCreateInfo& info) {
+  PushDescriptorLayout layout(context, info.slots, info.push_constant_bytes,
+                              ::vk::ShaderStageFlagBits::eVertex | ::vk::ShaderStageFlagBits::eFragment);
   ::vk::raii::ShaderModule vertex = CreateShaderModule(context, info.vertex_shader, info.slots);
   bool has_fragment = !info.fragment_shader.empty();
   ::vk::raii::ShaderModule fragment =
@@ -68,7 +69,7 @@ GraphicsPipeline::GraphicsPipeline(const Context& context, const GraphicsPipelin
       .colorAttachmentCount = uint32_t(info.color_formats.size()),
       .pColorAttachmentFormats = info.color_formats.data(),
       .depthAttachmentFormat = info.depth_format.value_or(::vk::Format::eUndefined)};
-  pipeline_ = ::vk::raii::Pipeline(
+  ::vk::raii::Pipeline pipeline(
       context.device(), nullptr,
       ::vk::GraphicsPipelineCreateInfo{.pNext = info.render_pass ? nullptr : &rendering,
                                        .stageCount = has_fragment ? 2u : 1u,
@@ -81,14 +82,35 @@ GraphicsPipeline::GraphicsPipeline(const Context& context, const GraphicsPipelin
                                        .pDepthStencilState = &depth,
                                        .pColorBlendState = &color_blend,
                                        .pDynamicState = &dynamic,
-                                       .layout = *layout_.layout,
+                                       .layout = *layout.layout,
                                        .renderPass = info.render_pass});
+  return std::make_shared<const BuiltPipeline>(BuiltPipeline{std::move(layout), std::move(pipeline)});
+}
+
+}  // namespace
+
+GraphicsPipeline::GraphicsPipeline(const Context& context, const GraphicsPipelineCreateInfo& info)
+    : name_(info.vertex_shader + "+" + info.fragment_shader) {
+  // A render pass's handle may be reused by a later, different one: those pipelines are not shared.
+  if (info.render_pass) {
+    built_ = Build(context, info);
+    return;
+  }
+  PipelineKey key;
+  key.Add("graphics").Add(info.vertex_shader).Add(info.fragment_shader).Add(info.slots).Add(info.push_constant_bytes);
+  key.Add(info.vertex_stride).Add(info.attributes.size());
+  for (const VertexAttribute& attribute : info.attributes) key.Add(uint64_t(attribute.format)).Add(attribute.offset);
+  key.Add(info.color_formats.size());
+  for (::vk::Format format : info.color_formats) key.Add(uint64_t(format));
+  key.Add(info.depth_format ? uint64_t(*info.depth_format) + 1 : 0).Add(info.depth_write).Add(uint64_t(info.depth_compare));
+  key.Add(info.alpha_blend).Add(info.dynamic_cull_mode).Add(uint64_t(uint32_t(info.cull))).Add(info.specialization);
+  built_ = context.pipelines().Get(key, [&] { return Build(context, info); });
 }
 
 void GraphicsPipeline::Bind(const CommandBuffer& cmd, const std::vector<Slot>& slots,
                             const void* push_constants) const {
-  cmd.bindPipeline(::vk::PipelineBindPoint::eGraphics, *pipeline_);
-  layout_.Push(cmd, ::vk::PipelineBindPoint::eGraphics, slots, push_constants, name_);
+  cmd.bindPipeline(::vk::PipelineBindPoint::eGraphics, *built_->pipeline);
+  built_->layout.Push(cmd, ::vk::PipelineBindPoint::eGraphics, slots, push_constants, name_);
 }
 
 Rendering::Rendering(const CommandBuffer& cmd, const RenderTargets& targets) : cmd_(cmd) {

@@ -7,11 +7,12 @@
 // A frame records one Rendering scope for all its raster passes, so that no barrier or image
 // round trip separates them: Bind a pipeline, draw, Bind the next.
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "aerial/vk/descriptors.h"
+#include "aerial/vk/pipeline_cache.h"
 
 namespace aerial::vk {
 
@@ -48,6 +49,8 @@ struct GraphicsPipelineCreateInfo {
 
 class GraphicsPipeline {
  public:
+  // A pipeline the context built before for the same info is shared (pipeline_cache.h), but for
+  // one that draws in a render pass.
   GraphicsPipeline(const Context& context, const GraphicsPipelineCreateInfo& info);
 
   // Binds the pipeline, pushes its descriptors and constants. Draws follow.
@@ -56,8 +59,7 @@ class GraphicsPipeline {
 
  private:
   std::string name_;
-  PushDescriptorLayout layout_;
-  ::vk::raii::Pipeline pipeline_{nullptr};
+  std::shared_ptr<const BuiltPipeline> built_;
 };
 
 struct RenderTargets {
