@@ -170,8 +170,8 @@ void BindMesh(const CommandBuffer& cmd, const Buffer& vertices, const Buffer& in
 }
 
 void DrawIndexed(const CommandBuffer& cmd, uint32_t index_count, uint32_t first_index,
-                 int32_t vertex_offset) {
-  cmd.drawIndexed(index_count, 1, first_index, vertex_offset, 0);
+                 int32_t vertex_offset, uint32_t first_instance) {
+  cmd.drawIndexed(index_count, 1, first_index, vertex_offset, first_instance);
 }
 
 void DrawFullScreenTriangle(const CommandBuffer& cmd) { cmd.draw(3, 1, 0, 0); }

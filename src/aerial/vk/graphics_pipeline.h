@@ -88,8 +88,9 @@ void SetViewport(const CommandBuffer& cmd, ::vk::Extent2D extent, ::vk::Offset2D
 void ClearDepth(const CommandBuffer& cmd, const ::vk::Rect2D& rect, float depth);
 void SetCullBackFaces(const CommandBuffer& cmd, bool cull_back);
 void BindMesh(const CommandBuffer& cmd, const Buffer& vertices, const Buffer& indices);
+// One instance, numbered first_instance (gl_InstanceIndex): a draw's own number for its shaders.
 void DrawIndexed(const CommandBuffer& cmd, uint32_t index_count, uint32_t first_index = 0,
-                 int32_t vertex_offset = 0);
+                 int32_t vertex_offset = 0, uint32_t first_instance = 0);
 // Three vertices and no buffers: a full-screen triangle made in the vertex shader.
 void DrawFullScreenTriangle(const CommandBuffer& cmd);
 
