@@ -33,6 +33,10 @@ layout(location = 4) out vec3 vertex_rayleigh;
 layout(location = 5) out vec3 vertex_mie;
 layout(location = 6) out vec3 vertex_transmittance;
 layout(location = 7) out vec3 shadow_coordinates[kShadowCascades];
+// 1 where the draw is the ground's (its first instance is kGroundDetailInstance, the draw's own
+// number as GPU-driven renderers pass it): ground_detail.glsl's albedo detail.
+layout(location = 11) flat out float ground_detail;
+const int kGroundDetailInstance = 1;
 
 void main() {
   relative_position = position - AERIAL_FRAME.camera_scene_position.xyz;
@@ -41,6 +45,7 @@ void main() {
   sun_radiance = radiance.sun;
   sky_radiance = radiance.sky;
   surface_normal = normal;
+  ground_detail = gl_InstanceIndex == kGroundDetailInstance ? 1.0 : 0.0;
   if (kSunShadows != 0) SurfaceShadowCoordinates(relative_position, normal, shadow_coordinates);
   gl_Position = AERIAL_FRAME.view_projection * vec4(relative_position, 1.0);
   Inscatter segment = Inscatter(vec3(0.0), vec3(0.0), vec3(1.0));

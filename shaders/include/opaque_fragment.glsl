@@ -21,6 +21,7 @@
 #define AERIAL_OPAQUE_FRAGMENT_GLSL
 #include "mesh_tables.glsl"
 #include "surface.glsl"
+#include "ground_detail.glsl"
 #define AERIAL_SHADOW_BINDING 8
 #include "shadow.glsl"
 layout(constant_id = 3) const int kSunVisibilityFromCache = 0;
@@ -41,6 +42,7 @@ layout(location = 4) in vec3 vertex_rayleigh;
 layout(location = 5) in vec3 vertex_mie;
 layout(location = 6) in vec3 vertex_transmittance;
 layout(location = 7) in vec3 shadow_coordinates[kShadowCascades];
+layout(location = 11) flat in float ground_detail;
 
 // The sun's visibility at the fragment (see above).
 float GetFragmentSunVisibility() {
@@ -64,8 +66,9 @@ vec4 GetFragmentRadiance(float sun_visibility) {
   vec3 ray = relative_position / distance;
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
-  vec3 surface_radiance =
-      ShadeLambertian(LambertianRadiance(sun_radiance, sky_radiance), normalize(surface_normal), sun_visibility);
+  float detail = GroundAlbedoDetailAt(relative_position, ground_detail);
+  vec3 surface_radiance = ShadeLambertian(LambertianRadiance(detail * sun_radiance, detail * sky_radiance),
+                                          normalize(surface_normal), sun_visibility);
   return vec4(ApplyAerialPerspective(surface_radiance, GetFragmentSegment(ray, r, mu, mu_s, nu, distance), nu), 1.0);
 }
 

@@ -529,13 +529,15 @@ void Renderer::ChooseFroxelReads(const Camera& camera) {
 // or all of them, with one pipeline.
 void Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
                              const std::vector<vk::Slot>& slots, std::optional<bool> pixel_reads) const {
+  // The ground's draws are numbered as opaque.vert's kGroundDetailInstance: its albedo detail.
+  const uint32_t ground = options_.ground_detail ? 1 : 0;
   pipeline.Bind(cmd, slots);
   vk::BindMesh(cmd, geometry_.opaque_vertices(), geometry_.opaque_indices());
   const std::vector<MeshDraw>& draws = geometry_.opaque_draws();
   for (size_t i = 0; i < draws.size(); ++i) {
     if (pixel_reads && bool(mesh_reads_per_pixel_[i]) != *pixel_reads) continue;
     vk::SetCullBackFaces(cmd, !draws[i].double_sided);
-    vk::DrawIndexed(cmd, draws[i].index_count, draws[i].first_index);
+    vk::DrawIndexed(cmd, draws[i].index_count, draws[i].first_index, 0, draws[i].ground ? ground : 0);
   }
   if (terrain_chunks_.empty()) return;
   vk::SetCullBackFaces(cmd, true);
@@ -544,7 +546,7 @@ void Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::GraphicsPip
   const size_t end = pixel_reads.value_or(false) ? terrain_per_pixel_ : terrain_chunks_.size();
   for (size_t i = first; i < end; ++i) {
     terrain::IndexRange range = terrain::ChunkIndexRange(terrain_chunks_[i].skirts);
-    vk::DrawIndexed(cmd, range.count, range.first, terrain_->VertexOffset(terrain_chunks_[i].id));
+    vk::DrawIndexed(cmd, range.count, range.first, terrain_->VertexOffset(terrain_chunks_[i].id), ground);
   }
 }
 

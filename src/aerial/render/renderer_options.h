@@ -38,6 +38,9 @@ struct RendererOptions : RenderOptions {
   // The froxel pass's and the marched opaque pass's variants for a high sun, where they compute
   // the same values (sun_high_variant.h); off: the general passes always, to compare with.
   bool sun_high_variants = true;
+  // The terrain's fine albedo detail (shaders/include/ground_detail.glsl); off: its materials'
+  // per-vertex albedo alone, to compare with.
+  bool ground_detail = true;
 };
 
 // EstimateFrameMemory (aerial/renderer.h), without the terrain chunk slots for the fixed mesh.

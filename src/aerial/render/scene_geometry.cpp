@@ -55,6 +55,7 @@ SceneGeometry::Packing SceneGeometry::Pack(const Scene& scene, const std::vector
       MeshDraw draw = MeshBounds(mesh);
       draw.first_index = uint32_t(packing.opaque.indices.size());
       draw.index_count = uint32_t(mesh.indices.size());
+      draw.ground = meshes == &extra_opaque;
       packing.opaque.Append(mesh);
       if (draw.index_count > 0) packing.opaque_draws.push_back(draw);
     }

@@ -22,11 +22,13 @@ struct MeshDraw {
   double radius_m = 0.0;
   double longest_edge_m = 0.0;  // of its triangles
   double largest_rise_m = 0.0;  // the largest height difference along any of its triangles' edges
+  bool ground = false;          // the ground's own mesh (its albedo detail: shaders/include/ground_detail.glsl)
 };
 
 class SceneGeometry {
  public:
-  // extra_opaque: meshes drawn with the scene's opaque ones (the reference terrain mesh).
+  // extra_opaque: the ground's meshes, drawn with the scene's opaque ones (the reference terrain
+  // mesh; MeshDraw::ground).
   SceneGeometry(const vk::Context& context, const Scene& scene, uint32_t frames_in_flight,
                 const std::vector<Mesh>& extra_opaque = {});
 
