@@ -96,6 +96,8 @@ std::vector<Configuration> AllConfigurations() {
        [](RendererOptions& o) { o.left_out_reads.froxels = true; }, Motion::kCamera, true},
       {"no-sun-visibility", "without the surfaces' sun visibility",
        [](RendererOptions& o) { o.left_out_reads.sun_visibility = true; }, Motion::kCamera, true},
+      {"no-ground-detail", "without the ground's albedo detail", [](RendererOptions& o) { o.ground_detail = false; },
+       Motion::kCamera, true},
       {"no-sky", "without the sky", [](RendererOptions& o) { o.passes.sky = false; }, Motion::kCamera, true},
       {"no-transparent", "without transparent objects", [](RendererOptions& o) { o.passes.transparent = false; },
        Motion::kCamera, true},
