@@ -74,4 +74,11 @@ FrameCamera MakeFrameCamera(const Scene& scene, uint32_t width, uint32_t height)
   return camera;
 }
 
+std::vector<glm::dvec2> SupersampleJitters(int n) {
+  std::vector<glm::dvec2> jitters;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) jitters.push_back({(x + 0.5) / n - 0.5, (y + 0.5) / n - 0.5});
+  return jitters;
+}
+
 }  // namespace aerial

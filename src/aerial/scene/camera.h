@@ -3,6 +3,8 @@
 //
 // View space is right-handed, x right, y up, and the camera looks down -z (the OpenGL/glm
 // convention). Clip space is Vulkan's: x right, y down, depth in [0, 1].
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "aerial/scene.h"
@@ -30,5 +32,12 @@ glm::dmat4 ViewMatrix(const Camera& camera);
 // 300 m away depth-separable at 32 bits; clear depth to 0 and test with GREATER. The y flip makes
 // world up point to the top of a Vulkan framebuffer. aspect = width / height.
 glm::dmat4 ProjectionMatrix(const Camera& camera, double aspect);
+
+// The jitters (Camera::jitter_px) that supersample a frame n x n: the centres of each pixel's
+// n x n sub-pixels, about the pixel's centre, row by row. The mean of the frames drawn with them
+// samples what a frame n times larger on each side, box-filtered down, samples, while each
+// frame keeps the output's resolution for what is chosen per pixel (the terrain's level of
+// detail, the ground's detail: shaders/include/ground_detail.glsl).
+std::vector<glm::dvec2> SupersampleJitters(int n);
 
 }  // namespace aerial

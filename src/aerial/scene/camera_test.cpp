@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <set>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -142,6 +143,33 @@ TEST(CameraSun, DirectionFollowsZenithAndCompassAzimuth) {
   EXPECT_NEAR(glm::distance(Sun{90.0, 90.0}.Direction(), glm::dvec3(1, 0, 0)), 0.0, kEps);
   EXPECT_LT((Sun{96.0, 270.0}.Direction().z), 0.0);  // set
   EXPECT_LT((Sun{96.0, 270.0}.Direction().x), 0.0);  // in the west
+}
+
+// The jitters of an n x n supersampled pixel are the centres of its sub-pixels, each once: for
+// n = 2 the quadrants' centres at +-1/4, for n = 3 the offsets -1/3, 0 and 1/3; their mean is the
+// pixel's centre.
+TEST(SupersampleJitters, AreTheCentresOfEachSubPixel) {
+  EXPECT_EQ(SupersampleJitters(1), std::vector<glm::dvec2>{glm::dvec2(0.0)});
+  for (int n : {2, 3, 4}) {
+    std::vector<glm::dvec2> jitters = SupersampleJitters(n);
+    ASSERT_EQ(jitters.size(), size_t(n * n));
+    glm::dvec2 sum(0.0);
+    std::set<std::pair<double, double>> distinct;
+    for (glm::dvec2 j : jitters) {
+      sum += j;
+      distinct.insert({j.x, j.y});
+      for (double c : {j.x, j.y}) {
+        double sub_pixel = (c + 0.5) * n - 0.5;  // 0 .. n - 1 at the sub-pixels' centres
+        EXPECT_NEAR(sub_pixel, std::round(sub_pixel), 1e-12) << n;
+        EXPECT_GT(c, -0.5);
+        EXPECT_LT(c, 0.5);
+      }
+    }
+    EXPECT_EQ(distinct.size(), size_t(n * n)) << n;
+    EXPECT_NEAR(sum.x, 0.0, 1e-12) << n;
+    EXPECT_NEAR(sum.y, 0.0, 1e-12) << n;
+  }
+  EXPECT_DOUBLE_EQ(SupersampleJitters(2)[0].x, -0.25);
 }
 
 }  // namespace
