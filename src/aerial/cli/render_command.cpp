@@ -17,17 +17,18 @@
 #include "aerial/error.h"
 #include "aerial/image.h"
 #include "aerial/image/image_writer.h"
-#include "aerial/image/resample.h"
 #include "aerial/precompute/spectral_precompute.h"
 #include "aerial/render/renderer_options.h"
+#include "aerial/scene/camera.h"
 
 namespace aerial::cli {
 namespace {
 
-// Samples per pixel on each side: the frame is rendered this many times larger and each block
-// averaged, so that edges (ridges against the sky, the landmarks) show no stair steps. The default
-// falls back to one sample where the larger frame would not fit (the image limits or the memory
-// budget); a factor asked for must fit.
+// Samples per pixel on each side: the frame is drawn n x n times with the camera jittered to the
+// centres of each pixel's sub-pixels (SupersampleJitters) and the frames averaged, so that edges
+// (ridges against the sky, the landmarks) show no stair steps, at the memory of one frame, as
+// offline accumulation in engines does (e.g. Unreal's Movie Render Queue's spatial samples). The
+// viewer's still view is the same mean (viewer/frame_accumulator.h).
 constexpr int kDefaultSupersample = 2;
 constexpr int kMaxSupersample = 4;
 
@@ -51,32 +52,25 @@ void RunRender(const RenderCommandOptions& options) {
   PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
   Device device(options.tables.MakeDeviceOptions());
   const MemoryBudget budget = options.tables.MakeMemoryBudget(device.largest_heap_bytes());
-  auto check_memory = [&](const RendererOptions& frame) {
-    budget.Check(Combined(SceneMemoryUses(scene, options.scene.Source()),
-                          Combined(TableMemoryUses(precompute), FrameMemoryUses(frame))));
-  };
-  check_memory(render);  // the frame as asked: its errors name --width/--height
-  int supersample = options.supersample.value_or(kDefaultSupersample);
-  try {
-    RendererOptions larger = render;
-    larger.width *= supersample;
-    larger.height *= supersample;
-    larger.Validate();
-    check_memory(larger);
-    render = larger;
-  } catch (const Error& e) {
-    if (options.supersample)
-      throw Error("--supersample", std::to_string(supersample),
-                  "a factor whose frame fits (" + e.field() + " = " + e.value() + ": " + e.allowed() + ")");
-    supersample = 1;
-  }
+  budget.Check(Combined(SceneMemoryUses(scene, options.scene.Source()),
+                        Combined(TableMemoryUses(precompute), FrameMemoryUses(render))));
+  const int supersample = options.supersample.value_or(kDefaultSupersample);
   Tables tables = Tables::LoadOrPrecompute(device, atmosphere, precompute, options.tables.MakeLoadOptions());
   SceneRenderer renderer = MakeSceneRenderer(tables, scene, render);
   renderer.Render(scene);  // the first frame includes lavapipe's shader compilation
-  const auto start = std::chrono::steady_clock::now();
-  std::vector<PassTime> times = renderer.Render(scene);
-  const double frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  ImageRgbF frame = DownsampleBox(renderer.ReadOutput(), supersample);
+  std::vector<PassTime> times;
+  double frame_ms = 0.0;
+  ImageRgbF frame;
+  const std::vector<glm::dvec2> jitters = SupersampleJitters(supersample);
+  for (const glm::dvec2& jitter : jitters) {
+    scene.camera.jitter_px = jitter;
+    const auto start = std::chrono::steady_clock::now();
+    times = renderer.Render(scene);  // --timings: the last jittered frame's
+    frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    ImageRgbF jittered = renderer.ReadOutput();
+    if (frame.rgba.empty()) frame = ImageRgbF{jittered.width, jittered.height, std::vector<float>(jittered.rgba.size())};
+    for (size_t i = 0; i < frame.rgba.size(); ++i) frame.rgba[i] += jittered.rgba[i] / float(jitters.size());
+  }
   ToneMapOptions tone_map =
       options.frame.MakeToneMap(frame, ShaderAtmosphere(atmosphere, precompute).solar_irradiance);
   WriteImage(options.out, frame, tone_map);
@@ -124,8 +118,8 @@ void AddRenderCommand(CLI::App& app) {
       ->required();
   options->frame.AddTo(*command, "Image");
   command->add_option("--supersample", options->supersample,
-                      "Anti-aliasing: render N times larger on each side and average each N x N block "
-                      "(1 to 4; default 2, or 1 where the larger frame would not fit)");
+                      "Anti-aliasing: N x N samples per pixel, the mean of N x N frames with the camera "
+                      "jittered to each sub-pixel's centre (1 to 4; default 2)");
   command->add_flag("--timings", options->timings, "Print the GPU time of each pass");
   options->tables.AddTo(*command);
   command->callback([options] { RunRender(*options); });
