@@ -29,12 +29,12 @@ FroxelGrid FroxelGrid::Parse(const std::string& text, const std::string& field) 
 void FroxelGrid::Validate() const {
   for (int n : {width, height, depth}) {
     if (n < 2 || n > 256)
-      throw Error("froxel resolution", std::to_string(width) + "x" + std::to_string(height) + "x" +
-                                           std::to_string(depth),
+      throw Error("FroxelGrid::width/height/depth",
+                  std::to_string(width) + "x" + std::to_string(height) + "x" + std::to_string(depth),
                   "each of W, H, D in [2, 256]");
   }
   if (!(far_m > 100.0 && far_m <= 1e6))
-    throw Error("froxel far distance", TomlFloat(far_m), "meters in (100, 1e6]");
+    throw Error("FroxelGrid::far_m", TomlFloat(far_m), "meters in (100, 1e6]");
 }
 
 double FroxelGrid::SliceDistance(double slice_center) const {

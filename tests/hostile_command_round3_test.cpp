@@ -163,7 +163,7 @@ TEST_F(HostileCommandRound3, BenchChecksEveryFileBeforeItsWorkAndMakesNothing) {
 // the next one, on --width, fails.
 TEST_F(HostileCommandRound3, ALongValidOutputNameIsAccepted) {
   fs::path out = dir_ / (std::string(240, 'n') + ".png");
-  Expect("render --width 0 --out " + out.string(), 1, {"image size = 0x720 is invalid"});
+  Expect("render --width 0 --out " + out.string(), 1, {"--width/--height = 0x720 is invalid"});
 }
 
 // Before: a wavelength of 350 nm passed (300-1000 allowed), the spectral sun was black, and probe

@@ -1,7 +1,8 @@
 // The modules of the implementation (the directories of src/aerial/, and froxel/) include each
 // other without a cycle (docs/design.md, "Source layout"), so that each builds, tests and reads
 // with only the modules below it. A module's own tests (*_test.cpp) are left out: they may use
-// the modules above it to set up what they check.
+// the modules above it to set up what they check. And the library's code spells no option of the
+// aerial command: its errors name its API's fields, and the command maps them to its options.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <optional>
 #include <regex>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -105,6 +107,80 @@ TEST(SourceLayout, ACycleIsFound) {
   graph.includes["c"] = {{"a", "c.cpp"}};
   graph.includes["d"] = {{"a", "d.cpp"}};
   EXPECT_EQ(FindCycle(graph), "a -> b (a.cpp), b -> c (b.cpp), c -> a (c.cpp)");
+}
+
+// The string literals of C++ source text, in order; comments and character literals are skipped,
+// a raw string is read to its own delimiter, and an escape is kept as written.
+std::vector<std::string> StringLiterals(const std::string& code) {
+  std::vector<std::string> literals;
+  for (size_t i = 0; i < code.size(); ++i) {
+    if (code.compare(i, 2, "//") == 0) {
+      i = code.find('\n', i);
+    } else if (code.compare(i, 2, "/*") == 0) {
+      const size_t end = code.find("*/", i + 2);
+      i = end == std::string::npos ? end : end + 1;
+    } else if (code[i] == '\'') {
+      for (++i; i < code.size() && code[i] != '\''; ++i) i += code[i] == '\\';
+    } else if (code.compare(i, 2, "R\"") == 0) {
+      const size_t open = code.find('(', i);
+      std::string close(1, ')');  // )delimiter"
+      close.append(code, i + 2, open - i - 2).push_back('"');
+      const size_t end = code.find(close, open);
+      literals.push_back(code.substr(open + 1, end - open - 1));
+      i = end + close.size() - 1;
+    } else if (code[i] == '"') {
+      std::string literal;
+      for (++i; i < code.size() && code[i] != '"'; ++i) {
+        if (code[i] == '\\') literal += code[i++];
+        literal += code[i];
+      }
+      literals.push_back(literal);
+    }
+    if (i == std::string::npos) break;
+  }
+  return literals;
+}
+
+TEST(SourceLayout, StringLiteralsAreReadAsTheCompilerReadsThem) {
+  const std::string code = "f(\"--a\\\"b\", '\"'); // \"--comment\"\n/* \"--block\" */ g(R\"x(--raw\")x\", \"\");";
+  EXPECT_EQ(StringLiterals(code), (std::vector<std::string>{"--a\\\"b", "--raw\"", ""}));
+}
+
+// The library's sources: include/aerial/, froxel/ and src/aerial/, less its tests and the parts of
+// src/aerial/ that are the command's own: cli/ (its options), bench/ and viewer/ (`aerial bench`
+// and `aerial view`, whose messages speak of their command's options).
+std::vector<fs::path> LibrarySources(const fs::path& source) {
+  std::vector<fs::path> files;
+  for (const char* root : {"include/aerial", "froxel", "src/aerial"}) {
+    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(source / root)) {
+      const std::string relative = fs::relative(entry.path(), source).string();
+      const std::string name = entry.path().filename().string();
+      if (!entry.is_regular_file() || name.ends_with("_test.cpp") || !(name.ends_with(".h") || name.ends_with(".cpp")))
+        continue;
+      if (relative.starts_with("src/aerial/cli/") || relative.starts_with("src/aerial/bench/") ||
+          relative.starts_with("src/aerial/viewer/"))
+        continue;
+      files.push_back(entry.path());
+    }
+  }
+  return files;
+}
+
+// A program that embeds aerial sets RenderOptions::width, not --width: an error that named the
+// option would point its user at a command line they do not have.
+TEST(SourceLayout, LibraryCodeSpellsNoCommandLineOption) {
+  static const std::regex option(R"(^--[a-z])");
+  std::vector<fs::path> files = LibrarySources(AERIAL_SOURCE_DIR);
+  ASSERT_GT(files.size(), 100u) << "the library's sources are found";
+  std::string found;
+  for (const fs::path& file : files) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    for (const std::string& literal : StringLiterals(text.str()))
+      if (std::regex_search(literal, option)) found += fs::relative(file, AERIAL_SOURCE_DIR).string() + ": \"" + literal + "\"\n";
+  }
+  EXPECT_EQ(found, "");
 }
 
 }  // namespace

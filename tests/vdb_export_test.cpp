@@ -708,7 +708,7 @@ TEST_F(VdbPaths, UnwritableOrWrongPathsFailBeforeAnyWork) {
     CheckVdbOutputPath(dir_ / "x.exr");
     FAIL() << "a .exr name was accepted";
   } catch (const Error& e) {
-    EXPECT_EQ(e.field(), "--out");
+    EXPECT_EQ(e.field(), "VDB path");
   }
   CheckVdbOutputPath(dir_ / "x.VDB");  // the extension in any case
   EXPECT_TRUE(Entries().empty()) << "the check leaves no probe file";

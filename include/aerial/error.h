@@ -27,7 +27,9 @@ std::string Printable(std::string_view text);
 
 class Error : public std::runtime_error {
  public:
-  // field: dotted name of the input ("rayleigh.scattering[1]", "--altitude-m", "cache header").
+  // field: dotted name of the input ("rayleigh.scattering[1]", "RenderOptions::render_scale",
+  // "cache header"): the library's errors name what its caller set, never an option of the aerial
+  // command, which shows them under its own options.
   // value: the bad value as text (what() shows it Shortened; value() keeps it whole).
   // allowed: the accepted range or form. where: file or context.
   Error(std::string field, std::string value, std::string allowed, std::string where = "");

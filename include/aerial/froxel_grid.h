@@ -15,7 +15,7 @@ struct FroxelGrid {
 
   // "WxHxD", e.g. "32x32x32"; throws aerial::Error naming `field` for anything else or for a
   // resolution outside [2, 256].
-  static FroxelGrid Parse(const std::string& text, const std::string& field = "--froxels");
+  static FroxelGrid Parse(const std::string& text, const std::string& field = "FroxelGrid::width/height/depth");
   void Validate() const;
 
   double SliceDistance(double slice_center) const;  // distance of a (fractional) slice center

@@ -49,7 +49,7 @@ struct RenderOptions {
   // The sun's shadow map (shadow_map.h) on surfaces; off: no shadow map, and the frame of before.
   bool shadows = true;
 
-  void Validate() const;  // throws aerial::Error naming the option
+  void Validate() const;  // throws aerial::Error naming the field
   int render_width() const;
   int render_height() const;
 };

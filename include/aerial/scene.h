@@ -98,7 +98,7 @@ Scene BuildDefaultScene(double planet_radius_m);
 std::vector<std::string> PresetNames();
 
 // The built-in scene (BuildDefaultScene) seen from the named preset; scene.name is the preset's.
-// An unknown name throws Error("--preset", name, "one of: noon, afternoon, ...").
+// An unknown name throws Error("preset name", name, "one of: noon, afternoon, ...").
 Scene BuildPreset(const std::string& name, double planet_radius_m);
 
 // Sets scene.camera, scene.sun and scene.name to the named preset's and leaves the meshes alone.

@@ -23,8 +23,8 @@ struct VdbExportOptions {
 };
 
 // Checks, before any GPU work, the output path (.vdb, an existing directory where a file can be
-// created; errors name --out), the world grid (voxel size in (0, far], at most 2^24 voxels
-// over the frustum's bounding box; errors name --world-grid) or else the frustum grid (the
+// created; errors name the VDB path), the world grid (voxel size in (0, far], at most 2^24 voxels
+// over the frustum's bounding box; errors name VdbExportOptions::world_grid_m) or else the frustum grid (the
 // camera's near plane in (0, far); errors name camera.near_m). Returns the most voxels the volume
 // can have (the frustum grid's, or the world grid's voxels the froxels cover, sampled), for a
 // memory estimate.

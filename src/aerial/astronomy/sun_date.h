@@ -1,6 +1,6 @@
 #pragma once
-// The sun from a local date, clock time and place, as `--date`, `--time`, `--time-zone`,
-// `--latitude-deg` and `--longitude-deg` or a scene file's [sun] keys give them. Time zones come
+// The sun from a local date, clock time and place, as a scene file's [sun] keys or the command
+// line's options give them. Time zones come
 // from the system's tz database (/usr/share/zoneinfo, Debian's tzdata) through Howard Hinnant's
 // date library (the basis of C++20's <chrono> time zones), or are fixed UTC offsets.
 #include <string>
@@ -18,11 +18,10 @@ struct SunDate {
   double longitude_deg = 0.0;  // east positive
 };
 
-// What messages call SunDate's fields: the command line's options, or a scene file's keys.
+// What messages call SunDate's fields: a scene file's keys, or a command line's options.
 struct SunDateFields {
   std::string date, time, time_zone, latitude, longitude;
 };
-inline const SunDateFields kSunDateOptions{"--date", "--time", "--time-zone", "--latitude-deg", "--longitude-deg"};
 
 // The first and last years taken: UTC's leap-second table (ERFA's eraDat) starts in 1960, and the
 // Earth's orbit (eraEpv00) holds its stated accuracy to 2100.

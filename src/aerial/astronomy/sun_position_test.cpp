@@ -21,6 +21,8 @@ constexpr double kSpaZenithDeg = 50.11162, kSpaAzimuthDeg = 194.34024, kSpaDista
 // SPA states +-0.0003 degrees for its own angles over the years -2000 to 6000; ERFA's are
 // finer (sub-arcsecond), so the difference must be within SPA's bound.
 constexpr double kSpaAccuracyDeg = 0.0003;
+// What the messages call SunDate's fields here.
+const SunDateFields kFields{"date", "time", "time_zone", "latitude_deg", "longitude_deg"};
 
 // SPA's refraction (its equation 42, Bennett's formula scaled for pressure and temperature), in
 // degrees of elevation for the geometric elevation e0: to take it out of SPA's published zenith.
@@ -30,7 +32,7 @@ double SpaRefractionDeg(double e0_deg, double pressure_hpa, double temperature_c
 }
 
 TEST(SunPosition, MatchesTheSpaTestCaseWithinSpasAccuracy) {
-  const UtcTime utc = ToUtc(kSpaDate, kSunDateOptions, "");
+  const UtcTime utc = ToUtc(kSpaDate, kFields, "");
   EXPECT_EQ(utc.hour, 19);
   EXPECT_EQ(utc.minute, 30);
   EXPECT_EQ(utc.second, 30.0);
@@ -54,7 +56,7 @@ TEST(SunPosition, MatchesTheSpaTestCaseWithinSpasAccuracy) {
   EXPECT_EQ(refracted.azimuth_deg, geometric.azimuth_deg);
   // The default place is sea level: the 1830 m of the case move the sun by far less than SPA's
   // accuracy (parallax of 8.8 arcseconds scaled by 1830 m / 6371 km).
-  const Sun sun = SunFromDate(kSpaDate, kSunDateOptions, "");
+  const Sun sun = SunFromDate(kSpaDate, kFields, "");
   EXPECT_NEAR(sun.zenith_deg, geometric.zenith_deg, 1e-5);
   EXPECT_NEAR(sun.azimuth_deg, geometric.azimuth_deg, 1e-5);
 }
@@ -62,7 +64,7 @@ TEST(SunPosition, MatchesTheSpaTestCaseWithinSpasAccuracy) {
 // A zone's offset follows its daylight-saving rules: Paris is UTC+2 in July and UTC+1 in January.
 TEST(SunPosition, TimeZonesFollowTheTzDatabase) {
   auto hour = [](const std::string& date, const std::string& zone) {
-    return ToUtc({date, "12:00", zone, 48.85, 2.35}, kSunDateOptions, "").hour;
+    return ToUtc({date, "12:00", zone, 48.85, 2.35}, kFields, "").hour;
   };
   EXPECT_EQ(hour("2024-07-01", "Europe/Paris"), 10);
   EXPECT_EQ(hour("2024-01-15", "Europe/Paris"), 11);
@@ -70,7 +72,7 @@ TEST(SunPosition, TimeZonesFollowTheTzDatabase) {
   EXPECT_EQ(hour("2024-07-01", "UTC"), 12);
   EXPECT_EQ(hour("2024-07-01", "-0530"), 17);
   // The date changes with the offset: noon on 1 January in Kiribati (UTC+14) is 22:00 the day before.
-  const UtcTime kiribati = ToUtc({"2024-01-01", "12:00", "Pacific/Kiritimati", 1.87, -157.4}, kSunDateOptions, "");
+  const UtcTime kiribati = ToUtc({"2024-01-01", "12:00", "Pacific/Kiritimati", 1.87, -157.4}, kFields, "");
   EXPECT_EQ(kiribati.year, 2023);
   EXPECT_EQ(kiribati.day, 31);
   EXPECT_EQ(kiribati.hour, 22);
@@ -83,25 +85,25 @@ TEST(SunPosition, BadInputNamesTheFieldAndTheValue) {
     std::string field, value;
   };
   const Case cases[] = {
-      {{"2023-02-29", "12:00", "UTC", 0, 0}, "--date", "2023-02-29"},
-      {{"2023-13-01", "12:00", "UTC", 0, 0}, "--date", "2023-13-01"},
-      {{"17/10/2003", "12:00", "UTC", 0, 0}, "--date", "17/10/2003"},
-      {{"1959-12-31", "12:00", "UTC", 0, 0}, "--date", "1959-12-31"},
-      {{"2003-10-17", "24:00", "UTC", 0, 0}, "--time", "24:00"},
-      {{"2003-10-17", "noon", "UTC", 0, 0}, "--time", "noon"},
-      {{"2003-10-17", "12:00", "Europe/Pariss", 0, 0}, "--time-zone", "Europe/Pariss"},
-      {{"2003-10-17", "12:00", "+15:00", 0, 0}, "--time-zone", "+15:00"},
-      {{"2003-10-17", "12:00", "UTC", 90.5, 0}, "--latitude-deg", "90.5"},
-      {{"2003-10-17", "12:00", "UTC", NAN, 0}, "--latitude-deg", "nan"},
-      {{"2003-10-17", "12:00", "UTC", 0, -181}, "--longitude-deg", "-181"},
+      {{"2023-02-29", "12:00", "UTC", 0, 0}, "date", "2023-02-29"},
+      {{"2023-13-01", "12:00", "UTC", 0, 0}, "date", "2023-13-01"},
+      {{"17/10/2003", "12:00", "UTC", 0, 0}, "date", "17/10/2003"},
+      {{"1959-12-31", "12:00", "UTC", 0, 0}, "date", "1959-12-31"},
+      {{"2003-10-17", "24:00", "UTC", 0, 0}, "time", "24:00"},
+      {{"2003-10-17", "noon", "UTC", 0, 0}, "time", "noon"},
+      {{"2003-10-17", "12:00", "Europe/Pariss", 0, 0}, "time_zone", "Europe/Pariss"},
+      {{"2003-10-17", "12:00", "+15:00", 0, 0}, "time_zone", "+15:00"},
+      {{"2003-10-17", "12:00", "UTC", 90.5, 0}, "latitude_deg", "90.5"},
+      {{"2003-10-17", "12:00", "UTC", NAN, 0}, "latitude_deg", "nan"},
+      {{"2003-10-17", "12:00", "UTC", 0, -181}, "longitude_deg", "-181"},
       // The clocks go forward at 02:00 on 2024-03-31 in Paris, and back at 03:00 on 2024-10-27.
-      {{"2024-03-31", "02:30", "Europe/Paris", 48.85, 2.35}, "--time", "02:30"},
-      {{"2024-10-27", "02:30", "Europe/Paris", 48.85, 2.35}, "--time", "02:30"},
+      {{"2024-03-31", "02:30", "Europe/Paris", 48.85, 2.35}, "time", "02:30"},
+      {{"2024-10-27", "02:30", "Europe/Paris", 48.85, 2.35}, "time", "02:30"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.field + " = " + c.value);
     try {
-      SunFromDate(c.date, kSunDateOptions, "command line");
+      SunFromDate(c.date, kFields, "command line");
       ADD_FAILURE() << "accepted";
     } catch (const Error& e) {
       EXPECT_EQ(e.field(), c.field);

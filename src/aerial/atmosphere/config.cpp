@@ -231,7 +231,7 @@ AtmosphereParameters ParseAtmosphereToml(std::string_view text, const std::strin
 }
 
 AtmosphereParameters LoadAtmosphereFile(const std::filesystem::path& path) {
-  return ParseAtmosphereToml(ReadTomlFile(path, "--atmosphere"), path.string());
+  return ParseAtmosphereToml(ReadTomlFile(path, "atmosphere file"), path.string());
 }
 
 void Validate(const AtmosphereParameters& a, const std::string& where) {

@@ -1,8 +1,7 @@
 #pragma once
 // What `aerial bench` measures: the table resolutions of both variants, the frame and image sizes,
 // the number of runs and frames, and the reference sampling; in full mode or in quick mode (small
-// tables, fewer frames, smaller images, fewer and noisier reference pixels: under 2 minutes on 2
-// cores with lavapipe).
+// tables, fewer frames, smaller images, fewer and noisier reference pixels).
 #include <optional>
 #include <string>
 #include <vector>

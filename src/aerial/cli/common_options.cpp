@@ -115,7 +115,11 @@ std::optional<std::filesystem::path> TableOptions::CacheFile(const AtmospherePar
 }
 
 MemoryBudget TableOptions::MakeMemoryBudget(uint64_t largest_heap_bytes) const {
-  return aerial::MakeMemoryBudget(max_memory_mib, largest_heap_bytes);
+  MemoryBudget budget = aerial::MakeMemoryBudget(max_memory_mib, largest_heap_bytes);
+  // Where it comes from in the command's words: the option that sets it.
+  budget.origin = max_memory_mib ? "--max-memory-mib " + std::to_string(*max_memory_mib)
+                                 : budget.origin + "; --max-memory-mib N sets another";
+  return budget;
 }
 
 MemoryBudget TableOptions::MakeHostMemoryBudget() const { return MakeMemoryBudget(UINT64_MAX); }

@@ -50,7 +50,7 @@ Sun MakeSun(const EnvmapCommandOptions& options, std::string& sun_from) {
   sun_from = date->date + " " + date->time + " " + date->time_zone + " at latitude " +
              FormatNumber(date->latitude_deg) + ", longitude " + FormatNumber(date->longitude_deg) +
              " (geometric, no refraction)";
-  return astronomy::SunFromDate(*date, astronomy::kSunDateOptions, "command line");
+  return astronomy::SunFromDate(*date, kSunDateOptions, "command line");
 }
 
 std::string ChannelsText(const PrecomputeOptions& precompute, const AtmosphereParameters& atmosphere) {

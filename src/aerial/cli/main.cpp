@@ -1,6 +1,7 @@
 // aerial: physically based sky and aerial perspective. Errors from any boundary (configs, CLI
-// values, files, Vulkan) arrive here as exceptions, are printed once and turn into exit status 1;
-// a command line that does not parse exits with 2 (the footer of --help).
+// values, files, Vulkan) arrive here as exceptions, are printed once (the library's under the
+// options that set what they name) and turn into exit status 1; a command line that does not
+// parse exits with 2 (the footer of --help).
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -11,6 +12,7 @@
 
 #include "aerial/cli/commands.h"
 #include "aerial/cli/huge_pages.h"
+#include "aerial/cli/option_names.h"
 #include "aerial/cli/option_values.h"
 #include "aerial/device.h"
 #include "aerial/error.h"
@@ -76,7 +78,7 @@ int main(int argc, char** argv) {
                  "their options)\n", aerial::Printable(e.what()).c_str());
     return kUsageError;
   } catch (const aerial::Error& e) {
-    return Fail(aerial::cli::AsTyped(e, app));
+    return Fail(aerial::cli::AsTyped(aerial::cli::WithOptionNames(e), app));
   } catch (const ::vk::OutOfDeviceMemoryError& e) {
     return Fail(OutOfMemory("device memory", e.what()));
   } catch (const ::vk::OutOfHostMemoryError& e) {

@@ -58,13 +58,9 @@ void FroxelOptions::AddTo(CLI::App& command) {
 }
 
 FroxelGrid FroxelOptions::Make() const {
-  FroxelGrid grid = FroxelGrid::Parse(froxels);  // names --froxels
+  FroxelGrid grid = FroxelGrid::Parse(froxels);
   grid.far_m = froxel_far_m;
-  try {
-    grid.Validate();  // the resolution passed Parse, so only the distance can fail here
-  } catch (const Error& e) {
-    throw Error("--froxel-far-m", e.value(), e.allowed());
-  }
+  grid.Validate();  // the resolution passed Parse, so only the distance can fail here
   return grid;
 }
 

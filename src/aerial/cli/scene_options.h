@@ -10,13 +10,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include "aerial/cli/scene_overrides.h"
 #include "aerial/cli/sun_date_options.h"
 #include "aerial/core/memory_budget.h"
 #include "aerial/froxel_grid.h"
 #include "aerial/image/exposure.h"
 #include "aerial/render/renderer_options.h"
 #include "aerial/scene.h"
-#include "aerial/scene/scene_overrides.h"
 
 namespace aerial::cli {
 

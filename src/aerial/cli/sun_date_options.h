@@ -11,6 +11,10 @@
 
 namespace aerial::cli {
 
+// What messages call SunDate's fields on the command line.
+inline const astronomy::SunDateFields kSunDateOptions{"--date", "--time", "--time-zone", "--latitude-deg",
+                                                      "--longitude-deg"};
+
 struct SunDateOptions {
   std::string date, time, time_zone;
   std::optional<double> latitude_deg, longitude_deg;

@@ -46,7 +46,7 @@ std::vector<std::byte> ReadFile(const std::filesystem::path& path);
 // It cannot foresee a full disk.
 void CheckWritable(const std::filesystem::path& path);
 
-// The same check for an output file the user names (field: the option, "--stats"), which must
+// The same check for an output file the caller names (field: what names it, "VDB path"), which must
 // lie in an existing directory (through a symbolic link, the file it points to must): nothing is
 // created. An empty path is refused too.
 void CheckOutputFile(const std::filesystem::path& path, const std::string& field);

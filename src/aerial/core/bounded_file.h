@@ -15,7 +15,7 @@
 
 namespace aerial {
 
-// field names the input in messages (the option "--scene", or "buffers[1].uri"); cap_note, if
+// field names the input in messages ("scene file", or "buffers[1].uri"); cap_note, if
 // any, ends the message for a file over the cap (where max_bytes comes from).
 std::vector<unsigned char> ReadBoundedFile(const std::filesystem::path& path,
                                            const std::string& field, size_t max_bytes,

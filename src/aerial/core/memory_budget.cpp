@@ -25,11 +25,11 @@ void MemoryBudget::Check(const std::vector<MemoryUse>& new_uses) const {
   for (const MemoryUse& use : uses) {
     total = use.bytes > UINT64_MAX - total ? UINT64_MAX : total + use.bytes;
     if (!largest || use.bytes > largest->bytes) largest = &use;
-    parts += (parts.empty() ? "" : "; ") + use.option + " " + use.value + ": " + use.what + " " +
+    parts += (parts.empty() ? "" : "; ") + use.field + " " + use.value + ": " + use.what + " " +
              FormatMiB(use.bytes);
   }
   if (total <= bytes || !largest) return;
-  throw Error(largest->option, largest->value,
+  throw Error(largest->field, largest->value,
               "sizes whose memory fits the budget: estimated " + FormatMiB(total) + " (" + parts +
                   ") > budget " + FormatMiB(bytes) + " (" + origin + ")");
 }
@@ -46,11 +46,10 @@ void MemoryTally::Add(uint64_t bytes) {
 }
 
 MemoryBudget MakeMemoryBudget(std::optional<uint64_t> max_memory_mib, uint64_t device_heap_bytes) {
-  if (max_memory_mib) return {*max_memory_mib * kMiB, "--max-memory-mib " + std::to_string(*max_memory_mib)};
+  if (max_memory_mib) return {*max_memory_mib * kMiB, "max_memory_mib " + std::to_string(*max_memory_mib)};
   uint64_t default_bytes = kDefaultMemoryBudgetMiB * kMiB;
-  if (device_heap_bytes < default_bytes)
-    return {device_heap_bytes, "the device's largest memory heap; --max-memory-mib N sets another"};
-  return {default_bytes, "the default; --max-memory-mib N sets another"};
+  if (device_heap_bytes < default_bytes) return {device_heap_bytes, "the device's largest memory heap"};
+  return {default_bytes, "the default"};
 }
 
 }  // namespace aerial

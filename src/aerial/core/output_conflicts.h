@@ -12,7 +12,7 @@
 
 namespace aerial {
 
-// A file under the option or role that names it ("--stats", "table cache").
+// A file under the option or role that names it ("--stats" from a command, "table cache").
 struct NamedFile {
   std::string field;
   std::filesystem::path path;

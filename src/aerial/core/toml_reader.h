@@ -5,7 +5,7 @@
 // written and what was expected, with "file:line:column" as where.
 //
 //   TomlReader r(path.string());
-//   toml::table root = r.Parse(ReadTomlFile(path, "--scene"));
+//   toml::table root = r.Parse(ReadTomlFile(path, "scene file"));
 //   r.RejectUnknownKeys(root, "", {"camera"});
 //   IfPresent(root, "camera", [&](const toml::node& n) {
 //     const toml::table& camera = r.Table(n, "camera");
@@ -35,7 +35,7 @@ std::string TomlString(std::string_view text);
 
 // The whole file as text, read by ReadBoundedFile (bounded_file.h) with the cap
 // kMaxTomlFileBytes: a missing, unreadable, oversized or non-regular file throws
-// Error(field, path, ...); field names the option ("--scene").
+// Error(field, path, ...); field names the input ("scene file").
 std::string ReadTomlFile(const std::filesystem::path& path, const std::string& field);
 
 // Applies one optional key: calls read(node) if table has the key.

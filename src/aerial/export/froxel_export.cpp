@@ -141,8 +141,8 @@ void CheckVdbOutputPath(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension != ".vdb") throw Error("--out", path.string(), "a .vdb file");
-  CheckOutputFile(path, "--out");
+  if (extension != ".vdb") throw Error("VDB path", path.string(), "a .vdb file");
+  CheckOutputFile(path, "VDB path");
 }
 
 namespace {
@@ -194,7 +194,7 @@ int64_t CoveredVoxels(double voxel_m, const WorldBox& box, const FroxelPlacement
 int64_t CheckWorldGrid(double voxel_m, const FroxelPlacement& placement) {
   const double far_m = placement.grid().far_m;
   if (!(voxel_m > 0.0 && voxel_m <= far_m))
-    throw Error("--world-grid", Number(voxel_m),
+    throw Error("VdbExportOptions::world_grid_m", Number(voxel_m),
                 "a voxel size in meters in (0, " + Number(far_m) + "] (the froxel far distance)");
   std::array<glm::dvec3, 2> bounds = placement.Bounds();
   WorldBox box = WorldGridBox(voxel_m, bounds);
@@ -211,9 +211,9 @@ int64_t CheckWorldGrid(double voxel_m, const FroxelPlacement& placement) {
     std::snprintf(allowed, sizeof allowed,
                   "a voxel size in meters giving at most %" PRId64
                   " voxels over this frustum's %.0f x %.0f x %.0f m box: %.0f m or more here "
-                  "(or a shorter --froxel-far-m)",
+                  "(or a shorter FroxelGrid::far_m)",
                   kMaxWorldGridVoxels, extent.x, extent.y, extent.z, std::ceil(fits));
-    throw Error("--world-grid", Number(voxel_m), allowed);
+    throw Error("VdbExportOptions::world_grid_m", Number(voxel_m), allowed);
   }
   return CoveredVoxels(voxel_m, box, placement);
 }

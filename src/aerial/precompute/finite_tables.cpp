@@ -60,7 +60,7 @@ void CheckFiniteTables(const TableCache& tables) {
   throw Error("precompute pass \"" + (writer == kWriters.end() ? bad->table : writer->second) + "\"",
               bad->description,
               "finite tables (the atmosphere or the orders may be beyond what float arithmetic "
-              "holds; fewer --orders or a thinner atmosphere)");
+              "holds; fewer PrecomputeOptions::orders or a thinner atmosphere)");
 }
 
 }  // namespace aerial

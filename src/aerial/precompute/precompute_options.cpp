@@ -153,10 +153,10 @@ void PrecomputeOptions::Validate() const {
   CheckMuAxis("multiple density mu", r.multiple_density_mu);
   CheckRange("multiple density mu_s", r.multiple_density_mu_s, 2, 512);
   CheckNuAxis("multiple density nu", r.multiple_density_nu, variant);
-  CheckTexels("transmittance size (--transmittance-size)", {r.transmittance_mu, r.transmittance_r},
+  CheckTexels("TableResolution::transmittance_mu/r", {r.transmittance_mu, r.transmittance_r},
               kMaxTransmittanceTexels);
-  CheckTexels("irradiance size (--irradiance-size)", {r.irradiance_mu_s, r.irradiance_r}, kMaxIrradianceTexels);
-  CheckTexels("scattering size (--scattering-size)",
+  CheckTexels("TableResolution::irradiance_mu_s/r", {r.irradiance_mu_s, r.irradiance_r}, kMaxIrradianceTexels);
+  CheckTexels("TableResolution::scattering_r/mu/mu_s/nu",
               {r.scattering_r, r.scattering_mu, r.scattering_mu_s, r.scattering_nu}, kMaxScatteringTexels);
   CheckTexels("multiple density size",
               {r.multiple_density_r, r.multiple_density_mu, r.multiple_density_mu_s, r.multiple_density_nu},

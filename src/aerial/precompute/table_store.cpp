@@ -64,9 +64,12 @@ LoadedTables LoadOrPrecompute(const vk::Context& context, const AtmosphereParame
     use_cache = false;
   } else if (!dir) {
     const char* home = std::getenv("HOME");
+    // As a warning it reaches the user as it is, past the command line's option names (its error
+    // messages get them): so it names neither an option nor an API field for the directory.
     without_cache(Error("HOME", home && *home ? home : "unset",
-                        "an absolute path, or an absolute XDG_CACHE_HOME, AERIAL_CACHE_DIR or --cache-dir, to "
-                        "place the table cache (relative ones are ignored, as the XDG specification says)"));
+                        "an absolute path, or an absolute XDG_CACHE_HOME or AERIAL_CACHE_DIR, or a cache directory "
+                        "given, to place the table cache (relative ones are ignored, as the XDG "
+                        "specification says)"));
   } else {
     loaded.cache_file = CacheFilePath(*dir, atmosphere, options);
     for (const std::filesystem::path& stale : RemoveStaleTemporaries(*dir, "tables-"))

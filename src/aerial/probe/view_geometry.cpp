@@ -22,11 +22,11 @@ void CheckAngle(const char* field, double value, double low, double high) {
 void ValidateViewAngles(const ViewAngles& view, const AtmosphereParameters& atmosphere) {
   double thickness = atmosphere.top_radius_m - atmosphere.bottom_radius_m;
   if (!std::isfinite(view.altitude_m) || view.altitude_m < 0.0 || view.altitude_m > thickness)
-    throw Error("--altitude-m", FormatNumber(view.altitude_m),
+    throw Error("ViewAngles::altitude_m", FormatNumber(view.altitude_m),
                 "meters in [0, " + FormatNumber(thickness) + "] (ground to the top of the atmosphere)");
-  CheckAngle("--view-zenith-deg", view.view_zenith_deg, 0.0, 180.0);
-  CheckAngle("--sun-zenith-deg", view.sun_zenith_deg, 0.0, 180.0);
-  CheckAngle("--azimuth-deg", view.azimuth_deg, -360.0, 360.0);
+  CheckAngle("ViewAngles::view_zenith_deg", view.view_zenith_deg, 0.0, 180.0);
+  CheckAngle("ViewAngles::sun_zenith_deg", view.sun_zenith_deg, 0.0, 180.0);
+  CheckAngle("ViewAngles::azimuth_deg", view.azimuth_deg, -360.0, 360.0);
 }
 
 RayParameters ToRayParameters(const ViewAngles& view, const AtmosphereParameters& atmosphere) {

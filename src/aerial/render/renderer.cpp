@@ -241,11 +241,15 @@ FrameMemory EstimateFrameMemory(const RenderOptions& o) {
 }
 
 void RenderOptions::Validate() const {
-  CheckImageSize(width, height, "--width/--height");
+  try {
+    CheckImageSize(width, height);
+  } catch (const Error& e) {
+    throw Error("RenderOptions::width/height", e.value(), e.allowed());
+  }
   if (!(render_scale >= 0.25 && render_scale <= 1.0))
-    throw Error("--render-scale", FormatNumber(render_scale), "in [0.25, 1]");
+    throw Error("RenderOptions::render_scale", FormatNumber(render_scale), "in [0.25, 1]");
   if (!(terrain_error_px >= 0.25 && terrain_error_px <= 64.0))
-    throw Error("--terrain-error-px", FormatNumber(terrain_error_px), "in [0.25, 64]");
+    throw Error("RenderOptions::terrain_error_px", FormatNumber(terrain_error_px), "in [0.25, 64]");
   froxels.Validate();
 }
 

@@ -20,7 +20,7 @@ void CheckName(const std::string& name) {
     if (known == name) return;
   std::string allowed = "one of:";
   for (size_t i = 0; i < names.size(); ++i) allowed += (i ? ", " : " ") + names[i];
-  throw Error("--preset", name, allowed);
+  throw Error("preset name", name, allowed);
 }
 
 }  // namespace

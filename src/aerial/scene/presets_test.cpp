@@ -46,7 +46,7 @@ TEST(Preset, UnknownNameIsAnErrorListingTheNames) {
     BuildPreset("dusk", kR);
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_EQ(e.field(), "--preset");
+    EXPECT_EQ(e.field(), "preset name");
     EXPECT_EQ(e.value(), "dusk");
     for (const std::string& name : PresetNames())
       EXPECT_NE(e.allowed().find(name), std::string::npos) << name;

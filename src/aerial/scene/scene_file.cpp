@@ -191,7 +191,7 @@ Scene ParseSceneToml(std::string_view text, const std::string& where,
     uint64_t held = 0;
     for (size_t i = 0; i < meshes->size(); ++i) {
       MemoryBudget with_models =
-          held == 0 ? budget : budget.Holding({{"--scene", where, "the glTF models before mesh[" + std::to_string(i) + "]", held}});
+          held == 0 ? budget : budget.Holding({{"scene file", where, "the glTF models before mesh[" + std::to_string(i) + "]", held}});
       view.meshes.push_back(ReadMesh(r, *meshes->get(i), TomlReader::Index("mesh", i), base_dir, planet_radius_m,
                                      built_in, with_models));
       held += HeldMeshBytes(view.meshes.back());
@@ -211,7 +211,7 @@ Scene LoadSceneFile(const std::filesystem::path& path, double planet_radius_m) {
 }
 
 Scene LoadSceneFile(const std::filesystem::path& path, double planet_radius_m, const MemoryBudget& budget) {
-  Scene scene = ParseSceneToml(ReadTomlFile(path, "--scene"), path.string(), path.parent_path(),
+  Scene scene = ParseSceneToml(ReadTomlFile(path, "scene file"), path.string(), path.parent_path(),
                                planet_radius_m, budget);
   scene.name = path.stem().string();
   return scene;

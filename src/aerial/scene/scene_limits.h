@@ -1,8 +1,8 @@
 #pragma once
 // The accepted range of every camera and sun value, shared by scene files and command-line
 // overrides so both reject the same things with the same words. Each check throws
-// aerial::Error{field, value, allowed, where} with the caller's field name ("camera.fov_deg",
-// "--camera-fov-deg") and where ("scene.toml:12:9", "command line").
+// aerial::Error{field, value, allowed, where} with the caller's field name ("camera.fov_deg", or a
+// command's option) and where ("scene.toml:12:9", "command line").
 #include <glm/glm.hpp>
 #include <string>
 

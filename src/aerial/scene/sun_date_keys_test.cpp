@@ -1,21 +1,22 @@
 // The sun of a date and a place in scene files ([sun] date, time, time_zone, latitude_deg,
-// longitude_deg) and on the command line (SceneOverrides::sun_date): the same sun as the
-// astronomy module's, never together with the angles, every bad key named.
+// longitude_deg): the same sun as the astronomy module's, never together with the angles, every
+// bad key named.
 #include "aerial/scene/sun_date_keys.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
+#include "aerial/astronomy/sun_date.h"
 #include "aerial/error.h"
 #include "aerial/scene/scene_file.h"
-#include "aerial/scene/scene_overrides.h"
 
 namespace aerial {
 namespace {
 
 constexpr double kR = 6360e3;
 const astronomy::SunDate kGolden{"2003-10-17", "12:30:30", "-07:00", 39.742476, -105.1786};
+const astronomy::SunDateFields kFields{"date", "time", "time_zone", "latitude_deg", "longitude_deg"};
 
 Scene Parse(const std::string& sun_table) {
   return ParseSceneToml("built_in = false\n[sun]\n" + sun_table, "test.toml", ".", kR);
@@ -33,7 +34,7 @@ void ExpectError(const std::string& sun_table, const std::string& field, const s
 }
 
 TEST(SunDateInScenes, TomlDatesTimesAndStringsGiveTheAstronomySun) {
-  const Sun expected = astronomy::SunFromDate(kGolden, astronomy::kSunDateOptions, "");
+  const Sun expected = astronomy::SunFromDate(kGolden, kFields, "");
   const char* places = "time_zone = \"-07:00\"\nlatitude_deg = 39.742476\nlongitude_deg = -105.1786\n";
   for (const std::string& when : {std::string("date = 2003-10-17\ntime = 12:30:30\n"),
                                   std::string("date = \"2003-10-17\"\ntime = \"12:30:30\"\n")}) {
@@ -49,7 +50,7 @@ TEST(SunDateInScenes, TomlDatesTimesAndStringsGiveTheAstronomySun) {
 // examples/scenes/dated.toml is the SPA case above.
 TEST(SunDateInScenes, TheExampleSceneHasTheSpaSun) {
   const Scene scene = LoadSceneFile(std::filesystem::path(AERIAL_SOURCE_DIR) / "examples/scenes/dated.toml", kR);
-  EXPECT_EQ(scene.sun, astronomy::SunFromDate(kGolden, astronomy::kSunDateOptions, ""));
+  EXPECT_EQ(scene.sun, astronomy::SunFromDate(kGolden, kFields, ""));
 }
 
 TEST(SunDateInScenes, BadKeysAreNamedWithTheirFile) {
@@ -61,29 +62,6 @@ TEST(SunDateInScenes, BadKeysAreNamedWithTheirFile) {
               "sun.latitude_deg", "-91");
   ExpectError("zenith_deg = 40\ndate = 2003-10-17\ntime = 12:30:30\ntime_zone = \"UTC\"\n" + place, "sun.date",
               "2003-10-17");
-}
-
-TEST(SunDateInScenes, CommandLineDateReplacesTheSunAndRefusesAngles) {
-  Scene scene;
-  SceneOverrides dated{.sun_date = kGolden};
-  ApplyOverrides(scene, dated, kR);
-  const Sun expected = astronomy::SunFromDate(kGolden, astronomy::kSunDateOptions, "");
-  EXPECT_EQ(scene.sun, expected);
-
-  SceneOverrides both{.sun_zenith_deg = 30.0, .sun_date = kGolden};
-  Scene untouched;
-  try {
-    ApplyOverrides(untouched, both, kR);
-    ADD_FAILURE() << "angles and a date accepted together";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.field(), "--date");
-    EXPECT_EQ(e.value(), "2003-10-17");
-  }
-  EXPECT_EQ(untouched.sun, Sun{});
-
-  SceneOverrides bad{.sun_date = astronomy::SunDate{"2003-10-17", "12:00", "Europe/Nowhere", 0, 0}};
-  EXPECT_THROW(ApplyOverrides(untouched, bad, kR), Error);
-  EXPECT_EQ(untouched.sun, Sun{});
 }
 
 }  // namespace

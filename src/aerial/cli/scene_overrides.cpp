@@ -1,9 +1,10 @@
-#include "aerial/scene/scene_overrides.h"
+#include "aerial/cli/scene_overrides.h"
 
+#include "aerial/cli/sun_date_options.h"
 #include "aerial/error.h"
 #include "aerial/scene/scene_limits.h"
 
-namespace aerial {
+namespace aerial::cli {
 
 void ApplyOverrides(Scene& scene, const SceneOverrides& o, double planet_radius_m) {
   const std::string where = "command line";
@@ -19,7 +20,7 @@ void ApplyOverrides(Scene& scene, const SceneOverrides& o, double planet_radius_
     if (o.sun_zenith_deg || o.sun_azimuth_deg)
       throw Error("--date", o.sun_date->date, "no --sun-zenith-deg or --sun-azimuth-deg with it: the date, time and "
                   "place give the sun", where);
-    dated = astronomy::SunFromDate(*o.sun_date, astronomy::kSunDateOptions, where);
+    dated = astronomy::SunFromDate(*o.sun_date, kSunDateOptions, where);
   }
 
   Camera& camera = scene.camera;
@@ -32,4 +33,4 @@ void ApplyOverrides(Scene& scene, const SceneOverrides& o, double planet_radius_
   if (dated) scene.sun = *dated;
 }
 
-}  // namespace aerial
+}  // namespace aerial::cli

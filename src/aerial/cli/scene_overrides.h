@@ -6,11 +6,9 @@
 #include "aerial/astronomy/sun_date.h"
 #include "aerial/scene.h"
 
-namespace aerial {
+namespace aerial::cli {
 
-// Each set value replaces the scene's. Error messages name the values by these option names; a
-// command line should register its options under the same names so messages match what the user
-// typed.
+// Each set value replaces the scene's. Error messages name the values by their options.
 struct SceneOverrides {
   std::optional<glm::dvec3> camera_position_m;  // --camera-position-m
   std::optional<double> camera_yaw_deg;         // --camera-yaw-deg
@@ -28,4 +26,4 @@ struct SceneOverrides {
 // altitude is measured above the sphere). Errors have where = "command line".
 void ApplyOverrides(Scene& scene, const SceneOverrides& overrides, double planet_radius_m);
 
-}  // namespace aerial
+}  // namespace aerial::cli

@@ -1,13 +1,15 @@
-#include "aerial/scene/scene_overrides.h"
+#include "aerial/cli/scene_overrides.h"
 
 #include <gtest/gtest.h>
 
+#include "aerial/cli/sun_date_options.h"
 #include "aerial/error.h"
 
-namespace aerial {
+namespace aerial::cli {
 namespace {
 
 constexpr double kR = 6360e3;
+const astronomy::SunDate kGolden{"2003-10-17", "12:30:30", "-07:00", 39.742476, -105.1786};
 
 TEST(SceneOverrides, SetValuesReplaceAndOthersStay) {
   Scene scene;
@@ -52,5 +54,29 @@ TEST(SceneOverrides, InvalidValuesAreNamedAndNothingChanges) {
   }
 }
 
+// The sun of a date and a place: the astronomy module's, never together with the angles.
+TEST(SceneOverrides, ADateReplacesTheSunAndRefusesAngles) {
+  Scene scene;
+  SceneOverrides dated{.sun_date = kGolden};
+  ApplyOverrides(scene, dated, kR);
+  const Sun expected = astronomy::SunFromDate(kGolden, kSunDateOptions, "");
+  EXPECT_EQ(scene.sun, expected);
+
+  SceneOverrides both{.sun_zenith_deg = 30.0, .sun_date = kGolden};
+  Scene untouched;
+  try {
+    ApplyOverrides(untouched, both, kR);
+    ADD_FAILURE() << "angles and a date accepted together";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.field(), "--date");
+    EXPECT_EQ(e.value(), "2003-10-17");
+  }
+  EXPECT_EQ(untouched.sun, Sun{});
+
+  SceneOverrides bad{.sun_date = astronomy::SunDate{"2003-10-17", "12:00", "Europe/Nowhere", 0, 0}};
+  EXPECT_THROW(ApplyOverrides(untouched, bad, kR), Error);
+  EXPECT_EQ(untouched.sun, Sun{});
+}
+
 }  // namespace
-}  // namespace aerial
+}  // namespace aerial::cli
