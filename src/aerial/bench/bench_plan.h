@@ -31,7 +31,7 @@ struct BenchPlan {
   int frame_width = 1280, frame_height = 720, frame_warmup = 2, frames = 7;
   // The marched per-pixel path costs seconds a frame on lavapipe (the reference path, not a
   // real-time one). Unset, it is timed like the other paths (`frames`, in every tier); set, over
-  // this many frames in the figure tier and not at all in the others (quick mode: one).
+  // this many frames in the figure tier and not at all in the others (quick mode: 0, not at all).
   std::optional<int> per_pixel_frames_figure_tier_only;
   // The sun's shadow map in the timed frames (--shadows). The accuracy renders never have it:
   // their CPU reference lights every surface point as if nothing stood between it and the sun.

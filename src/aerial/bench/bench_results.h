@@ -35,7 +35,7 @@ struct VariantResult {
   // Medians over the runs or frames, in ms (GPU timestamps).
   double PrecomputeMs() const;
   double FrameMs() const;          // whole froxel-path frame
-  // Whole per-pixel-path frame; none where it was not timed (quick mode's other tiers, bench_plan.h).
+  // Whole per-pixel-path frame; none where it was not timed (bench_plan.h).
   std::optional<double> PerPixelFrameMs() const;
   double TableDifferenceFrameMs() const;  // whole frame, per pixel from two table reads
   double FrameWallMs() const;      // the froxel-path frame's wall-clock time, CPU work included

@@ -109,7 +109,9 @@ void SpeedSection(std::ostringstream& md, const BenchResults& b) {
      << " warm-up, the six renderers of a tier (two variants, three paths) interleaved, the camera "
         "moving a little every frame so that each frame rebuilds its froxel volume and sky-view table "
         "(a still camera keeps them). Times are GPU timestamps in ms, but for the wall-clock column.";
-  if (std::optional<int> n = p.per_pixel_frames_figure_tier_only)
+  if (std::optional<int> n = p.per_pixel_frames_figure_tier_only; n && *n == 0)
+    md << " The marched per-pixel path, seconds a frame here, is not timed in this mode (—).";
+  else if (n)
     md << " The marched per-pixel path, seconds a frame here, is timed over " << *n << (*n == 1 ? " frame" : " frames")
        << " with the " << p.tiers.at(p.figure_tier).name << " tables only (— elsewhere).";
   md << "\n\n" << SpeedTable(b) << "\n";
