@@ -74,6 +74,10 @@ struct FrameInfo {
   bool froxels_updated = false;   // the froxel volume was rebuilt (the camera or the sun moved)
   bool shadow_map_updated = false;  // the shadow map was redrawn (shadow_map.h), in part or whole
   int shadow_tiles_redrawn = 0;     // of its kShadowCascades tiles, one per cascade
+  // Draw calls and pipeline binds (each with its descriptors pushed) that the frame's raster passes
+  // recorded: the shadow tiles, the opaque pass, the sky and the transparent objects. The terrain
+  // draws a call per chunk, so they grow with its level of detail.
+  int draws = 0, draw_binds = 0;
   // The opaque pass read the sun visibility that an earlier frame of the same view looked up
   // (opaque_fragment.glsl) instead of looking it up.
   bool sun_visibility_cached = false;

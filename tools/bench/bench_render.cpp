@@ -68,6 +68,8 @@ struct Configuration {
   Stats Wall() const { return Summarize(aerial::bench::WallTotals(frames)); }
   Stats Cpu() const { return Summarize(aerial::bench::CpuTotals(frames)); }
   Stats CallerCpu() const { return Summarize(aerial::bench::CallerCpuTotals(frames)); }
+  Stats Draws() const { return Summarize(aerial::bench::DrawCounts(frames)); }
+  Stats DrawBinds() const { return Summarize(aerial::bench::DrawBindCounts(frames)); }
 };
 
 // Every configuration the bench knows, the moving frame first (the others are compared with it).
@@ -208,9 +210,19 @@ void Bench(const BenchOptions& cli) {
              "shared machine)", configurations, &Configuration::Cpu);
   PrintTable("the CPU side of a frame: CPU time of the thread that renders (terrain and shadow caster selection, "
              "sorting, recording, submitting; not lavapipe's threads)", configurations, &Configuration::CallerCpu);
+  std::printf("\n=== recording: draw calls and pipeline binds a frame, medians (min-max): the terrain draws a call "
+              "per chunk, each shadow tile redrawn binds once and draws its casters ===\n  %-40s %17s %17s\n", "",
+              "draws", "binds");
+  for (const Configuration& c : configurations) {
+    Stats draws = c.Draws(), binds = c.DrawBinds();
+    std::printf("  %-40s %7.0f (%.0f-%.0f) %7.0f (%.0f-%.0f)\n", c.name.c_str(), draws.median, draws.min, draws.max,
+                binds.median, binds.min, binds.max);
+  }
+  auto counts = [](const Stats& s) { return nlohmann::json{{"median", s.median}, {"min", s.min}, {"max", s.max}}; };
   for (const Configuration& c : configurations)
     doc["configurations"][c.name] = {{"key", c.key}, {"gpu", StatsJson(c.Gpu())}, {"wall", StatsJson(c.Wall())},
                                      {"cpu", StatsJson(c.Cpu())}, {"caller_cpu", StatsJson(c.CallerCpu())},
+                                     {"draws", counts(c.Draws())}, {"draw_binds", counts(c.DrawBinds())},
                                      {"units", c.Gpu().median / unit.median}};
 
   std::printf("\n=== the frame's parts: timestamps of the compute passes; raster parts and the surfaces' reads by "

@@ -41,7 +41,10 @@ std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<FrameSource>
       RunResult frame{.passes = sources[r].renderer->Render(frame_scene, /*complete=*/false)};
       frame.caller_cpu_ms = CpuClockMs(CLOCK_THREAD_CPUTIME_ID) - caller_start;
       frame.cpu_ms = CpuClockMs(CLOCK_PROCESS_CPUTIME_ID) - cpu_start;
-      frame.shadow_tiles_redrawn = sources[r].renderer->frame_info().shadow_tiles_redrawn;
+      const FrameInfo& info = sources[r].renderer->frame_info();
+      frame.shadow_tiles_redrawn = info.shadow_tiles_redrawn;
+      frame.draws = info.draws;
+      frame.draw_binds = info.draw_binds;
       frame.wall_ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       if (i >= warmup) measured[r].push_back(std::move(frame));

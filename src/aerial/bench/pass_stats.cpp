@@ -22,7 +22,8 @@ std::vector<double> GpuTotals(const std::vector<RunResult>& runs) {
 namespace {
 
 // One field of every run.
-std::vector<double> Each(const std::vector<RunResult>& runs, double RunResult::*field) {
+template <typename Field>
+std::vector<double> Each(const std::vector<RunResult>& runs, Field RunResult::*field) {
   std::vector<double> values;
   for (const auto& run : runs) values.push_back(run.*field);
   return values;
@@ -35,6 +36,8 @@ std::vector<double> CpuTotals(const std::vector<RunResult>& runs) { return Each(
 std::vector<double> CallerCpuTotals(const std::vector<RunResult>& runs) {
   return Each(runs, &RunResult::caller_cpu_ms);
 }
+std::vector<double> DrawCounts(const std::vector<RunResult>& runs) { return Each(runs, &RunResult::draws); }
+std::vector<double> DrawBindCounts(const std::vector<RunResult>& runs) { return Each(runs, &RunResult::draw_binds); }
 
 double MeanShadowTilesRedrawn(const std::vector<RunResult>& runs) {
   if (runs.empty()) return 0.0;

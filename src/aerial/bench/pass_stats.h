@@ -27,6 +27,8 @@ struct RunResult {
   double caller_cpu_ms = 0.0;
   // Tiles of the sun's shadow map that the frame redrew (FrameInfo::shadow_tiles_redrawn).
   int shadow_tiles_redrawn = 0;
+  // Draw calls and pipeline binds the frame recorded (FrameInfo::draws, ::draw_binds).
+  int draws = 0, draw_binds = 0;
   double GpuMs() const;
 };
 
@@ -36,6 +38,8 @@ std::vector<double> GpuTotals(const std::vector<RunResult>& runs);
 std::vector<double> WallTotals(const std::vector<RunResult>& runs);
 std::vector<double> CpuTotals(const std::vector<RunResult>& runs);
 std::vector<double> CallerCpuTotals(const std::vector<RunResult>& runs);
+std::vector<double> DrawCounts(const std::vector<RunResult>& runs);
+std::vector<double> DrawBindCounts(const std::vector<RunResult>& runs);
 // The shadow map's tiles redrawn per run, on average.
 double MeanShadowTilesRedrawn(const std::vector<RunResult>& runs);
 // The median over runs of the named pass's fragment-shader invocations (summed within a run where

@@ -449,8 +449,10 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
       !select_terrain || std::all_of(key.selections.begin(), key.selections.end(),
                                      [](const std::optional<CasterSelection>& s) { return s && s->whole; });
   if (frame_info_.shadow_tiles_redrawn == 0) return;
-  shadow_map_.Record(cmd, shadow_cascades_, redraw, scene.camera.position, geometry_, terrain_.get(),
-                     key.casters);
+  RecordedDraws recorded = shadow_map_.Record(cmd, shadow_cascades_, redraw, scene.camera.position, geometry_,
+                                              terrain_.get(), key.casters);
+  frame_info_.draws += recorded.draws;
+  frame_info_.draw_binds += recorded.binds;
   vk::FullBarrier(cmd);  // the froxel pass and the surfaces read it
   frame_info_.shadow_map_updated = true;
 }
@@ -531,10 +533,11 @@ void Renderer::ChooseFroxelReads(const Camera& camera) {
 
 // The opaque meshes and terrain chunks whose froxel reads are pixel_reads (per pixel or per vertex),
 // or all of them, with one pipeline.
-void Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
-                             const std::vector<vk::Slot>& slots, std::optional<bool> pixel_reads) const {
+RecordedDraws Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
+                                      const std::vector<vk::Slot>& slots, std::optional<bool> pixel_reads) const {
   // The ground's draws are numbered as opaque.vert's kGroundDetailInstance: its albedo detail.
   const uint32_t ground = options_.ground_detail ? 1 : 0;
+  RecordedDraws recorded{.binds = 1};
   pipeline.Bind(cmd, slots);
   vk::BindMesh(cmd, geometry_.opaque_vertices(), geometry_.opaque_indices());
   const std::vector<MeshDraw>& draws = geometry_.opaque_draws();
@@ -542,8 +545,9 @@ void Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::GraphicsPip
     if (pixel_reads && bool(mesh_reads_per_pixel_[i]) != *pixel_reads) continue;
     vk::SetCullBackFaces(cmd, !draws[i].double_sided);
     vk::DrawIndexed(cmd, draws[i].index_count, draws[i].first_index, 0, draws[i].ground ? ground : 0);
+    ++recorded.draws;
   }
-  if (terrain_chunks_.empty()) return;
+  if (terrain_chunks_.empty()) return recorded;
   vk::SetCullBackFaces(cmd, true);
   vk::BindMesh(cmd, terrain_->vertices(), terrain_->indices());
   const size_t first = pixel_reads.value_or(true) ? 0 : terrain_per_pixel_;
@@ -551,27 +555,28 @@ void Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::GraphicsPip
   for (size_t i = first; i < end; ++i) {
     terrain::IndexRange range = terrain::ChunkIndexRange(terrain_chunks_[i].skirts);
     vk::DrawIndexed(cmd, range.count, range.first, terrain_->VertexOffset(terrain_chunks_[i].id), ground);
+    ++recorded.draws;
   }
+  return recorded;
 }
 
 // Nearest first, so that early depth tests skip the shading of what is hidden: the scene's meshes
 // (landmarks and models standing on the ground), then the terrain's chunks by distance; those
 // that read the froxels per pixel before those that read them per vertex.
-void Renderer::DrawOpaque(const vk::CommandBuffer& cmd, const MeshPipelines& pipelines, SunVisibilitySource source,
-                          const std::vector<vk::Slot>& slots) const {
-  if (!pipelines.per_vertex) {
-    DrawOpaqueRun(cmd, pipelines.per_pixel.For(source), slots, std::nullopt);
-    return;
-  }
-  DrawOpaqueRun(cmd, pipelines.per_pixel.For(source), slots, true);
-  DrawOpaqueRun(cmd, pipelines.per_vertex->For(source), slots, false);
+RecordedDraws Renderer::DrawOpaque(const vk::CommandBuffer& cmd, const MeshPipelines& pipelines,
+                                   SunVisibilitySource source, const std::vector<vk::Slot>& slots) const {
+  if (!pipelines.per_vertex) return DrawOpaqueRun(cmd, pipelines.per_pixel.For(source), slots, std::nullopt);
+  RecordedDraws recorded = DrawOpaqueRun(cmd, pipelines.per_pixel.For(source), slots, true);
+  recorded += DrawOpaqueRun(cmd, pipelines.per_vertex->For(source), slots, false);
+  return recorded;
 }
 
 // The sky where no geometry was drawn, then the transparent objects over everything, inside the
 // frame's Rendering scope.
-void Renderer::DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot, const vk::GraphicsPipeline& sky,
-                                     const vk::GraphicsPipeline& transparent,
-                                     const std::vector<vk::Slot>& mesh_slots) const {
+RecordedDraws Renderer::DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot,
+                                              const vk::GraphicsPipeline& sky, const vk::GraphicsPipeline& transparent,
+                                              const std::vector<vk::Slot>& mesh_slots) const {
+  RecordedDraws recorded;
   vk::GpuTimer& timer = *timers_[slot];
   timer.Begin(cmd, "sky");
   if (options_.passes.sky) {
@@ -581,6 +586,7 @@ void Renderer::DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot
                    tables_.Sampled(tables_.irradiance()), tables_.Sampled(sky_rayleigh_),
                     tables_.Sampled(sky_mie_), tables_.Sampled(sky_background_)});
     vk::DrawFullScreenTriangle(cmd);
+    recorded += {.draws = 1, .binds = 1};
   }
   timer.End(cmd);
   timer.Begin(cmd, "transparent raster");
@@ -588,8 +594,10 @@ void Renderer::DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot
     transparent.Bind(cmd, mesh_slots);
     vk::BindMesh(cmd, geometry_.transparent_vertices(), geometry_.transparent_indices(slot));
     vk::DrawIndexed(cmd, geometry_.transparent_index_count());
+    recorded += {.draws = 1, .binds = 1};
   }
   timer.End(cmd);
+  return recorded;
 }
 
 void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t slot,
@@ -650,6 +658,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   // Every pixel is written once by the opaque pass or the sky, so the output is not cleared.
   vk::RenderTargets targets{.colors = {&output_}, .clear_colors = {std::nullopt}, .depth = &depth_, .clear_depth = 0.0f};
   const bool cacheable = pipelines.per_pixel.look_up_and_cache.has_value();
+  RecordedDraws recorded;
   frame_info_.sun_visibility_cached =
       cacheable &&
       SunVisibilityReusable(sun_visibility_key_, frame_uniforms_, terrain_chunks_, frame_info_.shadow_map_updated);
@@ -664,22 +673,24 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
       caching.clear_colors.push_back(std::nullopt);  // only covered pixels are ever read
       vk::Rendering rendering(cmd, caching);
       timer.Begin(cmd, "opaque raster");
-      DrawOpaque(cmd, pipelines, SunVisibilitySource::kLookUpAndCache, mesh_slots);
+      recorded += DrawOpaque(cmd, pipelines, SunVisibilitySource::kLookUpAndCache, mesh_slots);
       timer.End(cmd);
     }
     vk::FullBarrier(cmd);
     targets.clear_depth = std::nullopt;
     vk::Rendering rendering(cmd, targets);
-    DrawSkyAndTransparent(cmd, slot, sky, pipelines.transparent, mesh_slots);
+    recorded += DrawSkyAndTransparent(cmd, slot, sky, pipelines.transparent, mesh_slots);
   } else {
     vk::Rendering rendering(cmd, targets);
     timer.Begin(cmd, "opaque raster");
-    DrawOpaque(cmd, pipelines,
-               frame_info_.sun_visibility_cached ? SunVisibilitySource::kCache : SunVisibilitySource::kLookUp,
-               mesh_slots);
+    recorded += DrawOpaque(cmd, pipelines,
+                           frame_info_.sun_visibility_cached ? SunVisibilitySource::kCache : SunVisibilitySource::kLookUp,
+                           mesh_slots);
     timer.End(cmd);
-    DrawSkyAndTransparent(cmd, slot, sky, pipelines.transparent, mesh_slots);
+    recorded += DrawSkyAndTransparent(cmd, slot, sky, pipelines.transparent, mesh_slots);
   }
+  frame_info_.draws += recorded.draws;
+  frame_info_.draw_binds += recorded.binds;
   vk::FullBarrier(cmd);
   const bool shadowed_terrain = options_.shadows && terrain_ && options_.passes.terrain;
   const bool lattice_caught_up = options_.mode != AerialMode::kFroxel ||

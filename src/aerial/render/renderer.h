@@ -21,6 +21,7 @@
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/render/frame_cache_policy.h"
 #include "aerial/render/frame_uniforms.h"
+#include "aerial/render/recorded_draws.h"
 #include "aerial/render/renderer_options.h"
 #include "aerial/render/scene_geometry.h"
 #include "aerial/render/shadow_map.h"
@@ -131,12 +132,14 @@ class Renderer {
   const vk::ComputePipeline& SkyViewCorrectionPipelineFor();
   std::vector<vk::Slot> MeshSlots(uint32_t slot) const;
   void ChooseFroxelReads(const Camera& camera);
-  void DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
-                     const std::vector<vk::Slot>& slots, std::optional<bool> pixel_reads) const;
-  void DrawOpaque(const vk::CommandBuffer& cmd, const MeshPipelines& pipelines, SunVisibilitySource source,
-                  const std::vector<vk::Slot>& slots) const;
-  void DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot, const vk::GraphicsPipeline& sky,
-                             const vk::GraphicsPipeline& transparent, const std::vector<vk::Slot>& mesh_slots) const;
+  // The draw functions return what they recorded (FrameInfo::draws, ::draw_binds).
+  RecordedDraws DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
+                              const std::vector<vk::Slot>& slots, std::optional<bool> pixel_reads) const;
+  RecordedDraws DrawOpaque(const vk::CommandBuffer& cmd, const MeshPipelines& pipelines,
+                           SunVisibilitySource source, const std::vector<vk::Slot>& slots) const;
+  RecordedDraws DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot, const vk::GraphicsPipeline& sky,
+                                      const vk::GraphicsPipeline& transparent,
+                                      const std::vector<vk::Slot>& mesh_slots) const;
 
   const AtmosphereTables& tables_;
   RendererOptions options_;

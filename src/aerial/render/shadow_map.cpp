@@ -45,7 +45,7 @@ ShadowMap::ShadowMap(const vk::Context& context, bool enabled)
 
 uint64_t ShadowMap::MemoryBytes(bool enabled) { return uint64_t(AtlasTexels(enabled)) * AtlasTexels(enabled) * 4; }
 
-void ShadowMap::Record(const vk::CommandBuffer& cmd, const ShadowCascades& cascades,
+RecordedDraws ShadowMap::Record(const vk::CommandBuffer& cmd, const ShadowCascades& cascades,
                        const std::array<bool, kShadowCascades>& redraw, const glm::dvec3& camera_position,
                        const SceneGeometry& geometry, const TerrainChunkCache* terrain,
                        const ShadowTerrain& chunks) const {
@@ -54,6 +54,7 @@ void ShadowMap::Record(const vk::CommandBuffer& cmd, const ShadowCascades& casca
   const bool all = std::find(redraw.begin(), redraw.end(), false) == redraw.end();
   vk::Rendering rendering(cmd, {.depth = &atlas_, .clear_depth = all ? std::optional(0.0f) : std::nullopt});
   const ::vk::Extent2D tile{uint32_t(kShadowTileTexels), uint32_t(kShadowTileTexels)};
+  RecordedDraws recorded;
   for (int i = 0; i < kShadowCascades; ++i) {
     if (!redraw[i]) continue;
     ::vk::Offset2D corner{int32_t(i % kShadowAtlasTilesPerRow) * kShadowTileTexels,
@@ -64,17 +65,21 @@ void ShadowMap::Record(const vk::CommandBuffer& cmd, const ShadowCascades& casca
         ToColumnMajorFloats(ClipFromRelative(cascades[i], camera_position)),
         {float(camera_position.x), float(camera_position.y), float(camera_position.z), 0.0f}};
     depth_.Bind(cmd, {}, &constants);
+    ++recorded.binds;
     if (geometry.opaque_index_count() > 0) {
       vk::BindMesh(cmd, geometry.opaque_vertices(), geometry.opaque_indices());
       vk::DrawIndexed(cmd, geometry.opaque_index_count());
+      ++recorded.draws;
     }
     if (!terrain || chunks[i].empty()) continue;
     vk::BindMesh(cmd, terrain->vertices(), terrain->indices());
     for (const terrain::SelectedChunk& chunk : chunks[i]) {
       terrain::IndexRange range = terrain::ChunkIndexRange(chunk.skirts);
       vk::DrawIndexed(cmd, range.count, range.first, terrain->VertexOffset(chunk.id));
+      ++recorded.draws;
     }
   }
+  return recorded;
 }
 
 }  // namespace aerial

@@ -13,6 +13,7 @@
 // one a tile now and then.
 #include <cstdint>
 
+#include "aerial/render/recorded_draws.h"
 #include "aerial/render/scene_geometry.h"
 #include "aerial/render/shadow_cascades.h"
 #include "aerial/render/shadow_terrain.h"
@@ -36,8 +37,8 @@ class ShadowMap {
 
   // Clears the tile of each cascade in `redraw` and draws its casters: the scene's opaque meshes
   // (both faces: a mesh open to the sun still shades what is behind it) and the terrain chunks of
-  // the cascade. Other tiles keep what they hold.
-  void Record(const vk::CommandBuffer& cmd, const ShadowCascades& cascades, const std::array<bool, kShadowCascades>& redraw,
+  // the cascade. Other tiles keep what they hold. Returns what it recorded.
+  RecordedDraws Record(const vk::CommandBuffer& cmd, const ShadowCascades& cascades, const std::array<bool, kShadowCascades>& redraw,
               const glm::dvec3& camera_position, const SceneGeometry& geometry,
               const TerrainChunkCache* terrain, const ShadowTerrain& chunks) const;
 
