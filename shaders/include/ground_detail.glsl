@@ -12,6 +12,10 @@
 #ifndef AERIAL_GROUND_DETAIL_GLSL
 #define AERIAL_GROUND_DETAIL_GLSL
 
+// Off (RendererOptions::ground_detail), the detail is compiled out: a CPU rasterizer runs both
+// sides of a branch, so only a constant takes its cost away.
+layout(constant_id = 7) const bool kGroundDetail = true;
+
 const float kGroundDetailWavelengthsM[2] = float[2](9.0, 70.0);
 const float kGroundDetailAmplitudes[2] = float[2](0.12, 0.16);
 
@@ -53,6 +57,7 @@ float GroundAlbedoDetail(vec2 ground_m, float footprint_m) {
 // The factor for the fragment at relative_position (from the camera, scene frame), weighted by
 // `amount` (0 leaves the albedo alone: a mesh that is not the ground).
 float GroundAlbedoDetailAt(vec3 relative_position, float amount) {
+  if (!kGroundDetail) return 1.0;
   vec2 ground = relative_position.xy + AERIAL_FRAME.camera_scene_position.xy;
   // The footprint from the camera-relative position: its derivatives are those of the ground
   // point, without the cancellation of a large camera offset.

@@ -81,7 +81,7 @@ vk::ComputePipeline SkyViewCorrectionPipeline(const vk::Context& context, bool s
 // The mesh shaders' specialization constants: 0 aerial perspective per pixel (frame.glsl), 1 sun
 // shadows (shadow.glsl), 2 the sun's part of the lighting in surface.frag (SurfaceLight), 3 the
 // sun visibility read from the cache, 4 the variant for a high sun, 5 the froxels read per vertex,
-// 6 the reads a benchmark leaves out (opaque_fragment.glsl).
+// 6 the reads a benchmark leaves out (opaque_fragment.glsl), 7 the ground's detail (ground_detail.glsl).
 struct MeshVariant {
   SurfaceLight light = SurfaceLight::kSunAndSky;
   SunVisibilitySource source = SunVisibilitySource::kLookUp;
@@ -93,7 +93,7 @@ std::vector<int32_t> MeshConstants(const RendererOptions& options, const MeshVar
   const int32_t left_out = (options.left_out_reads.froxels ? 1 : 0) | (options.left_out_reads.sun_visibility ? 2 : 0);
   return {PerPixel(options.mode), options.shadows ? 1 : 0, variant.light == SurfaceLight::kSunAndSky ? 1 : 0,
           variant.source == SunVisibilitySource::kCache ? 1 : 0, variant.sun_high ? 1 : 0,
-          variant.froxels_per_vertex ? 1 : 0, left_out};
+          variant.froxels_per_vertex ? 1 : 0, left_out, options.ground_detail ? 1 : 0};
 }
 
 vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std::string& fragment,
@@ -536,7 +536,7 @@ void Renderer::ChooseFroxelReads(const Camera& camera) {
 RecordedDraws Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
                                       const std::vector<vk::Slot>& slots, std::optional<bool> pixel_reads) const {
   // The ground's draws are numbered as opaque.vert's kGroundDetailInstance: its albedo detail.
-  const uint32_t ground = options_.ground_detail ? 1 : 0;
+  constexpr uint32_t ground = 1;
   RecordedDraws recorded{.binds = 1};
   pipeline.Bind(cmd, slots);
   vk::BindMesh(cmd, geometry_.opaque_vertices(), geometry_.opaque_indices());
