@@ -9,9 +9,10 @@ namespace aerial {
 // the viewer's display upscale a frame the same way.
 ImageRgbF ResizeBilinear(const ImageRgbF& image, int width, int height);
 
-// The mean of each factor x factor block of radiance (and coverage), for supersampling: the image
-// rendered `factor` times larger on each side, filtered down to the size asked for. The sides
-// must be multiples of factor (>= 1); throws Error("image size") otherwise.
+// The mean of each factor x factor block of radiance (and coverage): an image rendered `factor`
+// times larger on each side, filtered down to the size asked for (what tests compare `render`'s
+// jittered supersampling with). The sides must be multiples of factor (>= 1); throws
+// Error("image size") otherwise.
 ImageRgbF DownsampleBox(const ImageRgbF& image, int factor);
 
 }  // namespace aerial
