@@ -89,6 +89,8 @@ std::vector<Configuration> AllConfigurations() {
        [](RendererOptions& o) { o.surface_froxel_reads = aerial::SurfaceFroxelReads::kPerPixel; }},
       {"froxels-per-vertex", "froxels read per vertex on every surface",
        [](RendererOptions& o) { o.surface_froxel_reads = aerial::SurfaceFroxelReads::kPerVertex; }},
+      {"froxels-full-screen", "froxels in a full-screen pass (deferred)",
+       [](RendererOptions& o) { o.surface_froxel_reads = aerial::SurfaceFroxelReads::kFullScreenPass; }},
       {"per-pixel", "per-pixel aerial perspective", [](RendererOptions& o) { o.mode = aerial::AerialMode::kPerPixel; }},
       {"table-difference", "per pixel, two table reads",
        [](RendererOptions& o) { o.mode = aerial::AerialMode::kTableDifference; }},
@@ -238,12 +240,18 @@ void Bench(const BenchOptions& cli) {
         PrintDifference(c.name.substr(std::string("without ").size()), frame, c, unit.median);
   doc["parts_median"] = parts;
 
-  if (const Configuration* per_pixel = Find(configurations, "froxels-per-pixel")) {
+  const Configuration* per_pixel = Find(configurations, "froxels-per-pixel");
+  const Configuration* full_screen = Find(configurations, "froxels-full-screen");
+  if (per_pixel || full_screen)
     std::printf("\n=== where the surfaces read the froxels: per vertex on triangles thin in depth (the "
-                "frame) against per pixel everywhere ===\n");
+                "frame, forward) against per pixel everywhere, and against once per pixel in a full-screen "
+                "pass after the surfaces (deferred) ===\n");
+  if (per_pixel)
     doc["froxel_reads"]["per_pixel_minus_frame"] =
         PrintDifference("per pixel everywhere, minus the frame", *per_pixel, frame, unit.median);
-  }
+  if (full_screen)
+    doc["froxel_reads"]["full_screen_minus_frame"] =
+        PrintDifference("full-screen pass, minus the frame", *full_screen, frame, unit.median);
 
   // Fragment-shader invocations (pipeline statistics, where the device counts them): the opaque
   // pass's count over the pixels its surfaces cover is how many times each covered pixel was

@@ -107,8 +107,9 @@ void FrameOptions::AddTo(CLI::App& command, const std::string& size_help) {
       ->check(CLI::IsMember(AerialModeNames()));
   command.add_option("--froxel-reads", froxel_reads,
                      "Where surfaces read the froxels: auto (per vertex on triangles small in the air or "
-                     "the volume, per pixel on the others; default), per-pixel or per-vertex")
-      ->check(CLI::IsMember({"auto", "per-pixel", "per-vertex"}));
+                     "the volume, per pixel on the others; default), per-pixel, per-vertex or full-screen "
+                     "(per pixel, in a pass over the screen after the surfaces: deferred)")
+      ->check(CLI::IsMember({"auto", "per-pixel", "per-vertex", "full-screen"}));
   command.add_option("--render-scale", render_scale,
                      "Rasterize at this fraction (0.25 to 1) of the size, then upscale (default 1)");
   command.add_option("--terrain", terrain,
@@ -162,9 +163,10 @@ RendererOptions FrameOptions::MakeRenderOptions() const {
   render.height = height;
   render.froxels = froxels.Make();
   render.mode = ParseAerialMode(aerial);
-  render.surface_froxel_reads = froxel_reads == "per-pixel"    ? SurfaceFroxelReads::kPerPixel
-                                : froxel_reads == "per-vertex" ? SurfaceFroxelReads::kPerVertex
-                                                               : SurfaceFroxelReads::kPerVertexWhereThin;
+  render.surface_froxel_reads = froxel_reads == "per-pixel"     ? SurfaceFroxelReads::kPerPixel
+                                : froxel_reads == "per-vertex"  ? SurfaceFroxelReads::kPerVertex
+                                : froxel_reads == "full-screen" ? SurfaceFroxelReads::kFullScreenPass
+                                                                : SurfaceFroxelReads::kPerVertexWhereThin;
   render.render_scale = render_scale;
   render.terrain = terrain == "mesh" ? TerrainMode::kStaticMesh : TerrainMode::kLod;
   render.terrain_error_px = terrain_error_px;

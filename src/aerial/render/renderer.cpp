@@ -81,7 +81,8 @@ vk::ComputePipeline SkyViewCorrectionPipeline(const vk::Context& context, bool s
 // The mesh shaders' specialization constants: 0 aerial perspective per pixel (frame.glsl), 1 sun
 // shadows (shadow.glsl), 2 the sun's part of the lighting in surface.frag (SurfaceLight), 3 the
 // sun visibility read from the cache, 4 the variant for a high sun, 5 the froxels read per vertex,
-// 6 the reads a benchmark leaves out (opaque_fragment.glsl), 7 the ground's detail (ground_detail.glsl).
+// 6 the reads a benchmark leaves out (opaque_fragment.glsl), 7 the ground's detail (ground_detail.glsl),
+// 8 the froxels read in a full-screen pass after the opaque pass (opaque_fragment.glsl).
 struct MeshVariant {
   SurfaceLight light = SurfaceLight::kSunAndSky;
   SunVisibilitySource source = SunVisibilitySource::kLookUp;
@@ -89,11 +90,16 @@ struct MeshVariant {
   bool froxels_per_vertex = false;
 };
 
+bool FroxelsInFullScreenPass(const RendererOptions& options) {
+  return options.mode == AerialMode::kFroxel && options.surface_froxel_reads == SurfaceFroxelReads::kFullScreenPass;
+}
+
 std::vector<int32_t> MeshConstants(const RendererOptions& options, const MeshVariant& variant = {}) {
   const int32_t left_out = (options.left_out_reads.froxels ? 1 : 0) | (options.left_out_reads.sun_visibility ? 2 : 0);
   return {PerPixel(options.mode), options.shadows ? 1 : 0, variant.light == SurfaceLight::kSunAndSky ? 1 : 0,
           variant.source == SunVisibilitySource::kCache ? 1 : 0, variant.sun_high ? 1 : 0,
-          variant.froxels_per_vertex ? 1 : 0, left_out, options.ground_detail ? 1 : 0};
+          variant.froxels_per_vertex ? 1 : 0, left_out, options.ground_detail ? 1 : 0,
+          FroxelsInFullScreenPass(options) ? 1 : 0};
 }
 
 vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std::string& fragment,
@@ -129,6 +135,24 @@ vk::GraphicsPipelineCreateInfo SkyPipeline(AerialMode mode, bool sun_high) {
           .specialization = {PerPixel(mode), 0, 0, 0, sun_high ? 1 : 0}};
 }
 
+// The froxels' full-screen pass (froxel_composite.frag): sky.vert's triangle at depth 0, drawn where
+// the opaque pass left a depth nearer than that (reversed Z), reading the surfaces' radiance.
+std::optional<vk::GraphicsPipeline> FroxelCompositePipeline(const vk::Context& context, const RendererOptions& o) {
+  if (!FroxelsInFullScreenPass(o)) return std::nullopt;
+  return vk::GraphicsPipeline(context, {.vertex_shader = "frame/sky.vert",
+                                        .fragment_shader = "frame/froxel_composite.frag",
+                                        .slots = {{"AtmosphereBlock", kUniform},
+                                                  {"FrameBlock", kUniform},
+                                                  {"rayleigh_froxels", kSampled},
+                                                  {"mie_froxels", kSampled},
+                                                  {"transmittance_froxels", kSampled},
+                                                  {"surface_radiance", kSampled}},
+                                        .color_formats = {vk::kRgba32f},
+                                        .depth_format = vk::kDepth32f,
+                                        .depth_write = false,
+                                        .depth_compare = vk::kDepthFarther});
+}
+
 vk::ImageCreateInfo SkyViewImage() {
   return {.extent = {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}};
 }
@@ -147,6 +171,10 @@ constexpr vk::Format kSunVisibilityFormat = vk::kR32f;
 
 vk::ImageCreateInfo SunVisibilityTarget(const RenderOptions& o) {
   return o.shadows ? Target(o, kSunVisibilityFormat) : vk::RenderTargetInfo(1, 1, kSunVisibilityFormat);
+}
+
+vk::ImageCreateInfo SurfaceRadianceTarget(const RendererOptions& o) {
+  return FroxelsInFullScreenPass(o) ? Target(o, vk::kRgba32f) : vk::RenderTargetInfo(1, 1, vk::kRgba32f);
 }
 
 vk::GraphicsPipeline OpaquePipeline(const vk::Context& context, const RendererOptions& o, MeshVariant variant) {
@@ -176,7 +204,8 @@ MeshPipelines MakeMeshPipelines(const vk::Context& context, const RendererOption
       .per_pixel = MakeOpaquePipelines(context, o, {.sun_high = sun_high}),
       .transparent = vk::GraphicsPipeline(context, MeshPipeline("frame/transparent.vert", "frame/transparent.frag",
                                                                 true, MeshConstants(o, {.sun_high = sun_high})))};
-  if (o.mode == AerialMode::kFroxel && o.surface_froxel_reads != SurfaceFroxelReads::kPerPixel)
+  if (o.mode == AerialMode::kFroxel && o.surface_froxel_reads != SurfaceFroxelReads::kPerPixel &&
+      !FroxelsInFullScreenPass(o))
     pipelines.per_vertex = MakeOpaquePipelines(context, o, {.sun_high = sun_high, .froxels_per_vertex = true});
   return pipelines;
 }
@@ -266,6 +295,8 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       depth_(tables.context(), Target(options, vk::kDepth32f)),
       output_(tables.context(), Target(options, vk::kRgba32f)),
       sun_visibility_(tables.context(), SunVisibilityTarget(options)),
+      surface_radiance_(tables.context(), SurfaceRadianceTarget(options)),
+      froxel_composite_(FroxelCompositePipeline(tables.context(), options)),
       sky_rayleigh_(tables.context(), SkyViewImage()),
       sky_mie_(tables.context(), SkyViewImage()),
       sky_background_(tables.context(), SkyViewImage()),
@@ -286,8 +317,8 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
     timers_.push_back(std::make_unique<vk::GpuTimer>(tables.context()));
   }
   tables.context().Submit([&](const auto& cmd) {
-    for (const vk::Image* image : {&depth_, &output_, &sun_visibility_, &sky_rayleigh_, &sky_mie_, &sky_background_,
-                                   &sky_rayleigh_correction_, &sky_mie_correction_})
+    for (const vk::Image* image : {&depth_, &output_, &sun_visibility_, &surface_radiance_, &sky_rayleigh_, &sky_mie_,
+                                   &sky_background_, &sky_rayleigh_correction_, &sky_mie_correction_})
       image->InitializeLayout(cmd);
   });
 }
@@ -314,8 +345,10 @@ void Renderer::SetRenderScale(double render_scale) {
   depth_ = vk::Image(context, Target(options_, vk::kDepth32f));
   output_ = vk::Image(context, Target(options_, vk::kRgba32f));
   sun_visibility_ = vk::Image(context, SunVisibilityTarget(options_));
+  surface_radiance_ = vk::Image(context, SurfaceRadianceTarget(options_));
   context.Submit([&](const auto& cmd) {
-    for (const vk::Image* image : {&depth_, &output_, &sun_visibility_}) image->InitializeLayout(cmd);
+    for (const vk::Image* image : {&depth_, &output_, &sun_visibility_, &surface_radiance_})
+      image->InitializeLayout(cmd);
   });
 }
 
@@ -571,6 +604,20 @@ RecordedDraws Renderer::DrawOpaque(const vk::CommandBuffer& cmd, const MeshPipel
   return recorded;
 }
 
+// With the froxels read in a full-screen pass: that pass, where the opaque pass drew, after it and
+// inside the frame's Rendering scope of the radiance.
+RecordedDraws Renderer::DrawFroxelComposite(const vk::CommandBuffer& cmd, uint32_t slot) const {
+  vk::GpuTimer& timer = *timers_[slot];
+  timer.Begin(cmd, "froxel composite");
+  froxel_composite_->Bind(cmd, {vk::UniformBufferSlot{&tables_.uniform_buffer()},
+                                vk::UniformBufferSlot{&frame_buffers_[slot]}, tables_.Sampled(froxels_.rayleigh()),
+                                tables_.Sampled(froxels_.mie()), tables_.Sampled(froxels_.transmittance()),
+                                tables_.Sampled(surface_radiance_)});
+  vk::DrawFullScreenTriangle(cmd);
+  timer.End(cmd);
+  return {.draws = 1, .binds = 1};
+}
+
 // The sky where no geometry was drawn, then the transparent objects over everything, inside the
 // frame's Rendering scope.
 RecordedDraws Renderer::DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot,
@@ -662,30 +709,40 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   frame_info_.sun_visibility_cached =
       cacheable &&
       SunVisibilityReusable(sun_visibility_key_, frame_uniforms_, terrain_chunks_, frame_info_.shadow_map_updated);
-  if (!frame_info_.sun_visibility_cached && cacheable &&
-      SunVisibilityWorthCaching(frames_recorded_ == 0, still_view_)) {
+  const bool caching = !frame_info_.sun_visibility_cached && cacheable &&
+                       SunVisibilityWorthCaching(frames_recorded_ == 0, still_view_);
+  SunVisibilitySource source = SunVisibilitySource::kLookUp;
+  if (caching) {
     sun_visibility_key_ = SunVisibilityKey{frame_uniforms_, terrain_chunks_};
-    // The opaque pass writes the sun visibility as well, in a scope of its own: the sky and the
-    // transparent objects draw into the radiance alone.
+    source = SunVisibilitySource::kLookUpAndCache;
+  } else if (frame_info_.sun_visibility_cached) {
+    source = SunVisibilitySource::kCache;
+  }
+  // The opaque pass draws in a scope of its own where it writes more than the radiance (the sun
+  // visibility) or something else (the surfaces' radiance that the froxels' full-screen pass reads
+  // in the next scope); the sky and the transparent objects draw into the radiance alone.
+  if (caching || froxel_composite_) {
     {
-      vk::RenderTargets caching = targets;
-      caching.colors.push_back(&sun_visibility_);
-      caching.clear_colors.push_back(std::nullopt);  // only covered pixels are ever read
-      vk::Rendering rendering(cmd, caching);
+      vk::RenderTargets opaque = targets;
+      if (froxel_composite_) opaque.colors = {&surface_radiance_};  // only covered pixels are ever read
+      if (caching) {
+        opaque.colors.push_back(&sun_visibility_);
+        opaque.clear_colors.push_back(std::nullopt);  // the same
+      }
+      vk::Rendering rendering(cmd, opaque);
       timer.Begin(cmd, "opaque raster");
-      recorded += DrawOpaque(cmd, pipelines, SunVisibilitySource::kLookUpAndCache, mesh_slots);
+      recorded += DrawOpaque(cmd, pipelines, source, mesh_slots);
       timer.End(cmd);
     }
     vk::FullBarrier(cmd);
     targets.clear_depth = std::nullopt;
     vk::Rendering rendering(cmd, targets);
+    if (froxel_composite_) recorded += DrawFroxelComposite(cmd, slot);
     recorded += DrawSkyAndTransparent(cmd, slot, sky, pipelines.transparent, mesh_slots);
   } else {
     vk::Rendering rendering(cmd, targets);
     timer.Begin(cmd, "opaque raster");
-    recorded += DrawOpaque(cmd, pipelines,
-                           frame_info_.sun_visibility_cached ? SunVisibilitySource::kCache : SunVisibilitySource::kLookUp,
-                           mesh_slots);
+    recorded += DrawOpaque(cmd, pipelines, source, mesh_slots);
     timer.End(cmd);
     recorded += DrawSkyAndTransparent(cmd, slot, sky, pipelines.transparent, mesh_slots);
   }

@@ -137,6 +137,7 @@ class Renderer {
                               const std::vector<vk::Slot>& slots, std::optional<bool> pixel_reads) const;
   RecordedDraws DrawOpaque(const vk::CommandBuffer& cmd, const MeshPipelines& pipelines,
                            SunVisibilitySource source, const std::vector<vk::Slot>& slots) const;
+  RecordedDraws DrawFroxelComposite(const vk::CommandBuffer& cmd, uint32_t slot) const;
   RecordedDraws DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot, const vk::GraphicsPipeline& sky,
                                       const vk::GraphicsPipeline& transparent,
                                       const std::vector<vk::Slot>& mesh_slots) const;
@@ -165,6 +166,10 @@ class Renderer {
   // looked it up in the shadow map drew it (opaque_fragment.glsl), and what that frame showed.
   vk::Image sun_visibility_;
   std::optional<SunVisibilityKey> sun_visibility_key_;
+  // With the froxels read in a full-screen pass: the opaque surfaces' radiance and distance, which
+  // that pass reads (froxel_composite.frag), and the pass; else one texel and none.
+  vk::Image surface_radiance_;
+  std::optional<vk::GraphicsPipeline> froxel_composite_;
   vk::Image sky_rayleigh_, sky_mie_, sky_background_;
   // The sky inscatter correction at the sky-view table's lattice nodes.
   vk::Image sky_rayleigh_correction_, sky_mie_correction_;

@@ -19,8 +19,9 @@ struct FramePasses {
 
 // Where opaque surfaces read the froxel volume (froxel mode): per vertex, interpolated, on
 // triangles thin in depth and per pixel on others (surface_reads.h), or, to compare with, per
-// pixel everywhere or per vertex everywhere.
-enum class SurfaceFroxelReads { kPerVertexWhereThin, kPerPixel, kPerVertex };
+// pixel everywhere, per vertex everywhere, or once per pixel in a full-screen pass after the
+// opaque pass (deferred: froxel_composite.frag), which reads what per pixel everywhere reads.
+enum class SurfaceFroxelReads { kPerVertexWhereThin, kPerPixel, kPerVertex, kFullScreenPass };
 
 // Reads of the opaque fragments a benchmark leaves out to measure what each costs: the froxel
 // volume's (a constant segment instead) and the sun visibility's (1 instead). Every frame has

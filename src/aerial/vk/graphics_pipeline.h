@@ -21,10 +21,12 @@ struct VertexAttribute {
   uint32_t offset;
 };
 
-// Depth tests: the nearer fragment passes (reversed Z: the greater depth), or only an equal one
-// (a pass that draws where an earlier one left the cleared depth).
+// Depth tests: the nearer fragment passes (reversed Z: the greater depth), only an equal one (a
+// pass that draws where an earlier one left the cleared depth), or only a farther one (a pass at
+// the cleared depth that draws where an earlier one drew).
 inline constexpr ::vk::CompareOp kDepthNearer = ::vk::CompareOp::eGreater;
 inline constexpr ::vk::CompareOp kDepthEqual = ::vk::CompareOp::eEqual;
+inline constexpr ::vk::CompareOp kDepthFarther = ::vk::CompareOp::eLess;
 
 struct GraphicsPipelineCreateInfo {
   std::string vertex_shader;    // "frame/opaque.vert"
