@@ -75,8 +75,8 @@ struct FrameInfo {
   bool shadow_map_updated = false;  // the shadow map was redrawn (shadow_map.h), in part or whole
   int shadow_tiles_redrawn = 0;     // of its kShadowCascades tiles, one per cascade
   // Draw calls and pipeline binds (each with its descriptors pushed) that the frame's raster passes
-  // recorded: the shadow tiles, the opaque pass, the sky and the transparent objects. The terrain
-  // draws a call per chunk, so they grow with its level of detail.
+  // recorded: the shadow tiles, the opaque pass, the sky and the transparent objects. The meshes and
+  // the terrain's chunks are indirect draws, a few per pass, so they do not grow with the scene.
   int draws = 0, draw_binds = 0;
   // The opaque pass read the sun visibility that an earlier frame of the same view looked up
   // (opaque_fragment.glsl) instead of looking it up.

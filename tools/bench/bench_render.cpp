@@ -212,8 +212,9 @@ void Bench(const BenchOptions& cli) {
              "shared machine)", configurations, &Configuration::Cpu);
   PrintTable("the CPU side of a frame: CPU time of the thread that renders (terrain and shadow caster selection, "
              "sorting, recording, submitting; not lavapipe's threads)", configurations, &Configuration::CallerCpu);
-  std::printf("\n=== recording: draw calls and pipeline binds a frame, medians (min-max): the terrain draws a call "
-              "per chunk, each shadow tile redrawn binds once and draws its casters ===\n  %-40s %17s %17s\n", "",
+  std::printf("\n=== recording: draw calls and pipeline binds a frame, medians (min-max): indirect draws, a few per "
+              "pass whatever the terrain draws; each shadow tile redrawn binds once and draws twice ===\n"
+              "  %-40s %17s %17s\n", "",
               "draws", "binds");
   for (const Configuration& c : configurations) {
     Stats draws = c.Draws(), binds = c.DrawBinds();

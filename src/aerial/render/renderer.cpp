@@ -315,6 +315,8 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
     frame_buffers_.emplace_back(tables.context(), vk::UniformBufferInfo(sizeof(FrameUniforms)));
     shadow_buffers_.emplace_back(tables.context(), vk::UniformBufferInfo(sizeof(ShadowUniforms)));
     timers_.push_back(std::make_unique<vk::GpuTimer>(tables.context()));
+    opaque_commands_.emplace_back(tables.context());
+    shadow_commands_.emplace_back(tables.context());
   }
   tables.context().Submit([&](const auto& cmd) {
     for (const vk::Image* image : {&depth_, &output_, &sun_visibility_, &surface_radiance_, &sky_rayleigh_, &sky_mie_,
@@ -444,7 +446,7 @@ void Renderer::RecordSkyView(const vk::CommandBuffer& cmd, const vk::Buffer& fra
 // while their slices fit (shadow_cascades.h), and a tile of the shadow map is redrawn only when
 // what it shows changed (frame_cache_policy.h: its window, the sun, one tile a frame, or its
 // terrain casters as its texels resolve them).
-void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene, bool exact) {
+void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t slot, bool exact) {
   const glm::dvec3 sun = scene.sun.Direction();
   const CascadeFitInput fit{.camera = scene.camera,
                             .aspect = double(options_.render_width()) / options_.render_height(),
@@ -483,7 +485,7 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
                                      [](const std::optional<CasterSelection>& s) { return s && s->whole; });
   if (frame_info_.shadow_tiles_redrawn == 0) return;
   RecordedDraws recorded = shadow_map_.Record(cmd, shadow_cascades_, redraw, scene.camera.position, geometry_,
-                                              terrain_.get(), key.casters);
+                                              terrain_.get(), key.casters, shadow_commands_[slot]);
   frame_info_.draws += recorded.draws;
   frame_info_.draw_binds += recorded.binds;
   vk::FullBarrier(cmd);  // the froxel pass and the surfaces read it
@@ -564,21 +566,30 @@ void Renderer::ChooseFroxelReads(const Camera& camera) {
   terrain_per_pixel_ = size_t(first_per_vertex - terrain_chunks_.begin());
 }
 
+void Renderer::BeginOpaqueCommands(vk::IndirectDraws& commands) const {
+  commands.Begin(geometry_.opaque_draws().size() + terrain_chunks_.size());
+}
+
 // The opaque meshes and terrain chunks whose froxel reads are pixel_reads (per pixel or per vertex),
-// or all of them, with one pipeline.
+// or all of them, with one pipeline: an indirect draw for the meshes with back faces culled, one
+// for the double-sided ones and one for the terrain's chunks, whatever their number.
 RecordedDraws Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
-                                      const std::vector<vk::Slot>& slots, std::optional<bool> pixel_reads) const {
+                                      const std::vector<vk::Slot>& slots, std::optional<bool> pixel_reads,
+                                      vk::IndirectDraws& commands) const {
   // The ground's draws are numbered as opaque.vert's kGroundDetailInstance: its albedo detail.
   constexpr uint32_t ground = 1;
   RecordedDraws recorded{.binds = 1};
   pipeline.Bind(cmd, slots);
   vk::BindMesh(cmd, geometry_.opaque_vertices(), geometry_.opaque_indices());
   const std::vector<MeshDraw>& draws = geometry_.opaque_draws();
-  for (size_t i = 0; i < draws.size(); ++i) {
-    if (pixel_reads && bool(mesh_reads_per_pixel_[i]) != *pixel_reads) continue;
-    vk::SetCullBackFaces(cmd, !draws[i].double_sided);
-    vk::DrawIndexed(cmd, draws[i].index_count, draws[i].first_index, 0, draws[i].ground ? ground : 0);
-    ++recorded.draws;
+  for (bool double_sided : {false, true}) {
+    for (size_t i = 0; i < draws.size(); ++i) {
+      if (draws[i].double_sided != double_sided) continue;
+      if (pixel_reads && bool(mesh_reads_per_pixel_[i]) != *pixel_reads) continue;
+      commands.Add(draws[i].index_count, draws[i].first_index, 0, draws[i].ground ? ground : 0);
+    }
+    vk::SetCullBackFaces(cmd, !double_sided);
+    recorded.draws += commands.Draw(cmd);
   }
   if (terrain_chunks_.empty()) return recorded;
   vk::SetCullBackFaces(cmd, true);
@@ -587,9 +598,9 @@ RecordedDraws Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::Gr
   const size_t end = pixel_reads.value_or(false) ? terrain_per_pixel_ : terrain_chunks_.size();
   for (size_t i = first; i < end; ++i) {
     terrain::IndexRange range = terrain::ChunkIndexRange(terrain_chunks_[i].skirts);
-    vk::DrawIndexed(cmd, range.count, range.first, terrain_->VertexOffset(terrain_chunks_[i].id), ground);
-    ++recorded.draws;
+    commands.Add(range.count, range.first, terrain_->VertexOffset(terrain_chunks_[i].id), ground);
   }
+  recorded.draws += commands.Draw(cmd);
   return recorded;
 }
 
@@ -597,10 +608,13 @@ RecordedDraws Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::Gr
 // (landmarks and models standing on the ground), then the terrain's chunks by distance; those
 // that read the froxels per pixel before those that read them per vertex.
 RecordedDraws Renderer::DrawOpaque(const vk::CommandBuffer& cmd, const MeshPipelines& pipelines,
-                                   SunVisibilitySource source, const std::vector<vk::Slot>& slots) const {
-  if (!pipelines.per_vertex) return DrawOpaqueRun(cmd, pipelines.per_pixel.For(source), slots, std::nullopt);
-  RecordedDraws recorded = DrawOpaqueRun(cmd, pipelines.per_pixel.For(source), slots, true);
-  recorded += DrawOpaqueRun(cmd, pipelines.per_vertex->For(source), slots, false);
+                                   SunVisibilitySource source, const std::vector<vk::Slot>& slots,
+                                   vk::IndirectDraws& commands) const {
+  BeginOpaqueCommands(commands);
+  if (!pipelines.per_vertex)
+    return DrawOpaqueRun(cmd, pipelines.per_pixel.For(source), slots, std::nullopt, commands);
+  RecordedDraws recorded = DrawOpaqueRun(cmd, pipelines.per_pixel.For(source), slots, true, commands);
+  recorded += DrawOpaqueRun(cmd, pipelines.per_vertex->For(source), slots, false, commands);
   return recorded;
 }
 
@@ -668,7 +682,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   vk::FullBarrier(cmd);
   timer.Reset(cmd);
   timer.Begin(cmd, "shadow map");
-  RecordShadowMap(cmd, scene, complete);
+  RecordShadowMap(cmd, scene, slot, complete);
   timer.End(cmd);
   ShadowUniforms shadow =
       MakeShadowUniforms(shadow_cascades_, scene.sun.Direction(), scene.camera, casters_, options_.shadows);
@@ -731,7 +745,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
       }
       vk::Rendering rendering(cmd, opaque);
       timer.Begin(cmd, "opaque raster");
-      recorded += DrawOpaque(cmd, pipelines, source, mesh_slots);
+      recorded += DrawOpaque(cmd, pipelines, source, mesh_slots, opaque_commands_[slot]);
       timer.End(cmd);
     }
     vk::FullBarrier(cmd);
@@ -742,7 +756,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   } else {
     vk::Rendering rendering(cmd, targets);
     timer.Begin(cmd, "opaque raster");
-    recorded += DrawOpaque(cmd, pipelines, source, mesh_slots);
+    recorded += DrawOpaque(cmd, pipelines, source, mesh_slots, opaque_commands_[slot]);
     timer.End(cmd);
     recorded += DrawSkyAndTransparent(cmd, slot, sky, pipelines.transparent, mesh_slots);
   }
@@ -781,13 +795,15 @@ ImageRgbF Renderer::ReadSurface(SurfaceLight light) const {
                                            MeshConstants(options_, {.light = SurfaceLight::kSkyOnly})));
   vk::Image surface(context, Target(options_, vk::kRgba32f));
   vk::Image depth(context, Target(options_, vk::kDepth32f));
+  vk::IndirectDraws commands(context);
+  BeginOpaqueCommands(commands);
   context.Submit([&](const vk::CommandBuffer& cmd) {
     surface.InitializeLayout(cmd);
     depth.InitializeLayout(cmd);
     {
       vk::Rendering rendering(cmd, {.colors = {&surface}, .clear_colors = {std::array<float, 4>{0, 0, 0, -1}},
                                     .depth = &depth, .clear_depth = 0.0f});
-      DrawOpaqueRun(cmd, sky_only ? *sky_only : surface_, MeshSlots(last_slot_), std::nullopt);
+      DrawOpaqueRun(cmd, sky_only ? *sky_only : surface_, MeshSlots(last_slot_), std::nullopt, commands);
     }
     vk::FullBarrier(cmd);
   });

@@ -29,6 +29,7 @@
 #include "aerial/renderer.h"
 #include "aerial/vk/gpu_timer.h"
 #include "aerial/vk/graphics_pipeline.h"
+#include "aerial/vk/indirect_draws.h"
 #include "froxel/froxel_volume.h"
 
 namespace aerial {
@@ -118,7 +119,7 @@ class Renderer {
  private:
   terrain::LodView FrameLodView(const Scene& scene) const;
   void SelectTerrain(const Scene& scene, bool complete);
-  void RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene, bool exact);
+  void RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t slot, bool exact);
   // Whether this frame remakes the sky-view table (stale, or a band of its lattice was remade); if
   // so, its key becomes this frame's.
   bool SkyViewStale(bool exact, bool lattice_remade);
@@ -133,10 +134,14 @@ class Renderer {
   std::vector<vk::Slot> MeshSlots(uint32_t slot) const;
   void ChooseFroxelReads(const Camera& camera);
   // The draw functions return what they recorded (FrameInfo::draws, ::draw_binds).
+  // The opaque draws' commands go to `commands`, started for all of them (BeginOpaqueCommands).
+  void BeginOpaqueCommands(vk::IndirectDraws& commands) const;
   RecordedDraws DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
-                              const std::vector<vk::Slot>& slots, std::optional<bool> pixel_reads) const;
+                              const std::vector<vk::Slot>& slots, std::optional<bool> pixel_reads,
+                              vk::IndirectDraws& commands) const;
   RecordedDraws DrawOpaque(const vk::CommandBuffer& cmd, const MeshPipelines& pipelines,
-                           SunVisibilitySource source, const std::vector<vk::Slot>& slots) const;
+                           SunVisibilitySource source, const std::vector<vk::Slot>& slots,
+                           vk::IndirectDraws& commands) const;
   RecordedDraws DrawFroxelComposite(const vk::CommandBuffer& cmd, uint32_t slot) const;
   RecordedDraws DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot, const vk::GraphicsPipeline& sky,
                                       const vk::GraphicsPipeline& transparent,
@@ -160,6 +165,8 @@ class Renderer {
   FroxelVolume froxels_;
   std::vector<vk::Buffer> frame_buffers_;
   std::vector<std::unique_ptr<vk::GpuTimer>> timers_;
+  // Per frame slot, the indirect draws' commands of the opaque pass and of the shadow tiles.
+  std::vector<vk::IndirectDraws> opaque_commands_, shadow_commands_;
   FrameUniforms frame_uniforms_{};
   vk::Image depth_, output_;
   // The sun's visibility of the front-most opaque surface at each pixel, as the last frame that

@@ -48,10 +48,14 @@ uint64_t ShadowMap::MemoryBytes(bool enabled) { return uint64_t(AtlasTexels(enab
 RecordedDraws ShadowMap::Record(const vk::CommandBuffer& cmd, const ShadowCascades& cascades,
                        const std::array<bool, kShadowCascades>& redraw, const glm::dvec3& camera_position,
                        const SceneGeometry& geometry, const TerrainChunkCache* terrain,
-                       const ShadowTerrain& chunks) const {
+                       const ShadowTerrain& chunks, vk::IndirectDraws& commands) const {
   // One scope for all tiles (each scope costs a pass over the whole atlas on a CPU rasterizer):
   // cleared whole when every tile is redrawn, else loaded with the redrawn tiles cleared alone.
   const bool all = std::find(redraw.begin(), redraw.end(), false) == redraw.end();
+  size_t chunk_count = 0;
+  for (int i = 0; i < kShadowCascades; ++i)
+    if (redraw[i]) chunk_count += chunks[i].size();
+  commands.Begin(chunk_count);
   vk::Rendering rendering(cmd, {.depth = &atlas_, .clear_depth = all ? std::optional(0.0f) : std::nullopt});
   const ::vk::Extent2D tile{uint32_t(kShadowTileTexels), uint32_t(kShadowTileTexels)};
   RecordedDraws recorded;
@@ -75,9 +79,9 @@ RecordedDraws ShadowMap::Record(const vk::CommandBuffer& cmd, const ShadowCascad
     vk::BindMesh(cmd, terrain->vertices(), terrain->indices());
     for (const terrain::SelectedChunk& chunk : chunks[i]) {
       terrain::IndexRange range = terrain::ChunkIndexRange(chunk.skirts);
-      vk::DrawIndexed(cmd, range.count, range.first, terrain->VertexOffset(chunk.id));
-      ++recorded.draws;
+      commands.Add(range.count, range.first, terrain->VertexOffset(chunk.id), 0);
     }
+    recorded.draws += commands.Draw(cmd);
   }
   return recorded;
 }

@@ -19,6 +19,7 @@
 #include "aerial/render/shadow_terrain.h"
 #include "aerial/render/terrain_chunk_cache.h"
 #include "aerial/vk/graphics_pipeline.h"
+#include "aerial/vk/indirect_draws.h"
 
 namespace aerial {
 
@@ -37,10 +38,11 @@ class ShadowMap {
 
   // Clears the tile of each cascade in `redraw` and draws its casters: the scene's opaque meshes
   // (both faces: a mesh open to the sun still shades what is behind it) and the terrain chunks of
-  // the cascade. Other tiles keep what they hold. Returns what it recorded.
+  // the cascade, one indirect draw per tile from `commands` (the frame slot's). Other tiles keep
+  // what they hold. Returns what it recorded.
   RecordedDraws Record(const vk::CommandBuffer& cmd, const ShadowCascades& cascades, const std::array<bool, kShadowCascades>& redraw,
               const glm::dvec3& camera_position, const SceneGeometry& geometry,
-              const TerrainChunkCache* terrain, const ShadowTerrain& chunks) const;
+              const TerrainChunkCache* terrain, const ShadowTerrain& chunks, vk::IndirectDraws& commands) const;
 
   const vk::Image& atlas() const { return atlas_; }
   // The atlas with its comparing sampler, as the shaders bind it (shadow_map in shadow.glsl).
