@@ -2,8 +2,8 @@
 // the opaque pass records an indirect draw per run of commands that share their state (meshes with
 // back faces culled, double-sided meshes, terrain chunks; for the surfaces that read the froxels
 // per pixel and for those that read them per vertex), whatever the number of meshes and chunks; one
-// draw for the sky and one for the transparent objects; and each redrawn shadow tile two: the
-// meshes and its chunks.
+// draw each for the sky, the sun's disc over it and the transparent objects; and each redrawn
+// shadow tile two: the meshes and its chunks.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -39,14 +39,14 @@ TEST_F(RecordedDraws, AreAFewIndirectDrawsWhateverTheTerrainDraws) {
 
   // The meshes: at most two runs (culled, double-sided) in each of the two pipelines, which the
   // surfaces that read the froxels per pixel and those that read them per vertex take; then the
-  // sky and the transparent objects.
+  // sky, the sun's disc and the transparent objects.
   scene.terrain = false;
   const FrameInfo meshes = RenderOnce(scene, false);
-  EXPECT_GE(meshes.draws, 1 + 2);
-  EXPECT_LE(meshes.draws, 4 + 2);
-  EXPECT_LT(meshes.draws, opaque + 2);
-  EXPECT_GE(meshes.draw_binds, 3);
-  EXPECT_LE(meshes.draw_binds, 4);
+  EXPECT_GE(meshes.draws, 1 + 3);
+  EXPECT_LE(meshes.draws, 4 + 3);
+  EXPECT_LT(meshes.draws, opaque + 3);
+  EXPECT_GE(meshes.draw_binds, 4);
+  EXPECT_LE(meshes.draw_binds, 5);
 
   // The terrain adds one run per pipeline, at any level of detail: four times finer draws several
   // times the chunks and records the same.

@@ -51,7 +51,7 @@ vec3 GetSunDiscOverTexel(vec3 center, vec3 across, vec3 down, vec3 transmittance
     for (int i = 0; i < DISC_SAMPLES; ++i) {
       vec2 offset = (vec2(i, j) + 0.5) / float(DISC_SAMPLES) - 0.5;
       vec3 ray = normalize(center + offset.x * across + offset.y * down);
-      sum += ShadeBackground(transmittance, false, dot(ray, AERIAL_FRAME.sun_direction.xyz));
+      sum += ShadeBackground(transmittance, false, ray);
     }
   }
   return sum / float(DISC_SAMPLES * DISC_SAMPLES);

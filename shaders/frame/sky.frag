@@ -3,8 +3,10 @@
 // The sky, drawn after the opaque geometry into the same target where none was drawn (the depth
 // test passes only there): the inscatter of the whole view ray with the phase functions from the
 // pixel's own ray, plus what lies behind it: the sun disc, or the bare planet where the ray meets
-// the ground beyond the scene's geometry. In froxel mode all of it comes from the sky-view table
-// (3 bilinear taps); in the per-pixel modes, from the tables.
+// the ground beyond the scene's geometry. In froxel mode it comes from the sky-view table in two
+// bilinear taps (sky_view.comp: Rayleigh's phase and the bare planet are in the first), and the
+// sun's disc is added after by a pass of its own around the disc (sun_disc.frag); in the per-pixel
+// modes, all of it from the tables.
 // The per-pixel sky's variant for a high sun (aerial/render/sun_high_variant.h,
 // Renderer::SkyPipelineFor), declared before the includes so that transmittance.glsl takes it.
 layout(constant_id = 4) const bool kSunHighEverywhere = false;
@@ -16,27 +18,14 @@ layout(set = 0, binding = 3) uniform sampler3D rayleigh_texture;
 layout(set = 0, binding = 4) uniform sampler3D mie_texture;
 layout(set = 0, binding = 5) uniform sampler3D multiple_texture;
 layout(set = 0, binding = 6) uniform sampler2D irradiance_texture;
-layout(set = 0, binding = 7) uniform sampler2D rayleigh_sky;
+layout(set = 0, binding = 7) uniform sampler2D rayleigh_sky;  // with phase and the bare planet
 layout(set = 0, binding = 8) uniform sampler2D mie_sky;
-layout(set = 0, binding = 9) uniform sampler2D background_sky;
 layout(location = 0) in vec3 view_ray;
 layout(location = 1) flat in vec3 up;
 layout(location = 2) flat in vec3 toward_sun;
 layout(location = 3) flat in vec2 horizon;  // x: its zenith angle, y: its cos
 layout(location = 0) out vec4 color;
 
-// The whole view ray's inscatter, and in `transmittance` the background through the atmosphere
-// (GetBackgroundThroughAtmosphere), from the sky-view table.
-Inscatter GetPixelSky(vec3 ray, float mu) {
-  vec3 horizontal = ray - mu * up;
-  float cos_phi = dot(horizontal, horizontal) > 1e-12 ? dot(normalize(horizontal), toward_sun) : 1.0;
-  vec2 uv = GetSkyViewUv(horizon.x, cos_phi, acos(clamp(mu, -1.0, 1.0)), textureSize(rayleigh_sky, 0));
-  Inscatter sky;
-  sky.rayleigh = textureLod(rayleigh_sky, uv, 0.0).rgb;
-  sky.mie = textureLod(mie_sky, uv, 0.0).rgb;
-  sky.transmittance = textureLod(background_sky, uv, 0.0).rgb;
-  return sky;
-}
 
 void main() {
   vec3 ray = normalize(view_ray);
@@ -48,7 +37,8 @@ void main() {
   }
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
-  Inscatter sky = GetPixelSky(ray, mu);
-  // The ray meets the ground below the horizon: RayIntersectsGround, with the frame's horizon.
-  color = vec4(ApplyPhaseFunctions(sky, nu) + ShadeBackground(sky.transmittance, mu < horizon.y, nu), 1.0);
+  vec2 uv = GetSkyViewUvOfRay(ray, mu, up, toward_sun, horizon.x, textureSize(rayleigh_sky, 0));
+  color = vec4(textureLod(rayleigh_sky, uv, 0.0).rgb +
+                   textureLod(mie_sky, uv, 0.0).rgb * MiePhaseFunction(AERIAL_ATMOSPHERE.mie_phase_g, nu),
+               1.0);
 }

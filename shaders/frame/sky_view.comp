@@ -3,6 +3,13 @@
 // Sky-view pass: fills the per-frame sky-view table (sky_view.glsl) from the 4D or 3D tables, and
 // adds the correction of the tables' read (GetSkyInscatterCorrection) interpolated from the
 // lattice that sky_view_correction.comp wrote just before.
+//
+// The sky's pixels read two of its images (sky.frag): Rayleigh's inscatter with its phase function
+// applied here, at the texel's own view-sun angle, plus below the horizon the ground seen through
+// the air; and Mie's inscatter without phase, whose forward peak only a pixel's own angle resolves.
+// Rayleigh's phase, 3/(16 pi) (1 + nu^2), is smooth: interpolated with the inscatter over a texel
+// (about a degree) it is within 2e-4 of the pixel's own. The third image, the background (the
+// transmittance above the horizon), is read only around the sun's disc (sun_disc.frag).
 #include "blocks_not_inlined.glsl"
 #include "sky_view.glsl"
 #include "surface.glsl"
@@ -39,9 +46,10 @@ void main() {
     AddSkyInscatterCorrection(INTERPOLATE_LATTICE(rayleigh_correction, node, t),
                               INTERPOLATE_LATTICE(mie_correction, node, t), sky);
   }
-  imageStore(rayleigh_sky, texel, vec4(sky.rayleigh, 0.0));
-  imageStore(mie_sky, texel, vec4(sky.mie, 0.0));
   vec3 background = GetBackgroundThroughAtmosphere(transmittance_texture, irradiance_texture, ray.direction,
                                                    ray.r, ray.mu, sky.transmittance);
+  vec3 ground = RayIntersectsGround(ray.r, ray.mu) ? background : vec3(0.0);
+  imageStore(rayleigh_sky, texel, vec4(sky.rayleigh * RayleighPhaseFunction(ray.nu) + ground, 0.0));
+  imageStore(mie_sky, texel, vec4(sky.mie, 0.0));
   imageStore(background_sky, texel, vec4(background, 1.0));
 }

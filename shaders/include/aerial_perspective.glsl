@@ -78,7 +78,7 @@ vec3 GetSkyRadianceAlongRay(sampler2D transmittance_texture, sampler3D rayleigh_
                                         r, mu, mu_s, nu);
   vec3 background = GetBackgroundThroughAtmosphere(transmittance_texture, irradiance_texture, ray, r, mu,
                                                    sky.transmittance);
-  return ApplyPhaseFunctions(sky, nu) + ShadeBackground(background, RayIntersectsGround(r, mu), nu);
+  return ApplyPhaseFunctions(sky, nu) + ShadeBackground(background, RayIntersectsGround(r, mu), ray);
 }
 
 #endif

@@ -1,6 +1,6 @@
-// The sky-view table (Hillaire 2020, "sky-view LUT"): per frame, the phase-free Rayleigh and Mie
-// inscatter and the transmittance of the whole view ray, for every direction around the camera,
-// so that sky pixels read 3 taps instead of evaluating the 4D lookups. Directions are (azimuth
+// The sky-view table (Hillaire 2020, "sky-view LUT"): per frame, the Rayleigh and Mie inscatter
+// and the transmittance of the whole view ray, for every direction around the camera, so that sky
+// pixels read 2 taps instead of evaluating the 4D lookups (sky_view.comp). Directions are (azimuth
 // from the sun's vertical plane, zenith angle); the sky is symmetric about that plane, so the
 // azimuth covers [0, pi]. The zenith axis is split at the horizon like the scattering tables' mu
 // axis, each half on its own texel centers, with the square-root mapping of Hillaire 2020 that
@@ -24,6 +24,14 @@ vec2 GetSkyViewUv(float theta_h, float cos_phi, float theta, ivec2 size) {
   }
   float u = GetTextureCoordFromUnitRange(acos(clamp(cos_phi, -1.0, 1.0)) / PI, size.x);
   return vec2(u, v);
+}
+
+// (u, v) of a unit view ray whose cosine with the camera's up is mu, in the camera's local frame
+// (GetSkyViewFrame: up, toward_sun) with its horizon's zenith angle theta_h.
+vec2 GetSkyViewUvOfRay(vec3 ray, float mu, vec3 up, vec3 toward_sun, float theta_h, ivec2 size) {
+  vec3 horizontal = ray - mu * up;
+  float cos_phi = dot(horizontal, horizontal) > 1e-12 ? dot(normalize(horizontal), toward_sun) : 1.0;
+  return GetSkyViewUv(theta_h, cos_phi, acos(clamp(mu, -1.0, 1.0)), size);
 }
 
 // The inverse, for the texels of the table: returns (cos_phi, theta).

@@ -49,27 +49,38 @@ vec3 GetBackgroundThroughAtmosphere(sampler2D transmittance_texture, sampler2D i
                                          normal, 1.0);
 }
 
-// The sun's limb darkening at a point of its disc nu = cos(angle) from the disc's centre: the
-// radiance there over the disc's mean radiance. The power law I(mu) = I(1) mu^alpha of Hestroffer
+// sin^2 of the angle between a unit view ray and the sun's direction, from their cross product: on
+// the disc 1 - nu is below 1.1e-5, where a float's step is 6e-8, so 1 - nu^2 would keep two or three
+// digits and two rays a rounding apart would see the limb percents apart; the cross product keeps
+// a float's precision there.
+float SineSquaredFromSun(vec3 ray) {
+  vec3 c = cross(ray, AERIAL_FRAME.sun_direction.xyz);
+  return dot(c, c);
+}
+
+// The sun's limb darkening at a point of its disc whose angle from the disc's centre has the sine
+// squared sine_squared (SineSquaredFromSun): the radiance there over the disc's mean radiance. The power law I(mu) = I(1) mu^alpha of Hestroffer
 // & Magnan 1998 ("Wavelength dependency of the Solar limb darkening", A&A 333), fitted to Neckel
 // & Labs 1994, with mu the cosine on the sun's surface and alpha = -0.023 + 0.292 / lambda[um]:
 // 0.406, 0.508 and 0.641 at the channels' 680, 550 and 440 nm, the limb redder and dimmer than the
 // centre. The mean of mu^alpha over the disc's area is 1 / (1 + alpha / 2), whose inverse keeps
 // the disc's irradiance.
-vec3 SunLimbDarkening(float nu) {
+vec3 SunLimbDarkening(float sine_squared) {
   const vec3 alpha = vec3(0.406, 0.508, 0.641);
   float sin_radius = sin(AERIAL_ATMOSPHERE.sun_angular_radius);
-  float off_centre = max(1.0 - nu * nu, 0.0) / (sin_radius * sin_radius);  // sin^2 of the angle on the surface
+  float off_centre = sine_squared / (sin_radius * sin_radius);  // sin^2 of the angle on the surface
   return pow(vec3(SafeSqrt(1.0 - off_centre)), alpha) * (1.0 + 0.5 * alpha);
 }
 
 // The sky pixel's radiance behind the inscatter: the background where the ray meets the ground
 // (RayIntersectsGround), or on the sun disc (at its true angular size, limb-darkened) the sun seen
 // through the atmosphere.
-vec3 ShadeBackground(vec3 background, bool meets_ground, float nu) {
+vec3 ShadeBackground(vec3 background, bool meets_ground, vec3 ray) {
   if (meets_ground) return background;
-  return nu > cos(AERIAL_ATMOSPHERE.sun_angular_radius) ? GetSolarRadiance() * SunLimbDarkening(nu) * background
-                                                        : vec3(0.0);
+  float sine_squared = SineSquaredFromSun(ray);
+  float sin_radius = sin(AERIAL_ATMOSPHERE.sun_angular_radius);
+  bool on_disc = dot(ray, AERIAL_FRAME.sun_direction.xyz) > 0.0 && sine_squared < sin_radius * sin_radius;
+  return on_disc ? GetSolarRadiance() * SunLimbDarkening(sine_squared) * background : vec3(0.0);
 }
 
 #endif

@@ -26,7 +26,7 @@ std::vector<PassTime> FullScreenTap::Run() {
     {
       vk::Rendering rendering(cmd, {.colors = {&target_}, .clear_colors = {std::nullopt}});
       pipeline_.Bind(cmd, {vk::SampledViewSlot{volume_.view, *sampler_}}, size);
-      vk::DrawFullScreenTriangle(cmd);
+      vk::DrawGeneratedTriangle(cmd);
     }
     timer_.End(cmd);
     vk::FullBarrier(cmd);

@@ -153,6 +153,23 @@ std::optional<vk::GraphicsPipeline> FroxelCompositePipeline(const vk::Context& c
                                         .depth_compare = vk::kDepthFarther});
 }
 
+// Froxel mode: the sun's disc over the sky, a triangle around it (sun_disc.vert) drawn where the
+// sky was (EQUAL against the depth cleared to 0) and added to it (alpha 0 through the
+// premultiplied blend).
+std::optional<vk::GraphicsPipeline> SunDiscPipeline(const vk::Context& context, AerialMode mode) {
+  if (mode != AerialMode::kFroxel) return std::nullopt;
+  return vk::GraphicsPipeline(context, {.vertex_shader = "frame/sun_disc.vert",
+                                        .fragment_shader = "frame/sun_disc.frag",
+                                        .slots = {{"AtmosphereBlock", kUniform},
+                                                  {"FrameBlock", kUniform},
+                                                  {"background_sky", kSampled}},
+                                        .color_formats = {vk::kRgba32f},
+                                        .depth_format = vk::kDepth32f,
+                                        .depth_write = false,
+                                        .depth_compare = vk::kDepthEqual,
+                                        .alpha_blend = true});
+}
+
 vk::ImageCreateInfo SkyViewImage() {
   return {.extent = {uint32_t(kSkyViewSize[0]), uint32_t(kSkyViewSize[1]), 1}};
 }
@@ -309,7 +326,8 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       scene_radius_m_(SceneRadiusM(scene, tables.atmosphere().bottom_radius_m)),
       mesh_(MakeMeshPipelines(tables.context(), options, false)),
       sky_(tables.context(), SkyPipeline(options.mode, false)),
-      surface_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/surface.frag", false, MeshConstants(options_))) {
+      surface_(tables.context(), MeshPipeline("frame/opaque.vert", "frame/surface.frag", false, MeshConstants(options_))),
+      sun_disc_(SunDiscPipeline(tables.context(), options.mode)) {
   if (options.frames_in_flight < 1) throw Error("frames in flight", "0", "at least 1");
   for (uint32_t slot = 0; slot < options.frames_in_flight; ++slot) {
     frame_buffers_.emplace_back(tables.context(), vk::UniformBufferInfo(sizeof(FrameUniforms)));
@@ -627,7 +645,7 @@ RecordedDraws Renderer::DrawFroxelComposite(const vk::CommandBuffer& cmd, uint32
                                 vk::UniformBufferSlot{&frame_buffers_[slot]}, tables_.Sampled(froxels_.rayleigh()),
                                 tables_.Sampled(froxels_.mie()), tables_.Sampled(froxels_.transmittance()),
                                 tables_.Sampled(surface_radiance_)});
-  vk::DrawFullScreenTriangle(cmd);
+  vk::DrawGeneratedTriangle(cmd);
   timer.End(cmd);
   return {.draws = 1, .binds = 1};
 }
@@ -646,8 +664,14 @@ RecordedDraws Renderer::DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint
                    tables_.Sampled(tables_.mie()), tables_.Sampled(tables_.multiple()),
                    tables_.Sampled(tables_.irradiance()), tables_.Sampled(sky_rayleigh_),
                     tables_.Sampled(sky_mie_), tables_.Sampled(sky_background_)});
-    vk::DrawFullScreenTriangle(cmd);
+    vk::DrawGeneratedTriangle(cmd);
     recorded += {.draws = 1, .binds = 1};
+    if (sun_disc_) {
+      sun_disc_->Bind(cmd, {vk::UniformBufferSlot{&tables_.uniform_buffer()}, vk::UniformBufferSlot{&frame_buffers_[slot]},
+                            tables_.Sampled(sky_background_)});
+      vk::DrawGeneratedTriangle(cmd);
+      recorded += {.draws = 1, .binds = 1};
+    }
   }
   timer.End(cmd);
   timer.Begin(cmd, "transparent raster");

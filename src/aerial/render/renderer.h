@@ -200,6 +200,8 @@ class Renderer {
   std::optional<MeshPipelines> mesh_sun_high_;
   bool mesh_sun_high_used_ = false;
   vk::GraphicsPipeline sky_, surface_;
+  // Froxel mode: the sun's disc added over the sky around it (sun_disc.frag).
+  std::optional<vk::GraphicsPipeline> sun_disc_;
   // The same for the sky (SkyPipelineFor) and the sky-view lattice's correction
   // (SkyViewCorrectionPipelineFor); whether the last frame's sky took it.
   std::optional<vk::GraphicsPipeline> sky_sun_high_;

@@ -86,7 +86,7 @@ void DisplayPasses::RecordToneMap(const vk::CommandBuffer& cmd, ::vk::Extent2D e
                    {white_balance[0], white_balance[1], white_balance[2]}};
   const bool same_size = radiance.extent.width == extent.width && radiance.extent.height == extent.height;
   (same_size ? tone_map_ : tone_map_resampled_).Bind(cmd, {Linear(radiance)}, &push);
-  vk::DrawFullScreenTriangle(cmd);
+  vk::DrawGeneratedTriangle(cmd);
 }
 
 void DisplayPasses::RecordTerm(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
@@ -102,7 +102,7 @@ void DisplayPasses::RecordTerm(const vk::CommandBuffer& cmd, ::vk::Extent2D exte
               Linear(tables.multiple_density()), Linear(renderer.froxel_rayleigh()), Linear(renderer.froxel_mie()),
               Linear(renderer.froxel_transmittance()), vk::SampledViewSlot{renderer.depth().view, *nearest_}},
              &push);
-  vk::DrawFullScreenTriangle(cmd);
+  vk::DrawGeneratedTriangle(cmd);
 }
 
 void DisplayPasses::RecordFroxelSlice(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
@@ -112,7 +112,7 @@ void DisplayPasses::RecordFroxelSlice(const vk::CommandBuffer& cmd, ::vk::Extent
                      {Linear(renderer.froxel_rayleigh()), Linear(renderer.froxel_mie()),
                       Linear(renderer.froxel_transmittance())},
                      &push);
-  vk::DrawFullScreenTriangle(cmd);
+  vk::DrawGeneratedTriangle(cmd);
 }
 
 void DisplayPasses::RecordDifference(const vk::CommandBuffer& cmd, ::vk::Extent2D extent,
@@ -120,7 +120,7 @@ void DisplayPasses::RecordDifference(const vk::CommandBuffer& cmd, ::vk::Extent2
                                      float full_scale) const {
   DifferencePush push{{float(extent.width), float(extent.height)}, full_scale};
   difference_.Bind(cmd, {Linear(radiance_4d), Linear(radiance_3d)}, &push);
-  vk::DrawFullScreenTriangle(cmd);
+  vk::DrawGeneratedTriangle(cmd);
 }
 
 }  // namespace aerial::viewer

@@ -174,6 +174,6 @@ void DrawIndexed(const CommandBuffer& cmd, uint32_t index_count, uint32_t first_
   cmd.drawIndexed(index_count, 1, first_index, vertex_offset, first_instance);
 }
 
-void DrawFullScreenTriangle(const CommandBuffer& cmd) { cmd.draw(3, 1, 0, 0); }
+void DrawGeneratedTriangle(const CommandBuffer& cmd) { cmd.draw(3, 1, 0, 0); }
 
 }  // namespace aerial::vk

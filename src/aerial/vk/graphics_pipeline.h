@@ -93,7 +93,8 @@ void BindMesh(const CommandBuffer& cmd, const Buffer& vertices, const Buffer& in
 // One instance, numbered first_instance (gl_InstanceIndex): a draw's own number for its shaders.
 void DrawIndexed(const CommandBuffer& cmd, uint32_t index_count, uint32_t first_index = 0,
                  int32_t vertex_offset = 0, uint32_t first_instance = 0);
-// Three vertices and no buffers: a full-screen triangle made in the vertex shader.
-void DrawFullScreenTriangle(const CommandBuffer& cmd);
+// Three vertices and no buffers: a triangle the vertex shader makes from gl_VertexIndex (over the
+// whole screen, or around the sun's disc).
+void DrawGeneratedTriangle(const CommandBuffer& cmd);
 
 }  // namespace aerial::vk
