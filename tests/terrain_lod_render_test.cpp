@@ -212,7 +212,10 @@ void LookEastAfterSunset(Scene& scene) {
 }
 
 // A table made 10 m below the camera (the most the cache lets it lag) against a fresh one, after
-// sunset: within 0.1% relative RMSE (measured 0.07-0.091%), far below the 0.2-0.8% between the sky-view table and the per-pixel sky.
+// sunset: measured 0.048% relative RMSE, far below the 0.2-0.8% between the sky-view table and the
+// per-pixel sky. The table is read with its own horizon's rows (sky_view.comp); read with the
+// camera's new horizon instead, each row's direction shifts with the horizon's dip and the same
+// table is 0.095-0.103% off, which the bound of 0.07% tells.
 TEST_F(LeanFrame, SkyViewTableTenMetersOffChangesLittle) {
   Scene scene = BuildPreset("sunset", FullTables().atmosphere().bottom_radius_m);
   LookEastAfterSunset(scene);
@@ -227,7 +230,7 @@ TEST_F(LeanFrame, SkyViewTableTenMetersOffChangesLittle) {
   double rmse = validation::EnergyWeightedRelativeRmse(lagging.ReadOutput(), fresh.ReadOutput());
   std::printf("sky-view table 9.9 m off: relative RMSE %.4f%%\n", 100 * rmse);
   EXPECT_GT(rmse, 0.0);
-  EXPECT_LT(rmse, 0.001);
+  EXPECT_LT(rmse, 0.0007);
 }
 
 // The sky-view table's correction lattice lagging the camera by up to kSkyViewLatticeLagM

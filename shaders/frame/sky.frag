@@ -23,7 +23,7 @@ layout(set = 0, binding = 8) uniform sampler2D mie_sky;
 layout(location = 0) in vec3 view_ray;
 layout(location = 1) flat in vec3 up;
 layout(location = 2) flat in vec3 toward_sun;
-layout(location = 3) flat in vec2 horizon;  // x: its zenith angle, y: its cos
+layout(location = 3) flat in float table_horizon;  // the sky-view table's horizon's zenith angle
 layout(location = 0) out vec4 color;
 
 
@@ -37,7 +37,7 @@ void main() {
   }
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
-  vec2 uv = GetSkyViewUvOfRay(ray, mu, up, toward_sun, horizon.x, textureSize(rayleigh_sky, 0));
+  vec2 uv = GetSkyViewUvOfRay(ray, mu, up, toward_sun, table_horizon, textureSize(rayleigh_sky, 0));
   color = vec4(textureLod(rayleigh_sky, uv, 0.0).rgb +
                    textureLod(mie_sky, uv, 0.0).rgb * MiePhaseFunction(AERIAL_ATMOSPHERE.mie_phase_g, nu),
                1.0);

@@ -10,6 +10,10 @@
 // Rayleigh's phase, 3/(16 pi) (1 + nu^2), is smooth: interpolated with the inscatter over a texel
 // (about a degree) it is within 2e-4 of the pixel's own. The third image, the background (the
 // transmittance above the horizon), is read only around the sun's disc (sun_disc.frag).
+//
+// The alpha of the first and third images holds the horizon's zenith angle at the camera the table
+// was made for: a table kept while the camera climbs a little (frame_cache_policy.h) is then read
+// with its own rows' directions (GetSkyViewUv), not with the rows of the camera's new horizon.
 #include "blocks_not_inlined.glsl"
 #include "sky_view.glsl"
 #include "surface.glsl"
@@ -49,7 +53,8 @@ void main() {
   vec3 background = GetBackgroundThroughAtmosphere(transmittance_texture, irradiance_texture, ray.direction,
                                                    ray.r, ray.mu, sky.transmittance);
   vec3 ground = RayIntersectsGround(ray.r, ray.mu) ? background : vec3(0.0);
-  imageStore(rayleigh_sky, texel, vec4(sky.rayleigh * RayleighPhaseFunction(ray.nu) + ground, 0.0));
+  float theta_h = HorizonZenithAngle(ray.r);
+  imageStore(rayleigh_sky, texel, vec4(sky.rayleigh * RayleighPhaseFunction(ray.nu) + ground, theta_h));
   imageStore(mie_sky, texel, vec4(sky.mie, 0.0));
-  imageStore(background_sky, texel, vec4(background, 1.0));
+  imageStore(background_sky, texel, vec4(background, theta_h));
 }

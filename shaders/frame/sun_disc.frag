@@ -16,8 +16,10 @@ void main() {
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
   vec3 up, toward_sun, side;
   GetSkyViewFrame(up, toward_sun, side);
-  float theta_h = HorizonZenithAngle(r);
-  vec2 uv = GetSkyViewUvOfRay(ray, mu, up, toward_sun, theta_h, textureSize(background_sky, 0));
+  // The table's rows are laid out for its own horizon (its alpha, sky_view.comp); the ground hides
+  // the disc below the camera's.
+  float table_horizon = texelFetch(background_sky, ivec2(0), 0).a;
+  vec2 uv = GetSkyViewUvOfRay(ray, mu, up, toward_sun, table_horizon, textureSize(background_sky, 0));
   vec3 disc = ShadeBackground(textureLod(background_sky, uv, 0.0).rgb, false, ray);
-  color = vec4(mu < cos(theta_h) ? vec3(0.0) : disc, 0.0);
+  color = vec4(mu < cos(HorizonZenithAngle(r)) ? vec3(0.0) : disc, 0.0);
 }

@@ -135,11 +135,12 @@ vk::GraphicsPipelineCreateInfo SkyPipeline(AerialMode mode, bool sun_high) {
           .specialization = {PerPixel(mode), 0, 0, 0, sun_high ? 1 : 0}};
 }
 
-// The froxels' full-screen pass (froxel_composite.frag): sky.vert's triangle at depth 0, drawn where
-// the opaque pass left a depth nearer than that (reversed Z), reading the surfaces' radiance.
+// The froxels' full-screen pass (froxel_composite.frag): a triangle over the screen at depth 0,
+// drawn where the opaque pass left a depth nearer than that (reversed Z), reading the surfaces'
+// radiance.
 std::optional<vk::GraphicsPipeline> FroxelCompositePipeline(const vk::Context& context, const RendererOptions& o) {
   if (!FroxelsInFullScreenPass(o)) return std::nullopt;
-  return vk::GraphicsPipeline(context, {.vertex_shader = "frame/sky.vert",
+  return vk::GraphicsPipeline(context, {.vertex_shader = "frame/fullscreen.vert",
                                         .fragment_shader = "frame/froxel_composite.frag",
                                         .slots = {{"AtmosphereBlock", kUniform},
                                                   {"FrameBlock", kUniform},
