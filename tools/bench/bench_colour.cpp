@@ -2,7 +2,8 @@
 // (validation/colour_accuracy.h): chromaticity distance du'v' and relative luminance error of the
 // sky radiance, the radiance to a point 10 km away, the sky irradiance and the sun's irradiance,
 // by sun band and camera altitude, for rgb and spectral tables side by side (docs/colour.md). The
-// reference takes hours and is kept in --reference-file (tests/data/colour_reference.json).
+// reference takes hours and is kept in --reference-file (tests/data/colour_reference.json), written
+// after each of its samples so that a run cut short continues where it stopped.
 #include <cstdio>
 #include <filesystem>
 
@@ -32,17 +33,26 @@ void Bench(const BenchOptions& cli) {
   aerial::PrecomputeOptions rgb = spectral;
   rgb.colour = aerial::ColourMode::kRgb;
 
-  ColourReference reference;
+  // A file cut short (the reference takes hours) is continued from its last sample: each sample is
+  // written as it is made.
+  ColourReference reference{.orders = spectral.RepresentedOrders(), .paths_per_query = cli.paths};
   if (!cli.reference_file.empty() && std::filesystem::exists(cli.reference_file)) {
     reference = aerial::validation::ReadColourReference(cli.reference_file);
     if (reference.orders != spectral.RepresentedOrders())
       throw aerial::Error("--reference-file", cli.reference_file, "a reference of the tables' orders (--orders)");
-  } else {
-    reference = aerial::validation::ComputeColourReference(
-        atmosphere, spectral.RepresentedOrders(), cli.paths, [](size_t done, size_t total, int paths) {
+  }
+  if (!aerial::validation::IsComplete(reference)) {
+    if (!reference.samples.empty())
+      std::fprintf(stderr, "reference: continuing %s after its %zu samples (%d paths per query)\n",
+                   cli.reference_file.c_str(), reference.samples.size(), reference.paths_per_query);
+    aerial::validation::ContinueColourReference(
+        atmosphere, reference,
+        [](size_t done, size_t total, int paths) {
           std::fprintf(stderr, "reference: %zu / %zu (%d paths)\n", done, total, paths);
+        },
+        [&](const ColourReference& so_far) {
+          if (!cli.reference_file.empty()) aerial::validation::WriteColourReference(so_far, cli.reference_file);
         });
-    if (!cli.reference_file.empty()) aerial::validation::WriteColourReference(reference, cli.reference_file);
   }
 
   aerial::Device device(cli.tables.MakeDeviceOptions());
@@ -65,6 +75,6 @@ int main(int argc, char** argv) {
   cli.tables.AddTo(app);
   app.add_option("--paths", cli.paths, "Reference paths per query")->check(CLI::Range(512, 1 << 24));
   app.add_option("--reference-file", cli.reference_file,
-                 "Reference values: read if the file exists, else computed and written there (JSON)");
+                 "Reference values: read if the file exists (continued if it was cut short), else computed and written there (JSON)");
   return aerial::bench::ParseAndRun(app, argc, argv, "aerial_bench_colour", [&] { Bench(cli); });
 }

@@ -129,32 +129,53 @@ double LuminanceNoise(const Spectrum& linear_srgb, const Spectrum& std_error) {
   return y > 0.0 ? std::sqrt(variance) / y : 0.0;
 }
 
-ColourReference ComputeColourReference(const AtmosphereParameters& atmosphere, int orders, int paths_per_query,
-                                       const ColourProgress& progress) {
-  ColourReference reference{.orders = orders, .paths_per_query = paths_per_query};
-  size_t total = 0, done = 0;
+size_t ColourReferenceViewCount() {
+  size_t total = 0;
   for (const ColourBand& band : ColourBands()) total += ColourViews(band).size();
-  bool floors_set = false;
+  return total;
+}
+
+bool IsComplete(const ColourReference& reference) {
+  return reference.samples.size() == ColourReferenceViewCount();
+}
+
+void ContinueColourReference(const AtmosphereParameters& atmosphere, ColourReference& reference,
+                             const ColourProgress& progress,
+                             const std::function<void(const ColourReference&)>& after_each_sample) {
+  const size_t total = ColourReferenceViewCount();
+  size_t index = 0;
   for (const ColourBand& band : ColourBands()) {
     for (const ViewAngles& view : ColourViews(band)) {
+      if (index < reference.samples.size()) {
+        const ColourSample& held = reference.samples[index++];
+        if (held.band != band.name || held.view.altitude_m != view.altitude_m ||
+            held.view.view_zenith_deg != view.view_zenith_deg || held.view.sun_zenith_deg != view.sun_zenith_deg ||
+            held.view.azimuth_deg != view.azimuth_deg)
+          throw Error("colour reference sample", std::to_string(index - 1), "the view ColourViews() puts there");
+        continue;
+      }
       ColourSample sample{.band = band.name, .view = view};
-      for (int paths = paths_per_query;; paths *= 4) {
+      for (int paths = reference.paths_per_query;; paths *= 4) {
         const ProbeResult r = ProbeView(atmosphere, reference, view, paths);
         sample.value = ColourQuantities(r);
         sample.std_error = ColourStdErrors(r);
         sample.paths = paths;
-        if (!floors_set) {  // noon's zenith, the first view
+        if (reference.samples.empty() && paths == reference.paths_per_query) {  // noon's zenith, the first view
           for (int q = 0; q < kColourQuantities; ++q)
             reference.floors[q] = kFloorFraction * Luminance(sample.value[q == 1 ? 0 : q]);
-          floors_set = true;
         }
-        if (MeetsNoiseGoal(sample, band, reference.floors) || paths >= kMaxColourPathsFactor * paths_per_query) break;
+        if (MeetsNoiseGoal(sample, band, reference.floors) ||
+            paths >= kMaxColourPathsFactor * reference.paths_per_query)
+          break;
       }
       reference.samples.push_back(sample);
-      if (progress) progress(++done, total, sample.paths);
+      ++index;
+      if (after_each_sample) after_each_sample(reference);
+      if (progress) progress(index, total, sample.paths);
     }
   }
-  return reference;
+  if (reference.samples.size() > total)
+    throw Error("colour reference samples", std::to_string(reference.samples.size()), "at most " + std::to_string(total));
 }
 
 ColourSample RecomputeColourSample(const AtmosphereParameters& atmosphere, const ColourReference& reference,

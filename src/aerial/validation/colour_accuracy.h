@@ -76,9 +76,18 @@ struct ColourReference {
 double ChromaticityNoise(const Spectrum& linear_srgb, const Spectrum& std_error);
 double LuminanceNoise(const Spectrum& linear_srgb, const Spectrum& std_error);
 
+// The views of every band, in the order a reference holds its samples.
+size_t ColourReferenceViewCount();
+bool IsComplete(const ColourReference& reference);
+
 using ColourProgress = std::function<void(size_t done, size_t total, int paths)>;
-ColourReference ComputeColourReference(const AtmosphereParameters& atmosphere, int orders, int paths_per_query,
-                                       const ColourProgress& progress = {});
+// Computes the samples that `reference` lacks (all of them for a new one, whose orders and
+// paths_per_query are set), after those it holds (a reference cut short), and
+// calls after_each_sample with it after each one, so that hours of work can be kept as they go.
+// Throws aerial::Error where the samples held are not the first views of ColourBands().
+void ContinueColourReference(const AtmosphereParameters& atmosphere, ColourReference& reference,
+                             const ColourProgress& progress = {},
+                             const std::function<void(const ColourReference&)>& after_each_sample = {});
 // One sample recomputed with its own path count: the same numbers as when it was made, as long as
 // the reference code has not changed.
 ColourSample RecomputeColourSample(const AtmosphereParameters& atmosphere, const ColourReference& reference,
