@@ -286,16 +286,18 @@ void Bench(const BenchOptions& cli) {
     const Configuration *with = Find(configurations, on), *without = Find(configurations, off);
     if (!with || !without) continue;
     if (shadows.empty())
-      std::printf("\n=== the sun's shadow map (medians): tiles redrawn per frame and its pass's timestamps, and the "
+      std::printf("\n=== the sun's shadow map (medians): tiles redrawn per frame (whole + in part) and its pass's timestamps, and the "
                   "whole frame's cost of shadows (on minus off: the pass, the lookups in the froxels and on "
                   "surfaces, chunk selection) ===\n");
     Stats pass = Summarize(aerial::bench::SumOfPasses(with->frames, {aerial::bench::kShadowMapPass}, name).ms);
-    double tiles = aerial::bench::MeanShadowTilesRedrawn(with->frames);
+    double tiles = aerial::bench::MeanPerRun(with->frames, &RunResult::shadow_tiles_redrawn);
+    double regions = aerial::bench::MeanPerRun(with->frames, &RunResult::shadow_tile_regions_redrawn);
     double gpu = with->Gpu().median - without->Gpu().median, cpu = with->Cpu().median - without->Cpu().median;
-    std::printf("  %-10s %.2f tiles redrawn, pass %7.2f ms; frame %7.2f ms GPU with, %7.2f without (%+.2f ms, "
-                "%+.1f%%), %+.2f ms CPU\n", name, tiles, pass.median, with->Gpu().median, without->Gpu().median, gpu,
+    std::printf("  %-10s %.2f + %.2f tiles redrawn, pass %7.2f ms; frame %7.2f ms GPU with, %7.2f without (%+.2f ms, "
+                "%+.1f%%), %+.2f ms CPU\n", name, tiles, regions, pass.median, with->Gpu().median, without->Gpu().median, gpu,
                 100.0 * gpu / without->Gpu().median, cpu);
-    shadows[name] = {{"tiles_redrawn_per_frame", tiles}, {"shadow_map_pass_gpu_ms", pass.median},
+    shadows[name] = {{"tiles_redrawn_per_frame", tiles}, {"tile_regions_redrawn_per_frame", regions},
+                     {"shadow_map_pass_gpu_ms", pass.median},
                      {"frame_gpu_ms", with->Gpu().median}, {"frame_without_shadows_gpu_ms", without->Gpu().median},
                      {"shadows_gpu_ms", gpu}, {"shadows_cpu_ms", cpu}};
   }

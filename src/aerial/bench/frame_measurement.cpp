@@ -43,6 +43,7 @@ std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<FrameSource>
       frame.cpu_ms = CpuClockMs(CLOCK_PROCESS_CPUTIME_ID) - cpu_start;
       const FrameInfo& info = sources[r].renderer->frame_info();
       frame.shadow_tiles_redrawn = info.shadow_tiles_redrawn;
+      frame.shadow_tile_regions_redrawn = info.shadow_tile_regions_redrawn;
       frame.draws = info.draws;
       frame.draw_binds = info.draw_binds;
       frame.wall_ms =

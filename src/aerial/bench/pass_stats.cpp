@@ -39,11 +39,11 @@ std::vector<double> CallerCpuTotals(const std::vector<RunResult>& runs) {
 std::vector<double> DrawCounts(const std::vector<RunResult>& runs) { return Each(runs, &RunResult::draws); }
 std::vector<double> DrawBindCounts(const std::vector<RunResult>& runs) { return Each(runs, &RunResult::draw_binds); }
 
-double MeanShadowTilesRedrawn(const std::vector<RunResult>& runs) {
+double MeanPerRun(const std::vector<RunResult>& runs, int RunResult::*count) {
   if (runs.empty()) return 0.0;
-  double tiles = 0.0;
-  for (const auto& run : runs) tiles += run.shadow_tiles_redrawn;
-  return tiles / double(runs.size());
+  double sum = 0.0;
+  for (const auto& run : runs) sum += run.*count;
+  return sum / double(runs.size());
 }
 
 std::optional<double> MedianFragmentInvocations(const std::vector<RunResult>& runs, const std::string& pass) {

@@ -25,8 +25,9 @@ struct RunResult {
   // caster selection, sorting, recording, submitting) without the driver's threads, which on
   // lavapipe are the GPU. On a real GPU this is most of what a frame costs the CPU.
   double caller_cpu_ms = 0.0;
-  // Tiles of the sun's shadow map that the frame redrew (FrameInfo::shadow_tiles_redrawn).
-  int shadow_tiles_redrawn = 0;
+  // Tiles of the sun's shadow map that the frame redrew whole and in part
+  // (FrameInfo::shadow_tiles_redrawn, ::shadow_tile_regions_redrawn).
+  int shadow_tiles_redrawn = 0, shadow_tile_regions_redrawn = 0;
   // Draw calls and pipeline binds the frame recorded (FrameInfo::draws, ::draw_binds).
   int draws = 0, draw_binds = 0;
   double GpuMs() const;
@@ -40,8 +41,8 @@ std::vector<double> CpuTotals(const std::vector<RunResult>& runs);
 std::vector<double> CallerCpuTotals(const std::vector<RunResult>& runs);
 std::vector<double> DrawCounts(const std::vector<RunResult>& runs);
 std::vector<double> DrawBindCounts(const std::vector<RunResult>& runs);
-// The shadow map's tiles redrawn per run, on average.
-double MeanShadowTilesRedrawn(const std::vector<RunResult>& runs);
+// A count per run (e.g. &RunResult::shadow_tiles_redrawn), on average.
+double MeanPerRun(const std::vector<RunResult>& runs, int RunResult::*count);
 // The median over runs of the named pass's fragment-shader invocations (summed within a run where
 // it ran more than once); nullopt where the device did not count them or the pass never ran.
 std::optional<double> MedianFragmentInvocations(const std::vector<RunResult>& runs, const std::string& pass);

@@ -7,6 +7,7 @@
 #include "aerial/core/format_number.h"
 #include "aerial/error.h"
 #include "aerial/image/resample.h"
+#include "aerial/render/shadow_tile_region.h"
 #include "aerial/render/shadow_uniforms.h"
 #include "aerial/render/sky_view_layout.h"
 #include "froxel/sun_high_variant.h"
@@ -482,7 +483,8 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
   if (ShadowMapKept(still_view_, shadow_selection_whole_, moved, caught_up)) return;
   const terrain::LodView lod_view = FrameLodView(scene);
   const bool select_terrain = terrain_ && options_.passes.terrain;
-  std::array<bool, kShadowCascades> redraw{};
+  std::array<std::optional<TileTexels>, kShadowCascades> redraw{};
+  ShadowTerrain drawn;  // the chunks each redrawn tile draws
   for (int i = 0; i < kShadowCascades; ++i) {
     key.cascades[i] = shadow_cascades_[i];
     // A tile waiting for its turn to catch up with the sun is not redrawn for chunks that arrived.
@@ -494,17 +496,27 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
       key.selections[i] = MakeCasterSelection(lod_view, shadow_cascades_[i], selected);
       casters = std::move(selected.chunks);
     }
-    redraw[i] = ShadowTileRedrawn(moved[i], casters, key.casters[i]);
-    if (!redraw[i]) continue;
+    if (!ShadowTileRedrawn(moved[i], casters, key.casters[i])) continue;
+    // A window that held, with casters that changed: only where they changed, when that is known
+    // and small (shadow_tile_region.h).
+    if (options_.shadow_tile_regions && select_terrain && !moved[i] && !key.casters[i].empty())
+      redraw[i] = ChangedCastersTexels(shadow_cascades_[i], kShadowTileTexels, key.casters[i], casters, *terrain_);
+    if (!redraw[i]) {
+      redraw[i] = WholeTile(kShadowTileTexels);
+      drawn[i] = casters;
+      ++frame_info_.shadow_tiles_redrawn;
+    } else if (!redraw[i]->Empty()) {
+      drawn[i] = CastersReaching(shadow_cascades_[i], kShadowTileTexels, casters, *redraw[i], *terrain_);
+      ++frame_info_.shadow_tile_regions_redrawn;
+    }
     key.casters[i] = std::move(casters);
-    ++frame_info_.shadow_tiles_redrawn;
   }
   shadow_selection_whole_ =
       !select_terrain || std::all_of(key.selections.begin(), key.selections.end(),
                                      [](const std::optional<CasterSelection>& s) { return s && s->whole; });
-  if (frame_info_.shadow_tiles_redrawn == 0) return;
+  if (frame_info_.shadow_tiles_redrawn + frame_info_.shadow_tile_regions_redrawn == 0) return;
   RecordedDraws recorded = shadow_map_.Record(cmd, shadow_cascades_, redraw, scene.camera.position, geometry_,
-                                              terrain_.get(), key.casters, shadow_commands_[slot]);
+                                              terrain_.get(), drawn, shadow_commands_[slot]);
   frame_info_.draws += recorded.draws;
   frame_info_.draw_binds += recorded.binds;
   vk::FullBarrier(cmd);  // the froxel pass and the surfaces read it

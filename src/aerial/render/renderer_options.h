@@ -42,6 +42,9 @@ struct RendererOptions : RenderOptions {
   // The terrain's fine albedo detail (shaders/include/ground_detail.glsl); off: its materials'
   // per-vertex albedo alone, to compare with.
   bool ground_detail = true;
+  // A shadow tile whose window held and whose terrain casters changed is redrawn only where they
+  // changed (shadow_tile_region.h); off: whole, to compare with.
+  bool shadow_tile_regions = true;
 };
 
 // EstimateFrameMemory (aerial/renderer.h), without the terrain chunk slots for the fixed mesh.

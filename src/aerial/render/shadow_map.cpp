@@ -46,12 +46,14 @@ ShadowMap::ShadowMap(const vk::Context& context, bool enabled)
 uint64_t ShadowMap::MemoryBytes(bool enabled) { return uint64_t(AtlasTexels(enabled)) * AtlasTexels(enabled) * 4; }
 
 RecordedDraws ShadowMap::Record(const vk::CommandBuffer& cmd, const ShadowCascades& cascades,
-                       const std::array<bool, kShadowCascades>& redraw, const glm::dvec3& camera_position,
-                       const SceneGeometry& geometry, const TerrainChunkCache* terrain,
-                       const ShadowTerrain& chunks, vk::IndirectDraws& commands) const {
+                                const std::array<std::optional<TileTexels>, kShadowCascades>& redraw,
+                                const glm::dvec3& camera_position, const SceneGeometry& geometry,
+                                const TerrainChunkCache* terrain, const ShadowTerrain& chunks,
+                                vk::IndirectDraws& commands) const {
   // One scope for all tiles (each scope costs a pass over the whole atlas on a CPU rasterizer):
-  // cleared whole when every tile is redrawn, else loaded with the redrawn tiles cleared alone.
-  const bool all = std::find(redraw.begin(), redraw.end(), false) == redraw.end();
+  // cleared whole when every tile is redrawn whole, else loaded with the redrawn texels cleared.
+  const TileTexels whole = WholeTile(kShadowTileTexels);
+  const bool all = std::all_of(redraw.begin(), redraw.end(), [&](const auto& r) { return r == whole; });
   size_t chunk_count = 0;
   for (int i = 0; i < kShadowCascades; ++i)
     if (redraw[i]) chunk_count += chunks[i].size();
@@ -60,11 +62,14 @@ RecordedDraws ShadowMap::Record(const vk::CommandBuffer& cmd, const ShadowCascad
   const ::vk::Extent2D tile{uint32_t(kShadowTileTexels), uint32_t(kShadowTileTexels)};
   RecordedDraws recorded;
   for (int i = 0; i < kShadowCascades; ++i) {
-    if (!redraw[i]) continue;
-    ::vk::Offset2D corner{int32_t(i % kShadowAtlasTilesPerRow) * kShadowTileTexels,
-                          int32_t(i / kShadowAtlasTilesPerRow) * kShadowTileTexels};
-    if (!all) vk::ClearDepth(cmd, {corner, tile}, 0.0f);
-    vk::SetViewport(cmd, tile, corner);
+    if (!redraw[i] || redraw[i]->Empty()) continue;
+    const glm::ivec2 corner((i % kShadowAtlasTilesPerRow) * kShadowTileTexels,
+                            (i / kShadowAtlasTilesPerRow) * kShadowTileTexels);
+    const glm::ivec2 from = corner + redraw[i]->min, size = redraw[i]->max - redraw[i]->min;
+    const ::vk::Rect2D texels{{from.x, from.y}, {uint32_t(size.x), uint32_t(size.y)}};
+    if (!all) vk::ClearDepth(cmd, texels, 0.0f);
+    vk::SetViewport(cmd, tile, {corner.x, corner.y});
+    vk::SetScissor(cmd, texels);
     CascadeConstants constants{
         ToColumnMajorFloats(ClipFromRelative(cascades[i], camera_position)),
         {float(camera_position.x), float(camera_position.y), float(camera_position.z), 0.0f}};

@@ -9,14 +9,15 @@
 // The renderer records it into the frame's command buffer before the froxels and the raster
 // pass, tile by tile, and only the tiles whose content changed (Renderer's shadow key): the sun,
 // the cascade's window (shadow_cascades.h: kept while its slice fits) or the terrain it draws as
-// the tile resolves it (shadow_terrain.h, CasterKey). A still camera redraws nothing, a moving
-// one a tile now and then.
+// the tile resolves it (shadow_terrain.h), the last only where those chunks lie
+// (shadow_tile_region.h). A still camera redraws nothing, a moving one a tile now and then.
 #include <cstdint>
 
 #include "aerial/render/recorded_draws.h"
 #include "aerial/render/scene_geometry.h"
 #include "aerial/render/shadow_cascades.h"
 #include "aerial/render/shadow_terrain.h"
+#include "aerial/render/shadow_tile_region.h"
 #include "aerial/render/terrain_chunk_cache.h"
 #include "aerial/vk/graphics_pipeline.h"
 #include "aerial/vk/indirect_draws.h"
@@ -36,13 +37,15 @@ class ShadowMap {
   // The atlas' bytes (the placeholder's when not enabled).
   static uint64_t MemoryBytes(bool enabled);
 
-  // Clears the tile of each cascade in `redraw` and draws its casters: the scene's opaque meshes
-  // (both faces: a mesh open to the sun still shades what is behind it) and the terrain chunks of
-  // the cascade, one indirect draw per tile from `commands` (the frame slot's). Other tiles keep
-  // what they hold. Returns what it recorded.
-  RecordedDraws Record(const vk::CommandBuffer& cmd, const ShadowCascades& cascades, const std::array<bool, kShadowCascades>& redraw,
-              const glm::dvec3& camera_position, const SceneGeometry& geometry,
-              const TerrainChunkCache* terrain, const ShadowTerrain& chunks, vk::IndirectDraws& commands) const;
+  // Clears the texels of each tile in `redraw` (nullopt: kept; the whole tile, or the region where
+  // its casters changed: shadow_tile_region.h) and draws its casters there: the scene's opaque
+  // meshes (both faces: a mesh open to the sun still shades what is behind it) and `chunks`, the
+  // terrain chunks that reach the texels, one indirect draw per tile from `commands` (the frame
+  // slot's). Other texels keep what they hold. Returns what it recorded.
+  RecordedDraws Record(const vk::CommandBuffer& cmd, const ShadowCascades& cascades,
+                       const std::array<std::optional<TileTexels>, kShadowCascades>& redraw,
+                       const glm::dvec3& camera_position, const SceneGeometry& geometry,
+                       const TerrainChunkCache* terrain, const ShadowTerrain& chunks, vk::IndirectDraws& commands) const;
 
   const vk::Image& atlas() const { return atlas_; }
   // The atlas with its comparing sampler, as the shaders bind it (shadow_map in shadow.glsl).

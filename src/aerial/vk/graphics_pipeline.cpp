@@ -160,6 +160,8 @@ void SetViewport(const CommandBuffer& cmd, ::vk::Extent2D extent, ::vk::Offset2D
   cmd.setScissor(0, ::vk::Rect2D{.offset = offset, .extent = extent});
 }
 
+void SetScissor(const CommandBuffer& cmd, const ::vk::Rect2D& rect) { cmd.setScissor(0, rect); }
+
 void SetCullBackFaces(const CommandBuffer& cmd, bool cull_back) {
   cmd.setCullMode(cull_back ? ::vk::CullModeFlagBits::eBack : ::vk::CullModeFlagBits::eNone);
 }

@@ -86,6 +86,8 @@ class Rendering {
 
 // The viewport and scissor of a rectangle (by default the whole extent from the origin).
 void SetViewport(const CommandBuffer& cmd, ::vk::Extent2D extent, ::vk::Offset2D offset = {});
+// Narrows the scissor to a rectangle within the viewport.
+void SetScissor(const CommandBuffer& cmd, const ::vk::Rect2D& rect);
 // Inside a Rendering scope: sets the depth target to `depth` within the rectangle alone.
 void ClearDepth(const CommandBuffer& cmd, const ::vk::Rect2D& rect, float depth);
 void SetCullBackFaces(const CommandBuffer& cmd, bool cull_back);
