@@ -379,9 +379,7 @@ TEST_F(ShadowRender, ChangedCastersRedrawTheirTexelsAsAWholeTileRedrawWould) {
     int regions_redrawn = 0;
   };
   auto fly = [&](bool regions) {
-    RendererOptions options;
-    options.width = kWidth;
-    options.height = kHeight;
+    RendererOptions options{{.width = kWidth, .height = kHeight}};
     options.shadow_tile_regions = regions;
     Renderer renderer(tables, start, options);
     renderer.Render(start);

@@ -24,6 +24,7 @@ struct BenchOptions {
   std::string reference_file;
   // 32768 paths: at 48 wavelengths a standard error of ~0.0002 in u'v' for a daylight sky.
   int paths = 32768;
+  bool held_only = false;
 };
 
 void Bench(const BenchOptions& cli) {
@@ -36,12 +37,14 @@ void Bench(const BenchOptions& cli) {
   // A file cut short (the reference takes hours) is continued from its last sample: each sample is
   // written as it is made.
   ColourReference reference{.orders = spectral.RepresentedOrders(), .paths_per_query = cli.paths};
+  if (cli.held_only && (cli.reference_file.empty() || !std::filesystem::exists(cli.reference_file)))
+    throw aerial::Error("--held-only", "set", "with the --reference-file of a reference computed before");
   if (!cli.reference_file.empty() && std::filesystem::exists(cli.reference_file)) {
     reference = aerial::validation::ReadColourReference(cli.reference_file);
     if (reference.orders != spectral.RepresentedOrders())
       throw aerial::Error("--reference-file", cli.reference_file, "a reference of the tables' orders (--orders)");
   }
-  if (!aerial::validation::IsComplete(reference)) {
+  if (!aerial::validation::IsComplete(reference) && !cli.held_only) {
     if (!reference.samples.empty())
       std::fprintf(stderr, "reference: continuing %s after its %zu samples (%d paths per query)\n",
                    cli.reference_file.c_str(), reference.samples.size(), reference.paths_per_query);
@@ -56,7 +59,8 @@ void Bench(const BenchOptions& cli) {
   }
 
   aerial::Device device(cli.tables.MakeDeviceOptions());
-  std::printf("reference: %d wavelengths over 360-830 nm (midpoint rule), all orders\n\n", reference.wavelengths);
+  std::printf("reference: %d wavelengths over 360-830 nm (midpoint rule), all orders; %zu of %zu views\n\n",
+              reference.wavelengths, reference.samples.size(), aerial::validation::ColourReferenceViewCount());
   for (const aerial::PrecomputeOptions& options : {rgb, spectral}) {
     aerial::Tables tables =
         aerial::Tables::LoadOrPrecompute(device, atmosphere, options, cli.tables.MakeLoadOptions());
@@ -76,5 +80,7 @@ int main(int argc, char** argv) {
   app.add_option("--paths", cli.paths, "Reference paths per query")->check(CLI::Range(512, 1 << 24));
   app.add_option("--reference-file", cli.reference_file,
                  "Reference values: read if the file exists (continued if it was cut short), else computed and written there (JSON)");
+  app.add_flag("--held-only", cli.held_only,
+               "Compare with the views the reference file holds, without computing the others");
   return aerial::bench::ParseAndRun(app, argc, argv, "aerial_bench_colour", [&] { Bench(cli); });
 }

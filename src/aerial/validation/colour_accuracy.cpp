@@ -244,6 +244,12 @@ double ColourRegion::MaxChromaticity() const { return Max(Errors(errors, &Colour
 double ColourRegion::MedianLuminance() const { return Median(Errors(errors, &ColourError::luminance)); }
 double ColourRegion::MaxLuminance() const { return Max(Errors(errors, &ColourError::luminance)); }
 double ColourRegion::MaxChromaticityNoise() const { return Max(chromaticity_noise); }
+const ViewAngles& ColourRegion::WorstChromaticityView() const {
+  auto worst = std::max_element(errors.begin(), errors.end(), [](const ColourError& a, const ColourError& b) {
+    return a.chromaticity < b.chromaticity;
+  });
+  return views.at(size_t(worst - errors.begin()));
+}
 
 std::vector<ColourRegion> CompareColourWithTables(const Tables& tables, const ColourReference& reference) {
   std::vector<ProbeQuery> queries;
@@ -264,6 +270,7 @@ std::vector<ColourRegion> CompareColourWithTables(const Tables& tables, const Co
       if (!(Luminance(s.value[q]) > reference.floors[q])) continue;
       region.errors.push_back(CompareColour(measured[q], s.value[q]));
       region.chromaticity_noise.push_back(ChromaticityNoise(s.value[q], s.std_error[q]));
+      region.views.push_back(s.view);
     }
   }
   return regions;
@@ -271,14 +278,17 @@ std::vector<ColourRegion> CompareColourWithTables(const Tables& tables, const Co
 
 std::string FormatColourAccuracy(const std::string& tables_name, const std::vector<ColourRegion>& regions) {
   std::string text =
-      "| tables | band | camera | quantity | values | du'v' median / max | luminance median / max | reference "
-      "du'v' noise |\n|---|---|---|---|---|---|---|---|\n";
+      "| tables | band | camera | quantity | values | du'v' median / max | luminance median / max | worst du'v' at "
+      "(view zenith, sun zenith, azimuth) | reference du'v' noise |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const ColourRegion& r : regions) {
-    char row[256];
-    std::snprintf(row, sizeof row, "| %s | %s | %.0f km | %s | %zu | %.4f / %.4f | %.2f%% / %.2f%% | %.4f |\n",
+    if (r.errors.empty()) continue;
+    const ViewAngles& worst = r.WorstChromaticityView();
+    char row[320];
+    std::snprintf(row, sizeof row, "| %s | %s | %.0f km | %s | %zu | %.4f / %.4f | %.2f%% / %.2f%% | %.0f, %.0f, %.0f | %.4f |\n",
                   tables_name.c_str(), r.band.c_str(), r.altitude_m / 1000.0, ToString(r.quantity).c_str(),
                   r.errors.size(), r.MedianChromaticity(), r.MaxChromaticity(), 100.0 * r.MedianLuminance(),
-                  100.0 * r.MaxLuminance(), r.MaxChromaticityNoise());
+                  100.0 * r.MaxLuminance(), worst.view_zenith_deg, worst.sun_zenith_deg, worst.azimuth_deg,
+                  r.MaxChromaticityNoise());
     text += row;
   }
   return text;

@@ -111,17 +111,20 @@ struct ColourRegion {
   double altitude_m = 0.0;
   std::vector<ColourError> errors;
   std::vector<double> chromaticity_noise;  // the reference's, per compared value
+  std::vector<ViewAngles> views;           // of each compared value
   double MedianChromaticity() const;
   double MaxChromaticity() const;
   double MedianLuminance() const;
   double MaxLuminance() const;
   double MaxChromaticityNoise() const;
+  // The view of the largest du'v' (the region must hold a value).
+  const ViewAngles& WorstChromaticityView() const;
 };
 
 std::vector<ColourRegion> CompareColourWithTables(const Tables& tables, const ColourReference& reference);
 
-// A Markdown table: one row per quantity, band and altitude, du'v' and luminance (median / max),
-// and the reference's largest chromaticity noise there.
+// A Markdown table: one row per quantity, band and altitude that holds values, du'v' and luminance
+// (median / max), the view of the largest du'v' and the reference's largest chromaticity noise.
 std::string FormatColourAccuracy(const std::string& tables_name, const std::vector<ColourRegion>& regions);
 
 }  // namespace aerial::validation
