@@ -1,0 +1,115 @@
+// The default spectral tables against the truth in colour: the spectral CPU reference at 48
+// wavelengths over 360-830 nm, every order, neither the tables' wavelengths nor their conversion
+// (src/aerial/validation/colour_accuracy.h), over aerial_bench_colour's views. A view takes from
+// seconds (daylight) to ten minutes (the sun at and below the horizon, where the light of the
+// orders >= 2 needs 16 times the paths), so the reference is stored in
+// tests/data/colour_reference.json, written as it goes by
+//   build/tools/aerial_bench_colour --reference-file tests/data/colour_reference.json
+// which continues the file from its last view. It holds the views in ColourViews' order, so far
+// daylight and the low sun up to 90 degrees and one view at 92 (73 of 132); twilight's are still to
+// compute. This test measures what the file holds; StoredColourReference (in
+// src/aerial/validation/colour_accuracy_test.cpp) recomputes one of its views.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include "aerial/device.h"
+#include "aerial/tables.h"
+#include "aerial/validation/colour_accuracy.h"
+#include "gpu_fixture.h"
+
+namespace aerial::testing {
+namespace {
+
+using validation::ColourQuantity;
+
+const char* kReferenceFile = AERIAL_SOURCE_DIR "/tests/data/colour_reference.json";
+const char* kDay = "day (sun zenith 0-60)";
+const char* kLowSun = "low sun (85-92)";
+
+// One region as measured with the default spectral tables of this commit against the stored
+// reference: the values it compares, and its largest du'v' and relative luminance error.
+struct MeasuredRegion {
+  ColourQuantity quantity;
+  const char* band;
+  int altitude_km;
+  size_t values;
+  double max_chromaticity, max_luminance;
+};
+
+const MeasuredRegion kRegions[] = {
+    {ColourQuantity::kSkyRadiance, kDay, 0, 18, 0.000473, 0.00382},
+    {ColourQuantity::kRadianceToPoint, kDay, 0, 18, 0.000275, 0.00824},
+    {ColourQuantity::kSkyIrradiance, kDay, 0, 18, 0.000558, 0.00175},
+    {ColourQuantity::kSunIrradiance, kDay, 0, 18, 0.000092, 0.00029},
+    {ColourQuantity::kSkyRadiance, kDay, 10, 18, 0.000375, 0.00233},
+    {ColourQuantity::kRadianceToPoint, kDay, 10, 18, 0.000350, 0.00502},
+    {ColourQuantity::kSkyIrradiance, kDay, 10, 18, 0.000608, 0.00339},
+    {ColourQuantity::kSunIrradiance, kDay, 10, 18, 0.000090, 0.00031},
+    {ColourQuantity::kSkyRadiance, kLowSun, 0, 19, 0.002018, 0.00342},
+    {ColourQuantity::kRadianceToPoint, kLowSun, 0, 19, 0.001107, 0.00435},
+    {ColourQuantity::kSkyIrradiance, kLowSun, 0, 19, 0.001165, 0.00672},
+    {ColourQuantity::kSunIrradiance, kLowSun, 0, 12, 0.000155, 0.00015},
+    {ColourQuantity::kSkyRadiance, kLowSun, 10, 18, 0.000255, 0.00269},
+    {ColourQuantity::kRadianceToPoint, kLowSun, 10, 18, 0.000235, 0.00205},
+    {ColourQuantity::kSkyIrradiance, kLowSun, 10, 18, 0.000362, 0.00247},
+    {ColourQuantity::kSunIrradiance, kLowSun, 10, 18, 0.000047, 0.00141},
+};
+
+const MeasuredRegion* FindRegion(const validation::ColourRegion& region) {
+  for (const MeasuredRegion& r : kRegions)
+    if (r.quantity == region.quantity && region.band == r.band && region.altitude_m == r.altitude_km * 1000.0)
+      return &r;
+  return nullptr;
+}
+
+const validation::ColourBand& Band(const std::string& name) {
+  for (const validation::ColourBand& band : validation::ColourBands())
+    if (band.name == name) return band;
+  throw std::logic_error("no band " + name);
+}
+
+class ColourAgainstTheTruth : public GpuTest {};
+
+// Each region's largest errors are bounded on both sides. The reference is stored, so only the
+// tables move them: by 1e-4 in du'v' (a tenth of the target, about the reference's own noise,
+// 1-2e-4 per value) or 0.1% in luminance, either way, and a change is noticed. Where the target is
+// met (every daylight region and the low sun 10 km up), the upper bound is held at it too. On the
+// ground at the low sun it is not: up to 0.0020 in the sky 5 degrees from a sun on the horizon,
+// 0.0011-0.0012 for the radiance to a point and the sky's irradiance (docs/colour.md).
+TEST_F(ColourAgainstTheTruth, DefaultSpectralTablesWithinTheTargetsWhereRecorded) {
+  const validation::ColourReference reference = validation::ReadColourReference(kReferenceFile);
+  ASSERT_EQ(reference.samples.size(), 73u) << "the stored reference grew: record its regions here";
+  PrecomputeOptions options = PrecomputeOptions::Default();
+  options.colour = ColourMode::kSpectral;
+  ASSERT_EQ(options.RepresentedOrders(), reference.orders);
+  const Tables tables = Tables::LoadOrPrecompute(SharedDevice(), AtmosphereParameters::Earth(), options);
+  const std::vector<validation::ColourRegion> regions = validation::CompareColourWithTables(tables, reference);
+  std::printf("%s", validation::FormatColourAccuracy("spectral", regions).c_str());
+  constexpr double kChromaticityStep = 1e-4, kLuminanceStep = 1e-3;
+  size_t compared = 0;
+  for (const validation::ColourRegion& region : regions) {
+    if (region.errors.empty()) continue;
+    const std::string name = validation::ToString(region.quantity) + ", " + region.band + ", camera at " +
+                             std::to_string(int(region.altitude_m / 1000.0)) + " km";
+    const MeasuredRegion* measured = FindRegion(region);
+    ASSERT_NE(measured, nullptr) << name << " has values: record it";
+    ++compared;
+    EXPECT_EQ(region.errors.size(), measured->values) << name;
+    const validation::ColourBand& band = Band(region.band);
+    const bool met = measured->max_chromaticity <= band.chromaticity_target;
+    const double upper = measured->max_chromaticity + kChromaticityStep;
+    EXPECT_LE(region.MaxChromaticity(), met ? std::min(upper, band.chromaticity_target) : upper) << name;
+    EXPECT_GE(region.MaxChromaticity(), measured->max_chromaticity - kChromaticityStep)
+        << name << ": better than recorded, update it and docs/colour.md";
+    EXPECT_LE(region.MaxLuminance(), std::min(measured->max_luminance + kLuminanceStep, band.luminance_target))
+        << name;
+    EXPECT_GE(region.MaxLuminance(), measured->max_luminance - kLuminanceStep) << name << ": better than recorded";
+  }
+  EXPECT_EQ(compared, std::size(kRegions));
+}
+
+}  // namespace
+}  // namespace aerial::testing
