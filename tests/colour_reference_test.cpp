@@ -7,11 +7,11 @@
 //   build/tools/aerial_bench_colour --reference-file tests/data/colour_reference.json
 // which continues the file from its last view. It holds the views in ColourViews' order, so far
 // daylight and the low sun up to 90 degrees and one view at 92 (73 of 132); twilight's are still to
-// compute. This test measures what the file holds; StoredColourReference (in
-// src/aerial/validation/colour_accuracy_test.cpp) recomputes one of its views.
+// compute. These tests measure what the file holds, and recompute one of its views.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -109,6 +109,39 @@ TEST_F(ColourAgainstTheTruth, DefaultSpectralTablesWithinTheTargetsWhereRecorded
     EXPECT_GE(region.MaxLuminance(), measured->max_luminance - kLuminanceStep) << name << ": better than recorded";
   }
   EXPECT_EQ(compared, std::size(kRegions));
+}
+
+// The stored views are today's reference: one recomputed with its own path count (the low sun 10 km
+// up, 32,768 paths, 48 wavelengths: 27 s on 2 cores). As for the physical sky's stored reference
+// (physical_sky_test.cpp), the paths fork on a float's last bit, so the compiler that made the file
+// (gcc) reproduces it to rounding, another one draws the same estimate again: within 5 combined
+// standard errors (the sun's irradiance, a quadrature with no error, to 1e-9).
+// It needs no GPU, but lives in this GPU file, as the physical sky's does, so that the sanitizer run
+// (tools/run-sanitizer-tests.sh), where it takes five minutes, leaves it out.
+TEST(StoredColourReference, IsTodaysReference) {
+#if defined(__GNUC__) && !defined(__clang__)
+  constexpr bool kFileCompiler = true;
+#else
+  constexpr bool kFileCompiler = false;
+#endif
+  const validation::ColourReference reference = validation::ReadColourReference(kReferenceFile);
+  constexpr size_t kView = 66;
+  ASSERT_GT(reference.samples.size(), kView);
+  const validation::ColourSample& stored = reference.samples[kView];
+  ASSERT_EQ(stored.view.sun_zenith_deg, 90.0);
+  ASSERT_EQ(stored.view.altitude_m, 10e3);
+  ASSERT_EQ(stored.paths, reference.paths_per_query);
+  const validation::ColourSample again = validation::RecomputeColourSample(AtmosphereParameters::Earth(), reference, stored);
+  for (int q = 0; q < validation::kColourQuantities; ++q) {
+    for (int c = 0; c < 3; ++c) {
+      const double combined = std::hypot(again.std_error[q][c], stored.std_error[q][c]);
+      EXPECT_LE(std::abs(again.value[q][c] - stored.value[q][c]), 5.0 * combined + 1e-9 * std::abs(stored.value[q][c]))
+          << q << " " << c;
+      if (kFileCompiler) {
+        EXPECT_NEAR(again.value[q][c], stored.value[q][c], 1e-9 * std::abs(stored.value[q][c]));
+      }
+    }
+  }
 }
 
 }  // namespace

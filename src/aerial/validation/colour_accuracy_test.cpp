@@ -2,16 +2,12 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <filesystem>
 
 #include "aerial/error.h"
 
 namespace aerial::validation {
 namespace {
-
-// The stored reference (tests/colour_reference_test.cpp).
-const char* kStoredReference = AERIAL_SOURCE_DIR "/tests/data/colour_reference.json";
 
 // Thrown from after_each_sample to cut a run short, as a killed process would.
 struct CutShort {};
@@ -74,35 +70,6 @@ TEST(ColourReferenceFile, SamplesOfOtherViewsAreRefusedNotContinued) {
     EXPECT_EQ(e.value(), "0");
   }
   EXPECT_EQ(reference.samples.size(), 1u);
-}
-
-// The stored views are today's reference: one recomputed with its own path count (the low sun 10 km
-// up, 32,768 paths, 48 wavelengths: 15 s or so). As for the physical sky's stored reference
-// (tests/physical_sky_test.cpp), the paths fork on a float's last bit, so the compiler that made the file
-// (gcc) reproduces it to rounding, another one draws the same estimate again: within 5 combined
-// standard errors (the sun's irradiance, a quadrature with no error, to 1e-9).
-TEST(StoredColourReference, IsTodaysReference) {
-#if defined(__GNUC__) && !defined(__clang__)
-  constexpr bool kFileCompiler = true;
-#else
-  constexpr bool kFileCompiler = false;
-#endif
-  const ColourReference reference = ReadColourReference(kStoredReference);
-  constexpr size_t kView = 66;
-  ASSERT_GT(reference.samples.size(), kView);
-  const ColourSample& stored = reference.samples[kView];
-  ASSERT_EQ(stored.view.sun_zenith_deg, 90.0);
-  ASSERT_EQ(stored.view.altitude_m, 10e3);
-  ASSERT_EQ(stored.paths, reference.paths_per_query);
-  const ColourSample again = RecomputeColourSample(AtmosphereParameters::Earth(), reference, stored);
-  for (int q = 0; q < kColourQuantities; ++q) {
-    for (int c = 0; c < 3; ++c) {
-      const double combined = std::hypot(again.std_error[q][c], stored.std_error[q][c]);
-      EXPECT_LE(std::abs(again.value[q][c] - stored.value[q][c]), 5.0 * combined + 1e-9 * std::abs(stored.value[q][c]))
-          << q << " " << c;
-      if (kFileCompiler) EXPECT_NEAR(again.value[q][c], stored.value[q][c], 1e-9 * std::abs(stored.value[q][c]));
-    }
-  }
 }
 
 }  // namespace
