@@ -19,6 +19,7 @@
 #include "aerial/tables.h"
 #include "aerial/validation/colour_accuracy.h"
 #include "gpu_fixture.h"
+#include "measured_regions.h"
 
 namespace aerial::testing {
 namespace {
@@ -58,13 +59,6 @@ const MeasuredRegion kRegions[] = {
     {ColourQuantity::kSunIrradiance, kLowSun, 10, 18, 0.000047, 0.00141},
 };
 
-const MeasuredRegion* FindRegion(const validation::ColourRegion& region) {
-  for (const MeasuredRegion& r : kRegions)
-    if (r.quantity == region.quantity && region.band == r.band && region.altitude_m == r.altitude_km * 1000.0)
-      return &r;
-  return nullptr;
-}
-
 const validation::ColourBand& Band(const std::string& name) {
   for (const validation::ColourBand& band : validation::ColourBands())
     if (band.name == name) return band;
@@ -94,7 +88,7 @@ TEST_F(ColourAgainstTheTruth, DefaultSpectralTablesWithinTheTargetsWhereRecorded
     if (region.errors.empty()) continue;
     const std::string name = validation::ToString(region.quantity) + ", " + region.band + ", camera at " +
                              std::to_string(int(region.altitude_m / 1000.0)) + " km";
-    const MeasuredRegion* measured = FindRegion(region);
+    const MeasuredRegion* measured = FindMeasuredRegion(kRegions, region.quantity, region.band, region.altitude_m);
     ASSERT_NE(measured, nullptr) << name << " has values: record it";
     ++compared;
     EXPECT_EQ(region.errors.size(), measured->values) << name;

@@ -18,6 +18,7 @@
 #include "aerial/vk/table_filtering.h"
 #include "scoped_table_filtering.h"
 #include "gpu_fixture.h"
+#include "measured_regions.h"
 
 namespace aerial::testing {
 namespace {
@@ -99,13 +100,6 @@ const MeasuredRegion kRegions[] = {
     {SkyQuantity::kRadianceToPoint, kTwilight, 50, 0, 0.00000, 0.00000, 0.00000, kNone},
 };
 
-const MeasuredRegion* FindRegion(const validation::RegionAccuracy& region) {
-  for (const MeasuredRegion& r : kRegions)
-    if (r.quantity == region.quantity && region.band == r.band && region.altitude_m == r.altitude_km * 1000.0)
-      return &r;
-  return nullptr;
-}
-
 // The reference's noise over a region's compared values, as the stored reference has it.
 double Noise(const validation::RegionAccuracy& region) {
   double noise = 0.0;
@@ -140,7 +134,7 @@ TEST_P(PhysicalSky, DefaultTablesAgainstTheTargets) {
   for (const validation::RegionAccuracy& region : regions) {
     std::string name = validation::ToString(region.quantity) + ", " + region.band + ", camera at " +
                        std::to_string(int(region.altitude_m / 1000.0)) + " km";
-    const MeasuredRegion* measured = FindRegion(region);
+    const MeasuredRegion* measured = FindMeasuredRegion(kRegions, region.quantity, region.band, region.altitude_m);
     ASSERT_NE(measured, nullptr) << name;
     int samples = region.channels[0].samples + region.channels[1].samples + region.channels[2].samples;
     EXPECT_EQ(samples, measured->samples) << name;
