@@ -50,6 +50,11 @@ bool MeetsNoiseGoal(const ColourSample& s, const ColourBand& band,
   return true;
 }
 
+bool SameView(const ViewAngles& a, const ViewAngles& b) {
+  return a.altitude_m == b.altitude_m && a.view_zenith_deg == b.view_zenith_deg &&
+         a.sun_zenith_deg == b.sun_zenith_deg && a.azimuth_deg == b.azimuth_deg;
+}
+
 nlohmann::json ToJson(const Spectrum& s) { return {s[0], s[1], s[2]}; }
 Spectrum SpectrumFrom(const nlohmann::json& j) {
   return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()};
@@ -143,14 +148,14 @@ void ContinueColourReference(const AtmosphereParameters& atmosphere, ColourRefer
                              const ColourProgress& progress,
                              const std::function<void(const ColourReference&)>& after_each_sample) {
   const size_t total = ColourReferenceViewCount();
+  if (reference.samples.size() > total)
+    throw Error("colour reference samples", std::to_string(reference.samples.size()), "at most " + std::to_string(total));
   size_t index = 0;
   for (const ColourBand& band : ColourBands()) {
     for (const ViewAngles& view : ColourViews(band)) {
       if (index < reference.samples.size()) {
         const ColourSample& held = reference.samples[index++];
-        if (held.band != band.name || held.view.altitude_m != view.altitude_m ||
-            held.view.view_zenith_deg != view.view_zenith_deg || held.view.sun_zenith_deg != view.sun_zenith_deg ||
-            held.view.azimuth_deg != view.azimuth_deg)
+        if (held.band != band.name || !SameView(held.view, view))
           throw Error("colour reference sample", std::to_string(index - 1), "the view ColourViews() puts there");
         continue;
       }
@@ -174,8 +179,6 @@ void ContinueColourReference(const AtmosphereParameters& atmosphere, ColourRefer
       if (progress) progress(index, total, sample.paths);
     }
   }
-  if (reference.samples.size() > total)
-    throw Error("colour reference samples", std::to_string(reference.samples.size()), "at most " + std::to_string(total));
 }
 
 ColourSample RecomputeColourSample(const AtmosphereParameters& atmosphere, const ColourReference& reference,

@@ -7,8 +7,9 @@
 // The reference is ProbeReferenceSpectral (probe/spectral_reference.h) at 48 wavelengths over
 // 360-830 nm by the midpoint rule (SpectralSampling::Midpoint): every order, no table, and neither
 // the tables' wavelengths nor their conversion. Its Monte Carlo noise is held at a quarter of each
-// band's targets where 16 times the base path count allows, and it is computed once and kept in a
-// JSON file (tests/data/colour_reference.json, `aerial_bench_colour --reference-file`).
+// band's targets where 16 times the base path count allows. It takes hours, so it is kept in a JSON
+// file (tests/data/colour_reference.json, `aerial_bench_colour --reference-file`), written view by
+// view and continued from the last view it holds.
 #include <array>
 #include <filesystem>
 #include <functional>
