@@ -15,29 +15,41 @@ Spectrum ComputeDirectIrradiance(const Medium& medium, Accuracy accuracy, double
   return {a.solar_irradiance[0] * f[0], a.solar_irradiance[1] * f[1], a.solar_irradiance[2] * f[2]};
 }
 
-OrderEstimates EstimateSkyIrradianceOrders(const Medium& medium, double r, double mu_s, double mu_n,
-                                           double nu_n, int max_order, const MonteCarloOptions& options) {
+Channels ComputeDirectIrradiance(const WavelengthGroups& groups, Accuracy accuracy, double r, double mu_s) {
+  Channels e = SunDiscHorizontalIrradianceFactor(groups, accuracy, r, mu_s);
+  for (int c = 0; c < e.size(); ++c) e[c] *= groups.SolarIrradiance(c);
+  return e;
+}
+
+GroupOrderEstimates EstimateSkyIrradianceOrders(const WavelengthGroups& groups, double r, double mu_s,
+                                                double mu_n, double nu_n, int max_order,
+                                                        const MonteCarloOptions& options) {
   // The normal stands where a view direction would: at (0, 0, r), in the xz plane, the sun placed
   // at nu_n from it (for a horizontal surface: the normal up, the sun in the xz plane).
   const ViewFrame frame = MakeViewFrame(r, mu_n, mu_s, nu_n);
   const Vec3 x = frame.camera, normal = frame.view;
-  return RunChunks(options, max_order, [&](int, Rng& rng, std::vector<Spectrum>& sums) {
-    PathTracer tracer(medium, frame.sun, 1, max_order, options.roulette_from_order);
+  return RunChunks(options, max_order, groups.channels(), [&](int, Rng& rng, std::vector<Channels>& sums) {
+    PathTracer tracer(groups, frame.sun, 1, max_order, options.roulette_from_order);
     Strata strata(rng);
     for (int i = 0; i < kChunkPaths; ++i) {
       // E = int L cos dw, estimated as L(w) cos(w) / pdf(w) = pi L(w) (cos / pi) / pdf(w).
       Vec3 w;
-      Spectrum cos_over_pdf = tracer.SampleSurfaceDirection(normal, rng.Uniform(), strata.Sample2D(i, rng), &w);
+      double cos_over_pdf = tracer.SampleSurfaceDirection(normal, rng.Uniform(), strata.Sample2D(i, rng), &w);
       double u_choice = rng.Uniform(), u_distance = strata.Sample1D(i, rng);
-      if (!(cos_over_pdf[0] > 0.0)) continue;
+      if (!(cos_over_pdf > 0.0)) continue;
       PathVertex v;
-      Spectrum weight;
-      if (!tracer.SampleSegment(x, w, u_choice, u_distance, &v, &weight)) continue;
-      Spectrum beta;
-      for (int c = 0; c < 3; ++c) beta[c] = std::numbers::pi * cos_over_pdf[c] * weight[c];
+      Channels beta;
+      if (!tracer.SampleSegment(x, w, u_choice, u_distance, &v, &beta)) continue;
+      for (int c = 0; c < beta.size(); ++c) beta[c] *= std::numbers::pi * cos_over_pdf;
       tracer.Continue(v, beta, 1, rng, nullptr, sums);
     }
   });
+}
+
+OrderEstimates EstimateSkyIrradianceOrders(const Medium& medium, double r, double mu_s, double mu_n,
+                                           double nu_n, int max_order, const MonteCarloOptions& options) {
+  return EstimateSkyIrradianceOrders(WavelengthGroups(medium.atmosphere()), r, mu_s, mu_n, nu_n, max_order,
+                                     options).groups[0];
 }
 
 }  // namespace aerial::reference

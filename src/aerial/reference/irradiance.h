@@ -9,14 +9,20 @@
 //    air, a ground vertex of the path like any other.
 #include "aerial/reference/medium.h"
 #include "aerial/reference/monte_carlo_chunks.h"
+#include "aerial/reference/wavelength_groups.h"
 
 namespace aerial::reference {
 
 Spectrum ComputeDirectIrradiance(const Medium& medium, Accuracy accuracy, double r, double mu_s);
+Channels ComputeDirectIrradiance(const WavelengthGroups& groups, Accuracy accuracy, double r, double mu_s);
 
 // Orders 1..max_order of the sky irradiance, each with its standard error, on a surface whose
 // unit normal n has zenith cosine mu_n = n . up and cosine nu_n = n . sun to the sun (horizontal:
 // mu_n = 1, nu_n = mu_s; nu_n must be feasible, see ClampNu).
+// One estimate per group, from the same paths.
+GroupOrderEstimates EstimateSkyIrradianceOrders(const WavelengthGroups& groups, double r, double mu_s,
+                                                double mu_n, double nu_n, int max_order,
+                                                        const MonteCarloOptions& options);
 OrderEstimates EstimateSkyIrradianceOrders(const Medium& medium, double r, double mu_s, double mu_n,
                                            double nu_n, int max_order, const MonteCarloOptions& options);
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 #include <thread>
+#include <tuple>
 
 namespace aerial::reference {
 namespace {
@@ -22,6 +23,17 @@ template <size_t N>
 void Shuffle(std::array<uint16_t, N>& perm, Rng& rng) {
   std::iota(perm.begin(), perm.end(), 0);
   for (size_t i = N - 1; i > 0; --i) std::swap(perm[i], perm[rng.Next() % (i + 1)]);
+}
+
+// Mean and standard error of the mean over independent chunk means, in chunk order so that the
+// rounding does not depend on scheduling.
+template <typename ChunkValue>
+std::pair<double, double> MeanAndStdError(int chunks, ChunkValue&& chunk_value) {
+  double sum = 0.0, sum_sq = 0.0;
+  for (int c = 0; c < chunks; ++c) sum += chunk_value(c);
+  double mean = sum / chunks;
+  for (int c = 0; c < chunks; ++c) sum_sq += std::pow(chunk_value(c) - mean, 2);
+  return {mean, std::sqrt(sum_sq / (static_cast<double>(chunks) * (chunks - 1)))};
 }
 
 }  // namespace
@@ -57,22 +69,32 @@ std::array<double, 2> Strata::Sample2D(int path, Rng& rng) const {
   return {(cell % 16 + rng.Uniform()) / 16.0, (cell / 16 + rng.Uniform()) / 16.0};
 }
 
-OrderEstimates RunChunks(const MonteCarloOptions& options, int max_order, const ChunkTracer& trace) {
+double GroupEstimates::StdError(const Channels& weights) const {
+  if (chunk_means.size() < 2) return 0.0;
+  return MeanAndStdError(int(chunk_means.size()), [&](int c) {
+           double sum = 0.0;
+           for (int i = 0; i < weights.size(); ++i) sum += weights[i] * chunk_means[size_t(c)][i];
+           return sum;
+         }).second;
+}
+
+GroupOrderEstimates RunChunks(const MonteCarloOptions& options, int max_order, int channels,
+                              const ChunkTracer& trace) {
   const int reported = std::min(max_order, kReportedOrders);
   const int chunks = std::max(2, (options.paths_per_query + kChunkPaths - 1) / kChunkPaths);
   const int threads = std::clamp<int>(
       options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency()),
       1, chunks);
   // means[c][k]: chunk c's mean order-k contribution.
-  std::vector<std::vector<Spectrum>> means(chunks);
+  std::vector<std::vector<Channels>> means(chunks);
   std::atomic<int> next_chunk{0};
   auto worker = [&] {
     for (int c; (c = next_chunk.fetch_add(1)) < chunks;) {
       Rng rng(options.seed, static_cast<uint64_t>(c));
-      std::vector<Spectrum> sums(reported + 1, Spectrum{});
+      std::vector<Channels> sums(reported + 1, Channels(channels));
       trace(c, rng, sums);
-      for (Spectrum& s : sums)
-        for (double& v : s) v /= kChunkPaths;
+      for (Channels& s : sums)
+        for (int i = 0; i < channels; ++i) s[i] /= kChunkPaths;
       means[c] = std::move(sums);
     }
   };
@@ -81,30 +103,26 @@ OrderEstimates RunChunks(const MonteCarloOptions& options, int max_order, const 
   worker();
   for (std::thread& t : pool) t.join();
 
-  // Mean and standard error of the mean over the independent chunk means, in chunk order so that
-  // the rounding does not depend on scheduling.
-  auto estimate = [&](auto chunk_value) {
+  GroupOrderEstimates result;
+  result.chunk_totals.assign(size_t(chunks), Channels(channels));
+  for (int c = 0; c < chunks; ++c)
+    for (int k = 1; k <= reported; ++k)
+      for (int i = 0; i < channels; ++i) result.chunk_totals[size_t(c)][i] += means[c][k][i];
+  auto estimate = [&](int group, auto chunk_value) {
     Estimate e;
-    for (int i = 0; i < 3; ++i) {
-      double sum = 0.0, sum_sq = 0.0;
-      for (int c = 0; c < chunks; ++c) sum += chunk_value(c)[i];
-      double mean = sum / chunks;
-      for (int c = 0; c < chunks; ++c) sum_sq += std::pow(chunk_value(c)[i] - mean, 2);
-      e.value[i] = mean;
-      e.std_error[i] = std::sqrt(sum_sq / (static_cast<double>(chunks) * (chunks - 1)));
-    }
+    for (int i = 0; i < 3; ++i)
+      std::tie(e.value[i], e.std_error[i]) =
+          MeanAndStdError(chunks, [&](int c) { return chunk_value(c, 3 * group + i); });
     return e;
   };
-  OrderEstimates result;
-  result.orders.resize(reported + 1);
-  for (int k = 1; k <= reported; ++k)
-    result.orders[k] = estimate([&](int c) { return means[c][k]; });
-  result.total = estimate([&](int c) {
-    Spectrum s{};
+  result.groups.resize(size_t(channels / 3));
+  for (int g = 0; g < channels / 3; ++g) {
+    OrderEstimates& group = result.groups[size_t(g)];
+    group.orders.resize(reported + 1);
     for (int k = 1; k <= reported; ++k)
-      for (int i = 0; i < 3; ++i) s[i] += means[c][k][i];
-    return s;
-  });
+      group.orders[k] = estimate(g, [&](int c, int channel) { return means[c][k][channel]; });
+    group.total = estimate(g, [&](int c, int channel) { return result.chunk_totals[size_t(c)][channel]; });
+  }
   return result;
 }
 

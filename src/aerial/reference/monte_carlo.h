@@ -9,14 +9,27 @@
 // therefore computed from the spread of the chunk means, which are independent.
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 #include "aerial/atmosphere.h"
+#include "aerial/reference/wavelength_groups.h"
 
 namespace aerial::reference {
 
 struct Estimate {
   Spectrum value{};
   Spectrum std_error{};  // one standard deviation of `value`'s Monte Carlo error.
+};
+
+// Estimates at several groups of three wavelengths from the same paths (wavelength_groups.h).
+// Each group's std_error is right for its own channels, but the groups' errors are correlated: the
+// standard error of a weighted sum over channels of several groups comes from the chunks' means of
+// that sum, which are independent (StdError).
+struct GroupEstimates {
+  std::vector<Estimate> groups;
+  std::vector<Channels> chunk_means;  // each chunk's mean at every channel; empty: no Monte Carlo part
+  // Of sum_c weights[c] value[c]; 0 without chunks.
+  double StdError(const Channels& weights) const;
 };
 
 struct MonteCarloOptions {

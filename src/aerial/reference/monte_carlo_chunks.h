@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "aerial/reference/monte_carlo.h"
+#include "aerial/reference/wavelength_groups.h"
 
 namespace aerial::reference {
 
@@ -40,11 +41,19 @@ struct OrderEstimates {
   std::vector<Estimate> orders;
   Estimate total;
 };
+// Every group's OrderEstimates from the same paths, and each chunk's mean of the total at every
+// channel (GroupEstimates).
+struct GroupOrderEstimates {
+  std::vector<OrderEstimates> groups;
+  std::vector<Channels> chunk_totals;
+};
 
 // trace(chunk, rng, sums) adds, for each order k, the sum over the chunk's kChunkPaths paths of
-// their order-k contributions to sums[min(k, kReportedOrders)] (sums has
-// min(max_order, kReportedOrders) + 1 zeroed entries).
-using ChunkTracer = std::function<void(int chunk, Rng& rng, std::vector<Spectrum>& sums)>;
-OrderEstimates RunChunks(const MonteCarloOptions& options, int max_order, const ChunkTracer& trace);
+// their order-k contributions at every channel to sums[min(k, kReportedOrders)] (sums has
+// min(max_order, kReportedOrders) + 1 zeroed entries of `channels` channels). One OrderEstimates per
+// group of three channels.
+using ChunkTracer = std::function<void(int chunk, Rng& rng, std::vector<Channels>& sums)>;
+GroupOrderEstimates RunChunks(const MonteCarloOptions& options, int max_order, int channels,
+                                      const ChunkTracer& trace);
 
 }  // namespace aerial::reference

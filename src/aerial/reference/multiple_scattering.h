@@ -6,6 +6,7 @@
 #include "aerial/reference/medium.h"
 #include "aerial/reference/monte_carlo_chunks.h"
 #include "aerial/reference/vec3.h"
+#include "aerial/reference/wavelength_groups.h"
 
 namespace aerial::reference {
 
@@ -20,7 +21,11 @@ ViewFrame MakeViewFrame(double r, double mu, double mu_s, double nu);
 // The range of nu compatible with mu and mu_s is mu mu_s -+ sqrt((1 - mu^2)(1 - mu_s^2)).
 double ClampNu(double mu, double mu_s, double nu);
 
-// Orders first_order..max_order (lower orders are reported as zero).
+// Orders first_order..max_order (lower orders are reported as zero), one estimate per group, from
+// the same paths.
+GroupOrderEstimates EstimateRadianceOrders(const WavelengthGroups& groups, double r, double mu, double mu_s,
+                                           double nu, double length, int first_order, int max_order,
+                                                   const MonteCarloOptions& options);
 OrderEstimates EstimateRadianceOrders(const Medium& medium, double r, double mu, double mu_s,
                                       double nu, double length, int first_order, int max_order,
                                       const MonteCarloOptions& options);

@@ -16,57 +16,57 @@ double Mean(const Spectrum& s) { return (s[0] + s[1] + s[2]) / 3.0; }
 
 }  // namespace
 
-PathTracer::PathTracer(const Medium& medium, Vec3 sun, int first_order, int max_order,
+PathTracer::PathTracer(const WavelengthGroups& groups, Vec3 sun, int first_order, int max_order,
                        int roulette_from_order)
-    : medium_(medium),
+    : groups_(groups),
+      medium_(groups.sampling()),
       sun_(sun),
       first_order_(first_order),
       max_order_(max_order),
       roulette_from_order_(roulette_from_order) {
   // The sun lobe pays off only where the Mie forward peak is sharp; 20% keeps the phase lobes'
   // weights within 1.25x of pure phase sampling.
-  const AtmosphereParameters& a = medium.atmosphere();
+  const AtmosphereParameters& a = medium_.atmosphere();
   sun_lobe_ = Mean(a.mie_scattering) > 0.0 && a.mie_phase_g > 0.3 ? 0.2 : 0.0;
 }
 
-double PathTracer::BounceEnergy(const PathVertex& v, const Densities& d, const Spectrum& f,
-                                const PathVertex& next, const Spectrum& weight) const {
+double PathTracer::BounceEnergy(const PathVertex& v, const Densities& d, const Channels& f,
+                                const PathVertex& next, const Channels& weight) const {
+  const int n = groups_.channels();
   auto extinction = [&](const Densities& at) {
-    return medium_.OpticalDepth(Column{at.rayleigh, at.mie, at.absorption});  // per meter
+    return groups_.OpticalDepth(Column{at.rayleigh, at.mie, at.absorption});  // per meter
   };
-  Spectrum from = v.ground ? Spectrum{1.0, 1.0, 1.0} : extinction(d);
-  Spectrum to = next.ground ? Spectrum{1.0, 1.0, 1.0}
-                            : extinction(medium_.At(Length(next.p) - medium_.bottom_radius()));
+  Channels from = v.ground ? Channels(n, 1.0) : extinction(d);
+  Channels to = next.ground ? Channels(n, 1.0) : extinction(medium_.At(Length(next.p) - medium_.bottom_radius()));
   double energy = 0.0;
-  for (int c = 0; c < 3; ++c)
+  for (int c = 0; c < n; ++c)
     if (from[c] > 0.0) energy = std::max(energy, f[c] / from[c] * weight[c] * to[c]);
   return energy;
 }
 
-Spectrum PathTracer::AtmosphereNextEvent(const PathVertex& v, const Densities& d) const {
-  const AtmosphereParameters& a = medium_.atmosphere();
+Channels PathTracer::AtmosphereNextEvent(const PathVertex& v, const Densities& d) const {
   double r = Length(v.p);
   double mu_s = ClampCosine(Dot(v.p, sun_) / r);
-  Spectrum t_sun = SunDiscTransmittance(medium_, Accuracy::kMonteCarlo, r, mu_s);
-  if (t_sun == Spectrum{}) return {};
+  Channels out = SunDiscTransmittance(groups_, Accuracy::kMonteCarlo, r, mu_s);
+  if (!(out.Max() > 0.0)) return out;
   double nu = ClampCosine(Dot(v.w_in, sun_));
-  double phase_r = RayleighPhaseFunction(nu), phase_m = CornetteShanksPhaseFunction(a.mie_phase_g, nu);
-  Spectrum out;
-  for (int c = 0; c < 3; ++c) {
-    out[c] = (a.rayleigh_scattering[c] * d.rayleigh * phase_r + a.mie_scattering[c] * d.mie * phase_m) *
-             a.solar_irradiance[c] * t_sun[c];
+  double phase_r = RayleighPhaseFunction(nu),
+         phase_m = CornetteShanksPhaseFunction(medium_.atmosphere().mie_phase_g, nu);
+  for (int c = 0; c < out.size(); ++c) {
+    out[c] *= (groups_.RayleighScattering(c) * d.rayleigh * phase_r + groups_.MieScattering(c) * d.mie * phase_m) *
+              groups_.SolarIrradiance(c);
   }
   return out;
 }
 
-Spectrum PathTracer::GroundNextEvent(const PathVertex& v) const {
+Channels PathTracer::GroundNextEvent(const PathVertex& v) const {
   double r = Length(v.p);
-  Spectrum e = ComputeDirectIrradiance(medium_, Accuracy::kMonteCarlo, r, ClampCosine(Dot(v.p, sun_) / r));
-  const Spectrum& albedo = medium_.atmosphere().ground_albedo;
-  return {albedo[0] / kPi * e[0], albedo[1] / kPi * e[1], albedo[2] / kPi * e[2]};
+  Channels e = ComputeDirectIrradiance(groups_, Accuracy::kMonteCarlo, r, ClampCosine(Dot(v.p, sun_) / r));
+  for (int c = 0; c < e.size(); ++c) e[c] *= groups_.GroundAlbedo(c) / kPi;
+  return e;
 }
 
-Spectrum PathTracer::SampleAtmosphereDirection(const PathVertex& v, const Densities& d, double u_lobe,
+Channels PathTracer::SampleAtmosphereDirection(const PathVertex& v, const Densities& d, double u_lobe,
                                                std::array<double, 2> u, Vec3* w) const {
   const AtmosphereParameters& a = medium_.atmosphere();
   const double g = a.mie_phase_g;
@@ -90,13 +90,13 @@ Spectrum PathTracer::SampleAtmosphereDirection(const PathVertex& v, const Densit
                (1.0 - sun_lobe_) * (p_rayleigh * RayleighPhaseFunction(nu) +
                                     (1.0 - p_rayleigh) * HenyeyGreensteinPhaseFunction(g, nu));
   double phase_r = RayleighPhaseFunction(nu), phase_m = CornetteShanksPhaseFunction(g, nu);
-  Spectrum out;
-  for (int c = 0; c < 3; ++c)
-    out[c] = (a.rayleigh_scattering[c] * d.rayleigh * phase_r + a.mie_scattering[c] * d.mie * phase_m) / pdf;
+  Channels out(groups_.channels());
+  for (int c = 0; c < out.size(); ++c)
+    out[c] = (groups_.RayleighScattering(c) * d.rayleigh * phase_r + groups_.MieScattering(c) * d.mie * phase_m) / pdf;
   return out;
 }
 
-Spectrum PathTracer::SampleSurfaceDirection(Vec3 normal, double u_lobe, std::array<double, 2> u,
+double PathTracer::SampleSurfaceDirection(Vec3 normal, double u_lobe, std::array<double, 2> u,
                                             Vec3* w) const {
   const double g = medium_.atmosphere().mie_phase_g;
   double phi = 2.0 * kPi * u[1];
@@ -104,15 +104,14 @@ Spectrum PathTracer::SampleSurfaceDirection(Vec3 normal, double u_lobe, std::arr
   *w = u_lobe < sun_lobe_ ? AroundAxis(sun_, SampleHenyeyGreensteinCosine(g, u[0]), phi)
                           : AroundAxis(normal, std::sqrt(u[0]), phi);
   double cos_theta = Dot(normal, *w);
-  if (!(cos_theta > 0.0)) return {};
+  if (!(cos_theta > 0.0)) return 0.0;
   double pdf = sun_lobe_ * HenyeyGreensteinPhaseFunction(g, ClampCosine(Dot(sun_, *w))) +
                (1.0 - sun_lobe_) * cos_theta / kPi;
-  double ratio = cos_theta / kPi / pdf;
-  return {ratio, ratio, ratio};
+  return cos_theta / kPi / pdf;
 }
 
 bool PathTracer::SampleSegment(Vec3 p, Vec3 w, double u_choice, double u_distance, PathVertex* next,
-                               Spectrum* weight) {
+                               Channels* weight) {
   const double bottom = medium_.bottom_radius();
   double r = Length(p);
   double mu = ClampCosine(Dot(p, w) / r);
@@ -124,7 +123,7 @@ bool PathTracer::SampleSegment(Vec3 p, Vec3 w, double u_choice, double u_distanc
     // through no air, with probability 1.
     if (!ground) return false;
     *next = {(bottom / r) * p, w, true};
-    *weight = {1.0, 1.0, 1.0};
+    *weight = Channels(groups_.channels(), 1.0);
     return true;
   }
   columns_.Build(medium_, Accuracy::kMonteCarlo, r, mu, length);
@@ -140,54 +139,55 @@ bool PathTracer::SampleSegment(Vec3 p, Vec3 w, double u_choice, double u_distanc
   if (u_choice < p_ground) {
     Vec3 q = p + length * w;
     *next = {(bottom / Length(q)) * q, w, true};
-    Spectrum t = medium_.Transmittance(columns_.cumulative().back());
-    for (int c = 0; c < 3; ++c) (*weight)[c] = t[c] / p_ground;
+    *weight = groups_.Transmittance(columns_.cumulative().back());
+    for (int c = 0; c < weight->size(); ++c) (*weight)[c] /= p_ground;
     return true;
   }
   distances_.Build(medium_, columns_);
   double pdf;
   double s = distances_.Sample(u_distance, &pdf);
   if (!(pdf > 0.0)) return false;
-  Spectrum t = medium_.Transmittance(columns_.ColumnTo(s));
-  for (int c = 0; c < 3; ++c) (*weight)[c] = t[c] / (pdf * (1.0 - p_ground));
+  *weight = groups_.Transmittance(columns_.ColumnTo(s));
+  for (int c = 0; c < weight->size(); ++c) (*weight)[c] /= pdf * (1.0 - p_ground);
   *next = {p + s * w, w, false};
   return true;
 }
 
-void PathTracer::Continue(PathVertex v, Spectrum beta, int order, Rng& rng,
-                          const std::array<double, 2>* first_u, std::vector<Spectrum>& sums) {
-  const Spectrum& albedo = medium_.atmosphere().ground_albedo;
+void PathTracer::Continue(PathVertex v, Channels beta, int order, Rng& rng,
+                          const std::array<double, 2>* first_u, std::vector<Channels>& sums) {
+  const int n = groups_.channels();
   while (true) {
     Densities d;
     if (!v.ground) d = medium_.At(Length(v.p) - medium_.bottom_radius());
     if (order >= first_order_) {
-      Spectrum e = v.ground ? GroundNextEvent(v) : AtmosphereNextEvent(v, d);
-      Spectrum& sum = sums[std::min<size_t>(order, sums.size() - 1)];
-      for (int c = 0; c < 3; ++c) sum[c] += beta[c] * e[c];
+      Channels e = v.ground ? GroundNextEvent(v) : AtmosphereNextEvent(v, d);
+      Channels& sum = sums[std::min<size_t>(order, sums.size() - 1)];
+      for (int c = 0; c < n; ++c) sum[c] += beta[c] * e[c];
     }
     if (order >= max_order_ || order >= kMaxPathVertices) return;
     std::array<double, 2> u = first_u ? *first_u : std::array<double, 2>{rng.Uniform(), rng.Uniform()};
     first_u = nullptr;
     double u_lobe = rng.Uniform();
     Vec3 w;
-    Spectrum f;
+    Channels f(n);
     if (v.ground) {
-      f = SampleSurfaceDirection(Normalize(v.p), u_lobe, u, &w);
-      for (int c = 0; c < 3; ++c) f[c] *= albedo[c];  // Lambertian BRDF albedo / pi, times cos.
+      const double cos_over_pdf = SampleSurfaceDirection(Normalize(v.p), u_lobe, u, &w);
+      // Lambertian BRDF albedo / pi, times cos.
+      for (int c = 0; c < n; ++c) f[c] = cos_over_pdf * groups_.GroundAlbedo(c);
     } else {
       f = SampleAtmosphereDirection(v, d, u_lobe, u, &w);
     }
-    for (int c = 0; c < 3; ++c) beta[c] *= f[c];
-    if (!(std::max({beta[0], beta[1], beta[2]}) > 0.0)) return;
+    for (int c = 0; c < n; ++c) beta[c] *= f[c];
+    if (!(beta.Max() > 0.0)) return;
     PathVertex next;
-    Spectrum weight;
+    Channels weight;
     double u_choice = rng.Uniform(), u_distance = rng.Uniform();
     if (!SampleSegment(v.p, w, u_choice, u_distance, &next, &weight)) return;
-    for (int c = 0; c < 3; ++c) beta[c] *= weight[c];
+    for (int c = 0; c < n; ++c) beta[c] *= weight[c];
     if (order >= roulette_from_order_) {
       double survival = std::min(1.0, BounceEnergy(v, d, f, next, weight));
       if (!(rng.Uniform() < survival)) return;
-      for (double& b : beta) b /= survival;
+      for (int c = 0; c < n; ++c) beta[c] /= survival;
     }
     v = next;
     ++order;

@@ -31,6 +31,7 @@
 #include "aerial/reference/monte_carlo_chunks.h"
 #include "aerial/reference/optical_depth.h"
 #include "aerial/reference/vec3.h"
+#include "aerial/reference/wavelength_groups.h"
 
 namespace aerial::reference {
 
@@ -46,27 +47,28 @@ inline constexpr int kMaxPathVertices = 256;
 class PathTracer {
  public:
   // Contributions of orders below first_order are not computed (their next-event estimates are
-  // skipped), orders above max_order not traced.
-  PathTracer(const Medium& medium, Vec3 sun, int first_order, int max_order, int roulette_from_order);
+  // skipped), orders above max_order not traced. Paths are sampled from groups.sampling() and
+  // weighted at every channel of `groups` (wavelength_groups.h).
+  PathTracer(const WavelengthGroups& groups, Vec3 sun, int first_order, int max_order, int roulette_from_order);
 
   // Continues a path whose order-th vertex is v, reached with throughput beta, adding each order's
   // contribution to sums[min(order, sums.size() - 1)] (monte_carlo.h, kReportedOrders). first_u, if given, is the (stratified) 2D sample of the first
   // direction.
-  void Continue(PathVertex v, Spectrum beta, int order, Rng& rng,
-                const std::array<double, 2>* first_u, std::vector<Spectrum>& sums);
+  void Continue(PathVertex v, Channels beta, int order, Rng& rng,
+                const std::array<double, 2>* first_u, std::vector<Channels>& sums);
 
   // Samples the next vertex along the ray from p in direction w; *weight gets T / probability.
   // Returns false for an empty segment, but for a ray from the ground into it, which meets it at p.
   bool SampleSegment(Vec3 p, Vec3 w, double u_choice, double u_distance, PathVertex* next,
-                     Spectrum* weight);
+                     Channels* weight);
 
   // Sample a direction w from the mixture of the local lobe (the phase functions about v.w_in, or
   // the cosine about `normal`) and the sun lobe, and return f(w) / pdf(w), with f the
   // phase-weighted scattering coefficient sum_species beta_s rho P(w_in . w) (atmosphere) or
-  // cos / pi (surface; the albedo is the caller's).
-  Spectrum SampleAtmosphereDirection(const PathVertex& v, const Densities& d, double u_lobe,
+  // cos / pi (surface, the same at every wavelength; the albedo is the caller's).
+  Channels SampleAtmosphereDirection(const PathVertex& v, const Densities& d, double u_lobe,
                                      std::array<double, 2> u, Vec3* w) const;
-  Spectrum SampleSurfaceDirection(Vec3 normal, double u_lobe, std::array<double, 2> u, Vec3* w) const;
+  double SampleSurfaceDirection(Vec3 normal, double u_lobe, std::array<double, 2> u, Vec3* w) const;
 
  private:
   // The bounce from v to next as a dimensionless fraction of energy, the largest over channels:
@@ -74,12 +76,13 @@ class PathTracer {
   // vertex) are made unitless by the extinction coefficients at both ends, which gives about the
   // single-scattering albedo times the chance of scattering before leaving the atmosphere (the
   // ground's albedo times the transmittance to it, for a ground vertex).
-  double BounceEnergy(const PathVertex& v, const Densities& d, const Spectrum& f, const PathVertex& next,
-                      const Spectrum& weight) const;
-  Spectrum AtmosphereNextEvent(const PathVertex& v, const Densities& d) const;
-  Spectrum GroundNextEvent(const PathVertex& v) const;
+  double BounceEnergy(const PathVertex& v, const Densities& d, const Channels& f, const PathVertex& next,
+                      const Channels& weight) const;
+  Channels AtmosphereNextEvent(const PathVertex& v, const Densities& d) const;
+  Channels GroundNextEvent(const PathVertex& v) const;
 
-  const Medium& medium_;
+  const WavelengthGroups& groups_;
+  const Medium& medium_;  // groups_.sampling()
   Vec3 sun_;
   int first_order_, max_order_, roulette_from_order_;
   double sun_lobe_;  // mixture probability of the sun lobe.

@@ -55,10 +55,10 @@ const AtmosphereParameters& CheckAtmosphere(const AtmosphereParameters& a) {
 
 }  // namespace
 
-Reference::Reference(const AtmosphereParameters& atmosphere) : medium_(CheckAtmosphere(atmosphere)) {}
+Reference::Reference(const AtmosphereParameters& atmosphere) : wavelengths_(CheckAtmosphere(atmosphere)) {}
 
 double Reference::CheckRadius(double r) const {
-  double bottom = medium_.bottom_radius(), top = medium_.top_radius();
+  double bottom = medium().bottom_radius(), top = medium().top_radius();
   if (!(r >= bottom - kRadiusRounding && r <= top + kRadiusRounding)) {
     throw Error("r", Text(r), "[" + Text(bottom) + ", " + Text(top) + "] m (bottom to top radius)", kWhere);
   }
@@ -68,17 +68,17 @@ double Reference::CheckRadius(double r) const {
 double Reference::DistanceToBoundary(double r, double mu) const {
   r = CheckRadius(r);
   mu = CheckCosine("mu", mu);
-  return RayIntersectsGround(r, mu) ? DistanceToInnerSphere(r, mu, medium_.bottom_radius())
-                                    : DistanceToOuterSphere(r, mu, medium_.top_radius());
+  return RayIntersectsGround(r, mu) ? DistanceToInnerSphere(r, mu, medium().bottom_radius())
+                                    : DistanceToOuterSphere(r, mu, medium().top_radius());
 }
 
 bool Reference::RayIntersectsGround(double r, double mu) const {
-  return RayIntersectsInnerSphere(CheckRadius(r), CheckCosine("mu", mu), medium_.bottom_radius());
+  return RayIntersectsInnerSphere(CheckRadius(r), CheckCosine("mu", mu), medium().bottom_radius());
 }
 
 Spectrum Reference::Transmittance(double r, double mu, double distance_m) const {
   double length = std::min(CheckDistance(distance_m), DistanceToBoundary(r, mu));
-  return ComputeTransmittance(medium_, Accuracy::kReference, CheckRadius(r), CheckCosine("mu", mu), length);
+  return ComputeTransmittance(medium(), Accuracy::kReference, CheckRadius(r), CheckCosine("mu", mu), length);
 }
 
 Spectrum Reference::TransmittanceToBoundary(double r, double mu) const {
@@ -92,28 +92,41 @@ SingleScattering Reference::ComputeSingleScattering(double r, double mu, double 
   mu = CheckCosine("mu", mu);
   mu_s = CheckCosine("mu_s", mu_s);
   nu = ClampNu(mu, mu_s, CheckCosine("nu", nu));
-  return reference::ComputeSingleScattering(medium_, r, mu, mu_s, nu, length);
+  return reference::ComputeSingleScattering(medium(), r, mu, mu_s, nu, length);
 }
 
 Estimate Reference::ComputeRadiance(double r, double mu, double mu_s, double nu, int orders,
                                     double distance_m, const MonteCarloOptions& options) const {
+  return RadianceOfGroups(std::span(this, 1), wavelengths_, r, mu, mu_s, nu, orders, distance_m, options).groups[0];
+}
+
+GroupEstimates Reference::RadianceOfGroups(std::span<const Reference> groups, const WavelengthGroups& wavelengths,
+                                           double r, double mu, double mu_s, double nu, int orders,
+                                           double distance_m, const MonteCarloOptions& options) const {
   CheckOrders(orders);
   CheckOptions(options);
-  SingleScattering single = ComputeSingleScattering(r, mu, mu_s, nu, distance_m);
   double length = std::min(CheckDistance(distance_m), DistanceToBoundary(r, mu));
   r = CheckRadius(r);
   mu = CheckCosine("mu", mu);
   mu_s = CheckCosine("mu_s", mu_s);
   nu = ClampNu(mu, mu_s, CheckCosine("nu", nu));
-  Estimate result;
-  if (orders >= 2) result = EstimateRadianceOrders(medium_, r, mu, mu_s, nu, length, 2, orders, options).total;
+  GroupEstimates results{.groups = std::vector<Estimate>(groups.size())};
+  if (orders >= 2) {
+    GroupOrderEstimates higher = EstimateRadianceOrders(wavelengths, r, mu, mu_s, nu, length, 2, orders, options);
+    for (size_t g = 0; g < groups.size(); ++g) results.groups[g] = higher.groups[g].total;
+    results.chunk_means = std::move(higher.chunk_totals);
+  }
   double phase_r = RayleighPhase(nu), phase_m = MiePhase(nu);
-  for (int c = 0; c < 3; ++c) result.value[c] += single.rayleigh[c] * phase_r + single.mie[c] * phase_m;
-  return result;
+  for (size_t g = 0; g < groups.size(); ++g) {
+    SingleScattering single = groups[g].ComputeSingleScattering(r, mu, mu_s, nu, length);
+    for (int c = 0; c < 3; ++c)
+      results.groups[g].value[c] += single.rayleigh[c] * phase_r + single.mie[c] * phase_m;
+  }
+  return results;
 }
 
 Spectrum Reference::ComputeDirectIrradiance(double r, double mu_s) const {
-  return reference::ComputeDirectIrradiance(medium_, Accuracy::kReference, CheckRadius(r),
+  return reference::ComputeDirectIrradiance(medium(), Accuracy::kReference, CheckRadius(r),
                                             CheckCosine("mu_s", mu_s));
 }
 
@@ -124,19 +137,56 @@ Estimate Reference::ComputeSkyIrradiance(double r, double mu_s, int orders,
 
 Estimate Reference::ComputeTiltedSkyIrradiance(double r, double mu_s, double mu_n, double nu_n, int orders,
                                                const MonteCarloOptions& options) const {
+  return TiltedSkyIrradianceOfGroups(wavelengths_, r, mu_s, mu_n, nu_n, orders, options).groups[0];
+}
+
+GroupEstimates Reference::TiltedSkyIrradianceOfGroups(const WavelengthGroups& wavelengths, double r, double mu_s,
+                                                      double mu_n, double nu_n, int orders,
+                                                      const MonteCarloOptions& options) const {
   CheckOrders(orders);
   CheckOptions(options);
   r = CheckRadius(r);
   mu_s = CheckCosine("mu_s", mu_s);
   mu_n = CheckCosine("mu_n", mu_n);
   nu_n = ClampNu(mu_n, mu_s, CheckCosine("nu_n", nu_n));
-  return EstimateSkyIrradianceOrders(medium_, r, mu_s, mu_n, nu_n, orders, options).total;
+  GroupOrderEstimates all = EstimateSkyIrradianceOrders(wavelengths, r, mu_s, mu_n, nu_n, orders, options);
+  GroupEstimates results{.chunk_means = std::move(all.chunk_totals)};
+  for (const OrderEstimates& group : all.groups) results.groups.push_back(group.total);
+  return results;
 }
 
 double Reference::RayleighPhase(double nu) { return RayleighPhaseFunction(CheckCosine("nu", nu)); }
 
 double Reference::MiePhase(double nu) const {
-  return CornetteShanksPhaseFunction(medium_.atmosphere().mie_phase_g, CheckCosine("nu", nu));
+  return CornetteShanksPhaseFunction(medium().atmosphere().mie_phase_g, CheckCosine("nu", nu));
+}
+
+namespace {
+
+std::vector<Reference> EachGroup(const std::vector<AtmosphereParameters>& groups) {
+  std::vector<Reference> references;
+  for (const AtmosphereParameters& group : groups) references.emplace_back(group);
+  return references;
+}
+
+}  // namespace
+
+ReferenceGroups::ReferenceGroups(const std::vector<AtmosphereParameters>& groups)
+    : groups_(EachGroup(groups)), wavelengths_(groups) {}
+
+GroupEstimates ReferenceGroups::ComputeRadiance(double r, double mu, double mu_s, double nu, int orders,
+                                                double distance_m, const MonteCarloOptions& options) const {
+  return groups_[0].RadianceOfGroups(groups_, wavelengths_, r, mu, mu_s, nu, orders, distance_m, options);
+}
+
+GroupEstimates ReferenceGroups::ComputeSkyIrradiance(double r, double mu_s, int orders,
+                                                     const MonteCarloOptions& options) const {
+  return ComputeTiltedSkyIrradiance(r, mu_s, 1.0, mu_s, orders, options);
+}
+
+GroupEstimates ReferenceGroups::ComputeTiltedSkyIrradiance(double r, double mu_s, double mu_n, double nu_n,
+                                                           int orders, const MonteCarloOptions& options) const {
+  return groups_[0].TiltedSkyIrradianceOfGroups(wavelengths_, r, mu_s, mu_n, nu_n, orders, options);
 }
 
 }  // namespace aerial::reference

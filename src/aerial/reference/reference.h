@@ -11,11 +11,14 @@
 // [bottom, top] by rounding (1 mm) and is then clamped.
 #include <cmath>
 #include <cstdint>
+#include <span>
+#include <vector>
 
 #include "aerial/atmosphere.h"
 #include "aerial/reference/medium.h"
 #include "aerial/reference/monte_carlo.h"
 #include "aerial/reference/single_scattering.h"
+#include "aerial/reference/wavelength_groups.h"
 
 namespace aerial::reference {
 
@@ -49,11 +52,43 @@ class Reference {
   static double RayleighPhase(double nu);
   double MiePhase(double nu) const;
 
-  const Medium& medium() const { return medium_; }
+  const Medium& medium() const { return wavelengths_.sampling(); }
 
  private:
+  friend class ReferenceGroups;
   double CheckRadius(double r) const;
-  Medium medium_;
+  // ComputeRadiance and ComputeTiltedSkyIrradiance of every group of `wavelengths`, `groups` their
+  // References (this one's checks apply to all: they share the geometry).
+  GroupEstimates RadianceOfGroups(std::span<const Reference> groups, const WavelengthGroups& wavelengths, double r,
+                                  double mu, double mu_s, double nu, int orders, double distance_m,
+                                  const MonteCarloOptions& options) const;
+  GroupEstimates TiltedSkyIrradianceOfGroups(const WavelengthGroups& wavelengths, double r, double mu_s, double mu_n,
+                                             double nu_n, int orders, const MonteCarloOptions& options) const;
+  WavelengthGroups wavelengths_;  // the one group, for the Monte Carlo estimates
+};
+
+// One atmosphere at several groups of three wavelengths (a spectral reference): each group's
+// Reference, and the Monte Carlo estimates of every group from one set of paths
+// (wavelength_groups.h), at about the cost of one group's.
+class ReferenceGroups {
+ public:
+  // The groups must share the radii, density profiles, phase function and sun disc.
+  explicit ReferenceGroups(const std::vector<AtmosphereParameters>& groups);
+
+  int size() const { return int(groups_.size()); }
+  const Reference& operator[](int g) const { return groups_[size_t(g)]; }
+
+  // Reference::ComputeRadiance, ComputeSkyIrradiance and ComputeTiltedSkyIrradiance of every group
+  // (monte_carlo.h: GroupEstimates, whose chunks give the errors of sums over groups).
+  GroupEstimates ComputeRadiance(double r, double mu, double mu_s, double nu, int orders,
+                                 double distance_m = INFINITY, const MonteCarloOptions& = {}) const;
+  GroupEstimates ComputeSkyIrradiance(double r, double mu_s, int orders, const MonteCarloOptions& = {}) const;
+  GroupEstimates ComputeTiltedSkyIrradiance(double r, double mu_s, double mu_n, double nu_n, int orders,
+                                            const MonteCarloOptions& = {}) const;
+
+ private:
+  std::vector<Reference> groups_;
+  WavelengthGroups wavelengths_;
 };
 
 }  // namespace aerial::reference

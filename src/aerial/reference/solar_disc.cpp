@@ -29,35 +29,35 @@ void ForEachChebyshevNode(int n, Node&& node) {
   }
 }
 
-// The disc average. Wholly visible: Gauss-Chebyshev, 3 nodes above kFewNodesElevation and 8 below.
-// Cut by the horizon: with y = cos t, (2 / pi) integral_0^{t_h} sin^2 t T(mu) w(mu) dt, t_h the
-// horizon's t, by 4 x 8-node Gauss-Legendre (the integrand is smooth in t; the horizon only moves
-// the upper limit). solar_disc_test bounds each case against a brute-force integral.
-Spectrum DiscAverage(const Medium& medium, Accuracy accuracy, double r, double mu_s, bool cosine) {
+// The disc average as a weighted sum over disc points: node(weight, column) for each, the column
+// of the point's slant to the top of the atmosphere; none where the whole disc is below the
+// horizon. Wholly visible: Gauss-Chebyshev, 3 nodes above kFewNodesElevation and 8 below. Cut by
+// the horizon: with y = cos t, (2 / pi) integral_0^{t_h} sin^2 t T(mu) w(mu) dt, t_h the horizon's
+// t, by 4 x 8-node Gauss-Legendre (the integrand is smooth in t; the horizon only moves the upper
+// limit). solar_disc_test bounds each case against a brute-force integral.
+template <typename Node>
+void ForEachDiscNode(const Medium& medium, Accuracy accuracy, double r, double mu_s, bool cosine, Node&& node) {
   const double alpha = medium.atmosphere().sun_angular_radius_rad;
   const double theta_s = std::acos(ClampCosine(mu_s));
   // Where the disc is cut off: the planet's horizon, and for a horizontal surface also its plane
   // (max(mu, 0) has a kink there).
   double theta_horizon = std::acos(CosHorizon(r, medium.bottom_radius()));
   if (cosine) theta_horizon = std::min(theta_horizon, std::numbers::pi / 2.0);
+  auto slant = [&](double mu) {
+    return ComputeColumn(medium, accuracy, r, mu, DistanceToOuterSphere(r, mu, medium.top_radius()));
+  };
   if (theta_horizon - theta_s > kCentreOnlyElevation) {
-    Spectrum t = ComputeTransmittance(medium, accuracy, r, mu_s,
-                                      DistanceToOuterSphere(r, mu_s, medium.top_radius()));
-    if (cosine) for (double& v : t) v *= mu_s;
-    return t;
+    node(cosine ? mu_s : 1.0, slant(mu_s));
+    return;
   }
   // The disc point at y is visible while theta_s - y alpha < theta_horizon.
   const double y_horizon = (theta_s - theta_horizon) / alpha;
-  if (y_horizon >= 1.0) return {};
+  if (y_horizon >= 1.0) return;
   const double t_horizon = std::acos(std::max(y_horizon, -1.0));
-  Spectrum sum{};
   // The disc point at y, with quadrature weight `weight` for sqrt(1 - y^2) dy.
   auto add_point = [&](double y, double weight) {
     double mu = std::cos(theta_s - alpha * y);
-    double w = weight * (cosine ? std::max(mu, 0.0) : 1.0);
-    Spectrum transmittance =
-        ComputeTransmittance(medium, accuracy, r, mu, DistanceToOuterSphere(r, mu, medium.top_radius()));
-    for (int c = 0; c < 3; ++c) sum[c] += w * transmittance[c];
+    node(2.0 / std::numbers::pi * weight * (cosine ? std::max(mu, 0.0) : 1.0), slant(mu));
   };
   if (y_horizon <= -1.0) {
     ForEachChebyshevNode(theta_horizon - theta_s > kFewNodesElevation ? 3 : 8, add_point);
@@ -70,7 +70,23 @@ Spectrum DiscAverage(const Medium& medium, Accuracy accuracy, double r, double m
       });
     }
   }
-  for (double& s : sum) s *= 2.0 / std::numbers::pi;
+}
+
+Spectrum DiscAverage(const Medium& medium, Accuracy accuracy, double r, double mu_s, bool cosine) {
+  Spectrum sum{};
+  ForEachDiscNode(medium, accuracy, r, mu_s, cosine, [&](double weight, const Column& column) {
+    Spectrum t = medium.Transmittance(column);
+    for (int c = 0; c < 3; ++c) sum[c] += weight * t[c];
+  });
+  return sum;
+}
+
+Channels DiscAverage(const WavelengthGroups& groups, Accuracy accuracy, double r, double mu_s, bool cosine) {
+  Channels sum(groups.channels());
+  ForEachDiscNode(groups.sampling(), accuracy, r, mu_s, cosine, [&](double weight, const Column& column) {
+    Channels t = groups.Transmittance(column);
+    for (int c = 0; c < sum.size(); ++c) sum[c] += weight * t[c];
+  });
   return sum;
 }
 
@@ -83,6 +99,15 @@ Spectrum SunDiscTransmittance(const Medium& medium, Accuracy accuracy, double r,
 Spectrum SunDiscHorizontalIrradianceFactor(const Medium& medium, Accuracy accuracy, double r,
                                            double mu_s) {
   return DiscAverage(medium, accuracy, r, mu_s, true);
+}
+
+Channels SunDiscTransmittance(const WavelengthGroups& groups, Accuracy accuracy, double r, double mu_s) {
+  return DiscAverage(groups, accuracy, r, mu_s, false);
+}
+
+Channels SunDiscHorizontalIrradianceFactor(const WavelengthGroups& groups, Accuracy accuracy, double r,
+                                           double mu_s) {
+  return DiscAverage(groups, accuracy, r, mu_s, true);
 }
 
 }  // namespace aerial::reference

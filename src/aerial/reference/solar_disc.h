@@ -14,6 +14,7 @@
 // fraction of the disc (the shaders' approximation, GetTransmittanceToSun) and Bruneton 2017's
 // average cosine of the disc over a horizontal surface.
 #include "aerial/reference/medium.h"
+#include "aerial/reference/wavelength_groups.h"
 
 namespace aerial::reference {
 
@@ -23,6 +24,11 @@ Spectrum SunDiscTransmittance(const Medium& medium, Accuracy accuracy, double r,
 
 // <V T max(mu, 0)>: E_sun times this is the sun's irradiance on a horizontal surface at r.
 Spectrum SunDiscHorizontalIrradianceFactor(const Medium& medium, Accuracy accuracy, double r,
+                                           double mu_s);
+
+// The same at every wavelength of `groups`.
+Channels SunDiscTransmittance(const WavelengthGroups& groups, Accuracy accuracy, double r, double mu_s);
+Channels SunDiscHorizontalIrradianceFactor(const WavelengthGroups& groups, Accuracy accuracy, double r,
                                            double mu_s);
 
 }  // namespace aerial::reference

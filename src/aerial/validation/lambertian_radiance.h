@@ -19,6 +19,7 @@
 // Points below the planet's sphere (the valley's hills dip under it in places) are lit as on it, where
 // the atmosphere starts; the renderer's table lookups stop at that radius too.
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "aerial/reference/reference.h"
 #include "aerial/terrain/scene_surface.h"
@@ -32,5 +33,12 @@ using LambertianSurface = SceneSurface;
 reference::Estimate LambertianRadiance(const reference::Reference& model, const LambertianSurface& surface,
                                        const glm::dvec3& sun, int orders,
                                        const reference::MonteCarloOptions& monte_carlo);
+
+// The same at every group of `model`, the sky irradiance of all groups from the same paths:
+// albedos[g] is the surface's albedo at group g's wavelengths (surface.albedo is not read).
+reference::GroupEstimates LambertianRadiance(const reference::ReferenceGroups& model,
+                                                    const LambertianSurface& surface,
+                                                    const std::vector<Spectrum>& albedos, const glm::dvec3& sun,
+                                                    int orders, const reference::MonteCarloOptions& monte_carlo);
 
 }  // namespace aerial::validation

@@ -8,6 +8,7 @@
 #include "aerial/spectrum/linear_srgb_sum.h"
 #include "aerial/spectrum/spectral_atmosphere.h"
 #include "aerial/spectrum/spectral_sampling.h"
+#include "aerial/probe/spectral_reference.h"
 #include "aerial/validation/lambertian_radiance.h"
 
 namespace aerial::validation {
@@ -48,32 +49,68 @@ std::vector<std::array<int, 2>> GridPixels(int width, int height, int columns, i
   return pixels;
 }
 
-ViewReference SampleReference(const reference::Reference& model, const Scene& scene, const FrameUniforms& frame,
-                              const ImageRgbF& surface, const ReferenceSampling& sampling,
-                              const std::function<void()>& on_pixel) {
-  const AtmosphereParameters& atmosphere = model.medium().atmosphere();
+namespace {
+
+// One grid pixel at every group of a ReferenceGroups: what ReferencePixel holds, the Monte Carlo
+// parts with their chunks (reference::GroupEstimates).
+struct GroupPixel {
+  int x = 0, y = 0;
+  bool sky = false;
+  reference::GroupEstimates inscatter, surface;
+  std::vector<Spectrum> transmittance;
+
+  ReferencePixel At(int g) const {
+    ReferencePixel p{.x = x, .y = y, .sky = sky};
+    const reference::Estimate& s = inscatter.groups[size_t(g)];
+    const reference::Estimate& l = surface.groups[size_t(g)];
+    p.inscatter = s.value;
+    p.transmittance = transmittance[size_t(g)];
+    p.surface = l.value;
+    for (int c = 0; c < 3; ++c) p.std_error[c] = std::hypot(s.std_error[c], p.transmittance[c] * l.std_error[c]);
+    return p;
+  }
+};
+
+struct GroupView {
+  std::vector<GroupPixel> pixels;
+  int sun_pixels = 0, unmatched_pixels = 0;
+};
+
+// SampleReference at every group of `model`. A scene surface's albedo at group g is
+// group_albedo(its albedo after sampling.scene_albedo, g) (empty: that albedo).
+GroupView SampleGroups(const reference::ReferenceGroups& model, const Scene& scene, const FrameUniforms& frame,
+                       const ImageRgbF& surface, const ReferenceSampling& sampling,
+                       const std::function<Spectrum(const Spectrum&, int)>& group_albedo,
+                       const std::function<void()>& on_pixel) {
+  const reference::Reference& geometry = model[0];
+  const AtmosphereParameters& atmosphere = geometry.medium().atmosphere();
   const double terrain_tolerance = TerrainTolerancePerM(scene.camera, surface.height, sampling.terrain_error_px);
   glm::dvec3 camera = ToVec3(frame.camera_planet_position);
   glm::dvec3 sun = ToVec3(frame.sun_direction);
   double r = glm::length(camera);
   double mu_s = glm::dot(camera, sun) / r;
-  ViewReference view;
+  GroupView view;
   for (auto [x, y] : GridPixels(surface.width, surface.height, sampling.columns, sampling.rows)) {
     glm::dvec3 ray = PixelRay(frame, x, y);
     double mu = glm::dot(camera, ray) / r;
     double nu = glm::dot(ray, sun);
-    ReferencePixel pixel{.x = x, .y = y, .sky = IsSky(surface, x, y)};
-    bool ground = model.RayIntersectsGround(r, mu);
+    GroupPixel pixel{.x = x, .y = y, .sky = IsSky(surface, x, y)};
+    bool ground = geometry.RayIntersectsGround(r, mu);
     // Sky: to the ground or the top of the atmosphere; opaque: to the surface.
-    double distance = pixel.sky ? model.DistanceToBoundary(r, mu) : double(surface.pixel(x, y)[3]);
+    double distance = pixel.sky ? geometry.DistanceToBoundary(r, mu) : double(surface.pixel(x, y)[3]);
     // What ends the ray, lit: the scene's surface, or the bare planet's ground facing up.
     std::optional<LambertianSurface> end;
+    std::vector<Spectrum> albedos;
     if (!pixel.sky) {
       end = SurfaceAtDepth(scene, atmosphere.bottom_radius_m, ray, distance, terrain_tolerance);
-      if (end && sampling.scene_albedo) end->albedo = sampling.scene_albedo(end->albedo);
+      if (end) {
+        Spectrum albedo = sampling.scene_albedo ? sampling.scene_albedo(end->albedo) : end->albedo;
+        for (int g = 0; g < model.size(); ++g) albedos.push_back(group_albedo ? group_albedo(albedo, g) : albedo);
+      }
     } else if (ground) {
       glm::dvec3 point = camera + distance * ray;
-      end = LambertianSurface{.point = point, .normal = glm::normalize(point), .albedo = atmosphere.ground_albedo};
+      end = LambertianSurface{.point = point, .normal = glm::normalize(point)};
+      for (int g = 0; g < model.size(); ++g) albedos.push_back(model[g].medium().atmosphere().ground_albedo);
     }
     bool sees_sun = pixel.sky && !ground && nu > std::cos(atmosphere.sun_angular_radius_rad);
     if (sees_sun || (!pixel.sky && !end)) {
@@ -81,18 +118,25 @@ ViewReference SampleReference(const reference::Reference& model, const Scene& sc
       if (on_pixel) on_pixel();
       continue;
     }
-    reference::Estimate s =
-        model.ComputeRadiance(r, mu, mu_s, nu, sampling.orders, distance, sampling.monte_carlo);
-    pixel.inscatter = s.value;
-    pixel.transmittance = model.Transmittance(r, mu, distance);
-    reference::Estimate lit;
-    if (end) lit = LambertianRadiance(model, *end, sun, sampling.orders, sampling.monte_carlo);
-    pixel.surface = lit.value;
-    for (int c = 0; c < 3; ++c)
-      pixel.std_error[c] = std::hypot(s.std_error[c], pixel.transmittance[c] * lit.std_error[c]);
-    view.pixels.push_back(pixel);
+    pixel.inscatter = model.ComputeRadiance(r, mu, mu_s, nu, sampling.orders, distance, sampling.monte_carlo);
+    pixel.surface.groups.resize(size_t(model.size()));
+    if (end) pixel.surface = LambertianRadiance(model, *end, albedos, sun, sampling.orders, sampling.monte_carlo);
+    for (int g = 0; g < model.size(); ++g) pixel.transmittance.push_back(model[g].Transmittance(r, mu, distance));
+    view.pixels.push_back(std::move(pixel));
     if (on_pixel) on_pixel();
   }
+  return view;
+}
+
+}  // namespace
+
+ViewReference SampleReference(const reference::Reference& model, const Scene& scene, const FrameUniforms& frame,
+                              const ImageRgbF& surface, const ReferenceSampling& sampling,
+                              const std::function<void()>& on_pixel) {
+  GroupView groups = SampleGroups(reference::ReferenceGroups({model.medium().atmosphere()}), scene, frame, surface,
+                                  sampling, {}, on_pixel);
+  ViewReference view{.sun_pixels = groups.sun_pixels, .unmatched_pixels = groups.unmatched_pixels};
+  for (const GroupPixel& p : groups.pixels) view.pixels.push_back(p.At(0));
   view.median_relative_std_error = MedianRelativeStdError(view);
   return view;
 }
@@ -102,52 +146,42 @@ ViewReference SampleSpectralReference(const AtmosphereParameters& atmosphere,
                                       const FrameUniforms& frame, const ImageRgbF& surface,
                                       const ReferenceSampling& sampling, const std::function<void()>& on_pixel) {
   const spectrum::SpectralAtmosphere spectral(atmosphere);
-  ViewReference view;
-  // Per pixel: the converted inscatter, S + T L_surface, sunlit transmittance and sunlight, and
-  // the variance.
-  struct Sums {
-    spectrum::LinearSrgbSum inscatter, expected, sunlit, sun, variance;
-  };
-  std::vector<Sums> sums;
-  for (int g = 0; g < spectral_sampling.groups(); ++g) {
+  std::vector<AtmosphereParameters> groups;
+  for (int g = 0; g < spectral_sampling.groups(); ++g) groups.push_back(spectral.At(spectral_sampling.Group(g)));
+  auto group_albedo = [&](const Spectrum& albedo, int g) {
     const std::array<double, 3> nm = spectral_sampling.Group(g);
-    const AtmosphereParameters group = spectral.At(nm);
-    ReferenceSampling at_group = sampling;
-    at_group.scene_albedo = [&](const Spectrum& albedo) {
-      Spectrum rho = spectral.ReflectanceForSunlight(sampling.scene_albedo ? sampling.scene_albedo(albedo) : albedo,
-                                                     spectral_sampling);
-      return Spectrum{spectral.ReflectanceAt(rho, nm[0]), spectral.ReflectanceAt(rho, nm[1]),
-                      spectral.ReflectanceAt(rho, nm[2])};
-    };
-    // One pixel in the progress per pixel of the whole spectrum: the last group reports them.
-    const bool last = g + 1 == spectral_sampling.groups();
-    ViewReference part = SampleReference(reference::Reference(group), scene, frame, surface, at_group,
-                                         last ? on_pixel : std::function<void()>());
-    if (g == 0) {
-      view = part;
-      sums.resize(part.pixels.size());
+    Spectrum rho = spectral.ReflectanceForSunlight(albedo, spectral_sampling);
+    return Spectrum{spectral.ReflectanceAt(rho, nm[0]), spectral.ReflectanceAt(rho, nm[1]),
+                    spectral.ReflectanceAt(rho, nm[2])};
+  };
+  GroupView parts = SampleGroups(reference::ReferenceGroups(groups), scene, frame, surface, sampling, group_albedo,
+                                 on_pixel);
+  ViewReference view{.sun_pixels = parts.sun_pixels, .unmatched_pixels = parts.unmatched_pixels};
+  for (const GroupPixel& part : parts.pixels) {
+    // The converted inscatter, S + T L_surface, sunlit transmittance and sunlight.
+    spectrum::LinearSrgbSum inscatter, expected, sunlit, sun;
+    reference::Channels transmittance(3 * spectral_sampling.groups());
+    for (int g = 0; g < spectral_sampling.groups(); ++g) {
+      const spectrum::Matrix3 m = spectral_sampling.GroupToLinearSrgb(g);
+      const ReferencePixel p = part.At(g);
+      const Spectrum& solar = groups[size_t(g)].solar_irradiance;
+      inscatter.Add(m, p.inscatter);
+      expected.Add(m, p.Expected());
+      sunlit.Add(m, Spectrum{solar[0] * p.transmittance[0], solar[1] * p.transmittance[1],
+                             solar[2] * p.transmittance[2]});
+      sun.Add(m, solar);
+      for (int k = 0; k < 3; ++k) transmittance[3 * g + k] = p.transmittance[k];
     }
-    const spectrum::Matrix3 m = spectral_sampling.GroupToLinearSrgb(g);
-    for (size_t i = 0; i < part.pixels.size(); ++i) {
-      const ReferencePixel& p = part.pixels[i];
-      Spectrum sunlit;
-      for (int k = 0; k < 3; ++k) sunlit[k] = group.solar_irradiance[k] * p.transmittance[k];
-      sums[i].inscatter.Add(m, p.inscatter);
-      sums[i].expected.Add(m, p.Expected());
-      sums[i].sunlit.Add(m, sunlit);
-      sums[i].sun.Add(m, group.solar_irradiance);
-      sums[i].variance.AddVariance(m, p.std_error);
-    }
-  }
-  for (size_t i = 0; i < view.pixels.size(); ++i) {
-    ReferencePixel& p = view.pixels[i];
-    p.inscatter = sums[i].inscatter.value;
-    p.std_error = sums[i].variance.Sqrt();
+    ReferencePixel p{.x = part.x, .y = part.y, .sky = part.sky, .inscatter = inscatter.value};
+    // S and T L_surface come from separate paths: their errors add as independent ones.
+    Spectrum s_error = LinearSrgbStdError(part.inscatter, spectral_sampling);
+    Spectrum l_error = LinearSrgbStdError(part.surface, spectral_sampling, &transmittance);
     for (int c = 0; c < 3; ++c) {
-      p.transmittance[c] = sums[i].sunlit.value[c] / sums[i].sun.value[c];
-      p.surface[c] =
-          p.transmittance[c] > 0.0 ? (sums[i].expected.value[c] - p.inscatter[c]) / p.transmittance[c] : 0.0;
+      p.std_error[c] = std::hypot(s_error[c], l_error[c]);
+      p.transmittance[c] = sunlit.value[c] / sun.value[c];
+      p.surface[c] = p.transmittance[c] > 0.0 ? (expected.value[c] - p.inscatter[c]) / p.transmittance[c] : 0.0;
     }
+    view.pixels.push_back(p);
   }
   view.median_relative_std_error = MedianRelativeStdError(view);
   return view;
