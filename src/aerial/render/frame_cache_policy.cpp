@@ -89,16 +89,32 @@ std::array<bool, kShadowCascades> ShadowWindowsMoved(const std::optional<ShadowK
 
 bool TerrainSelectionKept(bool still_view, bool selection_whole) { return still_view && selection_whole; }
 
+double ShadowReachM(const glm::dvec3& sun, const glm::dvec3& up, const CasterBounds& casters) {
+  const double r = casters.bottom_radius_m, top = casters.top_radius_m;
+  const double elevation = std::asin(std::clamp(glm::dot(sun, up), -1.0, 1.0)) - kShadowFarM / r;
+  // The ray from radius r at elevation e meets radius `top` after -r sin e + sqrt(top^2 - r^2 cos^2 e).
+  const double mu = std::sin(elevation);
+  return -r * mu + std::sqrt(std::max(top * top - r * r * (1.0 - mu * mu), 0.0));
+}
+
+double SunLagTexels(const ShadowCascade& tile, const glm::dvec3& sun, double reach_m) {
+  const double angle = std::acos(std::clamp(glm::dot(tile.toward_sun, sun), -1.0, 1.0));
+  return angle * std::min(reach_m, tile.depth_max_m - tile.depth_min_m) / tile.texel_m;
+}
+
 std::array<bool, kShadowCascades> ShadowTilesKeepingTheirSun(const std::optional<ShadowKey>& drawn,
-                                                             const glm::dvec3& sun, bool exact) {
+                                                             const glm::dvec3& sun, bool exact,
+                                                             double moving_sun_reach_m) {
   std::array<bool, kShadowCascades> keep{};
   if (!drawn || exact) return keep;
   int most_behind = -1;
   double lowest_cosine = 2.0;  // of the angle between a tile's sun and this one
   for (int i = 0; i < kShadowCascades; ++i) {
-    const glm::dvec3& drawn_for = drawn->cascades[i].toward_sun;
+    const ShadowCascade& tile = drawn->cascades[i];
+    const glm::dvec3& drawn_for = tile.toward_sun;
     if (drawn_for == sun) continue;
     keep[i] = true;
+    if (moving_sun_reach_m > 0.0 && SunLagTexels(tile, sun, moving_sun_reach_m) < kSunLagToleranceTexels) continue;
     if (double cosine = glm::dot(drawn_for, sun); cosine < lowest_cosine) {
       lowest_cosine = cosine;
       most_behind = i;

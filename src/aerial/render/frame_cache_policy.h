@@ -115,16 +115,34 @@ HeldCascades HeldShadowWindows(const std::optional<ShadowKey>& drawn, bool exact
 // Per cascade, whether its window moved (every one on the first frame).
 std::array<bool, kShadowCascades> ShadowWindowsMoved(const std::optional<ShadowKey>& drawn,
                                                      const ShadowCascades& now);
+// How far along a sun ray (m) a caster may lie from a point whose shadow it is: from the lowest
+// point that reads the map to the casters' top (CasterBounds), with the sun at its lowest over
+// the points the map covers (its elevation over the camera's horizon, up: the camera's vertical,
+// less the planet's curvature across kShadowFarM). Only points below the casters' top read the
+// map (shadow.glsl).
+double ShadowReachM(const glm::dvec3& sun, const glm::dvec3& up, const CasterBounds& casters);
+// How far a tile's shadows may have moved since it was drawn, in its own texels: a sun turned by
+// an angle a moves a caster's shadow across the light's axes by at most a times the caster's
+// distance along the ray, which is within the reach and the tile's depth range.
+double SunLagTexels(const ShadowCascade& tile, const glm::dvec3& sun, double reach_m);
+// Shadows that moved less than this are still the sun's: below the lookup's 3x3-texel filter.
+inline constexpr double kSunLagToleranceTexels = 0.5;
 // A moving sun: each tile is drawn for the sun of its own frame (its cascade's light axes go to
 // the shaders with it, shader_abi/shadow_block.h), and when the sun moves the tiles catch up one a
 // frame, the one whose sun lags the most first (the nearest on a tie), as engines time-slice the
 // updates of their cascades: a frame under a moving sun redraws one tile instead of all four.
-// While the sun keeps moving each tile lags by at most three frames' motion; once it stops the
-// map has caught up three frames later (a still view keeps drawing until then: FrameInfo::settled).
+// While the sun keeps moving (moving_sun_reach_m > 0: ShadowReachM), a tile whose shadows moved
+// less than kSunLagToleranceTexels of its texels is not behind: it keeps its sun and waits. A slow
+// sun so redraws the near tiles, whose texels are centimetres, and seldom the far ones, whose
+// texels are 200 m and whose terrain is the dearest to draw. Each tile lags by at most three
+// frames' motion or half a texel; once the sun stops (a still view, moving_sun_reach_m = 0) every
+// tile catches up, three frames later at most (a still view keeps drawing until then:
+// FrameInfo::settled), so a still view becomes the exact frame.
 // Per cascade, whether its held window may keep the sun it was drawn for this frame
 // (FitShadowCascades' keep_held_sun): all but the one that catches up. An exact frame keeps none.
 std::array<bool, kShadowCascades> ShadowTilesKeepingTheirSun(const std::optional<ShadowKey>& drawn,
-                                                             const glm::dvec3& sun, bool exact);
+                                                             const glm::dvec3& sun, bool exact,
+                                                             double moving_sun_reach_m);
 // Whether every tile was drawn for this sun.
 bool ShadowTilesCaughtUp(const ShadowCascades& cascades, const glm::dvec3& sun);
 // A still view whose terrain selection lacked no chunk, with no window moved and no tile behind

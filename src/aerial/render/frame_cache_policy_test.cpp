@@ -194,22 +194,91 @@ TEST(FrameCachePolicy, ShadowTilesCatchUpWithTheSunOneAFrame) {
   ShadowKey drawn = Drawn();
   for (ShadowCascade& c : drawn.cascades) c.toward_sun = sun;
   EXPECT_TRUE(ShadowTilesCaughtUp(drawn.cascades, sun));
-  for (bool keep : ShadowTilesKeepingTheirSun(drawn, sun, false)) EXPECT_FALSE(keep) << "nothing lags";
+  for (bool keep : ShadowTilesKeepingTheirSun(drawn, sun, false, 0.0)) EXPECT_FALSE(keep) << "nothing lags";
 
   const glm::dvec3 later = DirectionFromZenithAzimuth(81.0, 250.0);
   EXPECT_FALSE(ShadowTilesCaughtUp(drawn.cascades, later));
-  std::array<bool, kShadowCascades> keep = ShadowTilesKeepingTheirSun(drawn, later, false);
+  std::array<bool, kShadowCascades> keep = ShadowTilesKeepingTheirSun(drawn, later, false, 0.0);
   for (int i = 0; i < kShadowCascades; ++i) EXPECT_EQ(keep[i], i != 0) << "a tie: the nearest first, cascade " << i;
 
   drawn.cascades[0].toward_sun = later;
   drawn.cascades[2].toward_sun = DirectionFromZenithAzimuth(79.0, 250.0);  // two degrees behind
-  keep = ShadowTilesKeepingTheirSun(drawn, later, false);
+  keep = ShadowTilesKeepingTheirSun(drawn, later, false, 0.0);
   EXPECT_FALSE(keep[0]) << "drawn for this sun";
   EXPECT_TRUE(keep[1]);
   EXPECT_FALSE(keep[2]) << "the farthest behind";
   EXPECT_TRUE(keep[3]);
-  for (bool k : ShadowTilesKeepingTheirSun(drawn, later, /*exact=*/true)) EXPECT_FALSE(k) << "an exact frame";
-  for (bool k : ShadowTilesKeepingTheirSun(std::nullopt, later, false)) EXPECT_FALSE(k) << "the first frame";
+  for (bool k : ShadowTilesKeepingTheirSun(drawn, later, /*exact=*/true, 0.0)) EXPECT_FALSE(k) << "an exact frame";
+  for (bool k : ShadowTilesKeepingTheirSun(std::nullopt, later, false, 0.0)) EXPECT_FALSE(k) << "the first frame";
+}
+
+// The default view's tiles, in metres: texels from 14 cm to 206 m (shadow_cascades.h), and depth
+// ranges from the slice's far side to the casters' top.
+ShadowKey DrawnAtTheDefaultView(const glm::dvec3& sun) {
+  ShadowKey drawn = Drawn();
+  const std::array<double, kShadowCascades> texels = {0.14, 1.6, 18.0, 206.0}, depths = {3.5e3, 4e3, 12e3, 130e3};
+  for (int i = 0; i < kShadowCascades; ++i) {
+    drawn.cascades[i].toward_sun = sun;
+    drawn.cascades[i].texel_m = texels[i];
+    drawn.cascades[i].depth_max_m = depths[i];
+  }
+  return drawn;
+}
+
+// A sun turned by an angle a moves the shadows by a times the reach, or the tile's depth range
+// where shorter, counted in the tile's texels.
+TEST(FrameCachePolicy, SunLagCountsTheShadowsMoveInTexels) {
+  ShadowCascade tile{.depth_min_m = 1000.0, .depth_max_m = 6000.0, .texel_m = 2.0, .toward_sun = {0.0, 0.0, 1.0}};
+  const glm::dvec3 turned(std::sin(1e-3), 0.0, std::cos(1e-3));
+  EXPECT_NEAR(SunLagTexels(tile, turned, 1000.0), 0.5, 1e-9);
+  EXPECT_NEAR(SunLagTexels(tile, turned, 1e6), 2.5, 1e-9) << "the depth range is the shorter";
+  EXPECT_EQ(SunLagTexels(tile, tile.toward_sun, 1000.0), 0.0);
+}
+
+// The reach against a march along the ray from the lowest receiver until it passes the casters'
+// top, at a high sun, a low one, and one at the horizon (where the curvature's allowance over
+// kShadowFarM is what makes it finite: the ray starts 0.9 degrees up).
+TEST(FrameCachePolicy, ShadowReachIsTheRayFromTheLowestReceiverToTheCastersTop) {
+  const double R = 6360e3;
+  const CasterBounds casters{.top_radius_m = R + 3300.0, .bottom_radius_m = R - 10.0};
+  const glm::dvec3 up(0.0, 0.0, 1.0);
+  for (double elevation_deg : {60.0, 11.0, 0.0}) {
+    const double e = glm::radians(elevation_deg) - kShadowFarM / casters.bottom_radius_m;
+    const glm::dvec2 start(0.0, casters.bottom_radius_m), direction(std::cos(e), std::sin(e));
+    double s = 0.0;
+    while (glm::length(start + s * direction) < casters.top_radius_m) s += 1.0;
+    const glm::dvec3 sun(std::cos(glm::radians(elevation_deg)), 0.0, std::sin(glm::radians(elevation_deg)));
+    EXPECT_NEAR(ShadowReachM(sun, up, casters), s, 1.0) << elevation_deg;
+  }
+}
+
+// While the sun moves, tiles whose shadows moved less than half a texel keep their sun and wait:
+// the sun turned by 0.02 degrees at 30 degrees up moves the shadows of a 6.6 km reach by 2.3 m,
+// 16 texels of the first tile and 0.011 of the last. The most behind of the others catches up
+// (all are as far behind in angle: the nearest). A still view lets none wait.
+TEST(FrameCachePolicy, ASlowSunLeavesTilesWithinHalfATexel) {
+  const glm::dvec3 sun = DirectionFromZenithAzimuth(60.0, 250.0), later = DirectionFromZenithAzimuth(60.02, 250.0);
+  const ShadowKey drawn = DrawnAtTheDefaultView(sun);
+  const double reach = 6.6e3;
+  std::array<bool, kShadowCascades> keep = ShadowTilesKeepingTheirSun(drawn, later, false, reach);
+  EXPECT_FALSE(keep[0]) << "16 texels behind: catches up";
+  for (int i = 1; i < kShadowCascades; ++i) EXPECT_TRUE(keep[i]) << "cascade " << i;
+  EXPECT_GT(SunLagTexels(drawn.cascades[1], later, reach), kSunLagToleranceTexels) << "behind, waiting for its turn";
+  EXPECT_LT(SunLagTexels(drawn.cascades[2], later, reach), kSunLagToleranceTexels);
+
+  ShadowKey caught_up_near = drawn;
+  caught_up_near.cascades[0].toward_sun = later;
+  keep = ShadowTilesKeepingTheirSun(caught_up_near, later, false, reach);
+  EXPECT_FALSE(keep[1]) << "the second tile's turn";
+  EXPECT_TRUE(keep[2] && keep[3]) << "within half a texel";
+  keep = ShadowTilesKeepingTheirSun(caught_up_near, later, false, 0.0);
+  EXPECT_FALSE(keep[1]) << "a still view: the next one catches up";
+  caught_up_near.cascades[1].toward_sun = later;
+  keep = ShadowTilesKeepingTheirSun(caught_up_near, later, false, reach);
+  EXPECT_TRUE(keep[2] && keep[3]) << "nothing to catch up while the sun moves";
+  keep = ShadowTilesKeepingTheirSun(caught_up_near, later, false, 0.0);
+  EXPECT_FALSE(keep[2]) << "a still view catches up the rest, the nearest first";
+  EXPECT_TRUE(keep[3]);
 }
 
 TEST(FrameCachePolicy, CastersKeptWithinTheSelectionsSlack) {

@@ -236,18 +236,22 @@ std::vector<Mesh> ReferenceTerrain(const Scene& scene, const RendererOptions& op
 
 // Everything that casts a shadow, around the scene's origin: the terrain (to kTerrainRadiusM,
 // with mountains up to kTerrainMaxHeightM and the sphere's 0.8 km drop at its edge well inside
-// 10 km more) and the opaque meshes; and the casters' top, as a distance from the planet's centre
-// (0, 0, -R).
+// 10 km more) and the opaque meshes; and the casters' top and the receivers' bottom, as distances
+// from the planet's centre (0, 0, -R).
 CasterBounds SceneCasterBounds(const Scene& scene, double R) {
-  CasterBounds bounds{.center = glm::dvec3(0.0), .radius_m = scene.terrain ? kTerrainRadiusM + 10e3 : 0.0,
-                      .top_radius_m = R + (scene.terrain ? kTerrainMaxHeightM : 0.0)};
+  CasterBounds bounds{.center = glm::dvec3(0.0),
+                      .radius_m = scene.terrain ? kTerrainRadiusM + 10e3 : 0.0,
+                      .top_radius_m = R + (scene.terrain ? kTerrainMaxHeightM : 0.0),
+                      .bottom_radius_m = R + (scene.terrain ? kTerrainMinHeightM : 0.0)};
   const glm::dvec3 planet_center(0.0, 0.0, -R);
   for (const Mesh& mesh : scene.meshes)
-    if (!mesh.transparent)
-      for (const Vertex& v : mesh.vertices) {
-        bounds.radius_m = std::max(bounds.radius_m, double(glm::length(v.position)));
-        bounds.top_radius_m = std::max(bounds.top_radius_m, glm::length(glm::dvec3(v.position) - planet_center));
-      }
+    for (const Vertex& v : mesh.vertices) {
+      const double from_center = glm::length(glm::dvec3(v.position) - planet_center);
+      bounds.bottom_radius_m = std::min(bounds.bottom_radius_m, from_center);
+      if (mesh.transparent) continue;
+      bounds.radius_m = std::max(bounds.radius_m, double(glm::length(v.position)));
+      bounds.top_radius_m = std::max(bounds.top_radius_m, from_center);
+    }
   return bounds;
 }
 
@@ -473,7 +477,10 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
                             .sun = sun,
                             .tile_texels = kShadowTileTexels,
                             .casters = casters_};
-  const std::array<bool, kShadowCascades> keep_sun = ShadowTilesKeepingTheirSun(shadow_key_, sun, exact);
+  const glm::dvec3 camera_up = glm::normalize(glm::dvec3(scene.camera.position) +
+                                              glm::dvec3(0.0, 0.0, tables_.atmosphere().bottom_radius_m));
+  const std::array<bool, kShadowCascades> keep_sun = ShadowTilesKeepingTheirSun(
+      shadow_key_, sun, exact, still_view_ ? 0.0 : ShadowReachM(sun, camera_up, casters_));
   shadow_cascades_ = FitShadowCascades(fit, HeldShadowWindows(shadow_key_, exact), keep_sun);
   if (!options_.shadows) return;
   const std::array<bool, kShadowCascades> moved = ShadowWindowsMoved(shadow_key_, shadow_cascades_);

@@ -51,6 +51,9 @@ struct CasterBounds {
   // The largest distance of a caster from the planet's centre: the air above it is in the sun
   // wherever the sun is above the local horizon (shadow.glsl, SunVisibilityInAir).
   double top_radius_m = 0.0;
+  // The smallest distance from the planet's centre of a point that reads the map: the ground,
+  // the terrain's lowest hollow and the meshes' lowest vertex.
+  double bottom_radius_m = 0.0;
 };
 
 // How much wider than its slice's bounding sphere a cascade's window is, as a fraction of the

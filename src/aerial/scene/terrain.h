@@ -21,6 +21,8 @@ double TerrainHeightM(double x_m, double y_m);
 // An upper bound of TerrainHeightM: its highest peak is 3185 m (sampled every 50 m; terrain_test
 // checks the bound), and every mesh of the terrain interpolates heights of the function.
 inline constexpr double kTerrainMaxHeightM = 3300.0;
+// A lower bound of TerrainHeightM: the valley's gentle hills dip about 2 m below the sphere.
+inline constexpr double kTerrainMinHeightM = -10.0;
 
 // The world point height_m above the sea-level point (x, y) on a sphere of radius R centered at
 // (0, 0, -R): center + (R + height) * u, u the unit vector from the center through (x, y, .).

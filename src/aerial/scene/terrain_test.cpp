@@ -65,5 +65,19 @@ TEST(TerrainHeight, MaxHeightBoundsThePeaksClosely) {
   EXPECT_GT(highest, kTerrainMaxHeightM - 200.0);
 }
 
+// kTerrainMinHeightM bounds every height from below (how far a shadow may reach along a sun ray
+// starts there: frame_cache_policy.h), and the valley's hills do dip below the sphere (-2.0 m
+// lowest, sampled every 50 m over the valley's hills, 3 km around the camera).
+TEST(TerrainHeight, MinHeightBoundsTheValleyHills) {
+  double lowest = 0.0;
+  for (double x = -kTerrainRadiusM; x <= kTerrainRadiusM; x += 200.0)
+    for (double y = -kTerrainRadiusM; y <= kTerrainRadiusM; y += 200.0)
+      if (x * x + y * y <= kTerrainRadiusM * kTerrainRadiusM) lowest = std::min(lowest, TerrainHeightM(x, y));
+  for (double x = -3000.0; x <= 3000.0; x += 50.0)
+    for (double y = -3000.0; y <= 3000.0; y += 50.0) lowest = std::min(lowest, TerrainHeightM(x, y));
+  EXPECT_GE(lowest, kTerrainMinHeightM);
+  EXPECT_LT(lowest, -1.0);
+}
+
 }  // namespace
 }  // namespace aerial
