@@ -106,9 +106,10 @@ TEST_F(ColourAgainstTheTruth, DefaultSpectralTablesWithinTheTargetsWhereRecorded
 }
 
 // The stored views are today's reference: one recomputed with its own path count (the low sun 10 km
-// up, 32,768 paths, 48 wavelengths). The file's views were drawn with paths of their own at each
-// group of three wavelengths; today's reference shares its paths across the groups
-// (reference/wavelength_groups.h), so it draws another estimate of the same sky: within 5 combined
+// up, 32,768 paths, 48 wavelengths). The file's views were drawn by earlier estimators of the same
+// sky (paths of their own at each group of three wavelengths, the sun's disc by quadrature at every
+// vertex); today's shares its paths across the groups (reference/wavelength_groups.h) and takes one
+// point of a low sun's disc (solar_disc.h), so it draws another estimate: within 5 combined
 // standard errors (the sun's irradiance, a quadrature with no error, to 1e-9).
 // It needs no GPU, but lives in this GPU file, as the physical sky's does, so that the sanitizer run
 // (tools/run-sanitizer-tests.sh) leaves it out.

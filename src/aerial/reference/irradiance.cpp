@@ -15,8 +15,8 @@ Spectrum ComputeDirectIrradiance(const Medium& medium, Accuracy accuracy, double
   return {a.solar_irradiance[0] * f[0], a.solar_irradiance[1] * f[1], a.solar_irradiance[2] * f[2]};
 }
 
-Channels ComputeDirectIrradiance(const WavelengthGroups& groups, Accuracy accuracy, double r, double mu_s) {
-  Channels e = SunDiscHorizontalIrradianceFactor(groups, accuracy, r, mu_s);
+Channels SampleDirectIrradiance(const WavelengthGroups& groups, double r, double mu_s, Rng& rng) {
+  Channels e = SampleSunDiscHorizontalIrradianceFactor(groups, r, mu_s, rng);
   for (int c = 0; c < e.size(); ++c) e[c] *= groups.SolarIrradiance(c);
   return e;
 }

@@ -14,7 +14,8 @@
 namespace aerial::reference {
 
 Spectrum ComputeDirectIrradiance(const Medium& medium, Accuracy accuracy, double r, double mu_s);
-Channels ComputeDirectIrradiance(const WavelengthGroups& groups, Accuracy accuracy, double r, double mu_s);
+// A one-sample estimate of it at every wavelength of `groups` (SampleSunDiscHorizontalIrradianceFactor).
+Channels SampleDirectIrradiance(const WavelengthGroups& groups, double r, double mu_s, Rng& rng);
 
 // Orders 1..max_order of the sky irradiance, each with its standard error, on a surface whose
 // unit normal n has zenith cosine mu_n = n . up and cosine nu_n = n . sun to the sun (horizontal:

@@ -44,10 +44,10 @@ double PathTracer::BounceEnergy(const PathVertex& v, const Densities& d, const C
   return energy;
 }
 
-Channels PathTracer::AtmosphereNextEvent(const PathVertex& v, const Densities& d) const {
+Channels PathTracer::AtmosphereNextEvent(const PathVertex& v, const Densities& d, Rng& rng) const {
   double r = Length(v.p);
   double mu_s = ClampCosine(Dot(v.p, sun_) / r);
-  Channels out = SunDiscTransmittance(groups_, Accuracy::kMonteCarlo, r, mu_s);
+  Channels out = SampleSunDiscTransmittance(groups_, r, mu_s, rng);
   if (!(out.Max() > 0.0)) return out;
   double nu = ClampCosine(Dot(v.w_in, sun_));
   double phase_r = RayleighPhaseFunction(nu),
@@ -59,9 +59,9 @@ Channels PathTracer::AtmosphereNextEvent(const PathVertex& v, const Densities& d
   return out;
 }
 
-Channels PathTracer::GroundNextEvent(const PathVertex& v) const {
+Channels PathTracer::GroundNextEvent(const PathVertex& v, Rng& rng) const {
   double r = Length(v.p);
-  Channels e = ComputeDirectIrradiance(groups_, Accuracy::kMonteCarlo, r, ClampCosine(Dot(v.p, sun_) / r));
+  Channels e = SampleDirectIrradiance(groups_, r, ClampCosine(Dot(v.p, sun_) / r), rng);
   for (int c = 0; c < e.size(); ++c) e[c] *= groups_.GroundAlbedo(c) / kPi;
   return e;
 }
@@ -160,7 +160,7 @@ void PathTracer::Continue(PathVertex v, Channels beta, int order, Rng& rng,
     Densities d;
     if (!v.ground) d = medium_.At(Length(v.p) - medium_.bottom_radius());
     if (order >= first_order_) {
-      Channels e = v.ground ? GroundNextEvent(v) : AtmosphereNextEvent(v, d);
+      Channels e = v.ground ? GroundNextEvent(v, rng) : AtmosphereNextEvent(v, d, rng);
       Channels& sum = sums[std::min<size_t>(order, sums.size() - 1)];
       for (int c = 0; c < n; ++c) sum[c] += beta[c] * e[c];
     }

@@ -3,8 +3,10 @@
 // each an atmospheric scattering or a Lambertian ground reflection; each vertex raises the
 // scattering order by one. At the k-th vertex, next-event estimation towards the sun adds the
 // order-k contribution:
-//  - atmosphere: beta * sum_species beta_s rho P(w_in . sun) * E_sun <V T>_disc (solar_disc.h);
-//  - ground:     beta * albedo / pi * E_0 (direct irradiance, irradiance.h).
+//  - atmosphere: beta * sum_species beta_s rho P(w_in . sun) * E_sun <V T>_disc;
+//  - ground:     beta * albedo / pi * E_0 (direct irradiance, irradiance.h);
+//  the disc's average <.>_disc estimated from one point of the disc where the sun is low
+//  (solar_disc.h, SampleSunDiscTransmittance).
 // Then the path continues, up to max_order vertices (kAllOrders: the whole series):
 //  - direction: one sample from a mixture of the local phase lobes about w_in (Rayleigh exactly,
 //    Cornette-Shanks through Henyey-Greenstein) or of the cosine lobe at the ground, and, with
@@ -78,8 +80,8 @@ class PathTracer {
   // ground's albedo times the transmittance to it, for a ground vertex).
   double BounceEnergy(const PathVertex& v, const Densities& d, const Channels& f, const PathVertex& next,
                       const Channels& weight) const;
-  Channels AtmosphereNextEvent(const PathVertex& v, const Densities& d) const;
-  Channels GroundNextEvent(const PathVertex& v) const;
+  Channels AtmosphereNextEvent(const PathVertex& v, const Densities& d, Rng& rng) const;
+  Channels GroundNextEvent(const PathVertex& v, Rng& rng) const;
 
   const WavelengthGroups& groups_;
   const Medium& medium_;  // groups_.sampling()

@@ -35,17 +35,23 @@ void ForEachChebyshevNode(int n, Node&& node) {
 // the horizon: with y = cos t, (2 / pi) integral_0^{t_h} sin^2 t T(mu) w(mu) dt, t_h the horizon's
 // t, by 4 x 8-node Gauss-Legendre (the integrand is smooth in t; the horizon only moves the upper
 // limit). solar_disc_test bounds each case against a brute-force integral.
+// Where the disc is cut off, as a zenith angle: the planet's horizon, and for a horizontal surface
+// also its plane (max(mu, 0) has a kink there).
+double CutOffZenith(const Medium& medium, double r, bool cosine) {
+  double theta_horizon = std::acos(CosHorizon(r, medium.bottom_radius()));
+  return cosine ? std::min(theta_horizon, std::numbers::pi / 2.0) : theta_horizon;
+}
+
+Column Slant(const Medium& medium, Accuracy accuracy, double r, double mu) {
+  return ComputeColumn(medium, accuracy, r, mu, DistanceToOuterSphere(r, mu, medium.top_radius()));
+}
+
 template <typename Node>
 void ForEachDiscNode(const Medium& medium, Accuracy accuracy, double r, double mu_s, bool cosine, Node&& node) {
   const double alpha = medium.atmosphere().sun_angular_radius_rad;
   const double theta_s = std::acos(ClampCosine(mu_s));
-  // Where the disc is cut off: the planet's horizon, and for a horizontal surface also its plane
-  // (max(mu, 0) has a kink there).
-  double theta_horizon = std::acos(CosHorizon(r, medium.bottom_radius()));
-  if (cosine) theta_horizon = std::min(theta_horizon, std::numbers::pi / 2.0);
-  auto slant = [&](double mu) {
-    return ComputeColumn(medium, accuracy, r, mu, DistanceToOuterSphere(r, mu, medium.top_radius()));
-  };
+  const double theta_horizon = CutOffZenith(medium, r, cosine);
+  auto slant = [&](double mu) { return Slant(medium, accuracy, r, mu); };
   if (theta_horizon - theta_s > kCentreOnlyElevation) {
     node(cosine ? mu_s : 1.0, slant(mu_s));
     return;
@@ -81,13 +87,22 @@ Spectrum DiscAverage(const Medium& medium, Accuracy accuracy, double r, double m
   return sum;
 }
 
-Channels DiscAverage(const WavelengthGroups& groups, Accuracy accuracy, double r, double mu_s, bool cosine) {
-  Channels sum(groups.channels());
-  ForEachDiscNode(groups.sampling(), accuracy, r, mu_s, cosine, [&](double weight, const Column& column) {
-    Channels t = groups.Transmittance(column);
-    for (int c = 0; c < sum.size(); ++c) sum[c] += weight * t[c];
-  });
-  return sum;
+Channels SampleDisc(const WavelengthGroups& groups, double r, double mu_s, bool cosine, Rng& rng) {
+  const Medium& medium = groups.sampling();
+  const double theta_s = std::acos(ClampCosine(mu_s));
+  const double theta_horizon = CutOffZenith(medium, r, cosine);
+  double mu = mu_s;
+  if (theta_horizon - theta_s <= kCentreOnlyElevation) {
+    // A point uniform over the unit disc: radius sqrt(u), angle 2 pi v; its y is the elevation.
+    const double radius = std::sqrt(rng.Uniform()), angle = 2.0 * std::numbers::pi * rng.Uniform();
+    const double theta = theta_s - medium.atmosphere().sun_angular_radius_rad * radius * std::sin(angle);
+    if (theta >= theta_horizon) return Channels(groups.channels());
+    mu = std::cos(theta);
+  }
+  Channels t = groups.Transmittance(Slant(medium, Accuracy::kMonteCarlo, r, mu));
+  if (cosine)
+    for (int c = 0; c < t.size(); ++c) t[c] *= std::max(mu, 0.0);
+  return t;
 }
 
 }  // namespace
@@ -101,13 +116,12 @@ Spectrum SunDiscHorizontalIrradianceFactor(const Medium& medium, Accuracy accura
   return DiscAverage(medium, accuracy, r, mu_s, true);
 }
 
-Channels SunDiscTransmittance(const WavelengthGroups& groups, Accuracy accuracy, double r, double mu_s) {
-  return DiscAverage(groups, accuracy, r, mu_s, false);
+Channels SampleSunDiscTransmittance(const WavelengthGroups& groups, double r, double mu_s, Rng& rng) {
+  return SampleDisc(groups, r, mu_s, false, rng);
 }
 
-Channels SunDiscHorizontalIrradianceFactor(const WavelengthGroups& groups, Accuracy accuracy, double r,
-                                           double mu_s) {
-  return DiscAverage(groups, accuracy, r, mu_s, true);
+Channels SampleSunDiscHorizontalIrradianceFactor(const WavelengthGroups& groups, double r, double mu_s, Rng& rng) {
+  return SampleDisc(groups, r, mu_s, true, rng);
 }
 
 }  // namespace aerial::reference

@@ -14,6 +14,7 @@
 // fraction of the disc (the shaders' approximation, GetTransmittanceToSun) and Bruneton 2017's
 // average cosine of the disc over a horizontal surface.
 #include "aerial/reference/medium.h"
+#include "aerial/reference/monte_carlo_chunks.h"
 #include "aerial/reference/wavelength_groups.h"
 
 namespace aerial::reference {
@@ -26,9 +27,13 @@ Spectrum SunDiscTransmittance(const Medium& medium, Accuracy accuracy, double r,
 Spectrum SunDiscHorizontalIrradianceFactor(const Medium& medium, Accuracy accuracy, double r,
                                            double mu_s);
 
-// The same at every wavelength of `groups`.
-Channels SunDiscTransmittance(const WavelengthGroups& groups, Accuracy accuracy, double r, double mu_s);
-Channels SunDiscHorizontalIrradianceFactor(const WavelengthGroups& groups, Accuracy accuracy, double r,
-                                           double mu_s);
+// One-sample estimates of the same at every wavelength of `groups`, for the path tracer's
+// next-event estimates (kMonteCarlo columns): a point drawn uniformly over the disc's area (its y
+// then has the chord density), through its own slant, 0 below the horizon. Unbiased, and one slant
+// where the quadrature takes 3 to 32 near the horizon; the mean of many paths does the
+// quadrature's work. Where the centre's slant is the disc's (more than 20 degrees up) it is used
+// and draws nothing from rng.
+Channels SampleSunDiscTransmittance(const WavelengthGroups& groups, double r, double mu_s, Rng& rng);
+Channels SampleSunDiscHorizontalIrradianceFactor(const WavelengthGroups& groups, double r, double mu_s, Rng& rng);
 
 }  // namespace aerial::reference
