@@ -31,7 +31,7 @@ Spectrum LinearSrgbStdError(const reference::GroupEstimates& estimate, const spe
 
 // Radiances and irradiances are converted linearly; the two transmittances as the spectral
 // transmittance table is, weighted by sunlight (LinearSrgb(E * T) / LinearSrgb(E)); standard errors
-// propagate through the conversion's weights as independent errors. at_wavelengths (may be null)
+// are the converted values' own (LinearSrgbStdError). at_wavelengths (may be null)
 // receives the unconverted results, one per group of three wavelengths (SpectralSampling::Group).
 ProbeResult ProbeReferenceSpectral(const AtmosphereParameters& atmosphere, const RayParameters& ray,
                                    std::optional<double> distance_m,

@@ -90,7 +90,8 @@ ViewReference SampleReference(const reference::Reference& model, const Scene& sc
 // light by it), converted to linear sRGB by the sampling's conversion and summed. A pixel's
 // `transmittance` is then the sunlight-weighted one (LinearSrgb(E T) / LinearSrgb(E), as
 // spectral_reference.h's) and its `surface` what makes
-// Expected() the converted S + T L_surface; standard errors propagate as independent errors.
+// Expected() the converted S + T L_surface; standard errors are the converted values' own
+// (LinearSrgbStdError, probe/spectral_reference.h), S's and T L_surface's added as independent ones.
 ViewReference SampleSpectralReference(const AtmosphereParameters& atmosphere,
                                       const spectrum::SpectralSampling& spectral_sampling, const Scene& scene,
                                       const FrameUniforms& frame, const ImageRgbF& surface,
