@@ -50,10 +50,10 @@ std::vector<ViewAngles> ColourViews(const ColourBand& band);
 // point.
 inline constexpr int kColourReferenceWavelengths = 48;
 inline constexpr double kColourPointDistanceM = 10e3;
-// A reference value takes 4 then 16 times the base paths while its noise is above its goal. Where
-// 16 times is not enough (the twilight's radiance to a point and irradiance, whose light is all
-// orders >= 2), the noise is what a comparison is held to, not the target.
-inline constexpr int kMaxColourPathsFactor = 16;
+// A reference value takes 4, 16 then 64 times the base paths while its noise is above its goal.
+// Where 64 times is not enough (twilight, whose light is all orders >= 2), the noise is what a
+// comparison is held to, not the target.
+inline constexpr int kMaxColourPathsFactor = 64;
 
 struct ColourSample {
   std::string band;
