@@ -159,10 +159,10 @@ INSTANTIATE_TEST_SUITE_P(Filtering, PhysicalSky,
 // The stored samples are today's reference: every 52nd from the second is recomputed with its own
 // path count and seed. (From the second, not the first: that stride would take the two irradiances
 // of 1,048,576 paths, which cost twice what the other 19 samples cost together. This one has every
-// quantity and sun band, and two samples of 262,144 paths besides those of 65,536.) The file was
-// drawn before the path tracer's next-event estimates took one point of a low sun's disc
-// (solar_disc.h), so today's reference draws another estimate of the same sky, held within 5
-// combined standard errors (63 values: a false alarm about once in 30,000 runs; the median value's
+// quantity and sun band, and two samples of 262,144 paths besides those of 65,536.) The file's
+// samples take a low sun's disc by quadrature at every vertex, today's reference one point of it
+// (solar_disc.h), so a recomputed sample is another draw of the same sky, held within 5 combined
+// standard errors (63 values: a false alarm about once in 30,000 runs; the median value's
 // standard error is 0.10%, and a change of the reference by 1% exceeds the bound on 38 of the 63
 // values).
 TEST(PhysicalSkyReference, StoredReferenceIsTodaysReference) {

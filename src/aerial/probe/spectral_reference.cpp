@@ -36,8 +36,7 @@ ProbeResult ProbeReferenceSpectral(const AtmosphereParameters& atmosphere, const
                                    std::vector<ProbeResult>* at_wavelengths) {
   const spectrum::SpectralAtmosphere spectral(atmosphere);
   LinearSrgbSum sky, irradiance, to_point, sun_irradiance, solar_radiance, sun, sunlit, sunlit_to_point;
-  std::vector<AtmosphereParameters> groups;
-  for (int g = 0; g < sampling.groups(); ++g) groups.push_back(spectral.At(sampling.Group(g)));
+  const std::vector<AtmosphereParameters> groups = spectral.AtGroups(sampling);
   const GroupProbe probe = ProbeReferenceGroups(reference::ReferenceGroups(groups), ray, distance_m, options);
   if (at_wavelengths) *at_wavelengths = probe.groups;
   for (int g = 0; g < sampling.groups(); ++g) {

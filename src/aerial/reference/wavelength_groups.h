@@ -29,7 +29,6 @@ class Channels {
   double& operator[](int c) { return values_[size_t(c)]; }
   double operator[](int c) const { return values_[size_t(c)]; }
   double Max() const;
-  Spectrum Group(int g) const { return {values_[size_t(3 * g)], values_[size_t(3 * g + 1)], values_[size_t(3 * g + 2)]}; }
 
  private:
   int size_;

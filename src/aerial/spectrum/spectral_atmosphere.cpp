@@ -103,6 +103,12 @@ Spectrum SpectralAtmosphere::ReflectanceForSunlight(const Spectrum& linear_srgb_
   return Multiply(Inverse(reflected), wanted);
 }
 
+std::vector<AtmosphereParameters> SpectralAtmosphere::AtGroups(const SpectralSampling& sampling) const {
+  std::vector<AtmosphereParameters> groups;
+  for (int g = 0; g < sampling.groups(); ++g) groups.push_back(At(sampling.Group(g)));
+  return groups;
+}
+
 AtmosphereParameters SpectralAtmosphere::At(const std::array<double, 3>& wavelengths_nm) const {
   AtmosphereParameters a = base_;
   for (int i = 0; i < 3; ++i) {

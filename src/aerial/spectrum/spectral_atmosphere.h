@@ -12,6 +12,7 @@
 //  - the ground albedo linearly between the given wavelengths, constant beyond them.
 // For the built-in Earth this reproduces Bruneton 2017's spectral demo at every wavelength.
 #include <array>
+#include <vector>
 
 #include "aerial/atmosphere.h"
 #include "aerial/spectrum/spectral_sampling.h"
@@ -24,6 +25,8 @@ class SpectralAtmosphere {
 
   // The atmosphere at three other wavelengths (one precompute group).
   AtmosphereParameters At(const std::array<double, 3>& wavelengths_nm) const;
+  // At every group of a sampling's wavelengths.
+  std::vector<AtmosphereParameters> AtGroups(const SpectralSampling& sampling) const;
 
   double SolarIrradiance(double nm) const;
   double RayleighScattering(double nm) const;

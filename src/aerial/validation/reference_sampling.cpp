@@ -146,8 +146,7 @@ ViewReference SampleSpectralReference(const AtmosphereParameters& atmosphere,
                                       const FrameUniforms& frame, const ImageRgbF& surface,
                                       const ReferenceSampling& sampling, const std::function<void()>& on_pixel) {
   const spectrum::SpectralAtmosphere spectral(atmosphere);
-  std::vector<AtmosphereParameters> groups;
-  for (int g = 0; g < spectral_sampling.groups(); ++g) groups.push_back(spectral.At(spectral_sampling.Group(g)));
+  const std::vector<AtmosphereParameters> groups = spectral.AtGroups(spectral_sampling);
   auto group_albedo = [&](const Spectrum& albedo, int g) {
     const std::array<double, 3> nm = spectral_sampling.Group(g);
     Spectrum rho = spectral.ReflectanceForSunlight(albedo, spectral_sampling);
