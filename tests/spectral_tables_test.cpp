@@ -96,9 +96,10 @@ TEST_F(SpectralTables, MatchTheSpectralReferenceInColour) {
 
 // The low sun, where the sunlight crosses 10-40 air masses: the sun's irradiance and the radiance
 // to a point (single scattering: the sun's light through the air), against 48 wavelengths. The
-// target is du'v' <= 0.001; measured 1.5e-4 at most but with the sun's centre on the horizon
-// (view 1), where the sun's irradiance on the ground is 0.0014 off and the radiance to a point
-// 0.0009: the bound holds what is met, and docs/colour.md says what is left.
+// target is du'v' <= 0.001; measured 1.4e-4 at most, so the bound is half the target. With the
+// sun's centre on the horizon (view 1) each wavelength must cross each tap of the disc with its
+// own optical depth (GetSunDiscSunlight): one mean optical depth per channel, with the taps'
+// spread about it as a factor, left the radiance to a point there 0.00087 off.
 TEST_F(SpectralTables, MatchTheSpectralReferenceInColourAtTheLowSun) {
   ViewsCompared c = CompareViews(ColourMode::kSpectral, kLowSunViews);
   for (size_t i = 0; i < kLowSunViews.size(); ++i)
@@ -107,8 +108,26 @@ TEST_F(SpectralTables, MatchTheSpectralReferenceInColourAtTheLowSun) {
           std::pair{c.tables[i].radiance_to_point, c.reference[i].radiance_to_point}}) {
       const ColourError error = Compare(measured, wanted);
       std::printf("low sun view %zu: du'v' %.5f, luminance %.3f%%\n", i, error.chromaticity, 100 * error.luminance);
-      EXPECT_LT(error.chromaticity, 0.0015) << "view " << i;
+      EXPECT_LT(error.chromaticity, 0.0005) << "view " << i;
     }
+}
+
+// The sky beside a sun on the horizon, toward it (Mie's forward peak): the light that Mie scatters
+// there is so red that its linear sRGB blue is negative. The tables and the render-time
+// corrections keep that negative channel (ClampToLight): clamped per channel, it added 9% to the
+// sky's blue 5 degrees from the sun, du'v' 0.0020. Single scattering, views 5-10 degrees above
+// the horizon, the sun's centre 0.5 degrees above to 0.5 below it; daylight's targets, which the
+// low sun's are no looser than in du'v'.
+TEST_F(SpectralTables, KeepTheColourOfTheSkyBesideASunOnTheHorizon) {
+  const std::vector<ViewAngles> views = {{0.0, 85.0, 89.5, 0.0}, {0.0, 85.0, 90.0, 0.0},
+                                         {0.0, 80.0, 90.0, 0.0}, {0.0, 85.0, 90.5, 0.0}};
+  ViewsCompared c = CompareViews(ColourMode::kSpectral, views);
+  for (size_t i = 0; i < views.size(); ++i) {
+    const ColourError error = Compare(c.tables[i].sky_radiance, c.reference[i].sky_radiance);
+    std::printf("view %zu: du'v' %.5f, luminance %.3f%%\n", i, error.chromaticity, 100 * error.luminance);
+    EXPECT_LT(error.chromaticity, 0.001) << "view " << i;
+    EXPECT_LT(error.luminance, 0.01) << "view " << i;
+  }
 }
 
 // Three wavelengths shown as RGB miss the same sky's chromaticity by more than the target (by
@@ -152,7 +171,6 @@ TEST_F(SpectralTables, HigherOrdersAtEveryOtherWavelengthKeepTheColour) {
     }
   }
   for (size_t i = 0; i < sums.size(); ++i) {
-    for (float& v : sums[i]) v = std::max(v, 0.0f);
     std::memcpy(every_order.tables[i].texels.data(), sums[i].data(), every_order.tables[i].texels.size());
   }
   AtmosphereTables reference(SharedContext(), earth, options);

@@ -75,7 +75,7 @@ void main() {
   float r, mu, mu_s, nu;
   if (x == 0 && y == 0) {
     GetCameraRayParameters(AERIAL_FRAME.sun_direction.xyz, r, mu, mu_s, nu);
-    sun_irradiance = vec4(GetDirectSunlight(GetSunLightAt(transmittance_texture, r, mu_s)), 0.0);
+    sun_irradiance = vec4(GetDirectSunlight(transmittance_texture, r, mu_s, GetHorizonCosine(r), false), 0.0);
   }
   if (x >= map.width || y >= map.height) return;
   vec3 ray = TexelDirection(x, y);

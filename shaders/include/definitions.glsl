@@ -13,7 +13,7 @@ const float PI = 3.14159265358979323846;
 // per march step, therefore:
 //  - a branch picks where to read, not whether to read: `read(a ? x : y)`, not
 //    `if (a) return read(x); return read(y);`, which costs two reads;
-//  - work that only some cases need sits in a loop over the case's count (GetSunDiscLight's taps),
+//  - work that only some cases need sits in a loop over the case's count (GetSunDiscSunlight's taps),
 //    not behind an if with the common case's early return before it: a group whose lanes all
 //    take the common case then pays for its one pass (and the loop's last test), not for all;
 //  - where a whole frame takes one case, a pipeline specialized for it folds the test away (the
@@ -79,7 +79,7 @@ struct AtmosphereParameters {
   ivec4 multiple_scattering_steps;  // x: steps per ray of the multiple scattering pass.
   ivec4 multiple_density_size;  // the scattering axes, for the density of orders >= 2 (J_ms).
   // Spectral tables: the sunlight through a path, per wavelength (GetPathSunlight); x: the
-  // wavelengths, 0 for rgb tables.
+  // wavelengths, 0 for rgb tables; y: 1 where the channels are linear sRGB (spectral tables).
   ivec4 spectral_sunlight_terms;
   vec4 spectral_sunlight_exponent[AERIAL_SPECTRAL_SUNLIGHT_MAX_TERMS];
   vec4 spectral_sunlight_rayleigh[AERIAL_SPECTRAL_SUNLIGHT_MAX_TERMS];
@@ -119,6 +119,23 @@ vec3 MixExponentially(vec3 a, vec3 b, float t) {
   bvec3 use_log = greaterThan(min(a, b), vec3(1e-30));
   vec3 exponential = exp(mix(log(max(a, vec3(1e-30))), log(max(b, vec3(1e-30))), t));
   return mix(mix(a, b, t), exponential, use_log);  // a selection: use_log is a bvec3
+}
+
+// No less light than none, where a sum that cancels could round below it (the Earth's shadow).
+// The channels of rgb tables are radiances at three wavelengths: each is clamped. The channels of
+// spectral tables are linear sRGB, where light outside the gamut has a negative channel (the Mie
+// inscatter of a reddened low sun has a negative blue, a few percent of its red): a per-channel
+// clamp added that blue back, 9% of the sky's blue 5 degrees from a sun on the horizon. There
+// the colour's CIE XYZ, never negative for light, is clamped instead (IEC 61966-2-1 matrices).
+vec3 ClampToLight(vec3 colour) {
+  const mat3 xyz_from_linear_srgb = mat3(0.4124, 0.2126, 0.0193, 0.3576, 0.7152, 0.1192,
+                                         0.1805, 0.0722, 0.9505);
+  const mat3 linear_srgb_from_xyz = mat3(3.2406, -0.9689, 0.0557, -1.5372, 1.8758, -0.2040,
+                                         -0.4986, 0.0415, 1.0570);
+  vec3 xyz = xyz_from_linear_srgb * colour;
+  bool srgb = AERIAL_ATMOSPHERE.spectral_sunlight_terms.y != 0;
+  vec3 clamped_srgb = all(greaterThanEqual(xyz, vec3(0.0))) ? colour : linear_srgb_from_xyz * max(xyz, vec3(0.0));
+  return srgb ? clamped_srgb : max(colour, vec3(0.0));
 }
 
 #endif

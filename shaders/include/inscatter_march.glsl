@@ -46,8 +46,7 @@ void SampleInscatterIntegrands(sampler2D transmittance_texture, sampler3D multip
   vec3 view = GetOpticalDepthFromOrigin(transmittance_texture, march.origin, march.r, march.mu, d,
                                         march.ray_r_mu_intersects_ground);
   march.transmittance = exp(-view);
-  SunDiscLight sun = GetSunLightAt(transmittance_texture, r_d, mu_s_d);
-  ComputeSingleScatteringIntegrandAt(r_d, view + sun.optical_depth, sun.spread,
+  ComputeSingleScatteringIntegrandAt(r_d, GetSunlightAt(transmittance_texture, r_d, mu_s_d, view),
                                      march.rayleigh_integrand, march.mie_integrand);
   march.multiple_integrand =
       march.transmittance * GetMultipleScatteringDensity(multiple_density_texture, r_d, mu_d,

@@ -5,11 +5,10 @@
 #include "scattering.glsl"
 
 // Direct irradiance on a horizontal surface: the sun's disc above both the horizon and the
-// surface's plane, each part with its own transmittance and cosine (GetSunDiscLight; this
+// surface's plane, each part with its own transmittance and cosine (GetSunDiscSunlight; this
 // replaces Bruneton 2017's average cosine (mu_s + alpha)^2 / (4 alpha) of "ComputeDirectIrradiance").
 vec3 ComputeDirectIrradiance(sampler2D transmittance_texture, float r, float mu_s) {
-  return GetDirectSunlight(
-      GetSunDiscLight(transmittance_texture, r, mu_s, max(GetHorizonCosine(r), 0.0), true));
+  return GetDirectSunlight(transmittance_texture, r, mu_s, max(GetHorizonCosine(r), 0.0), true);
 }
 
 // The radiance of order `order` arriving at (r, mu_s) from direction omega (zenith cosine

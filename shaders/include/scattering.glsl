@@ -55,15 +55,13 @@ float GetStepDistance(float ray_length, int i, int steps, float spacing_exponent
   return ray_length * pow(float(i) / float(steps), spacing_exponent);
 }
 
-// Integrand of single scattering at radius r_d, given the light's path from the sun's disc to r_d
-// and from there to the camera: its optical depth, and the disc's spread (SunDiscLight). The
-// sunlight that path lets through (GetPathSunlight), times the density of each species there.
-void ComputeSingleScatteringIntegrandAt(float r_d, vec3 optical_depth, vec3 spread,
-                                        out vec3 rayleigh, out vec3 mie) {
+// Integrand of single scattering at radius r_d: the sunlight that reaches the camera through the
+// sun's disc and then the view path (GetSunDiscSunlight), times the density of each species there.
+void ComputeSingleScatteringIntegrandAt(float r_d, PathSunlight sunlight, out vec3 rayleigh,
+                                        out vec3 mie) {
   float altitude = r_d - AERIAL_ATMOSPHERE.bottom_radius;
-  PathSunlight sunlight = GetPathSunlight(optical_depth);
-  rayleigh = sunlight.rayleigh * spread * GetProfileDensity(AERIAL_ATMOSPHERE.rayleigh_density, altitude);
-  mie = sunlight.mie * spread * GetProfileDensity(AERIAL_ATMOSPHERE.mie_density, altitude);
+  rayleigh = sunlight.rayleigh * GetProfileDensity(AERIAL_ATMOSPHERE.rayleigh_density, altitude);
+  mie = sunlight.mie * GetProfileDensity(AERIAL_ATMOSPHERE.mie_density, altitude);
 }
 
 // The same at distance d along the ray (r, mu), with the sunlight read from the sun band.
@@ -72,11 +70,12 @@ void ComputeSingleScatteringIntegrand(sampler2D transmittance_texture, sampler2D
                                       float d, bool ray_r_mu_intersects_ground, out vec3 rayleigh,
                                       out vec3 mie) {
   float r_d = RadiusAtDistance(r, mu, d);
-  SunDiscLight sun = GetSunLightFromBand(transmittance_texture, sun_band_texture, r_d,
-                                         SunCosineAlongRay(r, mu_s, nu, d, r_d));
   vec3 view = GetOpticalDepthFromOrigin(transmittance_texture, origin, r, mu, d,
                                         ray_r_mu_intersects_ground);
-  ComputeSingleScatteringIntegrandAt(r_d, view + sun.optical_depth, sun.spread, rayleigh, mie);
+  ComputeSingleScatteringIntegrandAt(
+      r_d, GetSunlightFromBand(transmittance_texture, sun_band_texture, r_d,
+                               SunCosineAlongRay(r, mu_s, nu, d, r_d), view),
+      rayleigh, mie);
 }
 
 // Single scattering (Bruneton 2008 eq. 11 without the phase function), integrated over the

@@ -142,9 +142,8 @@ void MarchSingleScatteringSuns(sampler2D transmittance_texture, float r, float m
     for (int k = first_sun; k < end_sun; ++k) {
       vec3 rayleigh_i, mie_i;
       float mu_s_d = SunCosineAlongRay(r, suns.mu_s[k], suns.nu[k], d, r_d);
-      SunDiscLight sun = GetSunLightAt(transmittance_texture, r_d, mu_s_d);
-      ComputeSingleScatteringIntegrandAt(r_d, view + sun.optical_depth, sun.spread, rayleigh_i,
-                                         mie_i);
+      ComputeSingleScatteringIntegrandAt(r_d, GetSunlightAt(transmittance_texture, r_d, mu_s_d, view),
+                                         rayleigh_i, mie_i);
       if (i > 0) {
         rayleigh[k] += ExponentialStepIntegral(rayleigh_previous[k], rayleigh_i) * dx;
         mie[k] += ExponentialStepIntegral(mie_previous[k], mie_i) * dx;
@@ -333,10 +332,10 @@ void GetSkyInscatterCorrection(sampler2D transmittance_texture, sampler3D raylei
                                                    rayleigh_single);
 }
 
-// Clamped at zero: in the Earth's shadow the table's value and the correction nearly cancel.
+// Clamped (ClampToLight): in the Earth's shadow the table's value and the correction nearly cancel.
 void AddSkyInscatterCorrection(vec3 rayleigh, vec3 mie, inout Inscatter sky) {
-  sky.rayleigh = max(sky.rayleigh + rayleigh, vec3(0.0));
-  sky.mie = max(sky.mie + mie, vec3(0.0));
+  sky.rayleigh = ClampToLight(sky.rayleigh + rayleigh);
+  sky.mie = ClampToLight(sky.mie + mie);
 }
 
 // The Rayleigh and Mie inscatter (without phase) that the scattering tables hold for the view ray
@@ -422,8 +421,8 @@ Inscatter GetSkyInscatterToPointFromTables(sampler2D transmittance_texture,
                     ray_r_mu_intersects_ground, rayleigh_p, mie_p);
   Inscatter segment;
   segment.transmittance = GetTransmittance(transmittance_texture, r, mu, d, ray_r_mu_intersects_ground);
-  segment.rayleigh = max(rayleigh - segment.transmittance * rayleigh_p, vec3(0.0));
-  segment.mie = max(mie - segment.transmittance * mie_p, vec3(0.0));
+  segment.rayleigh = ClampToLight(rayleigh - segment.transmittance * rayleigh_p);
+  segment.mie = ClampToLight(mie - segment.transmittance * mie_p);
   return segment;
 }
 

@@ -25,7 +25,7 @@ LambertianRadiance GetLambertianRadiance(sampler2D transmittance_texture, sample
   vec3 up = point / r;
   vec3 sun = AERIAL_FRAME.sun_direction.xyz;
   float mu_s = dot(up, sun);
-  vec3 sun_irradiance = GetDirectSunlight(GetSunLightAt(transmittance_texture, r, mu_s));
+  vec3 sun_irradiance = GetDirectSunlight(transmittance_texture, r, mu_s, GetHorizonCosine(r), false);
   vec3 sky_irradiance = GetIrradiance(irradiance_texture, r, mu_s) * (1.0 + dot(normal, up)) * 0.5;
   return LambertianRadiance(albedo * (1.0 / PI) * sun_irradiance, albedo * (1.0 / PI) * sky_irradiance);
 }

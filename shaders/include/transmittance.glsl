@@ -152,16 +152,6 @@ float GetSunDiscVisibleFraction(float x) {
   return x >= 1.0 ? 1.0 : clamp(0.5 + (x * sqrt(1.0 - x * x) + asin(x)) / PI, 0.0, 1.0);
 }
 
-// The disc's average transmittance, as exp(-optical_depth) * spread: optical_depth the mean of its
-// taps' (by the same weights), spread what the taps' spread around that mean and the visible
-// fraction make of it (1 for one tap). GetPathSunlight takes the first: the taps' optical depths
-// are each a linear function of the constituents' column densities, their mean too, and the
-// spread is nearly grey.
-struct SunDiscLight {
-  vec3 optical_depth;
-  vec3 spread;
-};
-
 // Tap i of a disc read in `taps` taps (2 to 4; 1: the centre alone): the zenith cosine of its
 // point and its weight, to be normalized by the taps' sum (Gauss-Chebyshev weights already sum
 // to 1). t_h: the visible part of a cut disc, y = cos t for t in [0, t_h]. Each tap's node is
@@ -184,52 +174,59 @@ void GetSunDiscTap(int i, int taps, float mu_s, float sin_s, float t_h, out floa
   w = taps == 1 ? 1.0 : (cut ? weight[i] * sin_t * sin_t : whole_w);
 }
 
-SunDiscLight GetSunDiscLight(sampler2D transmittance_texture, float r, float mu_s,
-                             float cut_off_cosine, bool cosine_weighted) {
+// The sunlight through the disc's paths to radius r, followed by a path of optical depth `path`
+// (toward the camera, or none), per unit of sunlight: the taps' GetPathSunlight, each through its
+// own slant, averaged by their weights and times the visible fraction (each also times its
+// point's cosine where cosine_weighted). In spectral tables each wavelength thus crosses each
+// tap's slant with its own optical depth; the channels' mean optical depth over the taps, with
+// their spread about it as one factor per channel, left the radiance to a point 10 km up at
+// twilight 0.0033 off in u'v' instead of 0.0017 (aerial_bench_colour, docs/colour.md).
+PathSunlight GetSunDiscSunlight(sampler2D transmittance_texture, float r, float mu_s,
+                                float cut_off_cosine, bool cosine_weighted, vec3 path) {
   float x = GetSunElevationInDiscRadii(mu_s, cut_off_cosine);
-  if (x <= -1.0) return SunDiscLight(vec3(0.0), vec3(0.0));
   // x alpha >= mu_s for a cut-off at or below the horizontal: AERIAL_SUN_HIGH_EVERYWHERE implies it.
   bool one_tap = AERIAL_SUN_HIGH_EVERYWHERE || x * AERIAL_ATMOSPHERE.sun_angular_radius > SUN_DISC_ONE_TAP_ELEVATION;
   bool whole = x >= 1.0 && !cosine_weighted;
-  int taps = one_tap ? 1 : (whole ? (x > 5.0 ? 2 : 3) : 4);
+  int taps = x <= -1.0 ? 0 : (one_tap ? 1 : (whole ? (x > 5.0 ? 2 : 3) : 4));
   float sin_s = sqrt(max(1.0 - mu_s * mu_s, 0.0));
   float t_h = acos(clamp(-x, -1.0, 1.0));
-  float mu[4];
-  float w[4];
-  vec3 tau[4];
+  PathSunlight light = PathSunlight(vec3(0.0), vec3(0.0), vec3(0.0));
   float weights = 0.0;
-  vec3 weighted_tau = vec3(0.0);
   for (int i = 0; i < taps; ++i) {
-    GetSunDiscTap(i, taps, mu_s, sin_s, t_h, mu[i], w[i]);
-    tau[i] = GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r, mu[i]);
-    weights += w[i];
-    weighted_tau += w[i] * tau[i];
+    float mu, w;
+    GetSunDiscTap(i, taps, mu_s, sin_s, t_h, mu, w);
+    PathSunlight tap = GetPathSunlight(
+        path + GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r, mu));
+    weights += w;
+    w *= cosine_weighted ? max(mu, 0.0) : 1.0;
+    light.rayleigh += w * tap.rayleigh;
+    light.mie += w * tap.mie;
+    light.direct += w * tap.direct;
   }
-  vec3 mean = weighted_tau / weights;
-  vec3 spread = vec3(0.0);
-  for (int i = 0; i < taps; ++i)
-    spread += w[i] * exp(mean - tau[i]) * (cosine_weighted ? max(mu[i], 0.0) : 1.0);
-  float visible = taps == 4 ? GetSunDiscVisibleFraction(x) : 1.0;
-  return SunDiscLight(mean, spread * (visible / weights));
+  float scale = (taps == 4 ? GetSunDiscVisibleFraction(x) : 1.0) / max(weights, 1e-30);
+  return PathSunlight(light.rayleigh * scale, light.mie * scale, light.direct * scale);
 }
 
 // -sqrt(1 - (R / r)^2), from the horizon distance without cancellation.
 float GetHorizonCosine(float r) { return -sqrt(SquaredHorizonDistance(r)) / r; }
 
-// Transmittance of sunlight to radius r, over the part of the disc above the horizon.
-SunDiscLight GetSunLightAt(sampler2D transmittance_texture, float r, float mu_s) {
-  return GetSunDiscLight(transmittance_texture, r, mu_s, GetHorizonCosine(r), false);
+// The sunlight through the part of the disc above the horizon of radius r, then `path`.
+PathSunlight GetSunlightAt(sampler2D transmittance_texture, float r, float mu_s, vec3 path) {
+  return GetSunDiscSunlight(transmittance_texture, r, mu_s, GetHorizonCosine(r), false, path);
 }
 
-// The sun's direct irradiance (W/m^2/nm) through the disc's average, per unit area normal to the
-// sun (times its cosine where the disc was averaged with cosine_weighted).
-vec3 GetDirectSunlight(SunDiscLight disc) {
-  return AERIAL_ATMOSPHERE.solar_irradiance.rgb * GetPathSunlight(disc.optical_depth).direct * disc.spread;
+// The sun's direct irradiance (W/m^2/nm) at radius r, per unit area normal to the sun (times its
+// cosine where cosine_weighted), from the disc above cut_off_cosine.
+vec3 GetDirectSunlight(sampler2D transmittance_texture, float r, float mu_s, float cut_off_cosine,
+                       bool cosine_weighted) {
+  return AERIAL_ATMOSPHERE.solar_irradiance.rgb *
+         GetSunDiscSunlight(transmittance_texture, r, mu_s, cut_off_cosine, cosine_weighted, vec3(0.0)).direct;
 }
 
+// The disc's average transmittance to radius r, channel by channel, for rgb tables (the sun band,
+// which the precompute's rgb groups tabulate): their direct sunlight is exp(-tau).
 vec3 GetTransmittanceToSun(sampler2D transmittance_texture, float r, float mu_s) {
-  SunDiscLight sun = GetSunLightAt(transmittance_texture, r, mu_s);
-  return exp(-sun.optical_depth) * sun.spread;
+  return GetSunlightAt(transmittance_texture, r, mu_s, vec3(0.0)).direct;
 }
 
 // ---- The sun band: GetTransmittanceToSun tabulated for the precomputation. ----
@@ -264,16 +261,18 @@ void GetRMuSFromSunBandTextureUv(ivec2 size, vec2 uv, out float r, out float mu_
   mu_s = cut_off + x * sqrt(1.0 - cut_off * cut_off) * AERIAL_ATMOSPHERE.sun_angular_radius;
 }
 
-// GetSunLightAt, read from the sun band where the disc takes more than its centre.
-SunDiscLight GetSunLightFromBand(sampler2D transmittance_texture, sampler2D sun_band_texture,
-                                float r, float mu_s) {
+// GetSunlightAt, with the disc read from the sun band where it takes more than its centre: the
+// visible part's average optical depth, times the visible fraction.
+PathSunlight GetSunlightFromBand(sampler2D transmittance_texture, sampler2D sun_band_texture,
+                                 float r, float mu_s, vec3 path) {
   float x = GetSunElevationInDiscRadii(mu_s, GetHorizonCosine(r));
-  if (x <= -1.0) return SunDiscLight(vec3(0.0), vec3(0.0));
-  if (x > GetSunBandMaxElevationInDiscRadii())
-    return SunDiscLight(GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r, mu_s),
-                        vec3(1.0));
+  bool in_band = x <= GetSunBandMaxElevationInDiscRadii();
   vec2 uv = GetSunBandTextureUv(textureSize(sun_band_texture, 0), r, x);
-  return SunDiscLight(ReadTable(sun_band_texture, uv).rgb, vec3(GetSunDiscVisibleFraction(x)));
+  vec3 optical_depth = in_band ? ReadTable(sun_band_texture, uv).rgb
+                               : GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r, mu_s);
+  float weight = x <= -1.0 ? 0.0 : (in_band ? GetSunDiscVisibleFraction(x) : 1.0);
+  PathSunlight light = GetPathSunlight(path + optical_depth);
+  return PathSunlight(light.rayleigh * weight, light.mie * weight, light.direct * weight);
 }
 
 #endif

@@ -15,7 +15,7 @@ void main() {
   if (i >= r_mu_s.length()) return;
   float r = r_mu_s[i].x;
   float mu_s = r_mu_s[i].y;
-  SunDiscLight band = GetSunLightFromBand(transmittance_texture, sun_band_texture, r, mu_s);
-  transmittance[2 * i] = vec4(exp(-band.optical_depth) * band.spread, 0.0);
+  transmittance[2 * i] =
+      vec4(GetSunlightFromBand(transmittance_texture, sun_band_texture, r, mu_s, vec3(0.0)).direct, 0.0);
   transmittance[2 * i + 1] = vec4(GetTransmittanceToSun(transmittance_texture, r, mu_s), 0.0);
 }

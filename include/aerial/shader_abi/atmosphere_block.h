@@ -38,7 +38,8 @@ struct alignas(16) AtmosphereUniforms {
   std::array<int, 4> multiple_density_size;  // r, mu, mu_s, nu
   // Spectral tables: the sunlight a path lets through, summed over the precompute's wavelengths
   // (spectrum/spectral_sunlight.h; GetPathSunlight in transmittance.glsl). x: the wavelengths
-  // summed, 0 for rgb tables (the path's transmittance is then used as it is).
+  // summed, 0 for rgb tables (the path's transmittance is then used as it is); y: 1 where the
+  // channels are linear sRGB (spectral tables), 0 where they are wavelengths (rgb).
   std::array<int, 4> spectral_sunlight_terms;
   // Per wavelength j: xyz the weights g_j of its optical depth, tau_j = g_j . channels' optical
   // depths; and its share of each channel of the sunlight that Rayleigh and Mie scatter and of the

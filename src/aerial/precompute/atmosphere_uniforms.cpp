@@ -31,7 +31,7 @@ void SetSpectralSunlight(const AtmosphereParameters& atmosphere, const Atmospher
                                      spectrum::SpectralSampling::ForTables(options.spectral_wavelengths));
   const int terms = int(sunlight.exponents.size());
   if (terms > kMaxSpectralSunlightTerms) throw Error("wavelengths", std::to_string(terms), "at most 48");
-  u.spectral_sunlight_terms = {terms, 0, 0, 0};
+  u.spectral_sunlight_terms = {terms, 1, 0, 0};
   for (int j = 0; j < terms; ++j) {
     u.spectral_sunlight_exponent[j] = ToFloat4(sunlight.exponents[j]);
     u.spectral_sunlight_rayleigh[j] = ToFloat4(sunlight.rayleigh_shares[j]);

@@ -202,10 +202,9 @@ std::vector<vk::PassTime> PrecomputeSpectral(AtmosphereTables& tables, Progress*
   for (size_t i = 0; i < result.tables.size(); ++i) {
     CachedTable& table = result.tables[i];
     // Light whose colour lies outside sRGB's gamut (the Mie table's reddened sunlight near the
-    // horizon, with blue down to -2e-3 where Rayleigh's is 5e-2) has negative channels. The sum
-    // of the tables would cancel them, but the render-time reads blend exponentially and integrate
-    // in log space, which need values >= 0: they are clamped to 0 (docs/colour.md).
-    for (float& v : sums[i]) v = std::max(v, 0.0f);
+    // horizon, with blue down to -2e-3 where Rayleigh's is 5e-2) keeps its negative channel: the
+    // render-time reads blend such values linearly (MixExponentially) and clamp sums by their
+    // XYZ (ClampToLight).
     table.texels = ToBytes(sums[i], table.format);
   }
   tables.Upload(result);

@@ -5,6 +5,6 @@
 
 namespace aerial {
 
-inline constexpr int kTableLayout = 18;
+inline constexpr int kTableLayout = 19;
 
 }  // namespace aerial
