@@ -41,28 +41,28 @@ struct MeasuredRegion {
 };
 
 const MeasuredRegion kRegions[] = {
-    {ColourQuantity::kSkyRadiance, kDay, 0, 18, 0.000473, 0.00382},
-    {ColourQuantity::kRadianceToPoint, kDay, 0, 18, 0.000275, 0.00824},
-    {ColourQuantity::kSkyIrradiance, kDay, 0, 18, 0.000558, 0.00175},
+    {ColourQuantity::kSkyRadiance, kDay, 0, 18, 0.000195, 0.00231},
+    {ColourQuantity::kRadianceToPoint, kDay, 0, 18, 0.000475, 0.00965},
+    {ColourQuantity::kSkyIrradiance, kDay, 0, 18, 0.000541, 0.00163},
     {ColourQuantity::kSunIrradiance, kDay, 0, 18, 0.000092, 0.00029},
-    {ColourQuantity::kSkyRadiance, kDay, 10, 18, 0.000375, 0.00233},
-    {ColourQuantity::kRadianceToPoint, kDay, 10, 18, 0.000350, 0.00502},
-    {ColourQuantity::kSkyIrradiance, kDay, 10, 18, 0.000608, 0.00339},
+    {ColourQuantity::kSkyRadiance, kDay, 10, 18, 0.000456, 0.00209},
+    {ColourQuantity::kRadianceToPoint, kDay, 10, 18, 0.000257, 0.00602},
+    {ColourQuantity::kSkyIrradiance, kDay, 10, 18, 0.000583, 0.00276},
     {ColourQuantity::kSunIrradiance, kDay, 10, 18, 0.000090, 0.00031},
-    {ColourQuantity::kSkyRadiance, kLowSun, 0, 24, 0.000834, 0.00588},
-    {ColourQuantity::kRadianceToPoint, kLowSun, 0, 24, 0.002065, 0.00436},
-    {ColourQuantity::kSkyIrradiance, kLowSun, 0, 24, 0.001165, 0.00823},
+    {ColourQuantity::kSkyRadiance, kLowSun, 0, 24, 0.000898, 0.00777},
+    {ColourQuantity::kRadianceToPoint, kLowSun, 0, 24, 0.001487, 0.01458},
+    {ColourQuantity::kSkyIrradiance, kLowSun, 0, 24, 0.000889, 0.00799},
     {ColourQuantity::kSunIrradiance, kLowSun, 0, 12, 0.000124, 0.00087},
-    {ColourQuantity::kSkyRadiance, kLowSun, 10, 24, 0.000402, 0.00354},
-    {ColourQuantity::kRadianceToPoint, kLowSun, 10, 24, 0.000373, 0.00205},
-    {ColourQuantity::kSkyIrradiance, kLowSun, 10, 24, 0.000362, 0.00247},
+    {ColourQuantity::kSkyRadiance, kLowSun, 10, 24, 0.000398, 0.00363},
+    {ColourQuantity::kRadianceToPoint, kLowSun, 10, 24, 0.000166, 0.00137},
+    {ColourQuantity::kSkyIrradiance, kLowSun, 10, 24, 0.000380, 0.00201},
     {ColourQuantity::kSunIrradiance, kLowSun, 10, 18, 0.000070, 0.00057},
-    {ColourQuantity::kSkyRadiance, kTwilight, 0, 19, 0.003091, 0.01256},
-    {ColourQuantity::kRadianceToPoint, kTwilight, 0, 13, 0.002270, 0.02510},
-    {ColourQuantity::kSkyIrradiance, kTwilight, 0, 18, 0.001178, 0.03560},
-    {ColourQuantity::kSkyRadiance, kTwilight, 10, 19, 0.001341, 0.02739},
-    {ColourQuantity::kRadianceToPoint, kTwilight, 10, 8, 0.001743, 0.01201},
-    {ColourQuantity::kSkyIrradiance, kTwilight, 10, 18, 0.000475, 0.01627},
+    {ColourQuantity::kSkyRadiance, kTwilight, 0, 19, 0.001483, 0.01643},
+    {ColourQuantity::kRadianceToPoint, kTwilight, 0, 13, 0.002421, 0.02951},
+    {ColourQuantity::kSkyIrradiance, kTwilight, 0, 18, 0.001147, 0.03604},
+    {ColourQuantity::kSkyRadiance, kTwilight, 10, 19, 0.001182, 0.02880},
+    {ColourQuantity::kRadianceToPoint, kTwilight, 10, 8, 0.001037, 0.00821},
+    {ColourQuantity::kSkyIrradiance, kTwilight, 10, 18, 0.000412, 0.01584},
 };
 
 const validation::ColourBand& Band(const std::string& name) {
@@ -76,11 +76,10 @@ class ColourAgainstTheTruth : public GpuTest {};
 // Each region's largest errors are bounded on both sides. The reference is stored, so only the
 // tables move them: by 1e-4 in du'v' (a tenth of the target, about the reference's own noise,
 // 1-2e-4 per value) or 0.1% in luminance, either way, and a change is noticed. Where the target is
-// met (every daylight region, the low sun 10 km up, most of twilight), the upper bound is held at it
-// too. Where it is not (docs/colour.md): on the ground at the low sun, 0.0021 for the radiance to
-// a point and 0.0012 for the sky's irradiance; at twilight, the sky on the ground (0.0031) and the
-// radiance to a point (0.0023 on the ground, 0.0017 10 km up) in du'v', against a reference whose
-// own du'v' noise there is 0.0007-0.0012, and the ground's irradiance in luminance (3.6%).
+// met (every daylight region, most of the low sun's and of twilight's), the upper bound is held at it
+// too. Where it is not (docs/colour.md): on the ground, the radiance to a point toward a sun just
+// below the horizon, 0.0015 at the low sun and 0.0024 at twilight in du'v', against a reference
+// whose own du'v' noise there is 0.0006-0.0008, and twilight's ground irradiance in luminance (3.6%).
 TEST_F(ColourAgainstTheTruth, DefaultSpectralTablesWithinTheTargetsWhereRecorded) {
   const validation::ColourReference reference = validation::ReadColourReference(kReferenceFile);
   ASSERT_EQ(reference.samples.size(), validation::ColourReferenceViewCount());

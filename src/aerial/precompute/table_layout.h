@@ -5,6 +5,6 @@
 
 namespace aerial {
 
-inline constexpr int kTableLayout = 19;
+inline constexpr int kTableLayout = 20;
 
 }  // namespace aerial
