@@ -98,7 +98,9 @@ void CheckNumbersAndCoverage(const nlohmann::json& results) {
           EXPECT_TRUE(std::isfinite(rmse) && std::isfinite(max) && rmse >= 0.0) << where << " " << pixel_class;
         }
         bool against_reference = name.ends_with("_vs_reference");
-        ASSERT_TRUE(left_out.count(view)) << view;
+        if (against_reference) {
+          ASSERT_TRUE(left_out.count(view)) << view;
+        }
         EXPECT_EQ(pixels, against_reference ? kReferencePixels - left_out[view] : kImagePixels) << where;
       }
   }
@@ -181,8 +183,28 @@ void CheckTableDifference(const nlohmann::json& results) {
   EXPECT_FALSE(lut4d["frame_pass_median_ms"]["table_difference"].empty());
 }
 
-// One run (a test process each would run it again) checked for four things: its files and their
-// structure, its numbers and what they cover, the 3D tables against the 4D, and the two table reads.
+// The shadow views (bench_plan.h): in quick mode the figure tier's only, the froxel path against
+// the per-pixel path alone, both with the sun's shadows. Measured with the small tables at 320x180,
+// opaque pixels: 2.1% RMSE at evening and 3.1% at sunrise, from the froxels' resolution across the
+// shadows' edges (docs/accuracy.md): bound at 4%, and above 0.1% (equal frames would mean that one
+// path was rendered twice).
+void CheckShadowViews(const nlohmann::json& results) {
+  for (const char* variant : {"4d", "3d"}) {
+    EXPECT_FALSE(Entry(results, variant, "tiny")["accuracy"].contains("evening")) << variant;
+    const nlohmann::json& accuracy = Entry(results, variant, "small")["accuracy"];
+    for (const char* view : {"evening", "sunrise"}) {
+      ASSERT_TRUE(accuracy.contains(view)) << variant << " " << view;
+      EXPECT_EQ(accuracy[view].size(), 1u) << variant << " " << view << ": froxel_vs_per_pixel alone";
+      double opaque = accuracy[view]["froxel_vs_per_pixel"]["opaque"]["rel_rmse"].get<double>();
+      EXPECT_GT(opaque, 0.001) << variant << " " << view;
+      EXPECT_LT(opaque, 0.04) << variant << " " << view;
+    }
+  }
+}
+
+// One run (a test process each would run it again) checked for five things: its files and their
+// structure, its numbers and what they cover, the 3D tables against the 4D, the two table reads, and
+// the shadow views.
 TEST(BenchQuick, ReportFilesNumbersAndComparisons) {
   fs::path dir = fs::temp_directory_path() / ("aerial-bench-test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
@@ -204,6 +226,10 @@ TEST(BenchQuick, ReportFilesNumbersAndComparisons) {
   {
     SCOPED_TRACE("two table reads per pixel");
     CheckTableDifference(results);
+  }
+  {
+    SCOPED_TRACE("shadow views");
+    CheckShadowViews(results);
   }
   fs::remove_all(dir);
 }

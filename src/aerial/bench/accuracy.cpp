@@ -19,10 +19,10 @@ using validation::SampleSpectralReference;
 using validation::ViewReference;
 namespace {
 
+// Without shadows unless asked: the CPU reference has none (lambertian_radiance.h).
 std::unique_ptr<SceneRenderer> ImageRenderer(const Tables& tables, const Scene& scene,
-                                        const BenchPlan& plan, AerialMode mode) {
-  // No shadows: the CPU reference has none (lambertian_radiance.h).
-  RenderOptions options{.width = plan.image_width, .height = plan.image_height, .mode = mode, .shadows = false};
+                                        const BenchPlan& plan, AerialMode mode, bool shadows = false) {
+  RenderOptions options{.width = plan.image_width, .height = plan.image_height, .mode = mode, .shadows = shadows};
   options.Validate();
   return std::make_unique<SceneRenderer>(tables, scene, options);
 }
@@ -68,6 +68,24 @@ ViewAccuracy Measure(const std::string& view, const VariantImages& images, const
           .table_difference_vs_reference = AgainstReference(reference, images.table_difference)};
 }
 
+// The froxel path against the per-pixel path in each shadow view, both with the sun's shadows.
+void MeasureShadowViews(VariantResult& result, const Tables& tables, Scene& scene, const BenchPlan& plan,
+                        const std::vector<std::string>& views, const std::function<void()>& on_view) {
+  std::unique_ptr<SceneRenderer> froxel = ImageRenderer(tables, scene, plan, AerialMode::kFroxel, true);
+  std::unique_ptr<SceneRenderer> per_pixel = ImageRenderer(tables, scene, plan, AerialMode::kPerPixel, true);
+  for (const std::string& view : views) {
+    ApplyPresetView(scene, view, tables.atmosphere().bottom_radius_m);
+    froxel->Render(scene);
+    per_pixel->Render(scene);
+    result.accuracy.push_back(
+        {.view = view,
+         .shadow_view = true,
+         .froxel_vs_per_pixel = AgainstImage(froxel->ReadOutput(), per_pixel->ReadOutput(),
+                                             ImplOf(*per_pixel).renderer.ReadSurface())});
+    if (on_view) on_view();
+  }
+}
+
 }  // namespace
 
 std::vector<ViewReference> SampleViews(const Tables& tables, Scene& scene, const BenchPlan& plan,
@@ -99,6 +117,7 @@ std::vector<ViewReference> SampleViews(const Tables& tables, Scene& scene, const
 
 void MeasureAccuracy(VariantResult& lut4d, const Tables& tables4d, VariantResult& lut3d,
                      const Tables& tables3d, Scene& scene, const BenchPlan& plan,
+                     const std::vector<std::string>& shadow_views,
                      const std::vector<ViewReference>& references, std::vector<FigureImages>* figures,
                      const std::function<void()>& on_view) {
   VariantRenderers renderers4d = MakeRenderers(tables4d, scene, plan);
@@ -118,6 +137,8 @@ void MeasureAccuracy(VariantResult& lut4d, const Tables& tables4d, VariantResult
           {view, std::move(images3d.per_pixel), std::move(images4d.per_pixel), std::move(images4d.surface)});
     if (on_view) on_view();
   }
+  MeasureShadowViews(lut4d, tables4d, scene, plan, shadow_views, on_view);
+  MeasureShadowViews(lut3d, tables3d, scene, plan, shadow_views, on_view);
 }
 
 }  // namespace aerial::bench

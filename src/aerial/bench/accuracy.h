@@ -4,7 +4,8 @@
 // perspective the reference can compute. For each variant: both paths against the CPU reference
 // (at the sampled pixels, reference_sampling.h) and the froxel path against the per-pixel path
 // (every pixel); for the 3D tables also 3D against 4D on the per-pixel path (every pixel), where
-// the difference is the tables' alone.
+// the difference is the tables' alone. In the shadow views, the froxel path against the per-pixel
+// path only, both with the sun's shadows.
 #include <functional>
 #include <vector>
 
@@ -21,9 +22,11 @@ namespace aerial::bench {
 std::vector<validation::ViewReference> SampleViews(const Tables& tables, Scene& scene, const BenchPlan& plan,
                                        const std::function<void()>& on_pixel);
 
-// Fills the accuracy of both results; figures (may be null) receives each view's images.
+// Fills the accuracy of both results, plan.views' then shadow_views' (froxel against per-pixel,
+// with the sun's shadows); figures (may be null) receives each of plan.views' images.
 void MeasureAccuracy(VariantResult& lut4d, const Tables& tables4d, VariantResult& lut3d,
                      const Tables& tables3d, Scene& scene, const BenchPlan& plan,
+                     const std::vector<std::string>& shadow_views,
                      const std::vector<validation::ViewReference>& references, std::vector<FigureImages>* figures,
                      const std::function<void()>& on_view);
 

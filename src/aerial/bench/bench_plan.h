@@ -43,9 +43,16 @@ struct BenchPlan {
   int reference_columns = 16, reference_rows = 9;
   int reference_paths = 32768;  // Monte Carlo paths per reference query (orders >= 2)
   std::vector<std::string> views;
+  // Views made to show the mountains' shadows on the ground and in the air: there the froxel path
+  // is compared with the per-pixel path, both with the sun's shadows (the CPU reference has none,
+  // so the views above are rendered without them). In every tier, or in the figure tier only.
+  std::vector<std::string> shadow_views;
+  bool shadow_views_figure_tier_only = false;
 
   // Measured frames of the per-pixel path in tier `tier` (0: not rendered at all).
   int PerPixelFrames(size_t tier) const;
+  // The shadow views measured in tier `tier`.
+  std::vector<std::string> ShadowViews(size_t tier) const;
 
   static BenchPlan Full();
   static BenchPlan Quick();

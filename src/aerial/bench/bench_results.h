@@ -15,9 +15,11 @@ struct ClassErrors {
   validation::ErrorStats sky, opaque;
 };
 
-// One variant's accuracy in one view.
+// One variant's accuracy in one view. In a shadow view (BenchPlan::shadow_views) only
+// froxel_vs_per_pixel is measured, both frames with the sun's shadows.
 struct ViewAccuracy {
   std::string view;
+  bool shadow_view = false;
   ClassErrors froxel_vs_reference, per_pixel_vs_reference, froxel_vs_per_pixel;
   // Per pixel from two table reads (AerialMode::kTableDifference, Bruneton 2017's demo).
   ClassErrors table_difference_vs_reference;
@@ -29,7 +31,7 @@ struct VariantResult {
   std::string tier;
   BenchResult precompute;  // options, table bytes, the precompute runs
   std::vector<RunResult> froxel_frames, per_pixel_frames, table_difference_frames;
-  std::vector<ViewAccuracy> accuracy;  // in the plan's view order
+  std::vector<ViewAccuracy> accuracy;  // in the plan's view order, then its shadow views
 
   LutVariant variant() const { return precompute.options.variant; }
   // Medians over the runs or frames, in ms (GPU timestamps).

@@ -24,8 +24,10 @@ int ProgressSteps(const BenchPlan& p) {
     int per_pixel = p.PerPixelFrames(t);
     frames += 4 * (p.frame_warmup + p.frames) + (per_pixel ? 2 * (p.frame_warmup + per_pixel) : 0);
   }
+  int shadow_views = 0;
+  for (int t = 0; t < tiers; ++t) shadow_views += 2 * int(p.ShadowViews(t).size());
   return tiers * 2 * (p.precompute_warmup + p.precompute_runs) + frames +
-         views * p.reference_columns * p.reference_rows + tiers * views;
+         views * p.reference_columns * p.reference_rows + tiers * views + shadow_views;
 }
 
 ReferenceSummary SummarizeReference(const std::string& view, const ViewReference& reference) {
@@ -72,7 +74,7 @@ BenchResults RunBench(const BenchPlan& plan, const Device& device, const Machine
     b.references.push_back(SummarizeReference(plan.views[v], references[v]));
   for (size_t t = 0; t < plan.tiers.size(); ++t)
     MeasureAccuracy(b.results[2 * t], *tables[2 * t].tables, b.results[2 * t + 1], *tables[2 * t + 1].tables,
-                    opaque, plan, references, t == plan.figure_tier ? &b.figures : nullptr,
+                    opaque, plan, plan.ShadowViews(t), references, t == plan.figure_tier ? &b.figures : nullptr,
                     [&] { progress.Advance("accuracy, " + plan.tiers[t].name + " tables"); });
   progress.Finish();
   b.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

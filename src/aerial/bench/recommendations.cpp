@@ -44,7 +44,9 @@ std::vector<std::string> Recommendations(const BenchResults& b) {
   all_views.insert(all_views.end(), std::begin(kLowSunViews), std::end(kLowSunViews));
   std::vector<std::string> lines;
 
-  Worst froxel = WorstOf(lut4d, all_views, FroxelVsPerPixel);
+  std::vector<const char*> frame_views = all_views;
+  for (const std::string& view : b.plan.shadow_views) frame_views.push_back(view.c_str());
+  Worst froxel = WorstOf(lut4d, frame_views, FroxelVsPerPixel);
   lines.push_back("- **Real-time frames (the viewer, an engine)**: the froxel path, " +
                   Format("%.1f", lut4d.FrameMs()) + " ms a frame here against " +
                   Format("%.1f", lut4d.TableDifferenceFrameMs()) +

@@ -161,6 +161,23 @@ void AccuracyTable(std::ostringstream& md, const BenchResults& b, const std::str
   md << "\n";
 }
 
+// The froxel path against the per-pixel path in the shadow views, where they were measured.
+void ShadowViewsTable(std::ostringstream& md, const BenchResults& b) {
+  if (b.plan.shadow_views.empty()) return;
+  md << "### Froxel path against per-pixel path, with the sun's shadows\n\n"
+     << "| tables | view | 4D sky | 4D opaque | 3D sky | 3D opaque |\n|---|---|---|---|---|---|\n";
+  for (size_t t = 0; t < b.plan.tiers.size(); ++t)
+    for (const std::string& view : b.plan.ShadowViews(t)) {
+      md << "| " << TierLabel(b.plan.tiers[t]) << " | " << view << " |";
+      for (LutVariant variant : {LutVariant::k4D, LutVariant::k3D})
+        for (const ViewAccuracy& a : b.Find(b.plan.tiers[t].name, variant).accuracy)
+          if (a.shadow_view && a.view == view)
+            md << " " << Cell(a.froxel_vs_per_pixel.sky) << " | " << Cell(a.froxel_vs_per_pixel.opaque) << " |";
+      md << "\n";
+    }
+  md << "\n";
+}
+
 void AccuracySection(std::ostringstream& md, const BenchResults& b) {
   const BenchPlan& p = b.plan;
   md << "## Accuracy\n\n### What is compared\n\n- Views: the presets";
@@ -186,7 +203,7 @@ void AccuracySection(std::ostringstream& md, const BenchResults& b) {
         "the reference too: albedo/pi (E_sun <T>_disc max(n.sun, 0) + E_sky(n)), with the sky irradiance "
         "of the tilted surface itself (its whole hemisphere: below the horizon, the air and the lit bare "
         "ground; the renderer scales the horizontal irradiance by (1 + n.up)/2) and no shadows (the "
-        "renderer has none), at the point, normal and albedo the scene has where the "
+        "reference has none, and these frames are drawn without them), at the point, normal and albedo the scene has where the "
         "renderer's depth puts the surface: a CPU ray cast's mesh hit, or the terrain's height function "
         "(its exact normal, where the renderer draws a level of detail with per-vertex lighting). Pixels "
         "that see the sun disc are left out, and opaque pixels where the scene has no surface at the "
@@ -199,7 +216,15 @@ void AccuracySection(std::ostringstream& md, const BenchResults& b) {
         "sun carry most of the error, the same for both tables and every path: it is the surface's, not "
         "the air's. The sky columns measure the atmosphere.\n"
      << "- **Froxel path against per-pixel path**: every pixel of the frame on the froxel path (froxel "
-        "volume and sky-view table) against the same tables read per pixel.\n"
+        "volume and sky-view table) against the same tables read per pixel; in the views above without "
+        "shadows, and in the views made to show the mountains' shadows on the ground and in the air"
+     << [&] {
+          std::string views;
+          for (const std::string& v : p.shadow_views) views += (views.empty() ? " (" : ", ") + v;
+          return views.empty() ? std::string() : views + ")";
+        }()
+     << " with them, on both paths: the per-pixel march shadows its steps as the froxel columns do, so "
+        "what differs there is the froxels' resolution across the shadows' edges.\n"
      << "- **Two table reads per pixel**: what a user would otherwise pick, Bruneton 2017's demo: the "
         "segment's inscatter as S(x) - T S(p) from two 4D reads, no march, the sky read as the tables hold "
         "it (no correction of the Earth's shadow); against the CPU reference as above.\n\n";
@@ -211,6 +236,7 @@ void AccuracySection(std::ostringstream& md, const BenchResults& b) {
   AccuracyTable(md, b, "per_pixel_vs_reference", true);
   md << "### Froxel path against per-pixel path\n\n";
   AccuracyTable(md, b, "froxel_vs_per_pixel", true);
+  ShadowViewsTable(md, b);
   md << "### Against the CPU reference, two table reads per pixel (Bruneton 2017)\n\n";
   AccuracyTable(md, b, "table_difference_vs_reference", true);
   md << "### Reference sampling\n\n"

@@ -73,6 +73,7 @@ std::string CsvNumber(std::optional<double> v) { return v ? CsvNumber(*v) : ""; 
 }  // namespace
 
 std::vector<std::pair<std::string, const ClassErrors*>> NamedComparisons(const ViewAccuracy& a) {
+  if (a.shadow_view) return {{"froxel_vs_per_pixel", &a.froxel_vs_per_pixel}};
   std::vector<std::pair<std::string, const ClassErrors*>> named;
   if (a.vs_4d) named.emplace_back("3d_vs_4d", &*a.vs_4d);
   named.emplace_back("froxel_vs_reference", &a.froxel_vs_reference);

@@ -21,7 +21,7 @@ std::string ResultsCsv(const BenchResults& results);
 
 // The comparisons of one view's accuracy in file order, with their names in the files
 // ("3d_vs_4d", "froxel_vs_reference", "per_pixel_vs_reference", "froxel_vs_per_pixel"); the
-// 3D-vs-4D comparison only for the 3D tables.
+// 3D-vs-4D comparison only for the 3D tables; a shadow view's froxel_vs_per_pixel alone.
 std::vector<std::pair<std::string, const ClassErrors*>> NamedComparisons(const ViewAccuracy& accuracy);
 
 }  // namespace aerial::bench
