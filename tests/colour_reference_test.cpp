@@ -62,7 +62,7 @@ const MeasuredRegion kRegions[] = {
     {ColourQuantity::kSkyIrradiance, kTwilight, 0, 18, 0.001092, 0.01797},
     {ColourQuantity::kSkyRadiance, kTwilight, 10, 19, 0.001158, 0.02859},
     {ColourQuantity::kRadianceToPoint, kTwilight, 10, 8, 0.001041, 0.00784},
-    {ColourQuantity::kSkyIrradiance, kTwilight, 10, 18, 0.000329, 0.00513},
+    {ColourQuantity::kSkyIrradiance, kTwilight, 10, 18, 0.000412, 0.01093},
 };
 
 const validation::ColourBand& Band(const std::string& name) {

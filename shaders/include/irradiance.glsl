@@ -105,7 +105,7 @@ vec3 ComputeIndirectIrradiance(sampler2D transmittance_texture, sampler2D sun_ba
 // twilight's irradiance on the ground was 3.6% high in luminance against the 48-wavelength
 // reference (1.8% so; aerial_bench_colour). Elsewhere one bilinear read (definitions.glsl,
 // "Control flow"); 50 km up the sun sets 7 degrees below the horizontal, and a read exponential
-// from the horizontal down made twilight's irradiance there 6.5% off instead of 0.2%.
+// from the horizontal down made twilight's irradiance there 6.5% off instead of 0.1% (aerial_bench_sky).
 vec3 GetIrradianceRow(sampler2D irradiance_texture, float u, float v, float r_row) {
   float columns = float(AERIAL_ATMOSPHERE.irradiance_size.x);
   vec2 blend = GetTexelBlend(u, columns);
