@@ -99,23 +99,24 @@ vec3 ComputeIndirectIrradiance(sampler2D transmittance_texture, sampler2D sun_ba
   return max(irradiance + exact - table, vec3(0.0));
 }
 
-// One row of the table (radius r_row) at mu_s's coordinate u: where both mu_s texels have the sun
-// below the row's horizon, the ground in the Earth's shadow, the irradiance falls exponentially as
-// the sun sinks and is read so between them (a chord lies above a convex curve): read linearly,
-// twilight's irradiance on the ground was 3.6% high in luminance against the 48-wavelength
-// reference (1.8% so; aerial_bench_colour). Elsewhere one bilinear read (definitions.glsl,
-// "Control flow"); 50 km up the sun sets 7 degrees below the horizontal, and a read exponential
-// from the horizontal down made twilight's irradiance there 6.5% off instead of 0.1% (aerial_bench_sky).
-vec3 GetIrradianceRow(sampler2D irradiance_texture, float u, float v, float r_row) {
+// One row of the table at mu_s's coordinate u, for a point whose horizon has the zenith cosine
+// `horizon`: where both mu_s texels have the sun below it, the ground in the Earth's shadow, the
+// irradiance falls exponentially as the sun sinks and is read so between them (a chord lies above
+// a convex curve): read linearly, twilight's irradiance on the ground was 3.6% high in luminance
+// against the 48-wavelength reference (1.8% so; aerial_bench_colour). Elsewhere one bilinear read
+// (definitions.glsl, "Control flow"). 50 km up the sun sets 7 degrees below the horizontal, and a
+// read exponential from the horizontal down made twilight's irradiance there 6.5% off instead of
+// 0.1% (aerial_bench_sky).
+vec3 GetIrradianceRow(sampler2D irradiance_texture, float u, float v, float horizon) {
   float columns = float(AERIAL_ATMOSPHERE.irradiance_size.x);
   vec2 blend = GetTexelBlend(u, columns);
-  bool exponential = blend.y != 0.0 && IsMuSTexelBelow(blend.x + 1.0, columns, GetHorizonCosine(r_row));
-  vec3 e0 = ReadTable(irradiance_texture, vec2(exponential ? (blend.x + 0.5) / columns : u, v)).rgb;
-  if (exponential) {
-    vec3 e1 = ReadTable(irradiance_texture, vec2((blend.x + 1.5) / columns, v)).rgb;
-    e0 = MixExponentially(e0, e1, blend.y);
-  }
-  return e0;
+  bool exponential = blend.y != 0.0 && IsMuSTexelBelow(blend.x + 1.0, columns, horizon);
+  vec3 e = ReadTable(irradiance_texture, vec2(exponential ? (blend.x + 0.5) / columns : u, v)).rgb;
+  // The upper texel in a loop that runs once or not at all, not behind an if, which a CPU
+  // rasterizer would run for every lane (definitions.glsl, "Control flow").
+  for (int i = 0; i < (exponential ? 1 : 0); ++i)
+    e = MixExponentially(e, ReadTable(irradiance_texture, vec2((blend.x + 1.5) / columns, v)).rgb, blend.y);
+  return e;
 }
 
 // The sky irradiance, each row read by GetIrradianceRow and exponentially in r between the two
@@ -128,11 +129,10 @@ vec3 GetIrradiance(sampler2D irradiance_texture, float r, float mu_s) {
   vec2 uv = GetIrradianceTextureUvFromRMuS(r, mu_s);
   float rows = float(AERIAL_ATMOSPHERE.irradiance_size.y);
   vec2 blend = GetTexelBlend(uv.y, rows);
-  // The rows' radii: texel k of n is unit range k / (n - 1).
-  vec2 r_rows = vec2(GetRFromUnitRange(blend.x / (rows - 1.0)), GetRFromUnitRange((blend.x + 1.0) / (rows - 1.0)));
-  vec3 e0 = GetIrradianceRow(irradiance_texture, uv.x, (blend.x + 0.5) / rows, r_rows.x);
+  float horizon = GetHorizonCosine(r);
+  vec3 e0 = GetIrradianceRow(irradiance_texture, uv.x, (blend.x + 0.5) / rows, horizon);
   if (blend.y == 0.0) return e0;
-  vec3 e1 = GetIrradianceRow(irradiance_texture, uv.x, (blend.x + 1.5) / rows, r_rows.y);
+  vec3 e1 = GetIrradianceRow(irradiance_texture, uv.x, (blend.x + 1.5) / rows, horizon);
   return MixExponentially(e0, e1, blend.y);
 }
 
