@@ -174,6 +174,20 @@ void GetSunDiscTap(int i, int taps, float mu_s, float sin_s, float t_h, out floa
   w = taps == 1 ? 1.0 : (cut ? weight[i] * sin_t * sin_t : whole_w);
 }
 
+// Adds tap i of the disc's `taps` (GetSunDiscTap) to a sum of weighted sunlight and to the sum of
+// the weights: the tap's GetPathSunlight through its own slant and then `path`.
+void AddSunDiscTap(sampler2D transmittance_texture, int i, int taps, float r, float mu_s, float sin_s,
+                   float t_h, bool cosine_weighted, vec3 path, inout PathSunlight light, inout float weights) {
+  float mu, w;
+  GetSunDiscTap(i, taps, mu_s, sin_s, t_h, mu, w);
+  PathSunlight tap = GetPathSunlight(path + GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r, mu));
+  weights += w;
+  w *= cosine_weighted ? max(mu, 0.0) : 1.0;
+  light.rayleigh += w * tap.rayleigh;
+  light.mie += w * tap.mie;
+  light.direct += w * tap.direct;
+}
+
 // The sunlight through the disc's paths to radius r, followed by a path of optical depth `path`
 // (toward the camera, or none), per unit of sunlight: the taps' GetPathSunlight, each through its
 // own slant, averaged by their weights and times the visible fraction (each also times its
@@ -181,28 +195,25 @@ void GetSunDiscTap(int i, int taps, float mu_s, float sin_s, float t_h, out floa
 // tap's slant with its own optical depth; the channels' mean optical depth over the taps, with
 // their spread about it as one factor per channel, left the radiance to a point 10 km up at
 // twilight 0.0033 off in u'v' instead of 0.0017 (aerial_bench_colour, docs/colour.md).
+// The first tap (the centre, for a sun high over the cut-off) is read before the loop over the
+// others, which a high sun never enters, so that the sunlight sum's own loop is not nested in a
+// loop wherever the sun is high: the marched per-pixel path at noon took 6-8% more time with every
+// tap in the loop (aerial_bench_render, docs/speed.md).
 PathSunlight GetSunDiscSunlight(sampler2D transmittance_texture, float r, float mu_s,
                                 float cut_off_cosine, bool cosine_weighted, vec3 path) {
+  PathSunlight light = PathSunlight(vec3(0.0), vec3(0.0), vec3(0.0));
   float x = GetSunElevationInDiscRadii(mu_s, cut_off_cosine);
+  if (x <= -1.0) return light;
   // x alpha >= mu_s for a cut-off at or below the horizontal: AERIAL_SUN_HIGH_EVERYWHERE implies it.
   bool one_tap = AERIAL_SUN_HIGH_EVERYWHERE || x * AERIAL_ATMOSPHERE.sun_angular_radius > SUN_DISC_ONE_TAP_ELEVATION;
   bool whole = x >= 1.0 && !cosine_weighted;
-  int taps = x <= -1.0 ? 0 : (one_tap ? 1 : (whole ? (x > 5.0 ? 2 : 3) : 4));
+  int taps = one_tap ? 1 : (whole ? (x > 5.0 ? 2 : 3) : 4);
   float sin_s = sqrt(max(1.0 - mu_s * mu_s, 0.0));
   float t_h = acos(clamp(-x, -1.0, 1.0));
-  PathSunlight light = PathSunlight(vec3(0.0), vec3(0.0), vec3(0.0));
   float weights = 0.0;
-  for (int i = 0; i < taps; ++i) {
-    float mu, w;
-    GetSunDiscTap(i, taps, mu_s, sin_s, t_h, mu, w);
-    PathSunlight tap = GetPathSunlight(
-        path + GetOpticalDepthToTopAtmosphereBoundary(transmittance_texture, r, mu));
-    weights += w;
-    w *= cosine_weighted ? max(mu, 0.0) : 1.0;
-    light.rayleigh += w * tap.rayleigh;
-    light.mie += w * tap.mie;
-    light.direct += w * tap.direct;
-  }
+  AddSunDiscTap(transmittance_texture, 0, taps, r, mu_s, sin_s, t_h, cosine_weighted, path, light, weights);
+  for (int i = 1; i < taps; ++i)
+    AddSunDiscTap(transmittance_texture, i, taps, r, mu_s, sin_s, t_h, cosine_weighted, path, light, weights);
   float scale = (taps == 4 ? GetSunDiscVisibleFraction(x) : 1.0) / max(weights, 1e-30);
   return PathSunlight(light.rayleigh * scale, light.mie * scale, light.direct * scale);
 }
