@@ -47,7 +47,7 @@ const char* kTwilight = "twilight (95-108)";
 //
 // The tables of this commit: MU_S 36 on the arctangent mapping, 4 orders + the series' tail, the
 // density grid's zenith cells quadratic toward the horizon above and below it, radiance to a point
-// marched with the multiple density table R32 MU56 MU_S36 NU9, 9 nu slices in 16-bit floats, the
+// marched with the multiple density table R32 MU64 MU_S36 NU9, 9 nu slices in 16-bit floats, the
 // r axis warped by R_WARP 0.5 (docs/accuracy.md lists every choice behind these numbers). The
 // stored reference: 65,536 paths per sample (up to 64 times more where noisy, and for every
 // irradiance above the floor), in the sun's vertical plane and across it (azimuth 90).

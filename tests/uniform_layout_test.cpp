@@ -72,7 +72,7 @@ std::map<std::string, long> CppOffsets() {
   AERIAL_MEMBER(AtmosphereBlock, AtmosphereUniforms, sun_angular_radius);
   AERIAL_MEMBER(AtmosphereBlock, AtmosphereUniforms, mie_phase_g);
   AERIAL_MEMBER(AtmosphereBlock, AtmosphereUniforms, mu_s_min);
-  AERIAL_MEMBER(AtmosphereBlock, AtmosphereUniforms, pad0);
+  AERIAL_MEMBER(AtmosphereBlock, AtmosphereUniforms, multiple_density_scale);
   AERIAL_MEMBER(AtmosphereBlock, AtmosphereUniforms, pad1);
   AERIAL_MEMBER(AtmosphereBlock, AtmosphereUniforms, pad2);
   AERIAL_MEMBER(AtmosphereBlock, AtmosphereUniforms, transmittance_size);

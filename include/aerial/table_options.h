@@ -44,11 +44,12 @@ struct TableResolution {
   // The scattering density of orders >= 2 (J_ms), which render-time marches integrate along a
   // segment instead of subtracting two table values (sky_lookup.glsl, GetSkyInscatterToPoint).
   // It is a convolution of the light field with the phase functions, smooth in r and mu, so a
-  // coarse grid holds it there. In mu_s, nu and r it takes the density tables' own texels:
-  // resampled to fewer, the radiance to a point with a low sun leaves its target
-  // (docs/accuracy.md, "J_ms on the density tables' mu_s and nu texels", "... r texels").
+  // coarse grid holds it there. It takes the density tables' own texels on every axis: resampled
+  // to fewer, the radiance to a point with a low sun leaves its target (docs/accuracy.md, "J_ms
+  // on the density tables' mu_s and nu texels", "... r texels"; 56 mu texels left the sky's
+  // colour there 0.0015 off in u'v' instead of 0.0012, docs/colour.md).
   int multiple_density_r = 32;
-  int multiple_density_mu = 56;  // even, split at the horizon like the scattering mu axis
+  int multiple_density_mu = 64;  // even, split at the horizon like the scattering mu axis
   int multiple_density_mu_s = 36;
   int multiple_density_nu = 9;   // 1 in the 3D variant
 };

@@ -99,7 +99,8 @@ class Tables {
   SampledImage mie() const;
   // 3D variant: multiple scattering without phase (one texel in 4D, where it is in rayleigh()).
   SampledImage multiple() const;
-  // The scattering density of orders >= 2 (J_ms), for marches along a segment.
+  // The scattering density of orders >= 2 (J_ms), for marches along a segment, stored times
+  // kMultipleDensityScale (shader_abi/atmosphere_block.h), in the tables' precision.
   SampledImage multiple_density() const;
 
   struct Impl;  // aerial's side (src/aerial/api/impl.h)

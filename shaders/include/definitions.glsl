@@ -66,7 +66,7 @@ struct AtmosphereParameters {
   float sun_angular_radius;
   float mie_phase_g;
   float mu_s_min;
-  float pad0;
+  float multiple_density_scale;  // J_ms is stored times this (GetMultipleScatteringDensity)
   float pad1;
   float pad2;
   ivec4 transmittance_size;     // x: mu, y: r.

@@ -274,13 +274,14 @@ vec3 GetScatteringExponentialInR(sampler3D scattering_texture, ivec4 size, float
 }
 
 // The render-time read of the multiple density table J_ms (the view zenith mu axis, the azimuth
-// axis, exponential in r: the density follows the air's density).
+// axis, exponential in r: the density follows the air's density), which holds it scaled.
 vec3 GetMultipleScatteringDensity(sampler3D multiple_density_texture, float r, float mu,
                                   float mu_s, float nu, bool ray_r_mu_intersects_ground) {
   ivec4 size = AERIAL_ATMOSPHERE.multiple_density_size;
   vec4 uvwz = GetDensityTextureUvwz(size, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
   return GetScatteringBlendedExponentialInR(multiple_density_texture, size, true,
-                                            GetNominalNuBlend(size, uvwz), uvwz);
+                                            GetNominalNuBlend(size, uvwz), uvwz) /
+         AERIAL_ATMOSPHERE.multiple_density_scale;
 }
 
 // Radiance of scattering order `order` arriving along (r, mu) with the sun at (mu_s, nu): order 1

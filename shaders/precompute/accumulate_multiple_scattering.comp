@@ -9,8 +9,9 @@
 //    "ComputeMultipleScatteringTexture": multiple scattering is nearly isotropic, and this keeps
 //    the Rayleigh/Mie split without a third table). 3D: a table has no nu to divide by, so the
 //    orders are summed in a table of their own (see sky_lookup.glsl).
-//  - The scattering density J_n, summed as it is into the multiple density table J_ms, which
-//    render-time marches integrate along a segment (sky_lookup.glsl).
+//  - The scattering density J_n, summed into the multiple density table J_ms times its scale
+//    (multiple_density_scale, for half floats), which render-time marches integrate along a
+//    segment (sky_lookup.glsl).
 //
 // The division uses the texel's nominal nu (its place on the nu axis), not the nu it was clamped
 // to. Near mu_s = 1 or mu = +-1 the allowed nu range collapses and every texel of a slice is
@@ -28,7 +29,7 @@ layout(push_constant) uniform Step {
   ivec4 target_size;  // the accumulator's axes: r, mu, mu_s, nu
   int close_series;
   int divide_by_rayleigh_phase;
-  int mu_axis;  // of the source and the accumulator: MU_AXIS_VIEW_ZENITH for the densities
+  int mu_axis;  // of the source and the accumulator: MU_AXIS_VIEW_ZENITH for the densities (J_ms)
 } pass;
 
 // A quantity of order n at (r, mu, mu_s, nu): the densities blended in mu_s like the render-time
@@ -55,6 +56,7 @@ void main() {
     value = SumSeriesFromLastOrder(
         value, ReadOrder(previous_order_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground));
   }
+  if (pass.mu_axis == MU_AXIS_VIEW_ZENITH) value *= AERIAL_ATMOSPHERE.multiple_density_scale;
   if (pass.divide_by_rayleigh_phase != 0)
     value /= RayleighPhaseFunction(GetScatteringTexelNominalNu(pass.target_size, texel));
   imageStore(accumulator, texel, imageLoad(accumulator, texel) + vec4(value, 0.0));

@@ -13,6 +13,9 @@ struct alignas(16) GpuDensityLayer {
   float width, exp_term, exp_scale, linear_term, constant_term, pad0, pad1, pad2;
 };
 
+// The factor J_ms is stored times (AtmosphereUniforms::multiple_density_scale), 2^20.
+inline constexpr float kMultipleDensityScale = 1048576.0f;
+
 // The most wavelengths a spectral precompute runs at (PrecomputeOptions::spectral_wavelengths).
 inline constexpr int kMaxSpectralSunlightTerms = 48;
 
@@ -27,7 +30,9 @@ struct alignas(16) AtmosphereUniforms {
   std::array<GpuDensityLayer, 2> mie_density;
   std::array<GpuDensityLayer, 2> absorption_density;
   float bottom_radius, top_radius, sun_angular_radius, mie_phase_g;
-  float mu_s_min, pad0, pad1, pad2;
+  // J_ms is stored times this (Tables::multiple_density): a power of two that puts its values,
+  // 1e-9 to 1e-6 per metre, in half floats' normal range (from 6.1e-5).
+  float mu_s_min, multiple_density_scale, pad1, pad2;
   std::array<int, 4> transmittance_size;
   std::array<int, 4> irradiance_size;
   std::array<int, 4> scattering_size;     // r, mu, mu_s, nu

@@ -41,7 +41,7 @@ void TableOptions::AddTo(CLI::App& command) {
                      "Scattering table R,MU,MU_S,NU (default 32,128,36,9; NU must be 1 with --lut 3d)")
       ->delimiter(',')->expected(4)->default_str("");
   command.add_option("--multiple-density-size", multiple_density_size,
-                     "Multiple scattering density table R,MU,MU_S,NU (default 32,56,36,9; NU must be 1 "
+                     "Multiple scattering density table R,MU,MU_S,NU (default 32,64,36,9; NU must be 1 "
                      "with --lut 3d)")
       ->delimiter(',')->expected(4)->default_str("");
   AddPathOption(command, "--cache-dir", cache_dir, "Table cache directory (default ~/.cache/aerial)");

@@ -29,26 +29,27 @@ TEST(MemoryUses, RenderScaleShrinksTheTargetsNotTheOutput) {
 
 // What the tables take is what AtmosphereTables allocates: 2 scattering tables in 4D (Rayleigh in
 // the tables' precision, half floats by default, and Mie in float32), 3 in 3D (float32 by
-// default), and the multiple density table (float32).
+// default), and the multiple density table (in the tables' precision).
 TEST(MemoryUses, TableMemoryCountsEveryTable) {
   TableBytes t4 = TableMemory(PrecomputeOptions::Default(LutVariant::k4D));
   EXPECT_EQ(t4.transmittance, 256u * 64 * 16);
   EXPECT_EQ(t4.irradiance, 64u * 32 * 16);
   EXPECT_EQ(t4.scattering, 9u * 36 * 128 * 32 * (8 + 16));
-  EXPECT_EQ(t4.multiple_density, 9u * 36 * 56 * 32 * 16);
+  EXPECT_EQ(t4.multiple_density, 9u * 36 * 64 * 32 * 8);
   PrecomputeOptions float32 = PrecomputeOptions::Default(LutVariant::k4D);
   float32.precision = TablePrecision::kFloat32;
   EXPECT_EQ(TableMemory(float32).scattering, 2u * 9 * 36 * 128 * 32 * 16);
   TableBytes t3 = TableMemory(PrecomputeOptions::Default(LutVariant::k3D));
   EXPECT_EQ(t3.scattering, 3u * 36 * 128 * 32 * 16);
-  EXPECT_EQ(t3.multiple_density, 36u * 56 * 32 * 16);
+  EXPECT_EQ(t3.multiple_density, 36u * 64 * 32 * 16);
 }
 
 // The memory budget (docs/design.md): the default 4D tables take at most 1.25 times the tables at
 // Bruneton 2017's scattering resolution (transmittance 256x64, irradiance 64x32, scattering R32
-// MU128 MU_S32 NU8). They take 1.22 times: 1.09 with the nine nu slices in half floats
-// (docs/accuracy.md, "Nine nu slices in half floats"; 11 would take 1.33), and the multiple density table's
-// 32 r texels, the density tables' own, the rest (docs/accuracy.md, "J_ms on the density tables' r texels").
+// MU128 MU_S32 NU8). They take 1.11 times: 1.09 with the nine nu slices in half floats
+// (docs/accuracy.md, "Nine nu slices in half floats"; 11 would take 1.33), and the multiple density
+// table in half floats at the density tables' own texels the rest (docs/accuracy.md, "J_ms on the
+// density tables' r texels").
 TEST(MemoryUses, DefaultTablesWithinTheLowSunMemoryBudget) {
   const uint64_t before = 256u * 64 * 16 + 64u * 32 * 16 + 2u * 8 * 32 * 128 * 32 * 16;
   uint64_t now = TableMemory(PrecomputeOptions::Default(LutVariant::k4D)).total();

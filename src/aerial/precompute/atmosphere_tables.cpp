@@ -35,15 +35,16 @@ uint64_t Texels(const ::vk::Extent3D& e) { return uint64_t(e.width) * e.height *
 
 TableBytes TableMemory(const PrecomputeOptions& options) {
   const TableResolution& r = options.resolution;
-  // Rayleigh in the tables' precision, Mie in float32; the 3D variant adds its multiple scattering
-  // table (1 texel in 4D, not counted).
+  // Rayleigh and J_ms in the tables' precision, Mie in float32; the 3D variant adds its multiple
+  // scattering table (1 texel in 4D, not counted).
   int tables_in_precision = options.variant == LutVariant::k3D ? 2 : 1;
   return {.transmittance = uint64_t(r.transmittance_mu) * r.transmittance_r * 16,
           .irradiance = uint64_t(r.irradiance_mu_s) * r.irradiance_r * 16,
           .scattering = Texels(ScatteringExtent(r)) *
                         (tables_in_precision * TexelBytes(ToTexelFormat(ScatteringFormat(options.precision))) +
                          TexelBytes(TexelFormat::kRgba32f)),
-          .multiple_density = Texels(MultipleDensityExtent(r)) * TexelBytes(TexelFormat::kRgba32f)};
+          .multiple_density =
+              Texels(MultipleDensityExtent(r)) * TexelBytes(ToTexelFormat(ScatteringFormat(options.precision)))};
 }
 
 AtmosphereTables::AtmosphereTables(const vk::Context& context,
@@ -72,10 +73,11 @@ AtmosphereTables::AtmosphereTables(const vk::Context& context,
                                         : ::vk::Extent3D{1, 1, 1},
                           .volume = true,
                           .format = ScatteringFormat(options.precision)}),
-      // J_ms stays float32 too: its values (radiance per metre, down to 1e-9 at twilight) are
-      // below half floats' normal range, and it is a tenth of the scattering tables' size.
+      // J_ms (radiance per metre, 1e-9 at twilight to 1e-6) is stored times
+      // kMultipleDensityScale, which puts it in half floats' normal range.
       multiple_density_(context, {.extent = MultipleDensityExtent(options.resolution),
-                                  .volume = true}) {
+                                  .volume = true,
+                                  .format = ScatteringFormat(options.precision)}) {
   uniform_buffer_.Write(std::as_bytes(std::span(&uniforms_, 1)));
   context_.Submit([&](const auto& cmd) {
     for (const vk::Image* image :

@@ -62,6 +62,7 @@ AtmosphereUniforms MakeAtmosphereUniforms(const AtmosphereParameters& atmosphere
   u.sun_angular_radius = float(a.sun_angular_radius_rad);
   u.mie_phase_g = float(a.mie_phase_g);
   u.mu_s_min = float(a.mu_s_min);
+  u.multiple_density_scale = kMultipleDensityScale;
   u.transmittance_size = {r.transmittance_mu, r.transmittance_r, 0, 0};
   u.irradiance_size = {r.irradiance_mu_s, r.irradiance_r, 0, 0};
   u.scattering_size = {r.scattering_r, r.scattering_mu, r.scattering_mu_s, r.scattering_nu};

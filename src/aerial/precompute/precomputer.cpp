@@ -127,6 +127,7 @@ struct Scratch {
     if (tables.rayleigh().format() != ::vk::Format::eR32G32B32A32Sfloat) {
       rayleigh_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.rayleigh().extent()});
       multiple_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.multiple().extent(), .volume = true});
+      multiple_density_f32.emplace(c, vk::ImageCreateInfo{.extent = tables.multiple_density().extent(), .volume = true});
     }
   }
 
@@ -136,7 +137,7 @@ struct Scratch {
   std::array<vk::Image, 2> delta_multiple;
   std::array<vk::Image, 2> density;  // J_n, for two consecutive orders (index: order % 2)
   vk::Buffer incident_radiance, directions;
-  std::optional<vk::Image> rayleigh_f32, multiple_f32;
+  std::optional<vk::Image> rayleigh_f32, multiple_f32, multiple_density_f32;
 };
 
 ::vk::Extent3D Extent2D(const vk::Image& image) { return image.extent(); }
@@ -175,13 +176,17 @@ TableBytes PrecomputeScratchMemory(const PrecomputeOptions& options) {
   uint64_t scattering = scattering_texels * 16 +                                          // delta_rayleigh
                         4 * uint64_t(density.width) * density.height * density.depth * 16 +  // delta_multiple, density
                         IncidentBytes(options) + DirectionBytes(options);
-  // Float32 copies of the half-precision tables: Rayleigh, and the 3D variant's multiple one.
-  if (options.precision == TablePrecision::kFloat16)
+  // Float32 copies of the half-precision tables: Rayleigh, the 3D variant's multiple one, J_ms.
+  uint64_t multiple_density = 0;
+  if (options.precision == TablePrecision::kFloat16) {
     scattering += scattering_texels * 16 * (options.variant == LutVariant::k3D ? 2 : 1);
+    multiple_density = uint64_t(r.multiple_density_r) * r.multiple_density_mu * r.multiple_density_mu_s *
+                       r.multiple_density_nu * 16;
+  }
   const ::vk::Extent3D sun_band = SunBandExtent(options);
   return {.transmittance = uint64_t(sun_band.width) * sun_band.height * 16,
           .irradiance = 2 * uint64_t(r.irradiance_mu_s) * r.irradiance_r * 16,
-          .scattering = scattering, .multiple_density = 0};
+          .scattering = scattering, .multiple_density = multiple_density};
 }
 
 ::vk::Extent3D SunBandExtent(const PrecomputeOptions& options) {
@@ -232,7 +237,8 @@ std::vector<vk::PassTime> PrecomputeRadiance(AtmosphereTables& tables, Progress*
   const vk::Image& rayleigh = scratch.rayleigh_f32 ? *scratch.rayleigh_f32 : tables.rayleigh();
   const vk::Image& mie = tables.mie();  // float32 in every precision
   const vk::Image& multiple = scratch.multiple_f32 ? *scratch.multiple_f32 : tables.multiple();
-  const vk::Image& multiple_density = tables.multiple_density();  // float32 in every precision
+  const vk::Image& multiple_density =
+      scratch.multiple_density_f32 ? *scratch.multiple_density_f32 : tables.multiple_density();
   // 4D folds each order into the Rayleigh table; 3D keeps them in their own table.
   const vk::Image& multiple_accumulator =
       tables.options().variant == LutVariant::k4D ? rayleigh : multiple;
@@ -264,6 +270,7 @@ std::vector<vk::PassTime> PrecomputeRadiance(AtmosphereTables& tables, Progress*
       scratch.rayleigh_f32->InitializeLayout(cmd);
       scratch.multiple_f32->InitializeLayout(cmd);
       scratch.multiple_f32->Clear(cmd);
+      scratch.multiple_density_f32->InitializeLayout(cmd);
     }
     multiple_density.Clear(cmd);  // accumulates orders >= 2
     // The irradiance table accumulates indirect orders only; it starts at zero.
@@ -384,11 +391,12 @@ std::vector<vk::PassTime> PrecomputeRadiance(AtmosphereTables& tables, Progress*
   // Step 6, for half floats: each float32 texel rounded to the nearest half, then converted.
   if (scratch.rayleigh_f32) {
     run("half floats", [&](const auto& cmd) {
-      for (const vk::Image* table : {&*scratch.rayleigh_f32, &*scratch.multiple_f32})
+      for (const vk::Image* table : {&*scratch.rayleigh_f32, &*scratch.multiple_f32, &*scratch.multiple_density_f32})
         pipelines.round_to_half.Dispatch(cmd, {vk::StorageImageSlot{table}}, table->extent(), {8, 8, 1});
       vk::FullBarrier(cmd);
       BlitConvert(cmd, *scratch.rayleigh_f32, tables.rayleigh());
       BlitConvert(cmd, *scratch.multiple_f32, tables.multiple());
+      BlitConvert(cmd, *scratch.multiple_density_f32, tables.multiple_density());
     });
   }
   return times;

@@ -5,6 +5,6 @@
 
 namespace aerial {
 
-inline constexpr int kTableLayout = 20;
+inline constexpr int kTableLayout = 21;
 
 }  // namespace aerial
