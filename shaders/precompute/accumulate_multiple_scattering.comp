@@ -29,7 +29,8 @@ layout(push_constant) uniform Step {
   ivec4 target_size;  // the accumulator's axes: r, mu, mu_s, nu
   int close_series;
   int divide_by_rayleigh_phase;
-  int mu_axis;  // of the source and the accumulator: MU_AXIS_VIEW_ZENITH for the densities (J_ms)
+  int mu_axis;  // of the source and the accumulator: MU_AXIS_VIEW_ZENITH for the densities
+  float scale;  // of what is added (J_ms's multiple_density_scale; 1 for the radiance)
 } pass;
 
 // A quantity of order n at (r, mu, mu_s, nu): the densities blended in mu_s like the render-time
@@ -56,8 +57,7 @@ void main() {
     value = SumSeriesFromLastOrder(
         value, ReadOrder(previous_order_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground));
   }
-  if (pass.mu_axis == MU_AXIS_VIEW_ZENITH) value *= AERIAL_ATMOSPHERE.multiple_density_scale;
   if (pass.divide_by_rayleigh_phase != 0)
     value /= RayleighPhaseFunction(GetScatteringTexelNominalNu(pass.target_size, texel));
-  imageStore(accumulator, texel, imageLoad(accumulator, texel) + vec4(value, 0.0));
+  imageStore(accumulator, texel, imageLoad(accumulator, texel) + vec4(value * pass.scale, 0.0));
 }

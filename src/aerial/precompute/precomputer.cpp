@@ -29,6 +29,7 @@ struct AccumulateStep {
   int close_series;
   int divide_by_rayleigh_phase;
   int mu_axis;  // of the source and the target (mappings.glsl)
+  float scale;  // of what is added: J_ms's kMultipleDensityScale, 1 for the radiance
 };
 // mappings.glsl's MU_AXIS_*: radiance tables map mu by the ray's length, densities by the angle.
 constexpr int kMuAxisRayLength = 0;
@@ -180,8 +181,9 @@ TableBytes PrecomputeScratchMemory(const PrecomputeOptions& options) {
   uint64_t multiple_density = 0;
   if (options.precision == TablePrecision::kFloat16) {
     scattering += scattering_texels * 16 * (options.variant == LutVariant::k3D ? 2 : 1);
-    multiple_density = uint64_t(r.multiple_density_r) * r.multiple_density_mu * r.multiple_density_mu_s *
-                       r.multiple_density_nu * 16;
+    PrecomputeOptions float32 = options;
+    float32.precision = TablePrecision::kFloat32;
+    multiple_density = TableMemory(float32).multiple_density;
   }
   const ::vk::Extent3D sun_band = SunBandExtent(options);
   return {.transmittance = uint64_t(sun_band.width) * sun_band.height * 16,
@@ -365,7 +367,8 @@ std::vector<vk::PassTime> PrecomputeRadiance(AtmosphereTables& tables, Progress*
         .target_size = {res.scattering_r, res.scattering_mu, res.scattering_mu_s, res.scattering_nu},
         .close_series = last,
         .divide_by_rayleigh_phase = tables.options().variant == LutVariant::k4D,
-        .mu_axis = kMuAxisRayLength};
+        .mu_axis = kMuAxisRayLength,
+        .scale = 1.0f};
     run("accumulate" + suffix, [&](const auto& cmd) {
       pipelines.accumulate.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, tables.Sampled(scratch.delta_multiple[order % 2]),
                                           tables.Sampled(scratch.delta_multiple[(order - 1) % 2]),
@@ -377,7 +380,8 @@ std::vector<vk::PassTime> PrecomputeRadiance(AtmosphereTables& tables, Progress*
                         res.multiple_density_nu},
         .close_series = last,
         .divide_by_rayleigh_phase = 0,
-        .mu_axis = kMuAxisViewZenith};
+        .mu_axis = kMuAxisViewZenith,
+        .scale = tables.uniforms().multiple_density_scale};
     run("accumulate density" + suffix, [&](const auto& cmd) {
       pipelines.accumulate.Dispatch(cmd, {vk::UniformBufferSlot{&uniforms}, tables.Sampled(scratch.density[order % 2]),
                                           tables.Sampled(scratch.density[(order - 1) % 2]),
