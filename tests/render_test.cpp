@@ -73,8 +73,8 @@ TEST_F(Render, FroxelMatchesPerPixelBeyondOneKilometer) { EXPECT_LT(FarOpaqueFro
 // Shadows on, where the mountains shadow the air and the ground (evening, sunrise): the marched
 // per-pixel path shadows its steps as the froxel columns do (shadowed_march.glsl). What is left
 // between them is the froxels' resolution across a shadow's edge, which falls as the columns
-// narrow: at evening 4.1% at 32x32x32 (sunrise 4.4%), 1.03% at 64x64x32, 0.83% at 128x128x32
-// (sunrise 1.13%), 0.44% at 128x128x128. With its air unshadowed the per-pixel path is 31% off
+// narrow: at evening 4.4% at 32x32x32 (sunrise 4.4%), 1.03% at 64x64x32, 0.85% at 128x128x32
+// (sunrise 1.31%), 0.44% at 128x128x128. With its air unshadowed the per-pixel path is 31% off
 // at evening at 32x32x32 and 30% at 128x128x32, 17% at sunrise: the bounds tell it.
 TEST_F(Render, FroxelMatchesPerPixelWithShadows) {
   EXPECT_LT(FarOpaqueFroxelVsPerPixel("evening", true), 0.05);

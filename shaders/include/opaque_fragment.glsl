@@ -6,8 +6,9 @@
 //
 // The froxel volume is read per vertex and interpolated on triangles thin in depth
 // (kFroxelsPerVertex, opaque.vert), per pixel at the fragment's screen position and distance on
-// others, or after the pass, once per pixel in a full-screen pass (kFroxelsInFullScreenPass,
-// froxel_composite.frag): the fragment then writes its surface radiance and distance instead.
+// others, or after the pass, once per pixel in a full-screen pass. That pass
+// (kAerialPerspectiveInFullScreenPass, aerial_composite.frag) is also where the per-pixel modes
+// compute the segment by default: the fragment then writes its surface radiance and distance.
 //
 // The sun's visibility comes from one of three places:
 //  - the shadow map (shadow.glsl), which is 1 everywhere with shadows off;
@@ -31,7 +32,7 @@ layout(constant_id = 5) const bool kFroxelsPerVertex = false;
 // volume's (a constant segment instead) and the sun visibility's (1 instead). 0 in every frame.
 layout(constant_id = 6) const int kReadsLeftOut = 0;
 const int kLeaveOutFroxelReads = 1, kLeaveOutSunVisibility = 2;
-layout(constant_id = 8) const bool kFroxelsInFullScreenPass = false;
+layout(constant_id = 8) const bool kAerialPerspectiveInFullScreenPass = false;
 layout(set = 0, binding = 5) uniform sampler3D rayleigh_froxels;
 layout(set = 0, binding = 6) uniform sampler3D mie_froxels;
 layout(set = 0, binding = 7) uniform sampler3D transmittance_froxels;
@@ -63,7 +64,7 @@ Inscatter GetFragmentSegment(vec3 ray, float r, float mu, float mu_s, float nu, 
 }
 
 // The fragment's radiance at the camera, its surface's sun part times sun_visibility; with the
-// froxels read in a full-screen pass, the surface's radiance and its distance from the camera.
+// aerial perspective applied in a full-screen pass, the surface's radiance and its distance.
 vec4 GetFragmentRadiance(float sun_visibility) {
   float distance = length(relative_position);
   vec3 ray = relative_position / distance;
@@ -72,7 +73,7 @@ vec4 GetFragmentRadiance(float sun_visibility) {
   float detail = GroundAlbedoDetailAt(relative_position, ground_detail);
   vec3 surface_radiance = ShadeLambertian(LambertianRadiance(detail * sun_radiance, detail * sky_radiance),
                                           normalize(surface_normal), sun_visibility);
-  if (kFroxelsInFullScreenPass) return vec4(surface_radiance, distance);
+  if (kAerialPerspectiveInFullScreenPass) return vec4(surface_radiance, distance);
   return vec4(ApplyAerialPerspective(surface_radiance, GetFragmentSegment(ray, r, mu, mu_s, nu, distance), nu), 1.0);
 }
 

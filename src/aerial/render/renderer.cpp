@@ -83,7 +83,7 @@ vk::ComputePipeline SkyViewCorrectionPipeline(const vk::Context& context, bool s
 // shadows (shadow.glsl), 2 the sun's part of the lighting in surface.frag (SurfaceLight), 3 the
 // sun visibility read from the cache, 4 the variant for a high sun, 5 the froxels read per vertex,
 // 6 the reads a benchmark leaves out (opaque_fragment.glsl), 7 the ground's detail (ground_detail.glsl),
-// 8 the froxels read in a full-screen pass after the opaque pass (opaque_fragment.glsl).
+// 8 the aerial perspective applied in a full-screen pass after the opaque pass (opaque_fragment.glsl).
 struct MeshVariant {
   SurfaceLight light = SurfaceLight::kSunAndSky;
   SunVisibilitySource source = SunVisibilitySource::kLookUp;
@@ -91,16 +91,12 @@ struct MeshVariant {
   bool froxels_per_vertex = false;
 };
 
-bool FroxelsInFullScreenPass(const RendererOptions& options) {
-  return options.mode == AerialMode::kFroxel && options.surface_froxel_reads == SurfaceFroxelReads::kFullScreenPass;
-}
-
 std::vector<int32_t> MeshConstants(const RendererOptions& options, const MeshVariant& variant = {}) {
   const int32_t left_out = (options.left_out_reads.froxels ? 1 : 0) | (options.left_out_reads.sun_visibility ? 2 : 0);
   return {PerPixel(options.mode), options.shadows ? 1 : 0, variant.light == SurfaceLight::kSunAndSky ? 1 : 0,
           variant.source == SunVisibilitySource::kCache ? 1 : 0, variant.sun_high ? 1 : 0,
           variant.froxels_per_vertex ? 1 : 0, left_out, options.ground_detail ? 1 : 0,
-          FroxelsInFullScreenPass(options) ? 1 : 0};
+          AerialPerspectiveInFullScreenPass(options) ? 1 : 0};
 }
 
 vk::GraphicsPipelineCreateInfo MeshPipeline(const std::string& vertex, const std::string& fragment,
@@ -136,23 +132,22 @@ vk::GraphicsPipelineCreateInfo SkyPipeline(AerialMode mode, bool sun_high) {
           .specialization = {PerPixel(mode), 0, 0, 0, sun_high ? 1 : 0}};
 }
 
-// The froxels' full-screen pass (froxel_composite.frag): a triangle over the screen at depth 0,
-// drawn where the opaque pass left a depth nearer than that (reversed Z), reading the surfaces'
-// radiance.
-std::optional<vk::GraphicsPipeline> FroxelCompositePipeline(const vk::Context& context, const RendererOptions& o) {
-  if (!FroxelsInFullScreenPass(o)) return std::nullopt;
+// The aerial perspective's full-screen pass (aerial_composite.frag): a triangle over the screen at
+// depth 0, drawn where the opaque pass left a depth nearer than that (reversed Z), reading the
+// surfaces' radiance (binding 14) besides what the mesh passes read. Its constants are the mesh
+// passes' that it shares: 0 the aerial mode, 1 shadows (the marched path's sun visibility) and 4
+// the variant for a high sun.
+vk::GraphicsPipeline CompositePipeline(const vk::Context& context, const RendererOptions& o, bool sun_high) {
+  vk::SlotLayout slots = kMeshSlots;
+  slots.push_back({"surface_radiance", kSampled});
   return vk::GraphicsPipeline(context, {.vertex_shader = "frame/fullscreen.vert",
-                                        .fragment_shader = "frame/froxel_composite.frag",
-                                        .slots = {{"AtmosphereBlock", kUniform},
-                                                  {"FrameBlock", kUniform},
-                                                  {"rayleigh_froxels", kSampled},
-                                                  {"mie_froxels", kSampled},
-                                                  {"transmittance_froxels", kSampled},
-                                                  {"surface_radiance", kSampled}},
+                                        .fragment_shader = "frame/aerial_composite.frag",
+                                        .slots = std::move(slots),
                                         .color_formats = {vk::kRgba32f},
                                         .depth_format = vk::kDepth32f,
                                         .depth_write = false,
-                                        .depth_compare = vk::kDepthFarther});
+                                        .depth_compare = vk::kDepthFarther,
+                                        .specialization = {PerPixel(o.mode), o.shadows ? 1 : 0, 0, 0, sun_high ? 1 : 0}});
 }
 
 // Froxel mode: the sun's disc over the sky, a triangle around it (sun_disc.vert) drawn where the
@@ -193,7 +188,7 @@ vk::ImageCreateInfo SunVisibilityTarget(const RenderOptions& o) {
 }
 
 vk::ImageCreateInfo SurfaceRadianceTarget(const RendererOptions& o) {
-  return FroxelsInFullScreenPass(o) ? Target(o, vk::kRgba32f) : vk::RenderTargetInfo(1, 1, vk::kRgba32f);
+  return AerialPerspectiveInFullScreenPass(o) ? Target(o, vk::kRgba32f) : vk::RenderTargetInfo(1, 1, vk::kRgba32f);
 }
 
 vk::GraphicsPipeline OpaquePipeline(const vk::Context& context, const RendererOptions& o, MeshVariant variant) {
@@ -224,8 +219,9 @@ MeshPipelines MakeMeshPipelines(const vk::Context& context, const RendererOption
       .transparent = vk::GraphicsPipeline(context, MeshPipeline("frame/transparent.vert", "frame/transparent.frag",
                                                                 true, MeshConstants(o, {.sun_high = sun_high})))};
   if (o.mode == AerialMode::kFroxel && o.surface_froxel_reads != SurfaceFroxelReads::kPerPixel &&
-      !FroxelsInFullScreenPass(o))
+      !AerialPerspectiveInFullScreenPass(o))
     pipelines.per_vertex = MakeOpaquePipelines(context, o, {.sun_high = sun_high, .froxels_per_vertex = true});
+  if (AerialPerspectiveInFullScreenPass(o)) pipelines.composite = CompositePipeline(context, o, sun_high);
   return pipelines;
 }
 
@@ -281,8 +277,11 @@ FrameMemory EstimateFrameMemory(const RenderOptions& o) {
   const uint64_t sky_view = (3 * uint64_t(kSkyViewSize[0]) * kSkyViewSize[1] +
                              2 * uint64_t(kSkyViewLatticeSize[0]) * kSkyViewLatticeSize[1]) * 16;
   const uint64_t froxels = uint64_t(o.froxels.width) * o.froxels.height * o.froxels.depth;
+  // The per-pixel modes' opaque pass writes its surfaces' radiance (rgba32f) for the full-screen
+  // pass that applies their aerial perspective.
+  const uint64_t surface_radiance = o.mode == AerialMode::kFroxel ? 0 : rendered * 16;
   return {
-      .targets = rendered * (16 + 4) + sky_view,  // rgba32f radiance, d32 depth
+      .targets = rendered * (16 + 4) + surface_radiance + sky_view,  // rgba32f radiance, d32 depth
       // ReadImageFloats holds two copies of the rendered pixels at once (16 bytes each); the
       // upscaled image and the encoded file at most 16 bytes per output pixel each.
       .readback = rendered * 32 + output * 32,
@@ -319,7 +318,6 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       output_(tables.context(), Target(options, vk::kRgba32f)),
       sun_visibility_(tables.context(), SunVisibilityTarget(options)),
       surface_radiance_(tables.context(), SurfaceRadianceTarget(options)),
-      froxel_composite_(FroxelCompositePipeline(tables.context(), options)),
       sky_rayleigh_(tables.context(), SkyViewImage()),
       sky_mie_(tables.context(), SkyViewImage()),
       sky_background_(tables.context(), SkyViewImage()),
@@ -656,15 +654,14 @@ RecordedDraws Renderer::DrawOpaque(const vk::CommandBuffer& cmd, const MeshPipel
   return recorded;
 }
 
-// With the froxels read in a full-screen pass: that pass, where the opaque pass drew, after it and
-// inside the frame's Rendering scope of the radiance.
-RecordedDraws Renderer::DrawFroxelComposite(const vk::CommandBuffer& cmd, uint32_t slot) const {
+// With the aerial perspective applied in a full-screen pass: that pass, where the opaque pass drew,
+// after it and inside the frame's Rendering scope of the radiance.
+RecordedDraws Renderer::DrawComposite(const vk::CommandBuffer& cmd, uint32_t slot, const vk::GraphicsPipeline& composite,
+                                      std::vector<vk::Slot> mesh_slots) const {
   vk::GpuTimer& timer = *timers_[slot];
-  timer.Begin(cmd, "froxel composite");
-  froxel_composite_->Bind(cmd, {vk::UniformBufferSlot{&tables_.uniform_buffer()},
-                                vk::UniformBufferSlot{&frame_buffers_[slot]}, tables_.Sampled(froxels_.rayleigh()),
-                                tables_.Sampled(froxels_.mie()), tables_.Sampled(froxels_.transmittance()),
-                                tables_.Sampled(surface_radiance_)});
+  timer.Begin(cmd, "aerial composite");
+  mesh_slots.push_back(tables_.Sampled(surface_radiance_));
+  composite.Bind(cmd, mesh_slots);
   vk::DrawGeneratedTriangle(cmd);
   timer.End(cmd);
   return {.draws = 1, .binds = 1};
@@ -777,12 +774,12 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
     source = SunVisibilitySource::kCache;
   }
   // The opaque pass draws in a scope of its own where it writes more than the radiance (the sun
-  // visibility) or something else (the surfaces' radiance that the froxels' full-screen pass reads
-  // in the next scope); the sky and the transparent objects draw into the radiance alone.
-  if (caching || froxel_composite_) {
+  // visibility) or something else (the surfaces' radiance that the aerial perspective's full-screen
+  // pass reads in the next scope); the sky and the transparent objects draw into the radiance alone.
+  if (caching || pipelines.composite) {
     {
       vk::RenderTargets opaque = targets;
-      if (froxel_composite_) opaque.colors = {&surface_radiance_};  // only covered pixels are ever read
+      if (pipelines.composite) opaque.colors = {&surface_radiance_};  // only covered pixels are ever read
       if (caching) {
         opaque.colors.push_back(&sun_visibility_);
         opaque.clear_colors.push_back(std::nullopt);  // the same
@@ -795,7 +792,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
     vk::FullBarrier(cmd);
     targets.clear_depth = std::nullopt;
     vk::Rendering rendering(cmd, targets);
-    if (froxel_composite_) recorded += DrawFroxelComposite(cmd, slot);
+    if (pipelines.composite) recorded += DrawComposite(cmd, slot, *pipelines.composite, mesh_slots);
     recorded += DrawSkyAndTransparent(cmd, slot, sky, pipelines.transparent, mesh_slots);
   } else {
     vk::Rendering rendering(cmd, targets);

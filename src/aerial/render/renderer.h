@@ -57,6 +57,9 @@ struct MeshPipelines {
   OpaquePipelines per_pixel;
   std::optional<OpaquePipelines> per_vertex;
   vk::GraphicsPipeline transparent;
+  // The full-screen pass that applies the opaque surfaces' aerial perspective after them
+  // (AerialPerspectiveInFullScreenPass), if they leave it to one.
+  std::optional<vk::GraphicsPipeline> composite;
 };
 
 class Renderer {
@@ -142,7 +145,8 @@ class Renderer {
   RecordedDraws DrawOpaque(const vk::CommandBuffer& cmd, const MeshPipelines& pipelines,
                            SunVisibilitySource source, const std::vector<vk::Slot>& slots,
                            vk::IndirectDraws& commands) const;
-  RecordedDraws DrawFroxelComposite(const vk::CommandBuffer& cmd, uint32_t slot) const;
+  RecordedDraws DrawComposite(const vk::CommandBuffer& cmd, uint32_t slot, const vk::GraphicsPipeline& composite,
+                              std::vector<vk::Slot> mesh_slots) const;
   RecordedDraws DrawSkyAndTransparent(const vk::CommandBuffer& cmd, uint32_t slot, const vk::GraphicsPipeline& sky,
                                       const vk::GraphicsPipeline& transparent,
                                       const std::vector<vk::Slot>& mesh_slots) const;
@@ -173,10 +177,9 @@ class Renderer {
   // looked it up in the shadow map drew it (opaque_fragment.glsl), and what that frame showed.
   vk::Image sun_visibility_;
   std::optional<SunVisibilityKey> sun_visibility_key_;
-  // With the froxels read in a full-screen pass: the opaque surfaces' radiance and distance, which
-  // that pass reads (froxel_composite.frag), and the pass; else one texel and none.
+  // With the aerial perspective applied in a full-screen pass: the opaque surfaces' radiance and
+  // distance, which that pass reads (aerial_composite.frag); else one texel.
   vk::Image surface_radiance_;
-  std::optional<vk::GraphicsPipeline> froxel_composite_;
   vk::Image sky_rayleigh_, sky_mie_, sky_background_;
   // The sky inscatter correction at the sky-view table's lattice nodes.
   vk::Image sky_rayleigh_correction_, sky_mie_correction_;

@@ -20,7 +20,7 @@ struct FramePasses {
 // Where opaque surfaces read the froxel volume (froxel mode): per vertex, interpolated, on
 // triangles thin in depth and per pixel on others (surface_reads.h), or, to compare with, per
 // pixel everywhere, per vertex everywhere, or once per pixel in a full-screen pass after the
-// opaque pass (deferred: froxel_composite.frag), which reads what per pixel everywhere reads.
+// opaque pass (deferred: aerial_composite.frag), which reads what per pixel everywhere reads.
 enum class SurfaceFroxelReads { kPerVertexWhereThin, kPerPixel, kPerVertex, kFullScreenPass };
 
 // Reads of the opaque fragments a benchmark leaves out to measure what each costs: the froxel
@@ -45,7 +45,16 @@ struct RendererOptions : RenderOptions {
   // A shadow tile whose window held and whose terrain casters changed is redrawn only where they
   // changed (shadow_tile_region.h); off: whole, to compare with.
   bool shadow_tile_regions = true;
+  // The per-pixel modes' aerial perspective: once per pixel in a full-screen pass after the opaque
+  // pass (deferred, aerial_composite.frag), or, to compare with, in the opaque fragments, which a
+  // CPU rasterizer shades several times per covered pixel (a fragment for every 4x4 stamp that a
+  // triangle touches, each marching the whole segment).
+  bool per_pixel_in_full_screen_pass = true;
 };
+
+// Whether the opaque pass writes its surfaces' radiance and distance and a full-screen pass after
+// it applies their aerial perspective: froxels read in that pass, or a per-pixel mode's there.
+bool AerialPerspectiveInFullScreenPass(const RendererOptions& options);
 
 // EstimateFrameMemory (aerial/renderer.h), without the terrain chunk slots for the fixed mesh.
 FrameMemory EstimateFrameMemory(const RendererOptions& options);
