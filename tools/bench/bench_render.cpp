@@ -158,6 +158,8 @@ void Bench(const BenchOptions& cli) {
   aerial::RendererOptions base{{.width = cli.width, .height = cli.height,
                                 .froxels = aerial::FroxelGrid::Parse(cli.froxels),
                                 .terrain_error_px = cli.terrain_error_px}};
+  // Each configuration builds its terrain as a fresh renderer does, whatever ran before it.
+  base.share_built_terrain = false;
   base.Validate();
   std::vector<Configuration> configurations = ChosenConfigurations(cli.only);
   aerial::PrecomputeOptions precompute =

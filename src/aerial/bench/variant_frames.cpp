@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "aerial/bench/frame_measurement.h"
+#include "aerial/render/renderer_options.h"
 
 namespace aerial::bench {
 
@@ -25,10 +26,13 @@ void MeasureVariantFrames(VariantResult& lut4d, const Tables& tables4d, VariantR
       int max_frames = mode == AerialMode::kPerPixel ? per_pixel_frames : plan.frames;
       (result->*frames).clear();
       if (max_frames == 0) continue;
-      RenderOptions options{.width = plan.frame_width, .height = plan.frame_height, .mode = mode,
-                            .shadows = plan.shadows};
+      RendererOptions options{{.width = plan.frame_width, .height = plan.frame_height, .mode = mode,
+                               .shadows = plan.shadows}};
+      // Each timed renderer builds its terrain itself, so that the 3D tables' frames, measured
+      // after the 4D ones', pay for it too.
+      options.share_built_terrain = false;
       options.Validate();
-      renderers.push_back(std::make_unique<SceneRenderer>(*tables, scene, options));
+      renderers.push_back(std::make_unique<SceneRenderer>(MakeSceneRenderer(*tables, scene, options)));
       order.push_back({.renderer = renderers.back().get(), .max_frames = max_frames});
       destinations.push_back(&(result->*frames));
     }

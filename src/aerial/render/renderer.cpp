@@ -266,7 +266,8 @@ double SceneRadiusM(const Scene& scene, double R) {
 std::unique_ptr<TerrainChunkCache> TerrainCache(const vk::Context& context, const Scene& scene,
                                                 const RendererOptions& options, double R) {
   if (!scene.terrain || options.terrain != TerrainMode::kLod) return nullptr;
-  return std::make_unique<TerrainChunkCache>(context, R, kTerrainChunkSlots, options.frames_in_flight);
+  return std::make_unique<TerrainChunkCache>(context, R, kTerrainChunkSlots, options.frames_in_flight,
+                                             options.share_built_terrain ? &terrain::BuiltChunks::Shared() : nullptr);
 }
 
 }  // namespace

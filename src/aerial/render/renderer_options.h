@@ -50,6 +50,10 @@ struct RendererOptions : RenderOptions {
   // CPU rasterizer shades several times per covered pixel (a fragment for every 4x4 stamp that a
   // triangle touches, each marching the whole segment).
   bool per_pixel_in_full_screen_pass = true;
+  // Terrain chunks built by any renderer of the process are kept for all (terrain/built_chunks.h);
+  // off: this renderer builds its own, as a benchmark's timed frames do, so that a configuration
+  // measured after another pays for its chunks too.
+  bool share_built_terrain = true;
 };
 
 // Whether the opaque pass writes its surfaces' radiance and distance and a full-screen pass after

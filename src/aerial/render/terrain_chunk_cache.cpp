@@ -27,10 +27,11 @@ vk::Buffer IndexBuffer(const vk::Context& context) {
 }  // namespace
 
 TerrainChunkCache::TerrainChunkCache(const vk::Context& context, double planet_radius_m,
-                                     uint32_t capacity, uint32_t frames_in_flight)
+                                     uint32_t capacity, uint32_t frames_in_flight, terrain::BuiltChunks* shared)
     : planet_radius_m_(planet_radius_m),
       capacity_(capacity),
       frames_in_flight_(frames_in_flight),
+      shared_(shared),
       vertices_(context, {.size = capacity * kSlotBytes,
                           .usage = ::vk::BufferUsageFlagBits::eVertexBuffer,
                           .host_visible = true}),
@@ -86,9 +87,12 @@ void TerrainChunkCache::Build(std::span<const ChunkId> ids) {
   auto worker = [&] {
     for (size_t i = next++; i < work.size(); i = next++) {
       if (limited_ && std::chrono::steady_clock::now() > deadline_) return;
-      terrain::TerrainChunk chunk = terrain::BuildTerrainChunk(work[i].first, planet_radius_m_);
-      std::memcpy(vertices_.mapped() + work[i].second * kSlotBytes, chunk.vertices.data(), kSlotBytes);
-      infos[i] = terrain::InfoOf(chunk);
+      std::shared_ptr<const terrain::TerrainChunk> chunk =
+          shared_ ? shared_->Get(work[i].first, planet_radius_m_)
+                  : std::make_shared<const terrain::TerrainChunk>(
+                        terrain::BuildTerrainChunk(work[i].first, planet_radius_m_));
+      std::memcpy(vertices_.mapped() + work[i].second * kSlotBytes, chunk->vertices.data(), kSlotBytes);
+      infos[i] = terrain::InfoOf(*chunk);
     }
   };
   unsigned threads = std::clamp(std::thread::hardware_concurrency(), 1u, unsigned(work.size()));

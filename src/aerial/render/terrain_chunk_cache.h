@@ -3,13 +3,14 @@
 // buffer, and the index buffer every chunk shares. Chunks are built on the CPU when the LOD
 // selection first asks for them (terrain/lod_selection.h), written into a free slot, and kept
 // until the pool is full; then the chunk used longest ago goes, but never one that a frame still
-// in flight may draw.
+// in flight may draw. Chunks come from a BuiltChunks shared with other renderers if given one.
 #include <chrono>
 #include <optional>
 #include <span>
 #include <unordered_map>
 #include <vector>
 
+#include "aerial/terrain/built_chunks.h"
 #include "aerial/terrain/lod_selection.h"
 #include "aerial/vk/resources.h"
 
@@ -18,9 +19,10 @@ namespace aerial {
 class TerrainChunkCache : public terrain::ChunkSource {
  public:
   // capacity: chunk slots (each kChunkVertices vertices); frames_in_flight: how many frames after
-  // its last use a slot may still be read by the GPU.
+  // its last use a slot may still be read by the GPU; shared: where built chunks are found and kept
+  // (null: each is built here).
   TerrainChunkCache(const vk::Context& context, double planet_radius_m, uint32_t capacity,
-                    uint32_t frames_in_flight);
+                    uint32_t frames_in_flight, terrain::BuiltChunks* shared);
 
   // Starts a frame: building stops once budget_ms of building has been spent in it (0: no limit).
   void BeginFrame(double budget_ms);
@@ -46,6 +48,7 @@ class TerrainChunkCache : public terrain::ChunkSource {
 
   double planet_radius_m_;
   uint32_t capacity_, frames_in_flight_;
+  terrain::BuiltChunks* shared_;
   vk::Buffer vertices_, indices_;
   std::unordered_map<terrain::ChunkId, Entry, terrain::ChunkIdHash> chunks_;
   std::vector<uint32_t> free_slots_;
