@@ -55,9 +55,7 @@ TEST_F(AerialCompositePass, DrawsTheFrameOfPerPixelReads) {
 }
 
 RendererOptions PerPixelOptions(AerialMode mode, bool full_screen_pass) {
-  RendererOptions options;
-  options.width = kWidth;
-  options.height = kHeight;
+  RendererOptions options = Options(SurfaceFroxelReads::kPerVertexWhereThin);
   options.mode = mode;
   options.per_pixel_in_full_screen_pass = full_screen_pass;
   return options;
