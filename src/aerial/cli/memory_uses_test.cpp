@@ -27,6 +27,24 @@ TEST(MemoryUses, RenderScaleShrinksTheTargetsNotTheOutput) {
   EXPECT_EQ(a.readback - b.readback, (1'000'000 - 250'000) * 32u);
 }
 
+// A frame whose aerial perspective is applied in a full-screen pass (the per-pixel modes by
+// default, the froxels with --froxel-reads full-screen) also holds the surfaces' radiance for it:
+// 16 more bytes a rendered pixel (rgba32f).
+TEST(MemoryUses, FullScreenPassCountsTheSurfacesRadiance) {
+  RendererOptions froxels{{.width = 1000, .height = 1000}};
+  RendererOptions marched = froxels, in_fragments = froxels, froxels_deferred = froxels;
+  marched.mode = AerialMode::kPerPixel;
+  in_fragments.mode = AerialMode::kPerPixel;
+  in_fragments.per_pixel_in_full_screen_pass = false;
+  froxels_deferred.surface_froxel_reads = SurfaceFroxelReads::kFullScreenPass;
+  const uint64_t base = EstimateFrameMemory(froxels).targets;
+  EXPECT_EQ(EstimateFrameMemory(marched).targets - base, 1'000'000u * 16);
+  EXPECT_EQ(EstimateFrameMemory(in_fragments).targets, base);
+  EXPECT_EQ(EstimateFrameMemory(froxels_deferred).targets - base, 1'000'000u * 16);
+  // The public estimate, for a caller's renderer, counts it for the per-pixel modes.
+  EXPECT_EQ(EstimateFrameMemory(static_cast<const RenderOptions&>(marched)).targets - base, 1'000'000u * 16);
+}
+
 // What the tables take is what AtmosphereTables allocates: 2 scattering tables in 4D (Rayleigh in
 // the tables' precision, half floats by default, and Mie in float32), 3 in 3D (float32 by
 // default), and the multiple density table (in the tables' precision).
