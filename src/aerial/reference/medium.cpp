@@ -1,7 +1,5 @@
 #include "aerial/reference/medium.h"
 
-#include <limits>
-
 namespace aerial::reference {
 namespace {
 
@@ -29,7 +27,7 @@ void AddCrossings(const DensityProfileLayer& l, double lo, double hi, double tar
 }
 
 void AddProfileLevels(const DensityProfile& profile, double top, double spacing_scale_heights,
-                      double cutoff_scale_heights, std::vector<double>* levels) {
+                      double negligible_above, std::vector<double>* levels) {
   const double width = profile.layers[0].width_m;
   if (width > 0.0 && width < top) levels->push_back(width);
   struct Range {
@@ -43,22 +41,48 @@ void AddProfileLevels(const DensityProfile& profile, double top, double spacing_
     AddCrossings(l, range.lo, range.hi, 0.0, levels);
     AddCrossings(l, range.lo, range.hi, 1.0, levels);
     if (l.exp_term == 0.0 || l.exp_scale_per_m == 0.0) continue;
-    double scale_height = 1.0 / std::abs(l.exp_scale_per_m);
-    bool decaying = l.exp_scale_per_m < 0.0;
-    double step = spacing_scale_heights * scale_height;
+    double step = spacing_scale_heights / std::abs(l.exp_scale_per_m);
     for (double h = range.lo + step; h < range.hi; h += step) {
-      if (decaying && h - range.lo > cutoff_scale_heights * scale_height) break;
       levels->push_back(h);
+      if (h >= negligible_above) break;
     }
   }
 }
 
-std::vector<double> LevelRadii(const AtmosphereParameters& a, double spacing_scale_heights,
-                               double cutoff_scale_heights) {
+// The altitude above which the species' extinction stays under kNegligibleShare of the whole
+// medium's at every wavelength: there an error of its column, even of 100%, moves no optical
+// depth by more than that share. Scanned every 10 m from the top down.
+constexpr double kNegligibleShare = 1e-6;
+
+double NegligibleAbove(const AtmosphereParameters& a, const DensityProfile& profile,
+                       const Spectrum& extinction) {
+  const double top = a.top_radius_m - a.bottom_radius_m;
+  for (double h = top; h > 0.0; h -= 10.0) {
+    double own = ProfileDensity(profile, h), rayleigh = ProfileDensity(a.rayleigh_density, h),
+           mie = ProfileDensity(a.mie_density, h), absorption = ProfileDensity(a.absorption_density, h);
+    for (int c = 0; c < 3; ++c) {
+      double total = a.rayleigh_scattering[c] * rayleigh + a.mie_extinction[c] * mie +
+                     a.absorption_extinction[c] * absorption;
+      if (!(extinction[c] * own < kNegligibleShare * total)) return h;
+    }
+  }
+  return 0.0;
+}
+
+// negligible: whether a species' exponential term stops being refined where it is negligible
+// (NegligibleAbove), or is refined up to the top.
+std::vector<double> LevelRadii(const AtmosphereParameters& a, double spacing_scale_heights, bool negligible) {
   double top = a.top_radius_m - a.bottom_radius_m;
   std::vector<double> levels = {0.0, top};
-  for (const DensityProfile* p : {&a.rayleigh_density, &a.mie_density, &a.absorption_density})
-    AddProfileLevels(*p, top, spacing_scale_heights, cutoff_scale_heights, &levels);
+  struct Species {
+    const DensityProfile& profile;
+    const Spectrum& extinction;
+  };
+  for (const Species& s : {Species{a.rayleigh_density, a.rayleigh_scattering}, Species{a.mie_density, a.mie_extinction},
+                           Species{a.absorption_density, a.absorption_extinction}}) {
+    double negligible_above = negligible ? NegligibleAbove(a, s.profile, s.extinction) : top;
+    AddProfileLevels(s.profile, top, spacing_scale_heights, negligible_above, &levels);
+  }
   std::sort(levels.begin(), levels.end());
   std::vector<double> radii;
   for (double h : levels) {
@@ -78,8 +102,8 @@ Medium::Medium(const AtmosphereParameters& atmosphere)
       mean_rayleigh_(Mean(atmosphere.rayleigh_scattering)),
       mean_mie_extinction_(Mean(atmosphere.mie_extinction)),
       mean_absorption_(Mean(atmosphere.absorption_extinction)),
-      reference_levels_(LevelRadii(atmosphere, 2.0, std::numeric_limits<double>::infinity())),
-      monte_carlo_levels_(LevelRadii(atmosphere, 4.0, 30.0)) {}
+      reference_levels_(LevelRadii(atmosphere, 2.0, false)),
+      monte_carlo_levels_(LevelRadii(atmosphere, 4.0, true)) {}
 
 Spectrum Medium::OpticalDepth(const Column& c) const {
   Spectrum tau;

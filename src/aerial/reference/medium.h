@@ -73,7 +73,8 @@ class Medium {
   // varies by e^2a, n-point Gauss-Legendre errs relatively by ~a^2n 2^(2n+1) (n!)^4 /
   // ((2n+1) ((2n)!)^3) (Abramowitz & Stegun 25.4.30): 2e-18 for kReference (a = 1, n = 8) and
   // 8e-5 for kMonteCarlo (a = 2, n = 4; 4e-5 measured on Earth rays). kMonteCarlo also stops
-  // refining a decaying term 30 scale heights above its layer base (e^-30 ~ 1e-13).
+  // refining an exponential term above the altitude where its species' extinction stays under
+  // 1e-6 of the medium's (on Earth, Mie above about 19 km).
   const std::vector<double>& level_radii(Accuracy accuracy) const {
     return accuracy == Accuracy::kReference ? reference_levels_ : monte_carlo_levels_;
   }

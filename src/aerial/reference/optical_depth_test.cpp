@@ -52,16 +52,21 @@ TEST(Transmittance, OzoneTentZenithColumnIsFifteenKilometers) {
   }
 }
 
-// Monte Carlo accuracy is ~1e-4 of the optical depth (medium.h); check a grazing ray, the worst
-// case, against the reference.
+// Monte Carlo accuracy is ~1e-4 of the optical depth (medium.h); check grazing rays, the worst
+// case, against the reference: rays that just miss the ground, and horizontal ones, which stay
+// above their start, from within the Mie layer and from above where its levels stop.
 TEST(Transmittance, MonteCarloAccuracyIsWithin1e4OfReference) {
   Medium medium(AtmosphereParameters::Earth());
-  double r = medium.bottom_radius() + 5000.0;
-  double mu = CosHorizon(r, medium.bottom_radius()) + 0.002;
-  double length = DistanceToOuterSphere(r, mu, medium.top_radius());
-  Spectrum a = medium.OpticalDepth(ComputeColumn(medium, Accuracy::kReference, r, mu, length));
-  Spectrum b = medium.OpticalDepth(ComputeColumn(medium, Accuracy::kMonteCarlo, r, mu, length));
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(b[c] / a[c], 1.0, 1e-4) << c;
+  for (double altitude : {5e3, 19e3, 22e3, 30e3}) {
+    double r = medium.bottom_radius() + altitude;
+    for (double mu : {CosHorizon(r, medium.bottom_radius()) + 0.002, 0.0}) {
+      double length = DistanceToOuterSphere(r, mu, medium.top_radius());
+      Spectrum a = medium.OpticalDepth(ComputeColumn(medium, Accuracy::kReference, r, mu, length));
+      Spectrum b = medium.OpticalDepth(ComputeColumn(medium, Accuracy::kMonteCarlo, r, mu, length));
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(b[c] / a[c], 1.0, 1e-4) << altitude << " m, mu " << mu << ", channel " << c;
+    }
+  }
 }
 
 // Optical depth is additive along a ray: [0, s] + [s, L] = [0, L] (RayColumns::ColumnTo against
