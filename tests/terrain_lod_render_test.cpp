@@ -178,19 +178,26 @@ TEST_F(LeanFrame, CachedTablesAreRemadeOnlyWhenTheirInputsChange) {
   renderer.Render(scene, kStream);
   EXPECT_TRUE(renderer.frame_info().sky_view_updated);
   EXPECT_TRUE(renderer.frame_info().froxels_updated);
+  EXPECT_TRUE(renderer.frame_info().terrain_selected);
   renderer.Render(scene, kStream);
   EXPECT_FALSE(renderer.frame_info().sky_view_updated);
   EXPECT_FALSE(renderer.frame_info().froxels_updated);
+  EXPECT_FALSE(renderer.frame_info().terrain_selected);
   scene.camera.yaw_deg += 30.0;
   renderer.Render(scene, kStream);
   EXPECT_FALSE(renderer.frame_info().sky_view_updated);
   EXPECT_TRUE(renderer.frame_info().froxels_updated);
+  EXPECT_TRUE(renderer.frame_info().terrain_selected);
   scene.camera.position.z += 5.0;
   renderer.Render(scene, kStream);
   EXPECT_FALSE(renderer.frame_info().sky_view_updated);
+  EXPECT_TRUE(renderer.frame_info().terrain_selected);
+  // The terrain's chunks do not depend on the sun: the frames under a new sun keep them, and
+  // still draw what a fresh renderer draws (below).
   scene.sun.zenith_deg += 5.0;
   renderer.Render(scene, kStream);
   EXPECT_TRUE(renderer.frame_info().sky_view_updated);
+  EXPECT_FALSE(renderer.frame_info().terrain_selected);
   // The remade table is the one a fresh renderer makes for that sun and camera, which the frame
   // shows once the shadow map's tiles have caught up with the sun, one a frame.
   for (int frame = 1; frame < kShadowCascades && !renderer.frame_info().settled; ++frame) {

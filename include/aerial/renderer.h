@@ -70,6 +70,9 @@ struct FrameInfo {
   int deferred = 0;  // terrain chunks drawn in place of finer ones not built yet
   int hidden = 0;    // terrain chunks left out because nearer ones hide them
   int built = 0;     // terrain chunks built for this frame
+  // The terrain's chunks were selected for this frame: its camera, render size or level-of-detail
+  // bound differs from the last frame's (a frame that differs only in its sun keeps them).
+  bool terrain_selected = false;
   bool sky_view_updated = false;  // the sky-view table was remade (the camera's r or mu_s moved)
   bool froxels_updated = false;   // the froxel volume was rebuilt (the camera or the sun moved)
   bool shadow_map_updated = false;  // the shadow map was redrawn (shadow_map.h), in part or whole

@@ -87,7 +87,7 @@ std::array<bool, kShadowCascades> ShadowWindowsMoved(const std::optional<ShadowK
   return moved;
 }
 
-bool TerrainSelectionKept(bool still_view, bool selection_whole) { return still_view && selection_whole; }
+bool TerrainSelectionKept(bool same_lod_view, bool selection_whole) { return same_lod_view && selection_whole; }
 
 double ShadowReachM(const glm::dvec3& sun, const glm::dvec3& up, const CasterBounds& casters) {
   const double r = casters.bottom_radius_m, top = casters.top_radius_m;

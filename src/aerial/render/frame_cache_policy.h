@@ -61,10 +61,11 @@ std::array<bool, kSkyViewLatticeBands> SkyViewLatticeBandsToRemake(const SkyView
 bool SkyViewLatticeCaughtUp(const SkyViewLatticeKeys& made_for, const SkyViewKey& now);
 
 // ---- The terrain's chunks ----
-// A still view keeps the chunks its last frame selected when that selection lacked none: the same
-// camera and level-of-detail rule over the same built chunks select the same ones, occlusion
-// culling included (terrain/lod_selection.h). A still frame then spends no CPU on the terrain.
-bool TerrainSelectionKept(bool still_view, bool selection_whole);
+// A frame keeps the chunks its last frame selected when its level-of-detail view is the same and
+// that selection lacked none: the same view and rule over the same built chunks select the same
+// ones, occlusion culling included (terrain/lod_selection.h). A still camera (under a moving sun
+// too) then spends no CPU on the terrain.
+bool TerrainSelectionKept(bool same_lod_view, bool selection_whole);
 
 // ---- The froxel volume ----
 // It depends on the camera, the sun, the shadow map and the tables only: a still view under an

@@ -311,9 +311,9 @@ TEST(FrameCachePolicy, CastersKeptWithinTheSelectionsSlack) {
   EXPECT_FALSE(CastersKept(made, view, other, false)) << "another cascade box";
 }
 
-TEST(FrameCachePolicy, TerrainSelectionKeptByAStillViewThatLackedNoChunk) {
-  EXPECT_TRUE(TerrainSelectionKept(/*still_view=*/true, /*selection_whole=*/true));
-  EXPECT_FALSE(TerrainSelectionKept(false, true)) << "the view moved";
+TEST(FrameCachePolicy, TerrainSelectionKeptForTheSameViewWhenItLackedNoChunk) {
+  EXPECT_TRUE(TerrainSelectionKept(/*same_lod_view=*/true, /*selection_whole=*/true));
+  EXPECT_FALSE(TerrainSelectionKept(false, true)) << "the camera moved";
   EXPECT_FALSE(TerrainSelectionKept(true, false)) << "chunks were missing from the selection";
 }
 

@@ -383,8 +383,8 @@ terrain::LodView Renderer::FrameLodView(const Scene& scene) const {
                               tables_.atmosphere().bottom_radius_m);
 }
 
-// The chunks to draw, nearest first (terrain/lod_selection.h), built as needed; a still view keeps
-// its last frame's (TerrainSelectionKept).
+// The chunks to draw, nearest first (terrain/lod_selection.h), built as needed; a still camera
+// keeps its last frame's (TerrainSelectionKept).
 void Renderer::SelectTerrain(const Scene& scene, bool complete) {
   if (!terrain_ || !options_.passes.terrain) {
     terrain_chunks_.clear();
@@ -392,12 +392,14 @@ void Renderer::SelectTerrain(const Scene& scene, bool complete) {
   }
   // The first frame builds all it needs, so that a window opens on the whole terrain.
   terrain_->BeginFrame(complete || frames_recorded_ == 0 ? 0.0 : options_.terrain_build_budget_ms);
-  if (TerrainSelectionKept(still_view_, terrain_deferred_ == 0)) {
+  terrain::LodView view = FrameLodView(scene);
+  view.occlusion_culling = options_.terrain_occlusion_culling;
+  if (TerrainSelectionKept(view == terrain_selected_for_, terrain_deferred_ == 0)) {
     // Found again so that the cache, which evicts the chunk used longest ago, keeps them.
     for (const terrain::SelectedChunk& chunk : terrain_chunks_) terrain_->Find(chunk.id);
   } else {
-    terrain::LodView view = FrameLodView(scene);
-    view.occlusion_culling = options_.terrain_occlusion_culling;
+    terrain_selected_for_ = view;
+    frame_info_.terrain_selected = true;
     terrain::Selection selection = terrain::SelectChunks(view, *terrain_);
     terrain_chunks_ = std::move(selection.chunks);
     terrain_hidden_ = selection.hidden;

@@ -163,6 +163,7 @@ class Renderer {
   // What the selection of terrain_chunks_ left out as hidden, and drew in place of finer chunks not
   // built yet (-1 before the first selection); the frames that keep it report the same.
   int terrain_hidden_ = 0, terrain_deferred_ = -1;
+  std::optional<terrain::LodView> terrain_selected_for_;  // the view terrain_chunks_ were selected for
   FrameInfo frame_info_;
   uint64_t frames_recorded_ = 0;
   uint32_t last_slot_ = 0;

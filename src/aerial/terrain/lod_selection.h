@@ -38,6 +38,7 @@ struct LodView {
   // from parent to child, so each chunk the rule alone would draw is replaced by its coarsest
   // ancestor within this error. 0: every chunk is tested.
   double resolved_error_m = 0.0;
+  bool operator==(const LodView&) const = default;
 };
 
 // The error bound is kept at least as fine as max_error_px at min_height_px rows, so that small
