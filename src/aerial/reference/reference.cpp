@@ -1,5 +1,6 @@
 #include "aerial/reference/reference.h"
 
+#include <future>
 #include <sstream>
 
 #include "aerial/error.h"
@@ -111,14 +112,22 @@ GroupEstimates Reference::RadianceOfGroups(std::span<const Reference> groups, co
   mu_s = CheckCosine("mu_s", mu_s);
   nu = ClampNu(mu, mu_s, CheckCosine("nu", nu));
   GroupEstimates results{.groups = std::vector<Estimate>(groups.size())};
+  // Single scattering is deterministic and runs on one thread: beside the Monte Carlo's threads,
+  // so that it does not leave the others idle.
+  std::future<std::vector<SingleScattering>> singles = std::async(std::launch::async, [&] {
+    std::vector<SingleScattering> each;
+    for (const Reference& group : groups) each.push_back(group.ComputeSingleScattering(r, mu, mu_s, nu, length));
+    return each;
+  });
   if (orders >= 2) {
     GroupOrderEstimates higher = EstimateRadianceOrders(wavelengths, r, mu, mu_s, nu, length, 2, orders, options);
     for (size_t g = 0; g < groups.size(); ++g) results.groups[g] = higher.groups[g].total;
     results.chunk_means = std::move(higher.chunk_totals);
   }
   double phase_r = RayleighPhase(nu), phase_m = MiePhase(nu);
+  std::vector<SingleScattering> single_of = singles.get();
   for (size_t g = 0; g < groups.size(); ++g) {
-    SingleScattering single = groups[g].ComputeSingleScattering(r, mu, mu_s, nu, length);
+    const SingleScattering& single = single_of[g];
     for (int c = 0; c < 3; ++c)
       results.groups[g].value[c] += single.rayleigh[c] * phase_r + single.mie[c] * phase_m;
   }
