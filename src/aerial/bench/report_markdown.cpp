@@ -137,7 +137,8 @@ void SpeedSection(std::ostringstream& md, const BenchResults& b) {
      << "- lavapipe defers rasterization, so the timestamps around the draws of the frame's one raster pass "
         "(opaque, sky, transparent) do not bound their work: the whole-frame times and the compute passes "
         "(froxel build, precompute passes) are the reliable figures. The wall-clock column adds the CPU's "
-        "part of a frame (terrain selection, sorting, recording, submitting, waiting).\n"
+        "part of a frame (terrain selection, sorting, recording, submitting, waiting; the renderers share the "
+        "terrain chunks they build, so building one falls on the first renderer whose frame needs it).\n"
      << "- Other work on the machine slows every run (see the load average above); the 3D / 4D ratios, "
         "from interleaved runs, suffer less from it than the times themselves.\n\n";
 }
