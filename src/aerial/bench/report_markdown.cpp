@@ -101,8 +101,9 @@ void PrecomputeKindsTable(std::ostringstream& md, const BenchResults& b) {
 
 void SpeedSection(std::ostringstream& md, const BenchResults& b) {
   const BenchPlan& p = b.plan;
-  md << "## Speed and size\n\nPrecompute: GPU time of all passes, median of " << p.precompute_runs
-     << " runs after " << p.precompute_warmup
+  md << "## Speed and size\n\nPrecompute: GPU time of all passes, "
+     << (p.precompute_runs == 1 ? std::string("one run") : "median of " + std::to_string(p.precompute_runs) + " runs")
+     << " after " << p.precompute_warmup
      << " warm-up, every variant and tier interleaved in one process. Frames: " << p.frame_width << "x"
      << p.frame_height << ", the built-in default scene (preset noon, transparent objects "
      << "included), median of " << p.frames << " frames after " << p.frame_warmup
