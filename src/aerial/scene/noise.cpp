@@ -1,5 +1,6 @@
 #include "aerial/scene/noise.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -25,14 +26,39 @@ namespace {
 
 double Fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
 
+// The unit vector at the angle 2 pi k / 2^24 for 24 bits k, as the sum of two angles from tables
+// of 4096 each (cos(a + b) = cos a cos b - sin a sin b).
+class UnitCircle {
+ public:
+  UnitCircle() {
+    for (int i = 0; i < kSize; ++i) {
+      double coarse = 2.0 * std::numbers::pi * i / kSize, fine = coarse / kSize;
+      coarse_[size_t(i)] = {std::cos(coarse), std::sin(coarse)};
+      fine_[size_t(i)] = {std::cos(fine), std::sin(fine)};
+    }
+  }
+  std::array<double, 2> At(uint32_t k) const {
+    const std::array<double, 2>&a = coarse_[k >> 12], &b = fine_[k & (kSize - 1)];
+    return {a[0] * b[0] - a[1] * b[1], a[1] * b[0] + a[0] * b[1]};
+  }
+
+ private:
+  static constexpr int kSize = 4096;  // 2^12: two tables cover the 24 bits
+  std::array<std::array<double, 2>, kSize> coarse_, fine_;
+};
+
 // Dot product of the lattice point's unit gradient with the offset to it.
 double Corner(int64_t ix, int64_t iy, uint32_t seed, double dx, double dy) {
-  uint32_t h = Hash(static_cast<uint32_t>(ix), static_cast<uint32_t>(iy), seed);
-  double angle = 2.0 * std::numbers::pi * UnitFromHash(h);
-  return std::cos(angle) * dx + std::sin(angle) * dy;
+  std::array<double, 2> gradient = UnitGradient(Hash(static_cast<uint32_t>(ix), static_cast<uint32_t>(iy), seed));
+  return gradient[0] * dx + gradient[1] * dy;
 }
 
 }  // namespace
+
+std::array<double, 2> UnitGradient(uint32_t h) {
+  static const UnitCircle circle;
+  return circle.At(h >> 8);  // UnitFromHash(h) = (h >> 8) / 2^24
+}
 
 double GradientNoise(double x, double y, uint32_t seed) {
   double fx = std::floor(x), fy = std::floor(y);
