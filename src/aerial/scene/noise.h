@@ -1,8 +1,9 @@
 #pragma once
 // Deterministic pseudo-random numbers and 2D gradient noise for the procedural scene (and the
 // hash for the display's dither, aerial/image/tone_map.h). Everything is a pure function of its
-// integer inputs (no clock, no global state), so the built-in scene is bit-identical on every run
-// and machine, which its tests and reference images rely on.
+// integer inputs (no clock, no mutable state; the gradients' tables are constants), so the
+// built-in scene is bit-identical on every run and machine, which its tests and reference images
+// rely on.
 #include <array>
 #include <cstdint>
 
@@ -17,8 +18,8 @@ uint32_t Hash(uint32_t a, uint32_t b, uint32_t c = 0);
 double UnitFromHash(uint32_t h);
 
 // The unit vector at the angle 2 pi UnitFromHash(h): the cosine and sine of that angle to within
-// 1.6e-15 (noise_test), from two small tables, at half a terrain chunk's build cost (28 gradients
-// per height; computed with cos and sin they took half of the build).
+// 1.6e-15 (noise_test), from two small tables instead of calls to cos and sin, which would be half
+// of a terrain chunk's build (28 gradients per height).
 std::array<double, 2> UnitGradient(uint32_t h);
 
 // Perlin's gradient noise (Perlin 2002, "Improving Noise": quintic fade 6t^5 - 15t^4 + 10t^3)
