@@ -51,8 +51,8 @@ struct RendererOptions : RenderOptions {
   // triangle touches, each marching the whole segment).
   bool per_pixel_in_full_screen_pass = true;
   // Terrain chunks built by any renderer of the process are kept for all (terrain/built_chunks.h);
-  // off: this renderer builds its own, as a benchmark's timed frames do, so that a configuration
-  // measured after another pays for its chunks too.
+  // off: this renderer builds its own, as aerial_bench_render's timed frames do, so that a
+  // configuration measured after another pays for its chunks too (their CPU times are figures).
   bool share_built_terrain = true;
 };
 

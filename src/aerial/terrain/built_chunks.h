@@ -2,9 +2,8 @@
 // Built terrain chunks shared by the renderers of a process. A chunk is a pure function of its id
 // and the planet's radius, and the tools that make many renderers of one terrain (a benchmark's
 // accuracy phase, a test suite, a viewer that remakes its renderer when a setting changes) would
-// otherwise build every chunk again in each: the height function's noise is most of a quick
-// bench's accuracy renders. Thread-safe; keeps up to its capacity of chunks, dropping those asked
-// for longest ago.
+// otherwise build every chunk again in each. Thread-safe; keeps up to its capacity of chunks,
+// dropping those asked for longest ago.
 #include <cstddef>
 #include <cstdint>
 #include <memory>
