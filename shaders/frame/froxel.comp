@@ -35,11 +35,12 @@ void main() {
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
   InscatterMarch march = StartInscatterMarch(transmittance_texture, multiple_density_texture, r,
                                              mu, mu_s, nu);
+  ShadowRay shadow_ray = MakeCameraShadowRay(ray);
   float previous = 0.0;
   for (int slice = 0; slice < size.z; ++slice) {
     float distance = FroxelSliceDistance(float(slice) + 0.5, float(size.z), AERIAL_FRAME.froxel_depth.x);
     AdvanceInscatterMarch(transmittance_texture, multiple_density_texture, march, distance,
-                          GetStepSunVisibility(ray, previous, distance));
+                          GetStepSunVisibility(shadow_ray, previous, distance));
     previous = distance;
     Inscatter inscatter = GetInscatterMarchResult(march);
     ivec3 froxel = ivec3(column, slice);

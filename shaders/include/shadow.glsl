@@ -8,7 +8,8 @@
 //   #define AERIAL_SHADOW_BINDING 8
 //   #include "shadow.glsl"
 //   float v = SunVisibility(relative_position, normal);  // on a surface
-//   float a = SunVisibilityInAir(relative_position, planet_position);  // a point in the air
+//   ShadowRay r = MakeShadowRay(ray, camera_planet_position);  // points in the air along a ray
+//   float a = SunVisibilityOnRay(r, t);
 // Positions are camera-relative world vectors, as everywhere in the frame's shaders (frame.glsl).
 #ifndef AERIAL_SHADOW_GLSL
 #define AERIAL_SHADOW_GLSL
@@ -116,44 +117,70 @@ float SunVisibilityFromCoordinates(vec3 relative_position, vec3 coordinates[kSha
   return texture(shadow_map, p);
 }
 
-// The visibility of a point in the air moved kNormalOffsetTexels texels of its cascade toward
-// that cascade's sun, or 1 beyond the cascades. The cascade is picked as in
-// SunVisibilityFromCoordinates, its uniforms by selects, and only its projection computed: the
-// froxels' march looks up many points per invocation.
-float SunVisibilityOffsetInAir(vec3 relative_position) {
-  float depth = dot(shadow.view_forward.xyz, relative_position);
+// A camera ray's points in the air, as the shadow map sees them, for looking up many points of one
+// ray (the froxels' march, the marched per-pixel path). A point's atlas coordinates in a cascade are
+// an affine function of its distance t along the ray, and so are its view depth and its distance
+// from the sun's plane through the planet's centre; its squared distance from that centre is a
+// quadratic in t. So each point costs a cascade's pick by selects and one multiply-add, not a
+// projection.
+struct ShadowRay {
+  // Per cascade, the atlas coordinates of the ray's origin moved kNormalOffsetTexels texels of
+  // the cascade toward its sun (points in the air have no normal), and their change per meter.
+  vec3 start[kShadowCascades];
+  vec3 slope[kShadowCascades];
+  float depth_per_m;  // view depth per meter along the ray
+  // |planet position|^2 - casters^2 = t (t + x) + y, and the planet position's component toward
+  // the sun z + w t (SunVisibilityOnRay).
+  vec4 above_casters;
+};
+
+// The change of ShadowAtlasCoordinates per meter along a direction.
+vec3 ShadowAtlasDirection(vec3 direction, vec3 right, vec3 up, vec3 sun, vec4 scale) {
+  vec2 p = vec2(dot(right, direction), dot(up, direction)) * scale.x;
+  return vec3(p / float(kShadowAtlasTilesPerRow), dot(sun, direction) * scale.y);
+}
+
+// The shadow map's view of the ray from the camera along the unit vector `ray`;
+// camera_planet_position: the camera relative to the planet's centre.
+ShadowRay MakeShadowRay(vec3 ray, vec3 camera_planet_position) {
+  ShadowRay r;
+  [[unroll]] for (int i = 0; i < kShadowCascades; ++i) {
+    vec3 right = shadow.cascade_right[i].xyz, up = shadow.cascade_up[i].xyz, sun = shadow.cascade_toward_sun[i].xyz;
+    vec4 scale = shadow.cascade_scale[i];
+    vec2 tile = vec2(i % kShadowAtlasTilesPerRow, i / kShadowAtlasTilesPerRow);
+    r.start[i] = ShadowAtlasCoordinates(sun * (kNormalOffsetTexels * scale.z), right, up, sun,
+                                        shadow.cascade_origin[i], scale, tile);
+    r.slope[i] = ShadowAtlasDirection(ray, right, up, sun, scale);
+  }
+  r.depth_per_m = dot(shadow.view_forward.xyz, ray);
+  // |c|^2 - casters^2 as a product: each factor is exact to float rounding, where the difference
+  // of the two squares (about 4e13 m^2) would lose millions of m^2.
+  float camera_r = length(camera_planet_position);
+  r.above_casters = vec4(2.0 * dot(camera_planet_position, ray),
+                         (camera_r - shadow.casters.x) * (camera_r + shadow.casters.x),
+                         dot(camera_planet_position, shadow.toward_sun.xyz), dot(ray, shadow.toward_sun.xyz));
+  return r;
+}
+
+// The sun's visibility in [0, 1] at the point t meters along a ShadowRay: 1 where the point is
+// above every caster with the sun above its horizon (along the ray toward the sun the distance to
+// the centre only grows there, r(t)^2 = r^2 + 2 t r mu_s + t^2, so no caster can lie on it),
+// beyond the last cascade (100 km of view depth), or with shadows off; those read no shadow map.
+// Else the cascade is picked as in SunVisibilityFromCoordinates.
+float SunVisibilityOnRay(ShadowRay r, float t) {
+  if (kSunShadows == 0) return 1.0;
+  vec4 c = r.above_casters;
+  if (t * (t + c.x) + c.y > 0.0 && c.z + c.w * t >= 0.0) return 1.0;
+  float depth = t * r.depth_per_m;
   if (!InShadowCascades(depth)) return 1.0;
-  vec4 origin = shadow.cascade_origin[0], scale = shadow.cascade_scale[0];
-  vec3 right = shadow.cascade_right[0].xyz, up = shadow.cascade_up[0].xyz, sun = shadow.cascade_toward_sun[0].xyz;
-  vec2 tile = vec2(0.0);
+  vec3 start = r.start[0], slope = r.slope[0];
   [[unroll]] for (int i = 1; i < kShadowCascades; ++i) {
     if (depth > shadow.cascade_far_m[i - 1]) {
-      origin = shadow.cascade_origin[i];
-      scale = shadow.cascade_scale[i];
-      right = shadow.cascade_right[i].xyz;
-      up = shadow.cascade_up[i].xyz;
-      sun = shadow.cascade_toward_sun[i].xyz;
-      tile = vec2(i % kShadowAtlasTilesPerRow, i / kShadowAtlasTilesPerRow);
+      start = r.start[i];
+      slope = r.slope[i];
     }
   }
-  vec3 moved = relative_position + sun * (kNormalOffsetTexels * scale.z);
-  return texture(shadow_map, ShadowAtlasCoordinates(moved, right, up, sun, origin, scale, tile));
-}
-
-// Whether a point, given relative to the planet's centre, is farther from it than every caster
-// with the sun above its horizon: along the ray toward the sun the distance to the centre only
-// grows there (r(t)^2 = r^2 + 2 t r mu_s + t^2), so no caster can lie on it.
-bool AboveEveryCaster(vec3 planet_position) {
-  return dot(planet_position, planet_position) > shadow.casters.x * shadow.casters.x &&
-         dot(planet_position, shadow.toward_sun.xyz) >= 0.0;
-}
-
-// The sun's visibility in [0, 1] at a point in the air (the froxels' ray march), given relative
-// to the camera and to the planet's centre: 1 beyond the last cascade (100 km of view depth),
-// above every caster, or with shadows off; those three read no shadow map.
-float SunVisibilityInAir(vec3 relative_position, vec3 planet_position) {
-  if (kSunShadows == 0 || AboveEveryCaster(planet_position)) return 1.0;
-  return SunVisibilityOffsetInAir(relative_position);
+  return texture(shadow_map, start + t * slope);
 }
 
 #endif

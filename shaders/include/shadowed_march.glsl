@@ -13,17 +13,15 @@
 // takes it at VISIBILITY_SAMPLES points spread over the step (their centres) and uses their mean.
 const int VISIBILITY_SAMPLES = 4;
 
-// The fraction of the step from `from` to `to` meters along the camera-relative unit ray that
-// sees the sun.
-float GetStepSunVisibility(vec3 ray, float from, float to) {
+// The fraction of the step from `from` to `to` meters along the camera's ray that sees the sun.
+float GetStepSunVisibility(ShadowRay ray, float from, float to) {
   float visible = 0.0;
-  for (int i = 0; i < VISIBILITY_SAMPLES; ++i) {
-    float t = (float(i) + 0.5) / float(VISIBILITY_SAMPLES);
-    vec3 relative = ray * mix(from, to, t);
-    visible += SunVisibilityInAir(relative, AERIAL_FRAME.camera_planet_position.xyz + relative);
-  }
+  for (int i = 0; i < VISIBILITY_SAMPLES; ++i)
+    visible += SunVisibilityOnRay(ray, mix(from, to, (float(i) + 0.5) / float(VISIBILITY_SAMPLES)));
   return visible / float(VISIBILITY_SAMPLES);
 }
+
+ShadowRay MakeCameraShadowRay(vec3 ray) { return MakeShadowRay(ray, AERIAL_FRAME.camera_planet_position.xyz); }
 
 // GetSkyInscatterToPoint (sky_lookup.glsl) along the camera's unit ray `ray`, each step's single
 // scattering scaled by the fraction of it that sees the sun.
@@ -31,11 +29,12 @@ Inscatter GetShadowedSkyInscatterToPoint(sampler2D transmittance_texture, sample
                                          vec3 ray, float r, float mu, float mu_s, float nu, float d) {
   InscatterMarch march = StartInscatterMarch(transmittance_texture, multiple_density_texture, r, mu, mu_s, nu);
   d = min(d, DistanceToNearestAtmosphereBoundary(r, mu, march.ray_r_mu_intersects_ground));
+  ShadowRay shadow_ray = MakeCameraShadowRay(ray);
   float previous = 0.0;
   for (int i = 1; i <= SEGMENT_STEPS; ++i) {
     float distance = d * float(i) / float(SEGMENT_STEPS);
     AdvanceInscatterMarch(transmittance_texture, multiple_density_texture, march, distance,
-                          GetStepSunVisibility(ray, previous, distance));
+                          GetStepSunVisibility(shadow_ray, previous, distance));
     previous = distance;
   }
   return GetInscatterMarchResult(march);
