@@ -28,6 +28,19 @@ float AltitudeLag(const std::optional<SkyViewKey>& made_for, const SkyViewKey& n
   return std::fabs(made_for->r_m - now.r_m);
 }
 
+// How far a lattice band made for `made_for` lags `now`, as the larger of its altitude's and its
+// sun's lag, each a fraction of what a moving view allows (kSkyViewLatticeLagM,
+// kSkyViewLatticeSunLag, none under a low sun); 0 within the table's own tolerances, infinite when
+// it was never made.
+float BandLag(const std::optional<SkyViewKey>& made_for, const SkyViewKey& now) {
+  if (!made_for) return INFINITY;
+  const float altitude = std::fabs(made_for->r_m - now.r_m), sun = std::fabs(made_for->mu_s - now.mu_s);
+  if (altitude <= kSkyViewAltitudeToleranceM && sun <= kSkyViewMuSTolerance) return 0.0f;
+  const bool sun_high = std::min(made_for->mu_s, now.mu_s) >= kSkyViewLatticeSunLagMinMuS;
+  const float sun_lag = sun <= kSkyViewMuSTolerance ? 0.0f : sun_high ? sun / kSkyViewLatticeSunLag : INFINITY;
+  return std::max(altitude / kSkyViewLatticeLagM, sun_lag);
+}
+
 }  // namespace
 
 bool SkyViewReusable(const std::optional<SkyViewKey>& made_for, const SkyViewKey& now, bool exact) {
@@ -37,14 +50,13 @@ bool SkyViewReusable(const std::optional<SkyViewKey>& made_for, const SkyViewKey
 
 std::array<bool, kSkyViewLatticeBands> SkyViewLatticeBandsToRemake(const SkyViewLatticeKeys& made_for,
                                                                     const SkyViewKey& now, bool exact,
-                                                                    bool camera_stopped) {
+                                                                    bool view_stopped) {
   std::array<bool, kSkyViewLatticeBands> remake{};
-  const float lag_limit = camera_stopped ? kSkyViewAltitudeToleranceM : kSkyViewLatticeLagM;
   int most_behind = -1;
-  float most_lag = kSkyViewAltitudeToleranceM;
+  float most_lag = 0.0f;
   for (int b = 0; b < kSkyViewLatticeBands; ++b) {
-    float lag = AltitudeLag(made_for[b], now);
-    remake[b] = lag > lag_limit || (exact && made_for[b] != now);
+    float lag = BandLag(made_for[b], now);
+    remake[b] = lag > (view_stopped ? 0.0f : 1.0f) || (exact && made_for[b] != now);
     if (!remake[b] && lag > most_lag) {
       most_lag = lag;
       most_behind = b;
@@ -55,9 +67,8 @@ std::array<bool, kSkyViewLatticeBands> SkyViewLatticeBandsToRemake(const SkyView
 }
 
 bool SkyViewLatticeCaughtUp(const SkyViewLatticeKeys& made_for, const SkyViewKey& now) {
-  return std::all_of(made_for.begin(), made_for.end(), [&](const std::optional<SkyViewKey>& band) {
-    return AltitudeLag(band, now) <= kSkyViewAltitudeToleranceM;
-  });
+  return std::all_of(made_for.begin(), made_for.end(),
+                     [&](const std::optional<SkyViewKey>& band) { return BandLag(band, now) == 0.0f; });
 }
 
 bool FroxelsReusable(const std::optional<FrameUniforms>& built_for, const FrameUniforms& now,

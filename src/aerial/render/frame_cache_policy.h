@@ -39,25 +39,34 @@ bool SkyViewReusable(const std::optional<SkyViewKey>& made_for, const SkyViewKey
 // The correction at the lattice's nodes (sky_view_correction.comp) is most of the cost of remaking
 // the table: it marches six suns along each of 1,862 rays, about 30 ms of process CPU of the
 // moving-camera frame on lavapipe (noon). It changes far more slowly with the camera's altitude
-// than the table's texels do, so its rows are made in kSkyViewLatticeBands bands, each for the
-// altitude of its own frame, and a climbing camera remakes one band a frame, the one that lags
-// most, instead of all eight: time-sliced, as engines update their sky and probe captures.
+// and the sun's angle than the table's texels do, so its rows are made in kSkyViewLatticeBands
+// bands, each for the altitude and the sun of its own frame, and a climbing camera or a moving sun
+// remakes one band a frame, the one that lags most, instead of all eight: time-sliced, as engines
+// update their sky and probe captures.
 //  - A band may lag the camera by up to kSkyViewLatticeLagM. With the whole lattice 49 m behind and
 //    the table's texels remade, the frame moved by at most 0.069% relative RMSE (twilight 1 km up;
 //    sunset 0.019%, noon 0.006%; tested), less than the table's own 10 m tolerance moves it
 //    (0.09% at sunset, 0.35% at twilight). At 99 m it was 0.087% at sunset, 0.11% at twilight.
-//  - A band further behind is remade at once, and so is every band when the sun moves, on the
-//    first frame, and in an exact frame not made for its own r and mu_s, as the table is.
-//  - A band within the table's 10 m is left as it is.
-//  - A camera that stopped (the same view as the frame before) remakes every band beyond the
-//    table's 10 m at once, so that the view settles in one frame, as it did with a whole lattice.
+//  - A band may lag the sun by up to kSkyViewLatticeSunLag in mu_s (0.33 degrees of a sun 20
+//    degrees from the zenith) while the sun is at least kSkyViewLatticeSunLagMinMuS high (6 degrees
+//    above the horizon) for the band and the frame: with the whole lattice 0.0019 behind and the
+//    table's texels remade, the frame moved by at most 0.015% relative RMSE (noon; 0.004% in the
+//    evening, 79 degrees; tested). A lower sun's Earth shadow crosses the view: 0.0002 behind, a
+//    sun 1 degree below the horizon moved the frame by 0.13%, so a band is remade at once there.
+//  - A band whose lag, in altitude or sun, is beyond its limit is remade at once, and so is every
+//    band on the first frame, and in an exact frame not made for its own r and mu_s, as the table is.
+//  - A band within the table's tolerances (10 m, mu_s 1e-5) is left as it is.
+//  - A view that stopped (the same frame as the one before: camera and sun) remakes every band
+//    beyond those tolerances at once, so that the view settles in one frame, as it did with a whole
+//    lattice.
 // The table's texels are remade after any band is (the renderer's SkyViewStale).
 inline constexpr float kSkyViewLatticeLagM = 50.0f;
+inline constexpr float kSkyViewLatticeSunLag = 2e-3f, kSkyViewLatticeSunLagMinMuS = 0.1f;
 using SkyViewLatticeKeys = std::array<std::optional<SkyViewKey>, kSkyViewLatticeBands>;
 std::array<bool, kSkyViewLatticeBands> SkyViewLatticeBandsToRemake(const SkyViewLatticeKeys& made_for,
                                                                     const SkyViewKey& now, bool exact,
-                                                                    bool camera_stopped);
-// Whether every band is within the table's tolerance of `now` (nothing is left for later frames).
+                                                                    bool view_stopped);
+// Whether every band is within the table's tolerances of `now` (nothing is left for later frames).
 bool SkyViewLatticeCaughtUp(const SkyViewLatticeKeys& made_for, const SkyViewKey& now);
 
 // ---- The terrain's chunks ----

@@ -52,8 +52,8 @@ TEST(FrameCachePolicy, SkyViewKeptWithinTenMetersAndTheSunsTolerance) {
 
 // The bands a frame remakes, as the list of their indices.
 std::vector<int> BandsRemade(const SkyViewLatticeKeys& made_for, const SkyViewKey& now, bool exact,
-                             bool camera_stopped = false) {
-  std::array<bool, kSkyViewLatticeBands> remake = SkyViewLatticeBandsToRemake(made_for, now, exact, camera_stopped);
+                             bool view_stopped = false) {
+  std::array<bool, kSkyViewLatticeBands> remake = SkyViewLatticeBandsToRemake(made_for, now, exact, view_stopped);
   std::vector<int> bands;
   for (int b = 0; b < kSkyViewLatticeBands; ++b)
     if (remake[b]) bands.push_back(b);
@@ -66,11 +66,14 @@ SkyViewLatticeKeys AllBands(const SkyViewKey& key) {
   return keys;
 }
 
-TEST(FrameCachePolicy, SkyViewLatticeBandsAreMadeAllAtOnceForANewSunOrAnExactFrame) {
+TEST(FrameCachePolicy, SkyViewLatticeBandsAreMadeAllAtOnceForAFarSunOrAnExactFrame) {
   const SkyViewKey made{kR + 100.0f, 0.5f};
   const std::vector<int> all = {0, 1, 2, 3, 4, 5, 6, 7};
   EXPECT_EQ(BandsRemade({}, made, false), all) << "the first frame";
-  EXPECT_EQ(BandsRemade(AllBands(made), {kR + 100.0f, 0.5f + 3e-5f}, false), all) << "the sun moved";
+  EXPECT_EQ(BandsRemade(AllBands(made), {kR + 100.0f, 0.5f + 1.01f * kSkyViewLatticeSunLag}, false), all)
+      << "the sun moved beyond the lag allowed";
+  EXPECT_EQ(BandsRemade(AllBands({kR + 100.0f, 0.05f}), {kR + 100.0f, 0.05f + 3e-5f}, false), all)
+      << "a sun 3 degrees high moved";
   EXPECT_EQ(BandsRemade(AllBands(made), {kR + 105.0f, 0.5f}, true), all) << "an exact frame 5 m higher";
   EXPECT_TRUE(BandsRemade(AllBands(made), made, true).empty()) << "an exact frame of the same r and mu_s";
   SkyViewLatticeKeys one_behind = AllBands(made);
@@ -101,6 +104,29 @@ TEST(FrameCachePolicy, SkyViewLatticeBandsFollowAClimbingCameraOneAFrame) {
   EXPECT_EQ(BandsRemade(keys, made, false), std::vector<int>{5});
   keys[5] = SkyViewKey{kR + 100.0f - kSkyViewLatticeLagM + 1.0f, 0.5f};
   EXPECT_EQ(BandsRemade(keys, made, false), std::vector<int>{5}) << "49 m behind: the one most behind";
+}
+
+// A sun that moves 2e-4 a frame in mu_s, high enough for the bands to lag it: each frame remakes
+// the band made longest ago, and a band that lags both the camera and the sun counts its larger lag.
+TEST(FrameCachePolicy, SkyViewLatticeBandsFollowAMovingSunOneAFrame) {
+  const SkyViewKey made{kR + 100.0f, 0.5f};
+  EXPECT_TRUE(BandsRemade(AllBands(made), {kR + 100.0f, 0.5f + 0.9e-5f}, false).empty()) << "within the table's mu_s";
+  SkyViewLatticeKeys keys = AllBands(made);
+  for (int frame = 1; frame <= 3; ++frame) {
+    SkyViewKey now{kR + 100.0f, 0.5f - 2e-4f * float(frame)};
+    std::vector<int> bands = BandsRemade(keys, now, false);
+    ASSERT_EQ(bands.size(), 1u) << "frame " << frame;
+    EXPECT_EQ(bands[0], frame - 1) << "frame " << frame;
+    keys[bands[0]] = now;
+  }
+  keys = AllBands(made);
+  keys[3] = SkyViewKey{kR + 80.0f, 0.5f};  // 20 m behind: 0.4 of its limit
+  keys[6] = SkyViewKey{kR + 100.0f, 0.5f + 0.5f * kSkyViewLatticeSunLag};
+  EXPECT_EQ(BandsRemade(keys, made, false), std::vector<int>{6}) << "half the sun's limit behind";
+  keys[3] = SkyViewKey{kR + 100.0f - 0.6f * kSkyViewLatticeLagM, 0.5f};
+  EXPECT_EQ(BandsRemade(keys, made, false), std::vector<int>{3}) << "0.6 of the altitude's limit behind";
+  EXPECT_EQ(BandsRemade(keys, made, false, true), (std::vector<int>{3, 6})) << "the view stopped";
+  EXPECT_FALSE(SkyViewLatticeCaughtUp(keys, made));
 }
 
 TEST(FrameCachePolicy, SkyViewLatticeBandsOfAStoppedCameraAllCatchUpAtOnce) {
