@@ -49,7 +49,7 @@ struct CasterBounds {
   glm::dvec3 center{0.0};
   double radius_m = 0.0;
   // The largest distance of a caster from the planet's centre: the air above it is in the sun
-  // wherever the sun is above the local horizon (shadow.glsl, SunVisibilityInAir).
+  // wherever the sun is above the local horizon (shadow.glsl, SunVisibilityOnRay).
   double top_radius_m = 0.0;
   // The smallest distance from the planet's centre of a point that reads the map: the ground,
   // the terrain's lowest hollow and the meshes' lowest vertex.
