@@ -49,7 +49,7 @@ bool SkyViewReusable(const std::optional<SkyViewKey>& made_for, const SkyViewKey
 //    (0.09% at sunset, 0.35% at twilight). At 99 m it was 0.087% at sunset, 0.11% at twilight.
 //  - A band may lag the sun by up to kSkyViewLatticeSunLag in mu_s (0.33 degrees of a sun 20
 //    degrees from the zenith) while the sun is at least kSkyViewLatticeSunLagMinMuS high (6 degrees
-//    above the horizon) for the band and the frame: with the whole lattice 0.0019 behind and the
+//    above the horizon) for the band and the frame: with seven bands of eight 0.0019 behind and the
 //    table's texels remade, the frame moved by at most 0.015% relative RMSE (noon; 0.004% in the
 //    evening, 79 degrees; tested). A lower sun's Earth shadow crosses the view: 0.0002 behind, a
 //    sun 1 degree below the horizon moved the frame by 0.13%, so a band is remade at once there.
