@@ -218,23 +218,36 @@ void LookEastAfterSunset(Scene& scene) {
   scene.camera.yaw_deg = 90.0;
 }
 
+// The views that judge the sky-view table: a preset tilted up to mostly sky, the sunset one looking
+// east after sunset.
+Scene MostlySky(const char* preset) {
+  Scene scene = BuildPreset(preset, FullTables().atmosphere().bottom_radius_m);
+  if (scene.name == "sunset") LookEastAfterSunset(scene);
+  scene.camera.pitch_deg = 10.0;
+  return scene;
+}
+
+// The frame a renderer that draws only this view draws of it.
+ImageRgbF FreshFrame(const Scene& scene, const RenderOptions& options) {
+  Renderer fresh(FullTables(), scene, options);
+  fresh.Render(scene);
+  return fresh.ReadOutput();
+}
+
 // A table made 10 m below the camera (the most the cache lets it lag) against a fresh one, after
 // sunset: measured 0.048% relative RMSE, far below the 0.2-0.8% between the sky-view table and the
 // per-pixel sky. The table is read with its own horizon's rows (sky_view.comp); read with the
 // camera's new horizon instead, each row's direction shifts with the horizon's dip and the same
 // table is 0.095-0.103% off, which the bound of 0.07% tells.
 TEST_F(LeanFrame, SkyViewTableTenMetersOffChangesLittle) {
-  Scene scene = BuildPreset("sunset", FullTables().atmosphere().bottom_radius_m);
-  LookEastAfterSunset(scene);
-  scene.camera.pitch_deg = 10.0;  // mostly sky
-  Renderer lagging(FullTables(), scene, {.width = 320, .height = 180});
+  Scene scene = MostlySky("sunset");
+  const RenderOptions options{.width = 320, .height = 180};
+  Renderer lagging(FullTables(), scene, options);
   lagging.Render(scene, kStream);
   scene.camera.position.z += 9.9;
   lagging.Render(scene, kStream);
   ASSERT_FALSE(lagging.frame_info().sky_view_updated);
-  Renderer fresh(FullTables(), scene, {.width = 320, .height = 180});
-  fresh.Render(scene);
-  double rmse = validation::EnergyWeightedRelativeRmse(lagging.ReadOutput(), fresh.ReadOutput());
+  double rmse = validation::EnergyWeightedRelativeRmse(lagging.ReadOutput(), FreshFrame(scene, options));
   std::printf("sky-view table 9.9 m off: relative RMSE %.4f%%\n", 100 * rmse);
   EXPECT_GT(rmse, 0.0);
   EXPECT_LT(rmse, 0.0007);
@@ -247,26 +260,24 @@ TEST_F(LeanFrame, SkyViewTableTenMetersOffChangesLittle) {
 // (LookEastAfterSunset) and 0.033% at twilight 1 km up, where the lattice's lag moves the frame most.
 TEST_F(LeanFrame, SkyViewLatticeLaggingByItsLimitChangesLittle) {
   for (auto [preset, altitude_m] : {std::pair{"sunset", 0.0}, std::pair{"twilight", 1000.0}}) {
-    Scene scene = BuildPreset(preset, FullTables().atmosphere().bottom_radius_m);
-    if (scene.name == "sunset") LookEastAfterSunset(scene);
-    scene.camera.pitch_deg = 10.0;  // mostly sky
+    Scene scene = MostlySky(preset);
     scene.camera.position.z += altitude_m;
-    Renderer lagging(FullTables(), scene, {.width = 320, .height = 180});
+    const RenderOptions options{.width = 320, .height = 180};
+    Renderer lagging(FullTables(), scene, options);
     lagging.Render(scene, kStream);
     scene.camera.position.z += kSkyViewLatticeLagM - 1.0;
     lagging.Render(scene, kStream);
     ASSERT_TRUE(lagging.frame_info().sky_view_updated);
     EXPECT_FALSE(lagging.frame_info().settled) << "seven bands lag";
-    Renderer fresh(FullTables(), scene, {.width = 320, .height = 180});
-    fresh.Render(scene);
-    double rmse = validation::EnergyWeightedRelativeRmse(lagging.ReadOutput(), fresh.ReadOutput());
+    const ImageRgbF fresh = FreshFrame(scene, options);
+    double rmse = validation::EnergyWeightedRelativeRmse(lagging.ReadOutput(), fresh);
     std::printf("%s: lattice %.0f m behind: relative RMSE %.4f%%\n", preset, kSkyViewLatticeLagM - 1.0, 100 * rmse);
     EXPECT_GT(rmse, 0.0);
     EXPECT_LT(rmse, 0.001);
     // The camera stopped: its next frame catches the lattice up and settles.
     lagging.Render(scene, kStream);
     EXPECT_TRUE(lagging.frame_info().settled);
-    EXPECT_EQ(validation::EnergyWeightedRelativeRmse(lagging.ReadOutput(), fresh.ReadOutput()), 0.0);
+    EXPECT_EQ(validation::EnergyWeightedRelativeRmse(lagging.ReadOutput(), fresh), 0.0);
   }
 }
 
@@ -278,9 +289,7 @@ TEST_F(LeanFrame, SkyViewLatticeLaggingByItsLimitChangesLittle) {
 // 0.0038% in the evening. A sun below the horizon (sunset) remakes every band at once.
 TEST_F(LeanFrame, SkyViewLatticeLaggingTheSunByItsLimitChangesLittle) {
   for (const char* preset : {"noon", "evening", "sunset"}) {
-    Scene scene = BuildPreset(preset, FullTables().atmosphere().bottom_radius_m);
-    if (scene.name == "sunset") LookEastAfterSunset(scene);
-    scene.camera.pitch_deg = 10.0;  // mostly sky
+    Scene scene = MostlySky(preset);
     const RenderOptions options{.width = 320, .height = 180, .shadows = false};
     Renderer lagging(FullTables(), scene, options);
     lagging.Render(scene, kStream);
@@ -289,9 +298,8 @@ TEST_F(LeanFrame, SkyViewLatticeLaggingTheSunByItsLimitChangesLittle) {
     scene.sun.zenith_deg = glm::degrees(std::acos(mu_s - 0.95 * kSkyViewLatticeSunLag));
     lagging.Render(scene, kStream);
     ASSERT_TRUE(lagging.frame_info().sky_view_updated);
-    Renderer fresh(FullTables(), scene, options);
-    fresh.Render(scene);
-    double rmse = validation::EnergyWeightedRelativeRmse(lagging.ReadOutput(), fresh.ReadOutput());
+    const ImageRgbF fresh = FreshFrame(scene, options);
+    double rmse = validation::EnergyWeightedRelativeRmse(lagging.ReadOutput(), fresh);
     std::printf("%s, sun %.1f degrees from the zenith: lattice %.4f behind in mu_s: relative RMSE %.4f%%\n", preset,
                 scene.sun.zenith_deg, 0.95 * kSkyViewLatticeSunLag, 100 * rmse);
     if (scene.name == "sunset") {
@@ -305,7 +313,7 @@ TEST_F(LeanFrame, SkyViewLatticeLaggingTheSunByItsLimitChangesLittle) {
     // The sun stopped: the next frame catches the lattice up and settles.
     lagging.Render(scene, kStream);
     EXPECT_TRUE(lagging.frame_info().settled);
-    EXPECT_EQ(validation::EnergyWeightedRelativeRmse(lagging.ReadOutput(), fresh.ReadOutput()), 0.0);
+    EXPECT_EQ(validation::EnergyWeightedRelativeRmse(lagging.ReadOutput(), fresh), 0.0);
   }
 }
 
