@@ -627,11 +627,11 @@ RecordedDraws Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::Gr
       if (pixel_reads && bool(mesh_reads_per_pixel_[i]) != *pixel_reads) continue;
       commands.Add(draws[i].index_count, draws[i].first_index, 0, draws[i].ground ? ground : 0);
     }
-    vk::SetCullBackFaces(cmd, !double_sided);
+    vk::SetCullMode(cmd, double_sided ? ::vk::CullModeFlagBits::eNone : ::vk::CullModeFlagBits::eBack);
     recorded.draws += commands.Draw(cmd);
   }
   if (terrain_chunks_.empty()) return recorded;
-  vk::SetCullBackFaces(cmd, true);
+  vk::SetCullMode(cmd, ::vk::CullModeFlagBits::eBack);
   vk::BindMesh(cmd, terrain_->vertices(), terrain_->indices());
   const size_t first = pixel_reads.value_or(true) ? 0 : terrain_per_pixel_;
   const size_t end = pixel_reads.value_or(false) ? terrain_per_pixel_ : terrain_chunks_.size();

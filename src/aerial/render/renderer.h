@@ -108,6 +108,7 @@ class Renderer {
   // passes that look the sun's visibility up.
   const vk::Buffer& shadow_buffer(uint32_t slot) const { return shadow_buffers_[slot]; }
   const ShadowMap& shadow_map() const { return shadow_map_; }
+  const ShadowCascades& shadow_cascades() const { return shadow_cascades_; }  // of the last frame
   const AtmosphereTables& tables() const { return tables_; }
   const FroxelVolume& froxels() const { return froxels_; }
   const FrameUniforms& frame_uniforms() const { return frame_uniforms_; }  // of the last frame

@@ -25,13 +25,22 @@ struct CascadeConstants {
   std::array<float, 4> camera_scene_position;
 };
 
+// Along a ray from the sun, the first surface of the terrain (a heightfield) it meets faces the sun,
+// so the terrain's triangles turned away from it never hold a texel's depth: they are culled,
+// which under a low sun, where each ray crosses many hills, takes much of the tile's rasterizing
+// away. The tile's axes (right, up, toward the sun) are right-handed, so a sun-facing triangle,
+// counter-clockwise seen from above, is counter-clockwise in clip x and y, and so clockwise by
+// Vulkan's rule in framebuffer coordinates: "back" to the pipeline's counter-clockwise front faces.
+// The scene's meshes may be open or double-sided, so they keep both sides.
+constexpr ::vk::CullModeFlags kTerrainTurnedAwayFromTheSun = ::vk::CullModeFlagBits::eFront;
+
 vk::GraphicsPipelineCreateInfo DepthPipeline() {
   return {.vertex_shader = "frame/shadow_depth.vert",
           .push_constant_bytes = sizeof(CascadeConstants),
           .vertex_stride = sizeof(Vertex),
           .attributes = {{::vk::Format::eR32G32B32Sfloat, offsetof(Vertex, position)}},
           .depth_format = kShadowFormat,
-          .cull = ::vk::CullModeFlagBits::eNone};
+          .dynamic_cull_mode = true};
 }
 
 }  // namespace
@@ -76,11 +85,13 @@ RecordedDraws ShadowMap::Record(const vk::CommandBuffer& cmd, const ShadowCascad
     depth_.Bind(cmd, {}, &constants);
     ++recorded.binds;
     if (geometry.opaque_index_count() > 0) {
+      vk::SetCullMode(cmd, ::vk::CullModeFlagBits::eNone);
       vk::BindMesh(cmd, geometry.opaque_vertices(), geometry.opaque_indices());
       vk::DrawIndexed(cmd, geometry.opaque_index_count());
       ++recorded.draws;
     }
     if (!terrain || chunks[i].empty()) continue;
+    vk::SetCullMode(cmd, kTerrainTurnedAwayFromTheSun);
     vk::BindMesh(cmd, terrain->vertices(), terrain->indices());
     for (const terrain::SelectedChunk& chunk : chunks[i]) {
       terrain::IndexRange range = terrain::ChunkIndexRange(chunk.skirts);

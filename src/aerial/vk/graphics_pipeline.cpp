@@ -162,9 +162,7 @@ void SetViewport(const CommandBuffer& cmd, ::vk::Extent2D extent, ::vk::Offset2D
 
 void SetScissor(const CommandBuffer& cmd, const ::vk::Rect2D& rect) { cmd.setScissor(0, rect); }
 
-void SetCullBackFaces(const CommandBuffer& cmd, bool cull_back) {
-  cmd.setCullMode(cull_back ? ::vk::CullModeFlagBits::eBack : ::vk::CullModeFlagBits::eNone);
-}
+void SetCullMode(const CommandBuffer& cmd, ::vk::CullModeFlags mode) { cmd.setCullMode(mode); }
 
 void BindMesh(const CommandBuffer& cmd, const Buffer& vertices, const Buffer& indices) {
   cmd.bindVertexBuffers(0, vertices.handle(), ::vk::DeviceSize(0));

@@ -90,7 +90,7 @@ void SetViewport(const CommandBuffer& cmd, ::vk::Extent2D extent, ::vk::Offset2D
 void SetScissor(const CommandBuffer& cmd, const ::vk::Rect2D& rect);
 // Inside a Rendering scope: sets the depth target to `depth` within the rectangle alone.
 void ClearDepth(const CommandBuffer& cmd, const ::vk::Rect2D& rect, float depth);
-void SetCullBackFaces(const CommandBuffer& cmd, bool cull_back);
+void SetCullMode(const CommandBuffer& cmd, ::vk::CullModeFlags mode);
 void BindMesh(const CommandBuffer& cmd, const Buffer& vertices, const Buffer& indices);
 // One instance, numbered first_instance (gl_InstanceIndex): a draw's own number for its shaders.
 void DrawIndexed(const CommandBuffer& cmd, uint32_t index_count, uint32_t first_index = 0,
