@@ -213,8 +213,10 @@ TEST_F(ShadowRender, TilesHoldWhereTheSunsRaysFirstMeetTheTerrain) {
                             (glm::dvec2(u + 0.5, v + 0.5) / double(kShadowTileTexels) * 2.0 - 1.0) * tile.radius_m;
       if (glm::any(glm::lessThan(xy, tile.casters_min)) || glm::any(glm::greaterThan(xy, tile.casters_max))) continue;
       auto at = [&](double s) { return light.right * xy.x + light.up * xy.y + light.toward_sun * s; };
-      // Down the ray from the casters' top: steps no longer than the height above the terrain over
-      // 2.5 (the ray sinks 0.19 m a metre, the ridges rise at most about 2), so no ridge is crossed.
+      // Down the ray from the casters' top, in steps of the height above the terrain over 2.5: the ray
+      // sinks 0.19 m a metre, so a step crosses no slope rising less than 2.3 m a metre (66 degrees)
+      // toward it. A steeper one crossed would put the entry later, where the tile's depth would
+      // count as nearer the sun than it, never beyond.
       std::optional<double> entry;
       for (double s = tile.depth_max_m; s > tile.depth_min_m;) {
         const glm::dvec3 p = at(s);
