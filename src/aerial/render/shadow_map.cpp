@@ -27,8 +27,8 @@ struct CascadeConstants {
 
 // Along a ray from the sun, the first surface of the terrain (a heightfield) it meets faces the sun,
 // so the terrain's triangles turned away from it never hold a texel's depth: they are culled,
-// which under a low sun, where each ray crosses many hills, takes much of the tile's rasterizing
-// away. The tile's axes (right, up, toward the sun) are right-handed, so a sun-facing triangle,
+// sparing the rasterizer the far sides of the hills, many of which a low sun's rays cross. The
+// tile's axes (right, up, toward the sun) are right-handed, so a sun-facing triangle,
 // counter-clockwise seen from above, is counter-clockwise in clip x and y, and so clockwise by
 // Vulkan's rule in framebuffer coordinates: "back" to the pipeline's counter-clockwise front faces.
 // The scene's meshes may be open or double-sided, so they keep both sides.
