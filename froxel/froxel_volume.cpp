@@ -64,8 +64,8 @@ void FroxelVolume::Build(const vk::CommandBuffer& cmd, const AtmosphereTables& t
   Build(cmd, tables, frame_uniforms, no_shadow_block_, {&no_shadow_map_, *no_shadow_sampler_}, variant);
 }
 
-FroxelTexels FroxelVolume::Read(const vk::Context& context) const {
-  FroxelTexels texels{.grid = grid_};
+FroxelTexels FroxelVolume::Read(const vk::Context& context, const FrameUniforms& frame) const {
+  FroxelTexels texels{.grid = grid_, .rows = FroxelRows::Unpack(frame.froxel_rows)};
   texels.rayleigh = vk::ReadImageFloats(context, rayleigh_);
   texels.mie = vk::ReadImageFloats(context, mie_);
   texels.transmittance = vk::ReadImageFloats(context, transmittance_);

@@ -33,9 +33,10 @@ class FroxelVolume {
   const vk::Image& mie() const { return mie_; }
   const vk::Image& transmittance() const { return transmittance_; }
 
-  // Copies the three images back as computed (RGBA float texels). Call after the frame that
-  // built them has finished (Renderer::Render waits for it).
-  FroxelTexels Read(const vk::Context& context) const;
+  // Copies the three images back as computed (RGBA float texels), with the rows of `frame`, the
+  // FrameBlock that built them. Call after the frame that built them has finished
+  // (Renderer::Render waits for it).
+  FroxelTexels Read(const vk::Context& context, const FrameUniforms& frame) const;
 
  private:
   FroxelGrid grid_;

@@ -50,7 +50,7 @@ Comparison CompareVariants(const std::string& preset) {
   auto build = [&](FroxelPassVariant variant) {
     FroxelVolume volume(context, grid);
     context.Submit([&](const vk::CommandBuffer& cmd) { volume.Build(cmd, tables, block, variant); });
-    return volume.Read(context);
+    return volume.Read(context, frame);
   };
   Comparison result{ChooseFroxelPassVariant(frame, R),
                     LargestDifference(build(FroxelPassVariant::kGeneral), build(FroxelPassVariant::kSunHigh))};

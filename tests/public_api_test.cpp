@@ -39,12 +39,12 @@ TEST_F(PublicApi, FroxelsRecordedByTheCallerEqualTheRenderersUnshadowedVolume) {
   RenderOptions options{.width = 160, .height = 90, .shadows = false};
   Renderer renderer(ImplOf(tables).tables(), scene, options);
   renderer.Render(scene);
-  FroxelTexels expected = renderer.froxels().Read(context);
+  FroxelTexels expected = renderer.froxels().Read(context, renderer.frame_uniforms());
 
   Froxels froxels(device, options.froxels);
   FrameCamera camera = MakeFrameCamera(scene, options.width, options.height);
   context.Submit([&](const vk::CommandBuffer& cmd) { froxels.Record(*cmd, tables, camera); });
-  FroxelTexels built = ImplOf(froxels).volume.Read(context);
+  FroxelTexels built = ImplOf(froxels).volume.Read(context, renderer.frame_uniforms());
 
   const size_t texels = size_t(options.froxels.width) * options.froxels.height * options.froxels.depth;
   ASSERT_EQ(built.rayleigh.size(), 4 * texels);

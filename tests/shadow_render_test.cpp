@@ -438,8 +438,9 @@ TEST_F(ShadowRender, KeptTilesDrawTheFrameThatFreshOnesDraw) {
 // for float rounding: each redraw places the casters relative to its own frame's camera, so a
 // depth may differ in its last bits (measured: 1872 of the atlas' 4M texels by 1e-6 to 1e-5) and,
 // where an edge passes within that rounding of a texel's centre, the texel may show the next
-// caster (10 texels by over 1e-5). Not clearing the region leaves the replaced chunks' depths:
-// 1343 texels over 1e-5. Drawing none of its chunks leaves holes and changes the view by 7%.
+// caster (10 texels by over 1e-5), which moves the view by 5.9e-6 relative RMSE (the froxel rows,
+// gathered at the horizon, pass those texels). Not clearing the region leaves the replaced chunks'
+// depths: 1343 texels over 1e-5. Drawing none of its chunks leaves holes and changes the view by 7%.
 TEST_F(ShadowRender, ChangedCastersRedrawTheirTexelsAsAWholeTileRedrawWould) {
   const AtmosphereTables& tables = SmallTables();
   const Scene start = BuildPreset("evening", tables.atmosphere().bottom_radius_m);
@@ -476,7 +477,7 @@ TEST_F(ShadowRender, ChangedCastersRedrawTheirTexelsAsAWholeTileRedrawWould) {
               "RMSE\n",
               in_part.regions_redrawn, off, view);
   EXPECT_LE(off, 50u);
-  EXPECT_LE(view, 1e-6);
+  EXPECT_LE(view, 2e-5);
 }
 
 // A frame of a still view reads the sun visibility that the frame before it looked up
@@ -534,7 +535,7 @@ ShadowedVolumes BuildEveningVolumes() {
   auto build = [&](bool shadows) {
     Renderer renderer(tables, scene, {.width = kWidth, .height = kHeight, .shadows = shadows});
     renderer.Render(scene);
-    return std::pair{renderer.froxels().Read(tables.context()), renderer.frame_uniforms()};
+    return std::pair{renderer.froxels().Read(tables.context(), renderer.frame_uniforms()), renderer.frame_uniforms()};
   };
   auto [on, frame] = build(true);
   return {on, build(false).first, frame, scene, double(kWidth) / kHeight};
@@ -551,7 +552,7 @@ double RayleighGreen(const FroxelTexels& t, int x, int y, int slice) {
 // shadow map's reach (the shader sees the sun beyond its last cascade, 100 km of view depth).
 std::vector<std::array<SunSeen, 4>> ColumnVisibility(const ShadowedVolumes& v, int x, int y, int slices) {
   const FroxelGrid& grid = v.on.grid;
-  glm::dvec3 ray = ViewRayFromScreen(v.frame, {(x + 0.5) / grid.width, (y + 0.5) / grid.height});
+  glm::dvec3 ray = ViewRayFromScreen(v.frame, {(x + 0.5) / grid.width, v.on.rows.ScreenRow((y + 0.5) / grid.height)});
   double R = SmallTables().atmosphere().bottom_radius_m;
   std::vector<std::array<SunSeen, 4>> steps;
   double previous = 0.0;
@@ -640,7 +641,8 @@ TEST_F(FroxelShadows, PartlyShadowedColumnsMatchTheCpuMarch) {
   std::vector<double> widths;  // of the brackets, relative to their middle
   for (int y = 0; y < v.on.grid.height; y += 2) {
     for (int x = 0; x < v.on.grid.width; x += 2) {
-      glm::dvec3 ray = ViewRayFromScreen(v.frame, {(x + 0.5) / v.on.grid.width, (y + 0.5) / v.on.grid.height});
+      glm::dvec3 ray = ViewRayFromScreen(
+          v.frame, {(x + 0.5) / v.on.grid.width, v.on.rows.ScreenRow((y + 0.5) / v.on.grid.height)});
       int end = 0;  // slice steps whose samples are all in the air and within 80 km
       while (end < v.on.grid.depth && v.on.grid.SliceDistance(end + 0.5) < 80e3 &&
              HeightAboveTerrainM(v.scene.camera.position + ray * v.on.grid.SliceDistance(end + 0.5), R) > 0.0)
@@ -670,14 +672,17 @@ TEST_F(FroxelShadows, PartlyShadowedColumnsMatchTheCpuMarch) {
       ++checked;
     }
   }
+  const auto decided = std::count_if(widths.begin(), widths.end(), [](double w) { return w < 0.3; });
   std::nth_element(widths.begin(), widths.begin() + widths.size() / 2, widths.end());
   double median_width = widths.empty() ? 1.0 : widths[widths.size() / 2];
   std::printf("froxels: %d partly shadowed columns, worst %.3f%% outside the CPU march's bracket, "
-              "median bracket %.2f%% wide\n", checked, 100 * worst, 100 * median_width);
+              "median bracket %.2f%% wide, %td under 30%% wide\n", checked, 100 * worst, 100 * median_width, decided);
   EXPECT_GT(checked, 10);
   // The check means something only where the CPU decides most samples: a column's bracket spans
-  // the single scattering of its undecided samples (measured: median 24.8% of it wide).
-  EXPECT_LT(median_width, 0.3);
+  // the single scattering of its undecided samples. The rows gather at the horizon (froxel_rows.h),
+  // where rays graze the shadows' edges and leave more samples undecided (measured: median 69.6%
+  // wide, 40 of 143 columns under 30%).
+  EXPECT_GE(decided, 20);
 }
 
 }  // namespace

@@ -95,15 +95,15 @@ bool BelowTerrain(const glm::dvec3& point, double planet_radius_m) {
 // The shaders' read of the froxels at screen position (u, v) and a distance (SampleFroxels in
 // shaders/include/froxel.glsl), written here from the GLSL and Vulkan's linear filtering with
 // clamp-to-edge addressing, independently of FroxelTexels::Read (froxel_placement.cpp), which the
-// world grid calls: texture coordinate (u, v, grid.DepthCoordinate(distance)) times the size, less
-// half a texel, weighs the two nearest texels on each axis, their indices clamped to the edge;
-// below the first slice center, grid.SliceDistance(0.5), the values blend toward the empty
-// segment. The depth mapping itself is FroxelGrid's (tests/cpu_gpu_mapping_test.cpp holds it
-// to the shaders').
+// world grid calls: texture coordinate (u, rows.RowCoordinate(v), grid.DepthCoordinate(distance))
+// times the size, less half a texel, weighs the two nearest texels on each axis, their indices
+// clamped to the edge; below the first slice center, grid.SliceDistance(0.5), the values blend
+// toward the empty segment. The row and depth mappings themselves are FroxelRows' and FroxelGrid's
+// (tests/cpu_gpu_mapping_test.cpp holds them to the shaders').
 FroxelTexels::Sample ReadLikeTheShader(const FroxelTexels& texels, double u, double v, double distance) {
   const FroxelGrid& grid = texels.grid;
   const int size[3] = {grid.width, grid.height, grid.depth};
-  const double coordinate[3] = {u * size[0] - 0.5, v * size[1] - 0.5,
+  const double coordinate[3] = {u * size[0] - 0.5, texels.rows.RowCoordinate(v) * size[1] - 0.5,
                                 grid.DepthCoordinate(distance) * size[2] - 0.5};
   int low[3];
   double fraction[3];
@@ -203,7 +203,8 @@ class VdbExport : public GpuTest {
 FroxelTexels GpuTexels(const Renderer& renderer, const FroxelGrid& grid) {
   const vk::Context& context = renderer.tables().context();
   const FroxelVolume& froxels = renderer.froxels();
-  return {grid, vk::ReadImageFloats(context, froxels.rayleigh()), vk::ReadImageFloats(context, froxels.mie()),
+  return {grid, FroxelRows::Unpack(renderer.frame_uniforms().froxel_rows),
+          vk::ReadImageFloats(context, froxels.rayleigh()), vk::ReadImageFloats(context, froxels.mie()),
           vk::ReadImageFloats(context, froxels.transmittance())};
 }
 
@@ -358,7 +359,8 @@ TEST_F(VdbExport, DensityIsTheRateTheTransmittanceFalls) {
   for (int k = 0; k < grid.depth; ++k)
     for (int j = 0; j < grid.height; ++j)
       for (int i = 0; i < grid.width; ++i) {
-        glm::dvec3 ray = RendererRay(frame.uniforms, (i + 0.5) / grid.width, (j + 0.5) / grid.height);
+        glm::dvec3 ray =
+            RendererRay(frame.uniforms, (i + 0.5) / grid.width, frame.texels.rows.ScreenRow((j + 0.5) / grid.height));
         double distance = grid.SliceDistance(k + 0.5);
         if (BelowTerrain(camera + ray * distance, air.bottom_radius_m)) continue;
         constexpr int kSteps = 1024;
@@ -501,7 +503,7 @@ TEST_F(VdbExport, CpuReadAtFroxelCentersGivesTheTexels) {
   for (int k : {0, 5, grid.depth - 1})
     for (int j : {0, 3, grid.height - 1})
       for (int i : {0, 7, grid.width - 1}) {
-        glm::dvec2 uv((i + 0.5) / grid.width, (j + 0.5) / grid.height);
+        glm::dvec2 uv((i + 0.5) / grid.width, frame.texels.rows.ScreenRow((j + 0.5) / grid.height));
         FroxelTexels::Sample sample = frame.texels.Read(uv, grid.SliceDistance(k + 0.5));
         size_t texel = ((size_t(k) * grid.height + j) * grid.width + i) * 4;
         for (int c = 0; c < 3; ++c) {
@@ -561,6 +563,15 @@ TEST_F(VdbExport, MetadataRoundTrips) {
   EXPECT_EQ(Meta<std::string>(meta, "ground"), "terrain");
   EXPECT_EQ(Meta<std::string>(meta, "froxel_depth_distribution"), "quadratic");
   EXPECT_EQ(Meta<double>(meta, "froxel_far_m"), 128e3);
+  // The rows gather at the horizon, 8 degrees of pitch and the dip of the horizon seen from 350 m
+  // below the view axis; the ground there is near, the spread the default. 1e-4: 1.35 km from the
+  // scene's origin the local vertical leans 2e-4 rad off the scene's z, which moves this view's
+  // row by 4.4e-5; leaving out the dip (0.6 degrees) would move it by 1.1e-2.
+  const double R = tables().atmosphere().bottom_radius_m, dip = std::acos(R / (R + 350.0));
+  const double tan_half_fov = std::tan(scene.camera.vertical_fov_deg * M_PI / 360.0);
+  EXPECT_NEAR(Meta<double>(meta, "froxel_row_focus"), 0.5 + std::tan(8.0 * M_PI / 180.0 + dip) / (2.0 * tan_half_fov),
+              1e-4);
+  EXPECT_NEAR(Meta<double>(meta, "froxel_row_spread"), kFroxelRowSpread, 1e-8);
   using Int3 = std::array<int32_t, 3>;
   EXPECT_EQ(Meta<Int3>(meta, "froxel_resolution"), (Int3{16, 8, 12}));
   EXPECT_EQ(Meta<std::string>(meta, "atmosphere_hash"), Hex(AtmosphereParameters::Earth().Hash()));

@@ -97,8 +97,11 @@ VdbMetadata FrameMetadata(const FroxelFrame& frame, const std::string& grid_spac
       {"froxel_slice_distance_m", slices},
       {"froxel_mapping",
        std::string("froxel (i, j, k) is the point at distance froxel_far_m * ((k + 0.5) / D)^2 "
-                   "from the camera along the view ray through the image point "
-                   "((i + 0.5) / W, (j + 0.5) / H), (0, 0) the top-left corner")},
+                   "from the camera along the view ray through the image point ((i + 0.5) / W, y_j), (0, 0) "
+                   "the top-left corner, its rows gathered at the horizon: y_j = f + s sinh((j + 0.5) / H * "
+                   "(asinh((1 - f) / s) + asinh(f / s)) - asinh(f / s)), f froxel_row_focus, s froxel_row_spread")},
+      {"froxel_row_focus", frame.texels.rows.focus},
+      {"froxel_row_spread", frame.texels.rows.spread},
       {"ground", std::string(frame.terrain ? "terrain" : "planet sphere (sea level)")},
   };
 }
@@ -113,7 +116,7 @@ FrameUniforms CaptureFrameUniforms(const Scene& scene, double planet_radius_m, c
 FroxelFrame ReadFroxelFrame(const Renderer& renderer, const Scene& scene) {
   const AtmosphereTables& tables = renderer.tables();
   FroxelFrame frame;
-  frame.texels = renderer.froxels().Read(tables.context());
+  frame.texels = renderer.froxels().Read(tables.context(), renderer.frame_uniforms());
   frame.uniforms = renderer.frame_uniforms();
   frame.size = {.width = renderer.options().width, .height = renderer.options().height};
   frame.camera = scene.camera;

@@ -3,6 +3,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "aerial/shader_abi/frame_geometry.h"
+#include "aerial/shader_abi/froxel_rows.h"
 
 namespace aerial {
 namespace {
@@ -23,6 +24,7 @@ FrameUniforms MakeFrameUniforms(const FrameCamera& camera, double planet_radius_
   u.froxel_size = {grid.width, grid.height, grid.depth, 0};
   u.froxel_depth = {float(grid.far_m), 0, 0, 0};
   u.viewport = {float(camera.width), float(camera.height), 0, 0};
+  u.froxel_rows = FroxelRowsAroundHorizon(u, planet_radius_m).Packed();
   return u;
 }
 
