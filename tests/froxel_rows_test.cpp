@@ -38,15 +38,15 @@ TEST(FroxelRows, MapsTheScreenOntoTheRowsDensestAtTheFocus) {
     }
 }
 
-// The packed form is what the shaders read: focus, spread, and the span they would otherwise
-// compute per pixel.
+// The packed form is what the shaders read: focus, spread, and the span and asinh(focus / spread)
+// they would otherwise compute per read.
 TEST(FroxelRows, PacksFocusSpreadAndSpan) {
   const FroxelRows rows{.focus = 0.6, .spread = 0.05};
   const std::array<float, 4> packed = rows.Packed();
   EXPECT_EQ(packed[0], 0.6f);
   EXPECT_EQ(packed[1], 0.05f);
   EXPECT_FLOAT_EQ(packed[2], float(std::asinh(0.4 / 0.05) + std::asinh(0.6 / 0.05)));
-  EXPECT_EQ(packed[3], 0.0f);
+  EXPECT_FLOAT_EQ(packed[3], float(std::asinh(0.6 / 0.05)));
   const FroxelRows unpacked = FroxelRows::Unpack(packed);
   EXPECT_NEAR(unpacked.focus, 0.6, 1e-7);
   EXPECT_NEAR(unpacked.spread, 0.05, 1e-8);

@@ -1,10 +1,9 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Froxel pass: for each froxel, the inscatter (Rayleigh and Mie, without phase) and transmittance
-// from the camera to its slice's distance along the ray through its center on the screen (its
-// row's placed by froxel_rows.glsl). One
-// invocation walks one froxel column with one march (inscatter_march.glsl), one step per slice,
-// storing the running integral at each slice center. Each step's single scattering is scaled by
+// from the camera to its slice's distance along the ray through its center on the screen (the rows
+// placed by froxel_rows.glsl). One invocation walks one froxel column with one march
+// (inscatter_march.glsl), one step per slice, storing the running integral at each slice center. Each step's single scattering is scaled by
 // the fraction of the step that sees the sun (the shadow map, shadowed_march.glsl): light shafts
 // and mountain shadows in the air.
 #include "blocks_not_inlined.glsl"

@@ -23,7 +23,7 @@ struct FrameParameters {
   ivec4 froxel_size;             // x, y, z: froxel grid (w unused)
   vec4 froxel_depth;             // x: far distance of the last slice (m)
   vec4 viewport;                 // x, y: size in pixels
-  vec4 froxel_rows;              // x, y, z: the froxel rows' focus, spread and span (froxel_rows.glsl)
+  vec4 froxel_rows;              // the froxel rows' placement (froxel_rows.glsl)
 };
 layout(std140, set = 0, binding = 1) uniform FrameBlock {
   FrameParameters parameters[1];  // at AERIAL_BLOCK_INDEX (definitions.glsl)

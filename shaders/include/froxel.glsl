@@ -1,8 +1,7 @@
 // The froxel volume: a grid aligned with the camera frustum, x and y across the screen (its rows
 // gathered around the horizon, froxel_rows.glsl), z along the view distance with quadratic slices
-// (froxel_depth.glsl). Each froxel holds, from the camera
-// to its slice's distance along its center ray, Rayleigh and Mie inscatter WITHOUT phase and the
-// transmittance: phases are applied per pixel.
+// (froxel_depth.glsl). Each froxel holds, from the camera to its slice's distance along its center
+// ray, Rayleigh and Mie inscatter WITHOUT phase and the transmittance: phases are applied per pixel.
 #ifndef AERIAL_FROXEL_GLSL
 #define AERIAL_FROXEL_GLSL
 #include "froxel_depth.glsl"

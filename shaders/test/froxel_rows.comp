@@ -4,7 +4,7 @@
 // tests/cpu_gpu_mapping_test.cpp to hold against FroxelRows (aerial/shader_abi/froxel_rows.h).
 #include "froxel_rows.glsl"
 layout(local_size_x = 64) in;
-// Per case: the packed rows (focus, spread, span) and a value y in; y's row coordinate and, taking y
+// Per case: the packed rows (FroxelRows::Packed) and a value y in; y's row coordinate and, taking y
 // as a row coordinate, its screen row out.
 layout(std430, set = 0, binding = 0) readonly buffer RowsInputs { vec4 rows_inputs[]; };
 layout(std430, set = 0, binding = 1) readonly buffer RowsValues { float rows_values[]; };

@@ -16,7 +16,7 @@ struct alignas(16) FrameUniforms {
   std::array<int, 4> froxel_size;                 // w unused (the mode is a specialization constant)
   std::array<float, 4> froxel_depth;              // x: far distance
   std::array<float, 4> viewport;
-  std::array<float, 4> froxel_rows;               // the rows' placement (froxel_rows.glsl): focus, spread, span
+  std::array<float, 4> froxel_rows;               // the rows' placement (froxel_rows.glsl)
 };
 static_assert(sizeof(FrameUniforms) == 2 * 64 + 7 * 16);
 

@@ -17,7 +17,9 @@ double FroxelRows::ScreenRow(double row_coordinate) const {
   return focus + spread * std::sinh(row_coordinate * Span() - std::asinh(focus / spread));
 }
 
-std::array<float, 4> FroxelRows::Packed() const { return {float(focus), float(spread), float(Span()), 0.0f}; }
+std::array<float, 4> FroxelRows::Packed() const {
+  return {float(focus), float(spread), float(Span()), float(std::asinh(focus / spread))};
+}
 
 FroxelRows FroxelRows::Unpack(const std::array<float, 4>& packed) {
   return {.focus = packed[0], .spread = packed[1]};

@@ -5,8 +5,8 @@
 // row of froxels there spans hundreds of metres of height at its far end (a 32-row grid over a
 // 50 degree field is 1.6 degrees a row: 1.4 km at 50 km). The mountains' shadows in the air and the
 // air's density change over less than that, so rows spread evenly over the screen blur them: at
-// evening the froxels were 4.4% off the per-pixel march beyond 1 km, 94% of it in the distant
-// ground at the horizon, and four times the rows took it to 1.0%. Rows far above the horizon see
+// evening even rows leave the froxels 4.4% off the per-pixel march beyond 1 km, 94% of it in the
+// distant ground at the horizon, and four times as many even rows 1.0%. Rows far above the horizon see
 // the sky, which reads its own table, and rows far below it see nearby ground through little air;
 // so the rows are moved toward the horizon instead of added (as the sky-view table gathers its
 // rows at the horizon, Hillaire 2020).
@@ -38,8 +38,8 @@ inline constexpr double kFroxelRowSpread = 0.05;
 // (a camera on the ground sees none so far and keeps kFroxelRowSpread). The far ground's error was
 // in the distant ground at 30-100 km (evening) and 10-30 km (sunrise); from 30 km up (the
 // high-altitude preset) every ground pixel is farther than this and the rows stay near even (a
-// spread of half the screen), where gathering them at the horizon took its froxel vs per-pixel
-// sky from 0.87% to 1.50%.
+// spread of half the screen), where gathering them at the horizon would take its froxel vs
+// per-pixel sky from 0.87% to 1.50%.
 inline constexpr double kFroxelRowsFarGroundM = 20e3;
 
 struct FroxelRows {
@@ -50,7 +50,8 @@ struct FroxelRows {
   double RowCoordinate(double screen_y) const;  // froxel texture y of a screen row
   double ScreenRow(double row_coordinate) const;  // the inverse
 
-  // As FrameUniforms::froxel_rows holds them: focus, spread, span, 0.
+  // As FrameUniforms::froxel_rows holds them: focus, spread, span and asinh(focus / spread), the
+  // last two so that the shaders do not compute them per read.
   std::array<float, 4> Packed() const;
   static FroxelRows Unpack(const std::array<float, 4>& packed);
 };
