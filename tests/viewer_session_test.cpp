@@ -8,6 +8,7 @@
 #include <GLFW/glfw3.h>
 
 #include <functional>
+#include <map>
 #include <optional>
 
 #include "aerial/scene.h"
@@ -15,6 +16,10 @@
 #include "aerial/viewer/dynamic_resolution.h"
 #include "aerial/viewer/viewer.h"
 #include "xvfb_display.h"
+
+// Xlib last: its macros (None, Bool, Status) would rename what the headers above declare.
+#include <X11/Xlib.h>
+#include <X11/Xutil.h>
 
 namespace aerial::testing {
 namespace {
@@ -164,6 +169,73 @@ TEST_F(ViewerSession, DynamicResolutionLowersAMovingViewAndDrawsAStillOneWhole) 
   EXPECT_EQ(viewer.renderer().options().render_scale, 1.0) << "the path has ended: a still view";
   StepFrames(viewer, kFramesUntilTimed);
   EXPECT_EQ(viewer.renderer().options().render_scale, 1.0);
+}
+
+// What the X server shows of the one top-level window of this size, as 8-bit RGB read through
+// the server's own masks: empty if there is no such window.
+std::vector<uint8_t> ShownRgb(int width, int height) {
+  Display* display = XOpenDisplay(nullptr);
+  if (!display) return {};
+  std::vector<uint8_t> rgb;
+  ::Window root, parent, *children = nullptr;
+  unsigned count = 0;
+  XQueryTree(display, DefaultRootWindow(display), &root, &parent, &children, &count);
+  for (unsigned i = 0; i < count && rgb.empty(); ++i) {
+    XWindowAttributes a;
+    if (!XGetWindowAttributes(display, children[i], &a) || a.map_state != IsViewable || a.width != width ||
+        a.height != height)
+      continue;
+    XImage* image = XGetImage(display, children[i], 0, 0, width, height, AllPlanes, ZPixmap);
+    if (!image) continue;
+    auto channel = [](unsigned long pixel, unsigned long mask) {
+      int shift = 0;
+      while (mask && !(mask & 1)) mask >>= 1, ++shift;
+      return uint8_t((pixel >> shift) & mask);
+    };
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        unsigned long pixel = XGetPixel(image, x, y);
+        rgb.insert(rgb.end(), {channel(pixel, image->red_mask), channel(pixel, image->green_mask),
+                               channel(pixel, image->blue_mask)});
+      }
+    XDestroyImage(image);
+  }
+  if (children) XFree(children);
+  XCloseDisplay(display);
+  return rgb;
+}
+
+// aerial's X11 presenter (the default on a CPU device) and Mesa's swapchain put the same picture
+// on the window: a still view after its antialiasing frames, read back from the X server. Red and
+// blue swapped, or rows misplaced, would differ from the swapchain's picture in most pixels. Both
+// then follow a resize without a validation message.
+TEST_F(ViewerSession, TheX11PresenterShowsWhatTheSwapchainShows) {
+  std::map<viewer::PresentMode, std::vector<uint8_t>> shown;
+  for (viewer::PresentMode mode : {viewer::PresentMode::kX11, viewer::PresentMode::kSwapchain}) {
+    viewer::ViewerOptions options = SmallViewerOptions();
+    options.present = mode;
+    options.frames = 12;  // the still view's antialiasing is complete before the last frames
+    options.target_ms = 0.0;  // the scale stays 1, whatever the frames cost
+    options.exposure = {.mode = Exposure::Mode::kEv100, .value = 14.0};  // auto exposure adapts by the clock
+    viewer::Viewer viewer(std::move(options));
+    viewer.Run();
+    shown[mode] = ShownRgb(160, 90);
+    glfwSetWindowSize(viewer.window(), 200, 120);
+    EXPECT_LE(StepUntil(viewer, [&] { return viewer.renderer().options().width == 200; }, 20), 20);
+  }
+  const std::vector<uint8_t>& x11 = shown[viewer::PresentMode::kX11];
+  const std::vector<uint8_t>& swapchain = shown[viewer::PresentMode::kSwapchain];
+  ASSERT_EQ(x11.size(), 3u * 160 * 90);
+  ASSERT_EQ(swapchain.size(), x11.size());
+  size_t differing = 0;
+  double blue_minus_red = 0.0;  // over the top rows, the noon sky
+  for (size_t p = 0; p < x11.size() / 3; ++p) {
+    differing += x11[3 * p] != swapchain[3 * p] || x11[3 * p + 1] != swapchain[3 * p + 1] ||
+                 x11[3 * p + 2] != swapchain[3 * p + 2];
+    if (p < 160 * 10) blue_minus_red += (int(x11[3 * p + 2]) - int(x11[3 * p])) / (160.0 * 10);
+  }
+  EXPECT_EQ(differing, 0u);
+  EXPECT_GT(blue_minus_red, 20.0) << "a blue sky, not an empty window";
 }
 
 }  // namespace

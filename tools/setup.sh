@@ -9,7 +9,7 @@ packages=(
   # Vulkan: loader, headers (vulkan.hpp), lavapipe, validation layers, GLSL -> SPIR-V
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools spirv-tools
   # libraries
-  libglm-dev libglfw3-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
+  libglm-dev libglfw3-dev libx11-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libopenvdb-dev libboost-iostreams-dev libtbb-dev libopenexr-dev libstb-dev
   libimgui-dev libtinygltf-dev libxxhash-dev libcairo2-dev fonts-dejavu-core
   liberfa-dev libhowardhinnant-date-dev tzdata

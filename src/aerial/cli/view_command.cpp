@@ -29,6 +29,7 @@ struct ViewCommandOptions {
   std::filesystem::path stats;
   std::filesystem::path camera_path;
   std::optional<double> target_ms;
+  std::string present = "auto";
   bool render_scale_given = false;
 };
 
@@ -94,6 +95,9 @@ void RunView(const ViewCommandOptions& options) {
   viewer.stats = options.stats;
   // A scale asked for is kept; else the viewer chooses (dynamic on a CPU device).
   viewer.target_ms = options.render_scale_given ? options.target_ms.value_or(0.0) : options.target_ms;
+  viewer.present = options.present == "x11"         ? viewer::PresentMode::kX11
+                   : options.present == "swapchain" ? viewer::PresentMode::kSwapchain
+                                                    : viewer::PresentMode::kAuto;
   viewer::RunViewer(std::move(viewer));
 }
 
@@ -117,6 +121,12 @@ void AddViewCommand(CLI::App& app) {
                       "follows the frame time toward this many milliseconds; 0: off (default: 33.3 on a "
                       "CPU device unless --render-scale is given, off on a GPU)")
       ->check(CLI::Range(0.0, 1000.0));
+  command->add_option("--present", options->present,
+                      "How the picture reaches the window: a Vulkan swapchain, or sent to the X server by "
+                      "aerial in bands of rows (x11; an X server without DRI3 takes a CPU device's "
+                      "swapchain frames in one large request, slowly); auto: x11 on a CPU device, swapchain "
+                      "on a GPU")
+      ->check(CLI::IsMember({"auto", "swapchain", "x11"}));
   AddPathOption(*command, "--camera-path", options->camera_path,
                       "Camera path to play, 1/30 s of path time per frame (TOML, examples/paths/)");
   options->tables.AddTo(*command);

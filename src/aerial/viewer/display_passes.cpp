@@ -1,6 +1,6 @@
 #include "aerial/viewer/display_passes.h"
 
-#include "aerial/vk/swapchain.h"
+#include "aerial/vk/present_target.h"
 
 namespace aerial::viewer {
 namespace {

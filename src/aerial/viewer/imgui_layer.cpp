@@ -32,7 +32,7 @@ void LinearizeStyleColors(ImGuiStyle& style) {
 }  // namespace
 
 ImGuiLayer::ImGuiLayer(const vk::Context& context, GLFWwindow* window,
-                       const vk::Swapchain& swapchain) {
+                       const vk::PresentTarget& target) {
   // The backend allocates one descriptor set: the font texture.
   ::vk::DescriptorPoolSize size{.type = ::vk::DescriptorType::eCombinedImageSampler, .descriptorCount = 4};
   pool_ = ::vk::raii::DescriptorPool(
@@ -45,7 +45,7 @@ ImGuiLayer::ImGuiLayer(const vk::Context& context, GLFWwindow* window,
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working directory
   ImGui::StyleColorsDark();
-  if (vk::EncodesSrgb(swapchain.format())) LinearizeStyleColors(ImGui::GetStyle());
+  if (vk::EncodesSrgb(target.format())) LinearizeStyleColors(ImGui::GetStyle());
   ImGui_ImplGlfw_InitForVulkan(window, true);
   ImGui_ImplVulkan_InitInfo info{};
   info.Instance = *context.instance();
@@ -54,11 +54,11 @@ ImGuiLayer::ImGuiLayer(const vk::Context& context, GLFWwindow* window,
   info.QueueFamily = context.queue_family();
   info.Queue = *context.queue();
   info.DescriptorPool = *pool_;
-  info.MinImageCount = swapchain.min_image_count();
-  info.ImageCount = swapchain.image_count();
+  info.MinImageCount = target.min_image_count();
+  info.ImageCount = target.image_count();
   info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
   info.CheckVkResultFn = &CheckImGuiVulkanResult;
-  ImGui_ImplVulkan_Init(&info, swapchain.render_pass());
+  ImGui_ImplVulkan_Init(&info, target.render_pass());
   context.Submit([](const vk::CommandBuffer& cmd) { ImGui_ImplVulkan_CreateFontsTexture(*cmd); });
   ImGui_ImplVulkan_DestroyFontUploadObjects();
 }
@@ -69,8 +69,8 @@ ImGuiLayer::~ImGuiLayer() {
   ImGui::DestroyContext();
 }
 
-void ImGuiLayer::OnSwapchainRecreated(const vk::Swapchain& swapchain) {
-  ImGui_ImplVulkan_SetMinImageCount(swapchain.min_image_count());
+void ImGuiLayer::OnTargetRecreated(const vk::PresentTarget& target) {
+  ImGui_ImplVulkan_SetMinImageCount(target.min_image_count());
 }
 
 void ImGuiLayer::NewFrame() {

@@ -30,6 +30,7 @@
 #include "aerial/viewer/sun_control.h"
 #include "aerial/viewer/table_supply.h"
 #include "aerial/viewer/window.h"
+#include "aerial/viewer/x11_presenter.h"
 #include "aerial/vk/command_ring.h"
 #include "aerial/vk/gpu_timer.h"
 #include "aerial/vk/swapchain.h"
@@ -45,6 +46,20 @@ constexpr size_t kPanelWindow = 30;
 // The CPU records frame n + 1 (input, panel, terrain selection, sorting) while the GPU draws
 // frame n.
 constexpr uint32_t kFramesInFlight = 2;
+
+// The X11 presenter where the device renders into host memory (a CPU device: its frames are read
+// where they are) and the window takes its texels; a swapchain everywhere else, and always on a
+// GPU, whose images would cross the bus each frame (x11_presenter.h).
+std::unique_ptr<vk::PresentTarget> MakePresentTarget(const vk::Context& context, const Window& window,
+                                                     PresentMode mode) {
+  const bool cpu_device =
+      context.physical_device().getProperties().deviceType == ::vk::PhysicalDeviceType::eCpu;
+  const bool x11 = mode == PresentMode::kX11 ||
+                   (mode == PresentMode::kAuto && cpu_device && !X11Presenter::Unsupported(window.handle()));
+  if (x11)
+    return std::make_unique<X11Presenter>(context, window.handle(), window.framebuffer_extent(), kFramesInFlight);
+  return std::make_unique<vk::Swapchain>(context, window.surface(), window.framebuffer_extent(), kFramesInFlight);
+}
 
 // CPU time a frame may spend building terrain chunks when the camera moves into new detail: the
 // chunks it lacks are drawn coarser until later frames have built them.
@@ -142,7 +157,7 @@ class Viewer::Impl {
   std::vector<std::vector<std::pair<const SceneRenderer*, std::string>>> recorded_;
   RenderStack stack_;
   Window window_;
-  vk::Swapchain swapchain_;
+  std::unique_ptr<vk::PresentTarget> target_;  // the swapchain or the X11 presenter
   ImGuiLayer imgui_;
   InputReader input_;
   DisplayPasses display_;
@@ -188,14 +203,14 @@ Viewer::Impl::Impl(ViewerOptions options)
       recorded_(kFramesInFlight),
       stack_(FirstStack(device_, options_, [this] { ForgetRecordedFrames(); })),
       window_(context_, options_.render.width, options_.render.height, "aerial view: " + options_.scene.name),
-      swapchain_(context_, window_.surface(), window_.framebuffer_extent(), kFramesInFlight),
-      imgui_(context_, window_.handle(), swapchain_),
+      target_(MakePresentTarget(context_, window_, options_.present)),
+      imgui_(context_, window_.handle(), *target_),
       input_(window_.handle()),
-      display_(context_, swapchain_.render_pass(), swapchain_.format()),
+      display_(context_, target_->render_pass(), target_->format()),
       meter_(context_, kFramesInFlight),
       accumulator_(context_),
       start_camera_(options_.scene.camera) {
-  if (options_.screenshot_panel && !swapchain_.can_copy_out())
+  if (options_.screenshot_panel && !target_->can_copy_out())
     throw Error("--screenshot-panel", "on", "a window whose images can be copied out (this surface does not allow it)");
   for (uint32_t slot = 0; slot < kFramesInFlight; ++slot)
     timers_.push_back(std::make_unique<vk::GpuTimer>(context_));
@@ -216,8 +231,8 @@ Viewer::Impl::Impl(ViewerOptions options)
 
 RendererOptions Viewer::Impl::CurrentRenderOptions() const {
   RendererOptions render = ForTheWindow(options_.render);
-  render.width = int(swapchain_.extent().width);
-  render.height = int(swapchain_.extent().height);
+  render.width = int(target_->extent().width);
+  render.height = int(target_->extent().height);
   render.froxels = settings_.froxels;
   render.mode = settings_.mode;
   render.render_scale = settings_.render_scale;
@@ -249,8 +264,8 @@ void Viewer::Impl::AdoptFinishedTables() {
 }
 
 void Viewer::Impl::Resize(::vk::Extent2D extent) {
-  swapchain_.Recreate(extent);
-  imgui_.OnSwapchainRecreated(swapchain_);
+  target_->Recreate(extent);
+  imgui_.OnTargetRecreated(*target_);
 }
 
 // The camera (and the sun, where the path moves it) follows the path while it lasts, then the fly
@@ -306,7 +321,7 @@ void Viewer::Impl::Act(const PanelEvents& events, const std::vector<int>& keys, 
 ImageRgbF Viewer::Impl::ShownFrame() const {
   if (accumulator_.frames() == 0) return shown_->ReadOutput();
   ImageRgbF mean = accumulator_.Read();
-  const ::vk::Extent2D window = swapchain_.extent();
+  const ::vk::Extent2D window = target_->extent();
   if (mean.width == int(window.width) && mean.height == int(window.height)) return mean;
   return ResizeBilinear(mean, int(window.width), int(window.height));
 }
@@ -348,15 +363,15 @@ void Viewer::Impl::AdaptExposure(uint32_t slot, double dt_s) {
   exposure_metered_ = true;
 }
 
-// The display pass for the settings' view and the panel over it, into the swapchain's image.
+// The display pass for the settings' view and the panel over it, into the window target's image.
 void Viewer::Impl::RecordDisplay(const vk::CommandBuffer& cmd, uint32_t slot,
                                  const SceneRenderer& primary, const SceneRenderer* other) {
   // The difference view needs both frames; until the other variant's tables arrive, the picture.
   DebugView view = settings_.view == DebugView::kDifference && !other ? DebugView::kFinal : settings_.view;
-  ::vk::Extent2D extent = swapchain_.extent();
+  ::vk::Extent2D extent = target_->extent();
   vk::GpuTimer& timer = *timers_[slot];
   timer.Reset(cmd);
-  swapchain_.RecordDraw(cmd, [&](const vk::CommandBuffer& cmd) {
+  target_->RecordDraw(cmd, [&](const vk::CommandBuffer& cmd) {
     timer.Begin(cmd, PassName(view));
     switch (view) {
       case DebugView::kFinal:
@@ -415,7 +430,7 @@ bool Viewer::Impl::Step() {
     last_frame_end_ = Clock::now();
     return true;
   }
-  if (extent != swapchain_.extent()) Resize(extent);
+  if (extent != target_->extent()) Resize(extent);
   AdoptFinishedTables();
   double dt_s = std::chrono::duration<double>(Clock::now() - last_frame_end_).count();
 
@@ -454,7 +469,7 @@ bool Viewer::Impl::Step() {
   CollectFinishedFrame(slot);
   AdaptExposure(slot, dt_s);
   recorded_[slot].clear();
-  if (!swapchain_.Acquire(ring_)) {  // out of date: nothing is recorded for this frame
+  if (!target_->Acquire(ring_)) {  // out of date: nothing is recorded for this frame
     Resize(window_.framebuffer_extent());
     return true;
   }
@@ -489,13 +504,13 @@ bool Viewer::Impl::Step() {
   if (settings_.auto_exposure && (drawn || !exposure_metered_)) meter_.Record(cmd, slot, primary->output(), options_.white_balance);
   RecordDisplay(cmd, slot, *primary, other);
   if (last && options_.screenshot_panel) {
-    window_picture_extent_ = swapchain_.extent();
+    window_picture_extent_ = target_->extent();
     window_picture_.emplace(context_, vk::BufferCreateInfo{.size = 4ull * window_picture_extent_.width * window_picture_extent_.height,
                                                            .usage = ::vk::BufferUsageFlagBits::eTransferDst,
                                                            .host_visible = true});
-    swapchain_.RecordCopyToBuffer(cmd, window_picture_->handle());
+    target_->RecordCopyToBuffer(cmd, window_picture_->handle());
   }
-  bool presented = swapchain_.SubmitAndPresent(ring_);
+  bool presented = target_->SubmitAndPresent(ring_);
   // Reads of the frame (screenshots, exports) are submitted after it, so they see it finished.
   std::vector<int> keys = window_.TakeKeyPresses();
   if (imgui_.wants_keyboard()) keys.clear();
@@ -517,6 +532,7 @@ void Viewer::Impl::Run() {
   while ((options_.frames == 0 || frames_ < options_.frames) && Step()) {
   }
   ring_.WaitAll();
+  target_->ShowFinished(ring_);
   // Exposed as `aerial render` exposes the same frame, so that the two can be compared.
   if (options_.screenshot_panel && window_picture_) {
     WriteWindowPicture();
@@ -529,9 +545,9 @@ void Viewer::Impl::Run() {
   if (!options_.stats.empty()) stats_.Write(options_.stats);
 }
 
-// The window's 8-bit sRGB texels, as the swapchain's format orders them, to an opaque RGBA PNG.
+// The window's 8-bit sRGB texels, as the window target's format orders them, to an opaque RGBA PNG.
 void Viewer::Impl::WriteWindowPicture() const {
-  const bool bgra = swapchain_.format() == ::vk::Format::eB8G8R8A8Srgb || swapchain_.format() == ::vk::Format::eB8G8R8A8Unorm;
+  const bool bgra = target_->format() == ::vk::Format::eB8G8R8A8Srgb || target_->format() == ::vk::Format::eB8G8R8A8Unorm;
   size_t texels = size_t(window_picture_extent_.width) * window_picture_extent_.height;
   std::vector<uint8_t> rgba(4 * texels);
   const auto* bytes = reinterpret_cast<const uint8_t*>(window_picture_->mapped());

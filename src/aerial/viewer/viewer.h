@@ -25,6 +25,10 @@ struct GLFWwindow;
 
 namespace aerial::viewer {
 
+// How the window's picture reaches the screen: auto takes the X11 presenter on a CPU device whose
+// window allows it (x11_presenter.h), a swapchain otherwise.
+enum class PresentMode { kAuto, kSwapchain, kX11 };
+
 struct ViewerOptions {
   Scene scene;
   AtmosphereParameters atmosphere;  // the base the panel's knobs change
@@ -47,6 +51,7 @@ struct ViewerOptions {
   // Dynamic resolution toward this frame time (dynamic_resolution.h); 0: off, the scale stays the
   // render options'. None: kCpuDeviceTargetMs on a CPU device (lavapipe), off on a GPU.
   std::optional<double> target_ms;
+  PresentMode present = PresentMode::kAuto;
 };
 
 class Viewer {
