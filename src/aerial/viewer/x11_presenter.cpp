@@ -130,14 +130,7 @@ void X11Presenter::RecordDraw(const vk::CommandBuffer& cmd, const vk::Recorder& 
 }
 
 void X11Presenter::RecordCopyToBuffer(const vk::CommandBuffer& cmd, ::vk::Buffer buffer) const {
-  cmd.copyImageToBuffer(slots_[slot_].image->handle(), ::vk::ImageLayout::eGeneral, buffer,
-                        ::vk::BufferImageCopy{.imageSubresource = {.aspectMask = ::vk::ImageAspectFlagBits::eColor,
-                                                                   .layerCount = 1},
-                                              .imageExtent = {extent_.width, extent_.height, 1}});
-  cmd.pipelineBarrier(::vk::PipelineStageFlagBits::eTransfer, ::vk::PipelineStageFlagBits::eHost, {},
-                      ::vk::MemoryBarrier{.srcAccessMask = ::vk::AccessFlagBits::eTransferWrite,
-                                          .dstAccessMask = ::vk::AccessFlagBits::eHostRead},
-                      {}, {});
+  vk::RecordCopyToHostBuffer(cmd, slots_[slot_].image->handle(), ::vk::ImageLayout::eGeneral, extent_, buffer);
 }
 
 bool X11Presenter::SubmitAndPresent(vk::CommandRing& ring) {

@@ -1,18 +1,17 @@
 #pragma once
 // The window's picture put on an X11 window by aerial itself, for a device that renders into host
 // memory (a CPU device such as lavapipe). Mesa's swapchain on such a device sends each frame to
-// the X server in one PutImage request, or through shared memory where the server has DRI3; an X
-// server without DRI3 (Xvfb, VNC, remote X) then reads a 3.7 MB request per 1280x720 frame, which
-// made Xvfb spend 14 ms a frame growing and filling its request buffer. The same picture sent in
-// bands of rows, each request under the core protocol's 256 KB, cost it 0.4 ms (measured with
-// xcb_put_image against Xvfb 21.1, 1280x720, 20 frames).
+// the X server in one PutImage request, or through shared memory where the server has DRI3. An X
+// server without DRI3 (Xvfb, VNC, remote X) then reads a 3.7 MB request per 1280x720 frame, and
+// Xvfb spends about 14 ms a frame growing and filling its request buffer for it; the same picture
+// in bands of rows, each request within the core protocol's 256 KB, costs it about 0.4 ms
+// (docs/viewer.md).
 //
 // Each frame slot has its own image and host buffer: the frame draws into the image and copies it
 // to the buffer, and when the slot's next frame begins (the CommandRing has waited for the slot's
-// fence) the buffer goes to the window: a frame is shown one frame later than a swapchain shows
-// it. Shown as soon as its fence had passed (looked at after each submit), the corridor's frames
-// took 54-55 ms instead of 49 and their GPU part 44 ms instead of 39: the X server then takes the
-// picture while the device (two CPU cores) draws the next frame.
+// fence) the buffer goes to the window, one frame later than a swapchain shows it. Sent as soon as
+// the frame is drawn, the picture would reach the X server while the device, the same CPU cores,
+// draws the next frame, which made moving frames slower.
 #include <memory>
 #include <optional>
 #include <vector>

@@ -138,6 +138,18 @@ void Image::CopyFromBuffer(const CommandBuffer& cmd, const Buffer& buffer) const
                         WholeImageCopy(extent_, format_));
 }
 
+void RecordCopyToHostBuffer(const CommandBuffer& cmd, ::vk::Image image, ::vk::ImageLayout layout, ::vk::Extent2D extent,
+                            ::vk::Buffer buffer) {
+  cmd.copyImageToBuffer(image, layout, buffer,
+                        ::vk::BufferImageCopy{.imageSubresource = {.aspectMask = ::vk::ImageAspectFlagBits::eColor,
+                                                                   .layerCount = 1},
+                                              .imageExtent = {extent.width, extent.height, 1}});
+  cmd.pipelineBarrier(::vk::PipelineStageFlagBits::eTransfer, ::vk::PipelineStageFlagBits::eHost, {},
+                      ::vk::MemoryBarrier{.srcAccessMask = ::vk::AccessFlagBits::eTransferWrite,
+                                          .dstAccessMask = ::vk::AccessFlagBits::eHostRead},
+                      {}, {});
+}
+
 std::vector<std::byte> ReadImageBytes(const Context& context, const Image& image) {
   Buffer readback(context, {.size = image.byte_size(),
                             .usage = ::vk::BufferUsageFlagBits::eTransferDst,

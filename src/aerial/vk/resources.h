@@ -101,6 +101,12 @@ class Image {
 // Makes every earlier shader or transfer write visible to every later shader or transfer access.
 void FullBarrier(const CommandBuffer& cmd);
 
+// Records a copy of a 2D color image's texels (in `layout`, after every write to it was made
+// available to transfers) into `buffer`, row by row, for the host to read once the submission's
+// fence has passed.
+void RecordCopyToHostBuffer(const CommandBuffer& cmd, ::vk::Image image, ::vk::ImageLayout layout, ::vk::Extent2D extent,
+                            ::vk::Buffer buffer);
+
 // The whole image's texels, copied to the host after every earlier GPU write (tightly packed, x
 // fastest). ReadImageFloats: the same for a 32-bit float format.
 std::vector<std::byte> ReadImageBytes(const Context& context, const Image& image);

@@ -145,16 +145,9 @@ void Swapchain::RecordCopyToBuffer(const CommandBuffer& cmd, ::vk::Buffer buffer
   transition(::vk::ImageLayout::ePresentSrcKHR, ::vk::ImageLayout::eTransferSrcOptimal,
              ::vk::AccessFlagBits::eColorAttachmentWrite, ::vk::AccessFlagBits::eTransferRead,
              ::vk::PipelineStageFlagBits::eColorAttachmentOutput, ::vk::PipelineStageFlagBits::eTransfer);
-  cmd.copyImageToBuffer(images_[image_], ::vk::ImageLayout::eTransferSrcOptimal, buffer,
-                        ::vk::BufferImageCopy{.imageSubresource = {.aspectMask = ::vk::ImageAspectFlagBits::eColor,
-                                                                   .layerCount = 1},
-                                              .imageExtent = {extent_.width, extent_.height, 1}});
+  RecordCopyToHostBuffer(cmd, images_[image_], ::vk::ImageLayout::eTransferSrcOptimal, extent_, buffer);
   transition(::vk::ImageLayout::eTransferSrcOptimal, ::vk::ImageLayout::ePresentSrcKHR, ::vk::AccessFlagBits::eTransferRead,
              {}, ::vk::PipelineStageFlagBits::eTransfer, ::vk::PipelineStageFlagBits::eBottomOfPipe);
-  cmd.pipelineBarrier(::vk::PipelineStageFlagBits::eTransfer, ::vk::PipelineStageFlagBits::eHost, {},
-                      ::vk::MemoryBarrier{.srcAccessMask = ::vk::AccessFlagBits::eTransferWrite,
-                                          .dstAccessMask = ::vk::AccessFlagBits::eHostRead},
-                      {}, {});
 }
 
 bool Swapchain::SubmitAndPresent(CommandRing& ring) {
