@@ -34,6 +34,7 @@ struct RenderOptions {
   int width = 1280;   // the output image
   int height = 720;
   // The frame is rasterized at render_scale times the output size, then upscaled (bilinear).
+  // The terrain's level of detail follows it: terrain_error_px is in the rasterized frame's pixels.
   double render_scale = 1.0;
   FroxelGrid froxels;
   AerialMode mode = AerialMode::kFroxel;

@@ -379,8 +379,12 @@ void Renderer::SetRenderScale(double render_scale) {
 
 terrain::LodView Renderer::FrameLodView(const Scene& scene) const {
   double aspect = double(options_.render_width()) / double(options_.render_height());
+  // The terrain's detail follows the render scale, its floor too: a frame drawn smaller (the
+  // viewer's dynamic resolution while the view moves) keeps the error bound in its own pixels, so
+  // that its triangles cover as many of its pixels as a full frame's cover of the window's.
+  const int min_height_px = std::max(1, int(std::lround(terrain::kLodMinHeightPx * options_.render_scale)));
   return terrain::MakeLodView(scene.camera, aspect, options_.render_height(), options_.terrain_error_px,
-                              tables_.atmosphere().bottom_radius_m);
+                              tables_.atmosphere().bottom_radius_m, min_height_px);
 }
 
 // The chunks to draw, nearest first (terrain/lod_selection.h), built as needed; a still camera

@@ -43,8 +43,9 @@ struct LodView {
 
 // The error bound is kept at least as fine as max_error_px at min_height_px rows, so that small
 // renders (thumbnails, tests) show the same terrain as a 720p frame.
+inline constexpr int kLodMinHeightPx = 720;
 LodView MakeLodView(const Camera& camera, double aspect, int height_px, double max_error_px,
-                    double planet_radius_m, int min_height_px = 720);
+                    double planet_radius_m, int min_height_px = kLodMinHeightPx);
 
 double DistanceToBounds(const glm::dvec3& p, const Bounds& bounds);
 double ScreenSpaceErrorPx(const LodView& view, double geometric_error_m, const Bounds& bounds);
