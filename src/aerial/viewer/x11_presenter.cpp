@@ -109,11 +109,11 @@ bool X11Presenter::Acquire(const vk::CommandRing& ring) {
   return true;
 }
 
-void X11Presenter::ShowFinished(const vk::CommandRing& ring) {
+void X11Presenter::ShowSubmitted() {
   // Oldest first: the slot after the current one was submitted before it.
   for (size_t i = 1; i <= slots_.size(); ++i) {
-    const uint32_t s = uint32_t((slot_ + i) % slots_.size());
-    if (slots_[s].submitted && ring.Finished(s)) Show(slots_[s]);
+    Slot& slot = slots_[(slot_ + i) % slots_.size()];
+    if (slot.submitted) Show(slot);
   }
 }
 

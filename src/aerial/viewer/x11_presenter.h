@@ -39,7 +39,7 @@ class X11Presenter : public vk::PresentTarget {
   void RecordCopyToBuffer(const vk::CommandBuffer& cmd, ::vk::Buffer buffer) const override;
   bool SubmitAndPresent(vk::CommandRing& ring) override;
   // Oldest first.
-  void ShowFinished(const vk::CommandRing& ring) override;
+  void ShowSubmitted() override;
 
   bool can_copy_out() const override { return true; }
   ::vk::Extent2D extent() const override { return extent_; }

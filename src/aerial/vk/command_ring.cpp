@@ -62,6 +62,4 @@ void CommandRing::WaitAll() const {
     throw Error("vkWaitForFences", "timeout", "completion");
 }
 
-bool CommandRing::Finished(uint32_t slot) const { return done_[slot].getStatus() == ::vk::Result::eSuccess; }
-
 }  // namespace aerial::vk

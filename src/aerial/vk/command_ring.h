@@ -25,8 +25,6 @@ class CommandRing {
               std::span<const ::vk::Semaphore> signal = {});
   // Waits for every submitted frame (before resources they use are destroyed or read back).
   void WaitAll() const;
-  // Whether the slot's last frame has finished (or none was submitted), without waiting.
-  bool Finished(uint32_t slot) const;
 
   uint32_t slot() const { return slot_; }
   uint32_t slots() const { return uint32_t(buffers_.size()); }

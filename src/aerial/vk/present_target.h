@@ -34,9 +34,9 @@ class PresentTarget {
   // Submits the ring's command buffer and presents the image. False when the target is out of
   // date or suboptimal: Recreate.
   virtual bool SubmitAndPresent(CommandRing& ring) = 0;
-  // Shows the frames that were submitted and have finished but are not on the screen yet, where
-  // the target shows frames itself (the viewer calls it once it has waited for every frame).
-  virtual void ShowFinished(const CommandRing& /*ring*/) {}
+  // After every submitted frame has finished (CommandRing::WaitAll): shows those not on the
+  // screen yet, where the target shows frames itself.
+  virtual void ShowSubmitted() {}
 
   virtual bool can_copy_out() const = 0;
   virtual ::vk::Extent2D extent() const = 0;
