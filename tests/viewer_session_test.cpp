@@ -154,20 +154,44 @@ TEST_F(ViewerSession, AStillViewIsPresentedWithoutRedrawing) {
   EXPECT_TRUE(HasPass(viewer, "opaque raster")) << "a changed view draws again";
 }
 
-// Under dynamic resolution a moving view steps its scale down, and once it stops it is drawn at
-// scale 1, as `aerial render` draws it (and then refined, frame_accumulator.h).
+// Under dynamic resolution a moving view starts at the controller's floor and stays there while
+// the target is out of reach, and once it stops it is drawn at scale 1, as `aerial render` draws
+// it (and then refined, frame_accumulator.h).
 TEST_F(ViewerSession, DynamicResolutionLowersAMovingViewAndDrawsAStillOneWhole) {
   viewer::ViewerOptions options = SmallViewerOptions();
-  options.target_ms = 0.01;  // never met: every step the controller may take goes down
+  options.target_ms = 0.01;  // never met
   options.camera_path = viewer::CameraPath::Load(AERIAL_SOURCE_DIR "/examples/paths/corridor.toml",
                                                  options.atmosphere.bottom_radius_m);
-  const double path_frames = options.camera_path->duration_s() * 30.0;  // 1/30 s of path a frame
+  const int path_frames = int(options.camera_path->duration_s() * 30.0);  // 1/30 s of path a frame
   viewer::Viewer viewer(std::move(options));
-  StepFrames(viewer, 2 * viewer::DynamicResolution::kSettleFrames + 1);
-  EXPECT_EQ(viewer.renderer().options().render_scale, 0.5) << "two steps down while the path moves";
-  StepFrames(viewer, int(path_frames) - 2 * viewer::DynamicResolution::kSettleFrames + 1);
+  StepFrames(viewer, 2 * viewer::DynamicResolution::kSettleFrames);
+  EXPECT_EQ(viewer.renderer().options().render_scale, viewer::DynamicResolution::kMinScale);
+  StepFrames(viewer, path_frames - 2 * viewer::DynamicResolution::kSettleFrames + 2);
   EXPECT_EQ(viewer.renderer().options().render_scale, 1.0) << "the path has ended: a still view";
   StepFrames(viewer, kFramesUntilTimed);
+  EXPECT_EQ(viewer.renderer().options().render_scale, 1.0);
+}
+
+// A target within easy reach: the moving view climbs from the floor to scale 1 once the frames
+// since the start have settled.
+TEST_F(ViewerSession, DynamicResolutionClimbsWhenTheTargetAllows) {
+  viewer::ViewerOptions options = SmallViewerOptions();
+  options.target_ms = 1000.0;
+  options.camera_path = viewer::CameraPath::Load(AERIAL_SOURCE_DIR "/examples/paths/corridor.toml",
+                                                 options.atmosphere.bottom_radius_m);
+  viewer::Viewer viewer(std::move(options));
+  StepFrames(viewer, 2);
+  EXPECT_EQ(viewer.renderer().options().render_scale, viewer::DynamicResolution::kMinScale) << "starts at the floor";
+  int steps = 0;
+  for (int i = 0; i < 2 * viewer::DynamicResolution::kSettleFrames; ++i) {
+    const double scale = viewer.renderer().options().render_scale;
+    ASSERT_TRUE(viewer.Step());
+    if (viewer.renderer().options().render_scale == scale) continue;
+    ++steps;
+    // The frames in flight finished before the targets were remade; their GPU times are kept.
+    EXPECT_TRUE(HasPass(viewer, "opaque raster")) << "the last finished frame's passes, at scale " << scale;
+  }
+  EXPECT_GE(steps, 1);
   EXPECT_EQ(viewer.renderer().options().render_scale, 1.0);
 }
 

@@ -117,9 +117,9 @@ void AddViewCommand(CLI::App& app) {
   AddPathOption(*command, "--stats", options->stats,
                       "Write frame statistics (median and p95 frame ms, FPS, GPU ms per pass) as JSON");
   command->add_option("--target-ms", options->target_ms,
-                      "Dynamic resolution: while the view moves, the render scale (1, 0.75, 0.5, 0.25) "
-                      "follows the frame time toward this many milliseconds; 0: off (default: 33.3 on a "
-                      "CPU device unless --render-scale is given, off on a GPU)")
+                      "Dynamic resolution: while the view moves, the render scale (0.5, 0.75 or 1; it starts "
+                      "at 0.5) follows the frame time toward this many milliseconds; 0: off (default: 33.3 "
+                      "on a CPU device unless --render-scale is given, off on a GPU)")
       ->check(CLI::Range(0.0, 1000.0));
   command->add_option("--present", options->present,
                       "How the picture reaches the window: a Vulkan swapchain, or sent to the X server by "

@@ -1,29 +1,37 @@
 #include "aerial/viewer/dynamic_resolution.h"
 
-#include <algorithm>
-#include <cmath>
-
 #include "aerial/viewer/frame_stats.h"
 
 namespace aerial::viewer {
 
 float DynamicResolution::Update(double frame_ms, float scale) {
   since_step_.push_back(frame_ms);
-  if (int(since_step_.size()) < kSettleFrames) return scale;
-  double median = Percentile(since_step_, 50.0);
-  // The nearest of the scales (a scale set by hand may lie between them).
-  auto at = std::min_element(kRenderScales.begin(), kRenderScales.end(),
-                             [&](float a, float b) { return std::abs(a - scale) < std::abs(b - scale); });
+  const int frames = int(since_step_.size());
+  if (frames < kStepDownFrames) return scale;
+  // Slow frames are judged over the last few, fast ones over the whole window.
+  const double recent = Percentile({since_step_.end() - kStepDownFrames, since_step_.end()}, 50.0);
+  const double median = Percentile(since_step_, 50.0);
+  auto predicted = [&](double ms, float other) { return ms * (double(other) * other) / (double(scale) * scale); };
   float next = scale;
-  if (median > target_ms_ && at + 1 != kRenderScales.end()) {
-    next = *(at + 1);
-  } else if (at != kRenderScales.begin()) {
-    float up = *(at - 1);
-    double predicted = median * (double(up) * up) / (double(scale) * scale);
-    if (predicted < kStepUpFraction * target_ms_) next = up;
+  if (recent > target_ms_) {
+    next = kMinScale;
+    for (float choice : kRenderScales) {  // largest first
+      if (choice < scale && choice >= kMinScale && predicted(recent, choice) <= target_ms_) {
+        next = choice;
+        break;
+      }
+    }
+    if (next > scale) next = scale;  // a scale set by hand below the floor stays
+  } else if (frames >= kSettleFrames) {
+    for (float choice : kRenderScales) {
+      if (choice > scale && predicted(median, choice) < kStepUpFraction * target_ms_) {
+        next = choice;
+        break;
+      }
+    }
   }
   if (next != scale) since_step_.clear();
-  else since_step_.erase(since_step_.begin());  // a sliding window of kSettleFrames frames
+  else if (frames >= kSettleFrames) since_step_.erase(since_step_.begin());  // a sliding window
   return next;
 }
 

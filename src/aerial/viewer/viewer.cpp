@@ -226,7 +226,10 @@ Viewer::Impl::Impl(ViewerOptions options)
   settings_.auto_exposure = options_.exposure.mode == Exposure::Mode::kAuto;
   if (!settings_.auto_exposure) settings_.ev100 = float(options_.exposure.FixedEv100());
   const double target_ms = options_.target_ms.value_or(IsCpuDevice(context_) ? kCpuDeviceTargetMs : 0.0);
-  if (target_ms > 0.0) resolution_.emplace(target_ms);
+  if (target_ms > 0.0) {
+    resolution_.emplace(target_ms);
+    settings_.render_scale = std::min(settings_.render_scale, DynamicResolution::kMinScale);
+  }
   last_frame_end_ = Clock::now();
 }
 
@@ -331,7 +334,9 @@ ImageRgbF Viewer::Impl::ShownFrame() const {
 // read any more.
 void Viewer::Impl::ForgetRecordedFrames() {
   ring_.WaitAll();
-  for (auto& renderers : recorded_) renderers.clear();
+  // The frames in flight have finished: their GPU times are read while their renderers are as
+  // they recorded them, oldest first.
+  for (uint32_t i = 1; i <= kFramesInFlight; ++i) CollectFinishedFrame((ring_.slot() + i) % kFramesInFlight);
   settled_view_.reset();
 }
 
@@ -344,7 +349,9 @@ void Viewer::Impl::CollectFinishedFrame(uint32_t slot) {
       passes.push_back(pass);
     }
   }
-  if (!slot_used_[slot]) return;  // nothing recorded in this slot yet
+  recorded_[slot].clear();
+  if (!slot_used_[slot]) return;  // nothing recorded in this slot yet, or collected already
+  slot_used_[slot] = false;
   for (const PassTime& pass : timers_[slot]->Collect()) passes.push_back(pass);
   stats_.AddGpuFrame(passes);
   last_passes_ = std::move(passes);
@@ -441,8 +448,9 @@ bool Viewer::Impl::Step() {
   // The last frame of a scripted run is saved: it is completed like `aerial render`'s.
   const bool last = options_.frames > 0 && frames_ + 1 == options_.frames;
   // Dynamic resolution lowers the scale of a moving view; a still one, and the last, is drawn whole.
+  // So is the first, which has nothing to be still against: a view opened still is drawn once.
   const auto pose = std::make_tuple(options_.scene.camera, options_.scene.sun, render.terrain_error_px);
-  const bool resting = last_pose_ == pose;
+  const bool resting = !last_pose_ || last_pose_ == pose;
   last_pose_ = pose;
   if (resolution_ && (resting || last)) render.render_scale = 1.0;
   SceneRenderer* primary = stack_.Get(settings_.variant, render);
@@ -469,7 +477,6 @@ bool Viewer::Impl::Step() {
   uint32_t slot = ring_.slot();
   CollectFinishedFrame(slot);
   AdaptExposure(slot, dt_s);
-  recorded_[slot].clear();
   if (!target_->Acquire(ring_)) {  // out of date: nothing is recorded for this frame
     Resize(window_.framebuffer_extent());
     return true;
