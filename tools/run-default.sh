@@ -13,4 +13,4 @@ mkdir -p out
 ./build/aerial render --out out/aerial-noon.exr
 echo "wrote out/aerial-noon.png and out/aerial-noon.exr"
 echo "noon sky, looking 45 degrees up, across the sun's direction:"
-./build/aerial probe --colour spectral --altitude-m 0 --view-zenith-deg 45 --sun-zenith-deg 20 --azimuth-deg 90 --distance-m 10000
+./build/aerial probe --altitude-m 0 --view-zenith-deg 45 --sun-zenith-deg 20 --azimuth-deg 90 --distance-m 10000

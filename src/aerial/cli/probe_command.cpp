@@ -14,7 +14,9 @@
 #include "aerial/core/toml_reader.h"
 #include "aerial/error.h"
 #include "aerial/probe.h"
+#include "aerial/precompute/spectral_precompute.h"
 #include "aerial/probe/spectral_reference.h"
+#include "aerial/probe/spectral_table_probe.h"
 #include "aerial/spectrum/colour.h"
 #include "aerial/spectrum/spectral_sampling.h"
 
@@ -54,19 +56,30 @@ void AddQuantities(nlohmann::json& json, const ProbeResult& result, bool to_poin
   json["transmittance_to_point"] = ToJson(result.transmittance_to_point);
 }
 
-// The spectral reference's quantities before their conversion: one value per wavelength, over
-// `wavelengths_nm`, from each group's three.
-nlohmann::json SpectralJson(const std::vector<ProbeResult>& groups, const spectrum::SpectralSampling& sampling,
-                            bool to_point) {
-  nlohmann::json spectral;
-  spectral["wavelengths_nm"] = sampling.wavelengths_nm();
+// The reference's Monte Carlo standard errors (of the orders >= 2), per channel.
+void AddStdErrors(nlohmann::json& json, const ProbeResult& result, bool to_point) {
+  json["sky_radiance_std_error"] = ToJson(result.sky_radiance_std_error);
+  json["sky_irradiance_std_error"] = ToJson(result.sky_irradiance_std_error);
+  if (to_point) json["radiance_to_point_std_error"] = ToJson(result.radiance_to_point_std_error);
+}
+
+// Each quantity of `result`, with its standard errors for the reference.
+nlohmann::json QuantitiesJson(const ProbeResult& result, bool to_point, bool reference) {
+  nlohmann::json json;
+  AddQuantities(json, result, to_point);
+  if (reference) AddStdErrors(json, result, to_point);
+  return json;
+}
+
+// The quantities of groups of three wavelengths, each as one list over all their wavelengths.
+nlohmann::json SpectrumJson(const std::vector<ProbeResult>& groups, bool to_point, bool reference) {
+  nlohmann::json spectrum;
   for (const ProbeResult& group : groups) {
-    nlohmann::json channels;
-    AddQuantities(channels, group, to_point);
-    for (auto& [key, values] : channels.items())
-      for (const auto& value : values) spectral[key].push_back(value);
+    const nlohmann::json channels = QuantitiesJson(group, to_point, reference);
+    for (const auto& [key, values] : channels.items())
+      for (const auto& value : values) spectrum[key].push_back(value);
   }
-  return spectral;
+  return spectrum;
 }
 
 void RunProbe(const ProbeOptions& options) {
@@ -78,22 +91,26 @@ void RunProbe(const ProbeOptions& options) {
     throw aerial::Error("--distance-m", aerial::TomlFloat(*options.distance_m), "a distance in [0, 1e9] meters");
   PrecomputeOptions precompute = options.tables.MakePrecomputeOptions();
   RayParameters ray = ToRayParameters(options.view, atmosphere);
-
+  const bool to_point = options.distance_m.has_value();
   const bool spectral = precompute.colour == ColourMode::kSpectral;
-  ProbeResult result;
-  std::vector<ProbeResult> at_wavelengths;  // the spectral reference's, group by group
+  const spectrum::SpectralSampling sampling = spectrum::SpectralSampling::ForTables(precompute.spectral_wavelengths);
+
+  ProbeResult result;                       // rgb: at the atmosphere's wavelengths; spectral: linear sRGB
+  std::vector<ProbeResult> at_wavelengths;  // spectral: at the sampling's wavelengths, group by group
   if (options.reference) {
     const ReferenceOptions reference{.orders = precompute.RepresentedOrders()};
-    result = spectral ? ProbeReferenceSpectral(atmosphere, ray, options.distance_m,
-                                               spectrum::SpectralSampling::ForTables(precompute.spectral_wavelengths),
-                                               reference, &at_wavelengths)
+    result = spectral ? ProbeReferenceSpectral(atmosphere, ray, options.distance_m, sampling, reference, &at_wavelengths)
                       : ProbeReference(atmosphere, ray, options.distance_m, reference);
   } else {
     Device device(options.tables.MakeDeviceOptions());
-    options.tables.MakeMemoryBudget(device.largest_heap_bytes()).Check(TableMemoryUses(precompute));
-    Tables tables = Tables::LoadOrPrecompute(device, atmosphere, precompute, options.tables.MakeLoadOptions());
-    ProbeQuery query{ray, options.distance_m.value_or(0.0)};
+    const MemoryBudget budget = options.tables.MakeMemoryBudget(device.largest_heap_bytes());
+    budget.Check(TableMemoryUses(precompute));
+    if (spectral) budget.Check(TableMemoryUses(SpectralGroupOptions(precompute, /*all_orders=*/true)));
+    const TableLoadOptions load = options.tables.MakeLoadOptions();
+    Tables tables = Tables::LoadOrPrecompute(device, atmosphere, precompute, load);
+    const ProbeQuery query{ray, options.distance_m.value_or(0.0)};
     result = Probe(tables, std::span(&query, 1)).front();
+    if (spectral) at_wavelengths = ProbeSpectralTablesAtWavelengths(device, atmosphere, precompute, load, query);
   }
 
   nlohmann::json json;
@@ -101,36 +118,26 @@ void RunProbe(const ProbeOptions& options) {
   json["lut"] = options.tables.lut;
   json["atmosphere"] = atmosphere.name;
   json["colour"] = options.tables.colour;
-  // What the quantities' three channels are: the atmosphere's wavelengths, or for spectral tables
-  // linear sRGB converted from the precompute's wavelengths (which the tables do not keep apart).
-  if (spectral) {
-    json["channels"] = "linear_srgb";
-    json["spectral_wavelengths_nm"] =
-        spectrum::SpectralSampling::ForTables(precompute.spectral_wavelengths).wavelengths_nm();
-  } else {
-    json["channels"] = "wavelengths_nm";
-    json["wavelengths_nm"] = ToJson(atmosphere.wavelengths_nm);
-  }
+  // The quantities are given at wavelengths: the atmosphere's three (rgb), or the spectral
+  // sampling's, where the spectral tables' own channels, linear sRGB, are under "linear_srgb".
+  json["channels"] = "wavelengths_nm";
   json["altitude_m"] = options.view.altitude_m;
   json["view_zenith_deg"] = options.view.view_zenith_deg;
   json["sun_zenith_deg"] = options.view.sun_zenith_deg;
   json["azimuth_deg"] = options.view.azimuth_deg;
-  if (options.distance_m) json["distance_m"] = *options.distance_m;
-  AddQuantities(json, result, options.distance_m.has_value());
+  if (to_point) json["distance_m"] = *options.distance_m;
+  if (spectral) {
+    json["wavelengths_nm"] = sampling.wavelengths_nm();
+    json.update(SpectrumJson(at_wavelengths, to_point, options.reference));
+    json["linear_srgb"] = QuantitiesJson(result, to_point, options.reference);
+  } else {
+    json["wavelengths_nm"] = ToJson(atmosphere.wavelengths_nm);
+    json.update(QuantitiesJson(result, to_point, options.reference));
+  }
   json["sky_radiance_colour"] = ColourJson(result.sky_radiance, "luminance_cd_m2");
   json["sun_irradiance_colour"] = ColourJson(result.sun_irradiance, "illuminance_lux");
   json["sky_irradiance_colour"] = ColourJson(result.sky_irradiance, "illuminance_lux");
-  if (options.distance_m) json["radiance_to_point_colour"] = ColourJson(result.radiance_to_point, "luminance_cd_m2");
-  if (options.reference) {  // the Monte Carlo noise of the orders >= 2
-    json["sky_radiance_std_error"] = ToJson(result.sky_radiance_std_error);
-    json["sky_irradiance_std_error"] = ToJson(result.sky_irradiance_std_error);
-    if (options.distance_m) json["radiance_to_point_std_error"] = ToJson(result.radiance_to_point_std_error);
-  }
-  if (!at_wavelengths.empty()) {
-    json["at_wavelengths"] =
-        SpectralJson(at_wavelengths, spectrum::SpectralSampling::ForTables(precompute.spectral_wavelengths),
-                     options.distance_m.has_value());
-  }
+  if (to_point) json["radiance_to_point_colour"] = ColourJson(result.radiance_to_point, "luminance_cd_m2");
   std::printf("%s\n", json.dump(2).c_str());
 }
 
@@ -138,9 +145,6 @@ void RunProbe(const ProbeOptions& options) {
 
 void AddProbeCommand(CLI::App& app) {
   auto options = std::make_shared<ProbeOptions>();
-  // rgb unless asked: the probe reports quantities over wavelengths (`wavelengths_nm`), which
-  // the rgb tables' channels are and the spectral tables' linear sRGB channels are not.
-  options->tables.colour = "rgb";
   CLI::App* command = app.add_subcommand("probe", "Print the sky seen by one camera along one ray, as JSON");
   command->add_option("--altitude-m", options->view.altitude_m, "Camera altitude above the ground (m)")
       ->required();
