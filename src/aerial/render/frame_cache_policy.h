@@ -47,12 +47,16 @@ bool SkyViewReusable(const std::optional<SkyViewKey>& made_for, const SkyViewKey
 //    the table's texels remade, the frame moved by at most 0.069% relative RMSE (twilight 1 km up;
 //    sunset 0.019%, noon 0.006%; tested), less than the table's own 10 m tolerance moves it
 //    (0.09% at sunset, 0.35% at twilight). At 99 m it was 0.087% at sunset, 0.11% at twilight.
-//  - A band may lag the sun by up to kSkyViewLatticeSunLag in mu_s (0.33 degrees of a sun 20
-//    degrees from the zenith) while the sun is at least kSkyViewLatticeSunLagMinMuS high (6 degrees
-//    above the horizon) for the band and the frame: with seven bands of eight 0.0019 behind and the
-//    table's texels remade, the frame moved by at most 0.015% relative RMSE (noon; 0.004% in the
-//    evening, 79 degrees; tested). A lower sun's Earth shadow crosses the view: 0.0002 behind, a
-//    sun 1 degree below the horizon moved the frame by 0.13%, so a band is remade at once there.
+//  - A band may lag the sun by up to kSkyViewLatticeSunLag in mu_s (1.6 degrees of a sun 20
+//    degrees from the zenith, 0.6 of one 80 degrees from it) while the sun is at least
+//    kSkyViewLatticeSunLagMinMuS high (6 degrees above the horizon) for the band and the frame:
+//    with seven bands of eight 0.0095 behind and the table's texels remade, the frame moved by at
+//    most 0.070% relative RMSE (noon; 0.015% in the evening, 80 degrees; tested), within the 0.1%
+//    the camera's lag is held to. A sun moving half a degree a frame (the viewer's arrow keys, the
+//    sun sweep) so remakes about half the bands a frame, where a limit of 0.002 (0.015% at noon)
+//    would have it remake all eight every frame. A lower sun's Earth shadow crosses the view: 0.0002
+//    behind, a sun 1 degree below the horizon moved the frame by 0.13%, so a band is remade at
+//    once there.
 //  - A band whose lag, in altitude or sun, is beyond its limit is remade at once, and so is every
 //    band on the first frame, and in an exact frame not made for its own r and mu_s, as the table is.
 //  - A band within the table's tolerances (10 m, mu_s 1e-5) is left as it is.
@@ -61,7 +65,7 @@ bool SkyViewReusable(const std::optional<SkyViewKey>& made_for, const SkyViewKey
 //    lattice.
 // The table's texels are remade after any band is (the renderer's SkyViewStale).
 inline constexpr float kSkyViewLatticeLagM = 50.0f;
-inline constexpr float kSkyViewLatticeSunLag = 2e-3f, kSkyViewLatticeSunLagMinMuS = 0.1f;
+inline constexpr float kSkyViewLatticeSunLag = 1e-2f, kSkyViewLatticeSunLagMinMuS = 0.1f;
 using SkyViewLatticeKeys = std::array<std::optional<SkyViewKey>, kSkyViewLatticeBands>;
 std::array<bool, kSkyViewLatticeBands> SkyViewLatticeBandsToRemake(const SkyViewLatticeKeys& made_for,
                                                                     const SkyViewKey& now, bool exact,
