@@ -14,7 +14,6 @@
 #include "aerial/core/toml_reader.h"
 #include "aerial/error.h"
 #include "aerial/probe.h"
-#include "aerial/precompute/spectral_precompute.h"
 #include "aerial/probe/spectral_reference.h"
 #include "aerial/probe/spectral_table_probe.h"
 #include "aerial/spectrum/colour.h"
@@ -103,9 +102,9 @@ void RunProbe(const ProbeOptions& options) {
                       : ProbeReference(atmosphere, ray, options.distance_m, reference);
   } else {
     Device device(options.tables.MakeDeviceOptions());
-    const MemoryBudget budget = options.tables.MakeMemoryBudget(device.largest_heap_bytes());
-    budget.Check(TableMemoryUses(precompute));
-    if (spectral) budget.Check(TableMemoryUses(SpectralGroupOptions(precompute, /*all_orders=*/true)));
+    // For spectral tables this counts their groups' tables and scratch, which the probe's groups
+    // (ProbeSpectralTablesAtWavelengths) use one at a time.
+    options.tables.MakeMemoryBudget(device.largest_heap_bytes()).Check(TableMemoryUses(precompute));
     const TableLoadOptions load = options.tables.MakeLoadOptions();
     Tables tables = Tables::LoadOrPrecompute(device, atmosphere, precompute, load);
     const ProbeQuery query{ray, options.distance_m.value_or(0.0)};
