@@ -1,10 +1,10 @@
 #pragma once
 // Dynamic resolution (`aerial view --target-ms MS`): the render scale follows the frame time, as
-// engines do on weak hardware. A frame's time is predicted at another scale as today's times the
-// pixel ratio: too low for a smaller scale (parts of the frame do not scale with the pixels: the
-// froxel volume, the shadow map, the present at the window's size) and so a safe bound for a larger
-// one. Slow frames are answered quickly and fast ones slowly, so that the view does not stutter
-// for long and the scale does not swing:
+// engines do on weak hardware. A frame's time at another scale is predicted as its time at this
+// scale times the ratio of their pixels: too low for a smaller scale (parts of the frame do not
+// shrink with the pixels: the froxel volume, the shadow map, the present at the window's size),
+// and so a safe bound for a larger one. Slow frames are answered quickly and fast ones slowly, so
+// that the view does not stutter for long and the scale does not swing:
 //   - when the median of the last kStepDownFrames frames is over the target, the scale drops to
 //     the largest one predicted to meet it (to kMinScale when none is);
 //   - when the median of the last kSettleFrames frames, all at this scale, predicts a larger scale
