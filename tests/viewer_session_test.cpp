@@ -180,7 +180,9 @@ TEST_F(ViewerSession, DynamicResolutionClimbsWhenTheTargetAllows) {
   options.camera_path = viewer::CameraPath::Load(AERIAL_SOURCE_DIR "/examples/paths/corridor.toml",
                                                  options.atmosphere.bottom_radius_m);
   viewer::Viewer viewer(std::move(options));
-  StepFrames(viewer, 2);
+  StepFrames(viewer, 1);
+  EXPECT_EQ(viewer.renderer().options().render_scale, 1.0) << "the first frame is drawn whole";
+  StepFrames(viewer, 1);
   EXPECT_EQ(viewer.renderer().options().render_scale, viewer::DynamicResolution::kMinScale) << "starts at the floor";
   int steps = 0;
   for (int i = 0; i < 2 * viewer::DynamicResolution::kSettleFrames; ++i) {

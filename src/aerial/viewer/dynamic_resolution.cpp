@@ -1,5 +1,7 @@
 #include "aerial/viewer/dynamic_resolution.h"
 
+#include <algorithm>
+
 #include "aerial/viewer/frame_stats.h"
 
 namespace aerial::viewer {
@@ -14,14 +16,13 @@ float DynamicResolution::Update(double frame_ms, float scale) {
   auto predicted = [&](double ms, float other) { return ms * (double(other) * other) / (double(scale) * scale); };
   float next = scale;
   if (recent > target_ms_) {
-    next = kMinScale;
+    next = std::min(scale, kMinScale);  // a scale set by hand below the floor stays
     for (float choice : kRenderScales) {  // largest first
       if (choice < scale && choice >= kMinScale && predicted(recent, choice) <= target_ms_) {
         next = choice;
         break;
       }
     }
-    if (next > scale) next = scale;  // a scale set by hand below the floor stays
   } else if (frames >= kSettleFrames) {
     for (float choice : kRenderScales) {
       if (choice > scale && predicted(median, choice) < kStepUpFraction * target_ms_) {
