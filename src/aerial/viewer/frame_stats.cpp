@@ -51,7 +51,10 @@ std::string FrameStats::ToJson() const {
                          {"fps_median", median > 0.0 ? 1000.0 / median : 0.0},
                          {"median_gpu_frame_ms", Percentile(gpu_frame_ms_, 50.0)},
                          {"median_render_scale", Percentile(render_scale_, 50.0)},
-                         {"passes", MedianPassMs()}};
+                         {"passes", MedianPassMs()},
+                         {"frame_ms", frame_ms_},
+                         {"render_scale", render_scale_},
+                         {"gpu_frame_ms", gpu_frame_ms_}};
   return json.dump(2) + "\n";
 }
 

@@ -2,7 +2,9 @@
 // Frame times and per-pass GPU times of a viewer session, for the panel and for
 // `aerial view --stats FILE`:
 //   {"frames": N, "median_frame_ms": ..., "p95_frame_ms": ..., "fps_median": 1000 / median,
-//    "median_gpu_frame_ms": ..., "median_render_scale": ..., "passes": {"froxel build": median GPU ms, ...}}
+//    "median_gpu_frame_ms": ..., "median_render_scale": ..., "passes": {"froxel build": median GPU ms, ...},
+//    "frame_ms": [each frame's time, in order], "render_scale": [each frame's scale],
+//    "gpu_frame_ms": [each GPU frame's time, in the order they finished]}
 // A frame's time is wall clock from the end of the previous frame to the end of its present, so
 // it is what a user sees: input, the panel, recording, waiting for the GPU and presenting. Pass
 // times are GPU timestamps (on lavapipe, the CPU time of the pass), and a GPU frame is the sum of

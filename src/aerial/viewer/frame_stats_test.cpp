@@ -37,5 +37,17 @@ TEST(FrameStats, JsonHasTheScriptedKeys) {
   EXPECT_EQ(stats.MedianFrameMs(3), 200.0);  // frames 190, 200, 1000
 }
 
+TEST(FrameStats, JsonListsEachFrameInOrder) {
+  FrameStats stats;
+  stats.AddFrame(30.0, 1.0);
+  stats.AddFrame(10.0, 0.5);
+  stats.AddGpuFrame({{"froxel build", 4.0}, {"present", 1.0}});
+  stats.AddFrame(20.0, 0.75);
+  auto json = nlohmann::json::parse(stats.ToJson());
+  EXPECT_EQ(json["frame_ms"], nlohmann::json({30.0, 10.0, 20.0}));
+  EXPECT_EQ(json["render_scale"], nlohmann::json({1.0, 0.5, 0.75}));
+  EXPECT_EQ(json["gpu_frame_ms"], nlohmann::json({5.0}));
+}
+
 }  // namespace
 }  // namespace aerial::viewer
