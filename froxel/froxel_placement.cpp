@@ -4,31 +4,21 @@
 #include <cmath>
 
 namespace aerial {
-namespace {
-
-glm::dmat4 ToMatrix(const std::array<float, 16>& m) {
-  glm::dmat4 out;
-  for (int column = 0; column < 4; ++column)
-    for (int row = 0; row < 4; ++row) out[column][row] = m[column * 4 + row];
-  return out;
-}
-
-}  // namespace
 
 FroxelPlacement::FroxelPlacement(const FrameUniforms& frame, const FroxelGrid& grid)
     : frame_(frame),
-      view_projection_(ToMatrix(frame.view_projection)),
+      view_projection_(FromColumnMajorFloats(frame.view_projection)),
       camera_(frame.camera_scene_position[0], frame.camera_scene_position[1],
               frame.camera_scene_position[2]),
       grid_(grid),
-      rows_(FroxelRows::Unpack(frame.froxel_rows)) {}
+      axes_(AxesOf(frame)) {}
 
 glm::dvec3 FroxelPlacement::RayThroughScreen(glm::dvec2 uv) const {
   return ViewRayFromScreen(frame_, uv);
 }
 
 glm::dvec3 FroxelPlacement::FroxelCenter(int i, int j, int k) const {
-  glm::dvec2 uv((i + 0.5) / grid_.width, rows_.ScreenRow((j + 0.5) / grid_.height));
+  glm::dvec2 uv = axes_.ScreenPosition({(i + 0.5) / grid_.width, (j + 0.5) / grid_.height});
   return camera_ + RayThroughScreen(uv) * grid_.SliceDistance(k + 0.5);
 }
 
@@ -76,7 +66,8 @@ std::array<glm::dvec3, 2> FroxelPlacement::Bounds() const {
 }
 
 FroxelTexels::Sample FroxelTexels::Read(glm::dvec2 uv, double distance) const {
-  double coords[3] = {uv.x * grid.width - 0.5, rows.RowCoordinate(uv.y) * grid.height - 0.5,
+  const glm::dvec2 xy = axes.Coordinates(uv);
+  double coords[3] = {xy.x * grid.width - 0.5, xy.y * grid.height - 0.5,
                       grid.DepthCoordinate(distance) * grid.depth - 0.5};
   int sizes[3] = {grid.width, grid.height, grid.depth};
   Sample sample{glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)};

@@ -3,8 +3,8 @@
 // read (aerial/shader_abi/frame_block.h), and the CPU twin of the shaders' trilinear read.
 //
 // Froxel (i, j, k) stands for the point at distance grid.SliceDistance(k + 0.5) along the unit
-// view ray through the screen position uv = ((i + 0.5) / W, rows.ScreenRow((j + 0.5) / H)) (the
-// frame's rows, froxel_rows.h), the ray being
+// view ray through the screen position uv = (columns.ScreenPosition((i + 0.5) / W),
+// rows.ScreenPosition((j + 0.5) / H)) (the frame's columns and rows, froxel_axes.h), the ray being
 // normalize(inverse_view_projection * (2 uv - 1, 0.5, 1)) as in shaders/include/frame.glsl
 // (ViewRayFromScreen). uv (0, 0) is the top-left of the image (Vulkan clip y points down), so j
 // grows downward. The slices are therefore spherical shells around the camera, not planes.
@@ -16,7 +16,7 @@
 
 #include "aerial/froxel_grid.h"
 #include "aerial/shader_abi/frame_geometry.h"
-#include "aerial/shader_abi/froxel_rows.h"
+#include "aerial/shader_abi/froxel_axes.h"
 
 namespace aerial {
 
@@ -51,16 +51,16 @@ class FroxelPlacement {
   glm::dmat4 view_projection_;
   glm::dvec3 camera_;
   FroxelGrid grid_;
-  FroxelRows rows_;
+  FroxelAxes axes_;
 };
 
 // The three froxel images read back (RGBA float texels, x fastest, then y, then z), and a CPU
 // read that mirrors SampleFroxels in shaders/include/froxel.glsl: trilinear with clamp-to-edge
-// at the screen row's froxel row (rows), blended toward the empty segment below the first slice
-// center.
+// at the screen position's froxel coordinates (axes), blended toward the empty segment below the
+// first slice center.
 struct FroxelTexels {
   FroxelGrid grid;
-  FroxelRows rows;  // of the frame that computed them
+  FroxelAxes axes;  // of the frame that computed them
   std::vector<float> rayleigh, mie, transmittance;  // 4 floats per texel
 
   struct Sample {

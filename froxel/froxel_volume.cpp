@@ -65,7 +65,7 @@ void FroxelVolume::Build(const vk::CommandBuffer& cmd, const AtmosphereTables& t
 }
 
 FroxelTexels FroxelVolume::Read(const vk::Context& context, const FrameUniforms& frame) const {
-  FroxelTexels texels{.grid = grid_, .rows = FroxelRows::Unpack(frame.froxel_rows)};
+  FroxelTexels texels{.grid = grid_, .axes = AxesOf(frame)};
   texels.rayleigh = vk::ReadImageFloats(context, rayleigh_);
   texels.mie = vk::ReadImageFloats(context, mie_);
   texels.transmittance = vk::ReadImageFloats(context, transmittance_);

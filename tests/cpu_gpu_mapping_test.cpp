@@ -1,7 +1,7 @@
 // The mappings that C++ and GLSL both evaluate, run on the GPU (shaders/test/cpu_gpu_mappings.comp,
-// froxel_rows.comp, sun_high_mirrors.comp) and held against their C++ side: the froxel depth
-// mapping (FroxelGrid against shaders/include/froxel_depth.glsl), the froxel rows' placement
-// (FroxelRows against froxel_rows.glsl), the sky-view lattice's size (the renderer's images
+// froxel_axes.comp, sun_high_mirrors.comp) and held against their C++ side: the froxel depth
+// mapping (FroxelGrid against shaders/include/froxel_depth.glsl), the froxel axes' placement
+// (FroxelAxis against froxel_axes.glsl), the sky-view lattice's size (the renderer's images
 // against what shaders/include/sky_view_lattice.glsl gives the passes), and what the choice of the
 // variants for a high sun mirrors (froxel/sun_high_variant.h against mappings.glsl and
 // transmittance.glsl).
@@ -18,7 +18,7 @@
 #include "aerial/froxel_grid.h"
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/render/sky_view_layout.h"
-#include "aerial/shader_abi/froxel_rows.h"
+#include "aerial/shader_abi/froxel_axes.h"
 #include "froxel/sun_high_variant.h"
 #include "aerial/vk/compute_pipeline.h"
 #include "gpu_fixture.h"
@@ -123,19 +123,20 @@ TEST_F(CpuGpuMappings, FroxelDepthMatchesFroxelGrid) {
   EXPECT_LE(worst_depth, kRelativeTolerance);
 }
 
-// Foci across the screen (the edges too, where the horizon is off it), spreads from the default's
-// to wide, values every 1/64 of [0, 1]: the GPU's row coordinate and screen row against FroxelRows
+// Foci across the screen (the edges too, where the horizon or the sun is off it), spreads from the
+// default's to the near-even columns' of a sun behind the camera (5), values every 1/64 of
+// [0, 1]: the GPU's froxel coordinate and screen position against FroxelAxis
 // in double from the same floats. Tolerance 5e-6 screen heights (1/280 of a 720p pixel): the float
 // error of asinh as a log (3 ulp beyond [0.5, 2]) over a span of about 6, and of sinh's two
 // exponentials (3 + 2|x| ulp, |x| <= 3.2) scaled by the spread, stay below 1e-6; a wrong term moves
 // rows by far more (a spread of 0.0501 for 0.05 moves them by up to 2e-4).
-TEST_F(CpuGpuMappings, FroxelRowsMatchFroxelRows) {
+TEST_F(CpuGpuMappings, FroxelAxisMatchesFroxelAxis) {
   std::vector<std::array<float, 4>> rows;
   std::vector<float> values;
   for (float focus : {0.0f, 0.2f, 0.6f, 1.0f})
-    for (float spread : {float(kFroxelRowSpread), 0.03f, 0.5f})
+    for (float spread : {float(kFroxelRowSpread), 0.03f, 0.5f, 5.0f})
       for (int step = 0; step <= 64; ++step) {
-        rows.push_back(FroxelRows{.focus = focus, .spread = spread}.Packed());
+        rows.push_back(FroxelAxis{.focus = focus, .spread = spread}.Packed());
         values.push_back(float(step) / 64.0f);
       }
   vk::Buffer rows_in = HostBuffer(rows.size() * sizeof(rows[0]));
@@ -143,7 +144,7 @@ TEST_F(CpuGpuMappings, FroxelRowsMatchFroxelRows) {
   vk::Buffer out = HostBuffer(rows.size() * 2 * sizeof(float));
   std::memcpy(rows_in.mapped(), rows.data(), rows.size() * sizeof(rows[0]));
   std::memcpy(values_in.mapped(), values.data(), values.size() * sizeof(float));
-  DispatchOnce("test/froxel_rows.comp",
+  DispatchOnce("test/froxel_axes.comp",
                {{"RowsInputs", vk::kStorageBuffer}, {"RowsValues", vk::kStorageBuffer}, {"RowsOutputs", vk::kStorageBuffer}},
                {vk::StorageBufferSlot{&rows_in}, vk::StorageBufferSlot{&values_in}, vk::StorageBufferSlot{&out}},
                rows.size());
@@ -151,9 +152,9 @@ TEST_F(CpuGpuMappings, FroxelRowsMatchFroxelRows) {
   std::memcpy(gpu.data(), out.mapped(), gpu.size() * sizeof(gpu[0]));
   double worst_row = 0.0, worst_screen = 0.0;
   for (size_t i = 0; i < rows.size(); ++i) {
-    FroxelRows cpu = FroxelRows::Unpack(rows[i]);
-    worst_row = std::max(worst_row, std::abs(gpu[i][0] - cpu.RowCoordinate(values[i])));
-    worst_screen = std::max(worst_screen, std::abs(gpu[i][1] - cpu.ScreenRow(values[i])));
+    FroxelAxis cpu = FroxelAxis::Unpack(rows[i]);
+    worst_row = std::max(worst_row, std::abs(gpu[i][0] - cpu.Coordinate(values[i])));
+    worst_screen = std::max(worst_screen, std::abs(gpu[i][1] - cpu.ScreenPosition(values[i])));
   }
   std::printf("%zu cases, worst difference: row coordinate %.2e, screen row %.2e\n", rows.size(), worst_row,
               worst_screen);

@@ -552,7 +552,7 @@ double RayleighGreen(const FroxelTexels& t, int x, int y, int slice) {
 // shadow map's reach (the shader sees the sun beyond its last cascade, 100 km of view depth).
 std::vector<std::array<SunSeen, 4>> ColumnVisibility(const ShadowedVolumes& v, int x, int y, int slices) {
   const FroxelGrid& grid = v.on.grid;
-  glm::dvec3 ray = ViewRayFromScreen(v.frame, {(x + 0.5) / grid.width, v.on.rows.ScreenRow((y + 0.5) / grid.height)});
+  glm::dvec3 ray = ViewRayFromScreen(v.frame, v.on.axes.ScreenPosition({(x + 0.5) / grid.width, (y + 0.5) / grid.height}));
   double R = SmallTables().atmosphere().bottom_radius_m;
   std::vector<std::array<SunSeen, 4>> steps;
   double previous = 0.0;
@@ -642,7 +642,7 @@ TEST_F(FroxelShadows, PartlyShadowedColumnsMatchTheCpuMarch) {
   for (int y = 0; y < v.on.grid.height; y += 2) {
     for (int x = 0; x < v.on.grid.width; x += 2) {
       glm::dvec3 ray = ViewRayFromScreen(
-          v.frame, {(x + 0.5) / v.on.grid.width, v.on.rows.ScreenRow((y + 0.5) / v.on.grid.height)});
+          v.frame, v.on.axes.ScreenPosition({(x + 0.5) / v.on.grid.width, (y + 0.5) / v.on.grid.height}));
       int end = 0;  // slice steps whose samples are all in the air and within 80 km
       while (end < v.on.grid.depth && v.on.grid.SliceDistance(end + 0.5) < 80e3 &&
              HeightAboveTerrainM(v.scene.camera.position + ray * v.on.grid.SliceDistance(end + 0.5), R) > 0.0)
@@ -679,7 +679,7 @@ TEST_F(FroxelShadows, PartlyShadowedColumnsMatchTheCpuMarch) {
               "median bracket %.2f%% wide, %td under 30%% wide\n", checked, 100 * worst, 100 * median_width, decided);
   EXPECT_GT(checked, 10);
   // The check means something only where the CPU decides most samples: a column's bracket spans
-  // the single scattering of its undecided samples. The rows gather at the horizon (froxel_rows.h),
+  // the single scattering of its undecided samples. The rows gather at the horizon (froxel_axes.h),
   // where rays graze the shadows' edges and leave more samples undecided (measured: median 69.6%
   // wide, 40 of 143 columns under 30%).
   EXPECT_GE(decided, 20);

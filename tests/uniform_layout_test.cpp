@@ -97,6 +97,7 @@ std::map<std::string, long> CppOffsets() {
   AERIAL_MEMBER(FrameBlock, FrameUniforms, froxel_depth);
   AERIAL_MEMBER(FrameBlock, FrameUniforms, viewport);
   AERIAL_MEMBER(FrameBlock, FrameUniforms, froxel_rows);
+  AERIAL_MEMBER(FrameBlock, FrameUniforms, froxel_columns);
   AERIAL_MEMBER(ShadowBlock, ShadowUniforms, toward_sun);
   AERIAL_MEMBER(ShadowBlock, ShadowUniforms, cascade_right);
   AERIAL_MEMBER(ShadowBlock, ShadowUniforms, cascade_up);
@@ -133,8 +134,8 @@ std::map<std::string, long> CppOffsets() {
 TEST(UniformLayout, GlslBlocksMatchTheCppStructs) {
   Reflection reflection = ReflectFroxelShader();
   std::map<std::string, long> cpp = CppOffsets();
-  ASSERT_EQ(cpp.size(), 46u + 3 * 2 * 8);  // every member of the three blocks, once
-  // Every member on each side, at the same offset: 94 members.
+  ASSERT_EQ(cpp.size(), 47u + 3 * 2 * 8);  // every member of the three blocks, once
+  // Every member on each side, at the same offset: 95 members.
   EXPECT_EQ(reflection.member_offsets.size(), cpp.size());
   for (const auto& [name, offset] : cpp) {
     auto it = reflection.member_offsets.find(name);

@@ -95,15 +95,16 @@ bool BelowTerrain(const glm::dvec3& point, double planet_radius_m) {
 // The shaders' read of the froxels at screen position (u, v) and a distance (SampleFroxels in
 // shaders/include/froxel.glsl), written here from the GLSL and Vulkan's linear filtering with
 // clamp-to-edge addressing, independently of FroxelTexels::Read (froxel_placement.cpp), which the
-// world grid calls: texture coordinate (u, rows.RowCoordinate(v), grid.DepthCoordinate(distance))
+// world grid calls: texture coordinate (axes.Coordinates(u, v), grid.DepthCoordinate(distance))
 // times the size, less half a texel, weighs the two nearest texels on each axis, their indices
 // clamped to the edge; below the first slice center, grid.SliceDistance(0.5), the values blend
-// toward the empty segment. The row and depth mappings themselves are FroxelRows' and FroxelGrid's
+// toward the empty segment. The screen and depth mappings themselves are FroxelAxis' and FroxelGrid's
 // (tests/cpu_gpu_mapping_test.cpp holds them to the shaders').
 FroxelTexels::Sample ReadLikeTheShader(const FroxelTexels& texels, double u, double v, double distance) {
   const FroxelGrid& grid = texels.grid;
   const int size[3] = {grid.width, grid.height, grid.depth};
-  const double coordinate[3] = {u * size[0] - 0.5, texels.rows.RowCoordinate(v) * size[1] - 0.5,
+  const glm::dvec2 xy = texels.axes.Coordinates({u, v});
+  const double coordinate[3] = {xy.x * size[0] - 0.5, xy.y * size[1] - 0.5,
                                 grid.DepthCoordinate(distance) * size[2] - 0.5};
   int low[3];
   double fraction[3];
@@ -203,7 +204,7 @@ class VdbExport : public GpuTest {
 FroxelTexels GpuTexels(const Renderer& renderer, const FroxelGrid& grid) {
   const vk::Context& context = renderer.tables().context();
   const FroxelVolume& froxels = renderer.froxels();
-  return {grid, FroxelRows::Unpack(renderer.frame_uniforms().froxel_rows),
+  return {grid, AxesOf(renderer.frame_uniforms()),
           vk::ReadImageFloats(context, froxels.rayleigh()), vk::ReadImageFloats(context, froxels.mie()),
           vk::ReadImageFloats(context, froxels.transmittance())};
 }
@@ -359,8 +360,8 @@ TEST_F(VdbExport, DensityIsTheRateTheTransmittanceFalls) {
   for (int k = 0; k < grid.depth; ++k)
     for (int j = 0; j < grid.height; ++j)
       for (int i = 0; i < grid.width; ++i) {
-        glm::dvec3 ray =
-            RendererRay(frame.uniforms, (i + 0.5) / grid.width, frame.texels.rows.ScreenRow((j + 0.5) / grid.height));
+        glm::dvec2 uv = frame.texels.axes.ScreenPosition({(i + 0.5) / grid.width, (j + 0.5) / grid.height});
+        glm::dvec3 ray = RendererRay(frame.uniforms, uv.x, uv.y);
         double distance = grid.SliceDistance(k + 0.5);
         if (BelowTerrain(camera + ray * distance, air.bottom_radius_m)) continue;
         constexpr int kSteps = 1024;
@@ -503,7 +504,7 @@ TEST_F(VdbExport, CpuReadAtFroxelCentersGivesTheTexels) {
   for (int k : {0, 5, grid.depth - 1})
     for (int j : {0, 3, grid.height - 1})
       for (int i : {0, 7, grid.width - 1}) {
-        glm::dvec2 uv((i + 0.5) / grid.width, frame.texels.rows.ScreenRow((j + 0.5) / grid.height));
+        glm::dvec2 uv = frame.texels.axes.ScreenPosition({(i + 0.5) / grid.width, (j + 0.5) / grid.height});
         FroxelTexels::Sample sample = frame.texels.Read(uv, grid.SliceDistance(k + 0.5));
         size_t texel = ((size_t(k) * grid.height + j) * grid.width + i) * 4;
         for (int c = 0; c < 3; ++c) {
@@ -572,6 +573,11 @@ TEST_F(VdbExport, MetadataRoundTrips) {
   EXPECT_NEAR(Meta<double>(meta, "froxel_row_focus"), 0.5 + std::tan(8.0 * M_PI / 180.0 + dip) / (2.0 * tan_half_fov),
               1e-4);
   EXPECT_NEAR(Meta<double>(meta, "froxel_row_spread"), kFroxelRowSpread, 1e-8);
+  // The sun (azimuth 160 degrees) is 125 degrees from the view (yaw 35), behind the camera: the
+  // columns are near even, a focus at the centre and a spread of screens (FroxelAxis's tests hold
+  // what that spread does).
+  EXPECT_EQ(Meta<double>(meta, "froxel_column_focus"), 0.5);
+  EXPECT_GT(Meta<double>(meta, "froxel_column_spread"), 4.0);
   using Int3 = std::array<int32_t, 3>;
   EXPECT_EQ(Meta<Int3>(meta, "froxel_resolution"), (Int3{16, 8, 12}));
   EXPECT_EQ(Meta<std::string>(meta, "atmosphere_hash"), Hex(AtmosphereParameters::Earth().Hash()));

@@ -1,8 +1,8 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Froxel pass: for each froxel, the inscatter (Rayleigh and Mie, without phase) and transmittance
-// from the camera to its slice's distance along the ray through its center on the screen (the rows
-// placed by froxel_rows.glsl). One invocation walks one froxel column with one march
+// from the camera to its slice's distance along the ray through its center on the screen (rows and
+// columns placed by froxel_axes.glsl). One invocation walks one froxel column with one march
 // (inscatter_march.glsl), one step per slice, storing the running integral at each slice center. Each step's single scattering is scaled by
 // the fraction of the step that sees the sun (the shadow map, shadowed_march.glsl): light shafts
 // and mountain shadows in the air.
@@ -31,7 +31,7 @@ void main() {
   ivec3 size = AERIAL_FRAME.froxel_size.xyz;
   if (any(greaterThanEqual(column, size.xy))) return;
   vec2 center = (vec2(column) + 0.5) / vec2(size.xy);  // in texture coordinates
-  vec3 ray = ViewRayFromScreen(vec2(center.x, FroxelScreenRow(center.y, AERIAL_FRAME.froxel_rows)));
+  vec3 ray = ViewRayFromScreen(FroxelScreenPositions(center, AERIAL_FRAME.froxel_columns, AERIAL_FRAME.froxel_rows));
   float r, mu, mu_s, nu;
   GetCameraRayParameters(ray, r, mu, mu_s, nu);
   InscatterMarch march = StartInscatterMarch(transmittance_texture, multiple_density_texture, r,

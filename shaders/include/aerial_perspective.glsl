@@ -28,7 +28,8 @@
 Inscatter GetAerialPerspective(sampler3D rayleigh_froxels, sampler3D mie_froxels, sampler3D transmittance_froxels,
                                vec2 screen_uv, float distance) {
   return SampleFroxels(rayleigh_froxels, mie_froxels, transmittance_froxels, screen_uv, distance,
-                       float(AERIAL_FRAME.froxel_size.z), AERIAL_FRAME.froxel_depth.x, AERIAL_FRAME.froxel_rows);
+                       float(AERIAL_FRAME.froxel_size.z), AERIAL_FRAME.froxel_depth.x, AERIAL_FRAME.froxel_columns,
+                       AERIAL_FRAME.froxel_rows);
 }
 
 // The same read at a vertex from its clip-space position: per vertex, for transparent objects and

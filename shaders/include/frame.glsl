@@ -23,7 +23,8 @@ struct FrameParameters {
   ivec4 froxel_size;             // x, y, z: froxel grid (w unused)
   vec4 froxel_depth;             // x: far distance of the last slice (m)
   vec4 viewport;                 // x, y: size in pixels
-  vec4 froxel_rows;              // the froxel rows' placement (froxel_rows.glsl)
+  vec4 froxel_rows;              // the froxel rows' placement (froxel_axes.glsl)
+  vec4 froxel_columns;           // the froxel columns' placement
 };
 layout(std140, set = 0, binding = 1) uniform FrameBlock {
   FrameParameters parameters[1];  // at AERIAL_BLOCK_INDEX (definitions.glsl)

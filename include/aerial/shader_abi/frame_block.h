@@ -16,8 +16,9 @@ struct alignas(16) FrameUniforms {
   std::array<int, 4> froxel_size;                 // w unused (the mode is a specialization constant)
   std::array<float, 4> froxel_depth;              // x: far distance
   std::array<float, 4> viewport;
-  std::array<float, 4> froxel_rows;               // the rows' placement (froxel_rows.glsl)
+  std::array<float, 4> froxel_rows;               // the rows' placement (froxel_axes.glsl)
+  std::array<float, 4> froxel_columns;            // the columns' placement
 };
-static_assert(sizeof(FrameUniforms) == 2 * 64 + 7 * 16);
+static_assert(sizeof(FrameUniforms) == 2 * 64 + 8 * 16);
 
 }  // namespace aerial

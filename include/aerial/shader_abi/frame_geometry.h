@@ -13,5 +13,7 @@ namespace aerial {
 glm::dvec3 ViewRayFromScreen(const FrameUniforms& frame, glm::dvec2 uv);
 
 std::array<float, 16> ToColumnMajorFloats(const glm::dmat4& m);
+// The inverse: a matrix as the FrameBlock stores it (column-major, std140).
+glm::dmat4 FromColumnMajorFloats(const std::array<float, 16>& m);
 
 }  // namespace aerial

@@ -8,7 +8,8 @@
 //   z_k = near + (far - near) (k + 0.5) / S
 // on the view ray through the image point (u, v) = ((i + 0.5) / W, (j + 0.5) / H), (0, 0) the
 // image's top-left (i right, j down, k away from the camera): W x H the froxels' resolution, even
-// on the image, where the froxels' rows gather at the horizon (shader_abi/froxel_rows.h). Nor can
+// on the image, where the froxels' rows gather at the horizon and their columns at the sun's glow
+// (shader_abi/froxel_axes.h). Nor can
 // the depth slices be the froxels': theirs are spheres around the camera, quadratic
 // in k (distance far ((k + 0.5) / D)^2), and an OpenVDB frustum's are planes, linear in k. So the
 // linear slices are as thin as the froxels' first: S = FrustumSlices(), which puts the first

@@ -97,11 +97,15 @@ VdbMetadata FrameMetadata(const FroxelFrame& frame, const std::string& grid_spac
       {"froxel_slice_distance_m", slices},
       {"froxel_mapping",
        std::string("froxel (i, j, k) is the point at distance froxel_far_m * ((k + 0.5) / D)^2 "
-                   "from the camera along the view ray through the image point ((i + 0.5) / W, y_j), (0, 0) "
-                   "the top-left corner, its rows gathered at the horizon: y_j = f + s sinh((j + 0.5) / H * "
-                   "(asinh((1 - f) / s) + asinh(f / s)) - asinh(f / s)), f froxel_row_focus, s froxel_row_spread")},
-      {"froxel_row_focus", frame.texels.rows.focus},
-      {"froxel_row_spread", frame.texels.rows.spread},
+                   "from the camera along the view ray through the image point (x_i, y_j), (0, 0) the top-left "
+                   "corner, its columns gathered at the sun's glow and its rows at the horizon: "
+                   "x_i = f + s sinh((i + 0.5) / W * (asinh((1 - f) / s) + asinh(f / s)) - asinh(f / s)), f "
+                   "froxel_column_focus, s froxel_column_spread; y_j the same with H, froxel_row_focus and "
+                   "froxel_row_spread")},
+      {"froxel_column_focus", frame.texels.axes.columns.focus},
+      {"froxel_column_spread", frame.texels.axes.columns.spread},
+      {"froxel_row_focus", frame.texels.axes.rows.focus},
+      {"froxel_row_spread", frame.texels.axes.rows.spread},
       {"ground", std::string(frame.terrain ? "terrain" : "planet sphere (sea level)")},
   };
 }

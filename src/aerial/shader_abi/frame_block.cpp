@@ -3,7 +3,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "aerial/shader_abi/frame_geometry.h"
-#include "aerial/shader_abi/froxel_rows.h"
+#include "aerial/shader_abi/froxel_axes.h"
 
 namespace aerial {
 namespace {
@@ -24,7 +24,9 @@ FrameUniforms MakeFrameUniforms(const FrameCamera& camera, double planet_radius_
   u.froxel_size = {grid.width, grid.height, grid.depth, 0};
   u.froxel_depth = {float(grid.far_m), 0, 0, 0};
   u.viewport = {float(camera.width), float(camera.height), 0, 0};
-  u.froxel_rows = FroxelRowsAroundHorizon(u, planet_radius_m).Packed();
+  const FroxelAxes axes = PlaceFroxelAxes(u, planet_radius_m);
+  u.froxel_rows = axes.rows.Packed();
+  u.froxel_columns = axes.columns.Packed();
   return u;
 }
 
@@ -35,11 +37,15 @@ std::array<float, 16> ToColumnMajorFloats(const glm::dmat4& m) {
   return out;
 }
 
-glm::dvec3 ViewRayFromScreen(const FrameUniforms& frame, glm::dvec2 uv) {
-  glm::dmat4 inverse;  // column-major, as std140 stores it
+glm::dmat4 FromColumnMajorFloats(const std::array<float, 16>& m) {
+  glm::dmat4 out;
   for (int column = 0; column < 4; ++column)
-    for (int row = 0; row < 4; ++row) inverse[column][row] = frame.inverse_view_projection[column * 4 + row];
-  glm::dvec4 world = inverse * glm::dvec4(uv * 2.0 - 1.0, 0.5, 1.0);
+    for (int row = 0; row < 4; ++row) out[column][row] = m[column * 4 + row];
+  return out;
+}
+
+glm::dvec3 ViewRayFromScreen(const FrameUniforms& frame, glm::dvec2 uv) {
+  glm::dvec4 world = FromColumnMajorFloats(frame.inverse_view_projection) * glm::dvec4(uv * 2.0 - 1.0, 0.5, 1.0);
   return glm::normalize(glm::dvec3(world) / world.w);
 }
 
