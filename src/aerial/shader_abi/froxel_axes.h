@@ -60,13 +60,15 @@ inline constexpr double kFroxelRowsFarGroundM = 20e3;
 // columns' spread is kFroxelColumnSpread over that weight, at most 100 times it (near even for a
 // sun behind the camera). Where the sun is above the band of rows at the horizon (focus and
 // spread), the rows' focus rises by that weight times half the sun's height above the band, at
-// most kFroxelRowsRiseToSun. Froxel vs per-pixel beyond 1 km, 32x32x32 at 320x180: sunrise 2.81% with
-// even columns and the rows at the horizon; 2.36% with the columns at the sun (2.31% and 2.39% at a
-// spread of 0.03 and 0.1); 1.78% with the rows' focus risen (0.052 screen heights; half the whole
-// way from the horizon, 0.077, gave 1.74%, but it also moved the rows at sunset, whose sun is in
-// the band, taking its froxels without shadows from 0.42% to 1.01%). Evening, its sun 20 degrees
-// off the screen: 1.27% -> 1.20%. Sunset with shadows, whose error lies along the far ridge across
-// a third of the screen's width: 7.27% -> 7.68% (a spread of 0.08: 7.47%, sunrise 1.84%).
+// most kFroxelRowsRiseToSun.
+// Froxel vs per-pixel beyond 1 km, 32x32x32 at 320x180: sunrise 2.81% with even columns and the
+// rows at the horizon; 2.32% with the columns at the sun (at a fixed focus of 0.45: 2.31 / 2.36 /
+// 2.39% at a spread of 0.03 / 0.05 / 0.1); 1.78% with the rows' focus risen (0.052 screen heights;
+// half the whole way from the horizon, 0.077, gave 1.74%, but it also moved the rows at sunset,
+// whose sun is in the band, taking its froxels without shadows from 0.42% to 1.01%). Evening, its
+// sun 20 degrees off the screen: 1.27% -> 1.20%. Sunset with shadows, whose error lies along the
+// far ridge across a third of the screen's width: 7.27% -> 7.68% (a spread of 0.08: 7.47%, and
+// sunrise 1.84%).
 inline constexpr double kFroxelColumnSpread = 0.05;
 inline constexpr double kFroxelGlowHalvingDeg = 8.0;
 inline constexpr double kFroxelRowsRiseToSun = 2.0 * kFroxelRowSpread;
