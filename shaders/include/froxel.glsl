@@ -1,6 +1,6 @@
 // The froxel volume: a grid aligned with the camera frustum, x and y across the screen (its rows
-// gathered around the horizon and its columns at the sun's glow, froxel_axes.glsl), z along the view distance with quadratic slices
-// (froxel_depth.glsl). Each froxel holds, from the camera to its slice's distance along its center
+// gathered around the horizon and its columns at the sun's glow, froxel_axes.glsl), z along the
+// view distance with quadratic slices (froxel_depth.glsl). Each froxel holds, from the camera to its slice's distance along its center
 // ray, Rayleigh and Mie inscatter WITHOUT phase and the transmittance: phases are applied per pixel.
 #ifndef AERIAL_FROXEL_GLSL
 #define AERIAL_FROXEL_GLSL

@@ -4,8 +4,8 @@
 // tests/cpu_gpu_mapping_test.cpp to hold against FroxelAxis (aerial/shader_abi/froxel_axes.h).
 #include "froxel_axes.glsl"
 layout(local_size_x = 64) in;
-// Per case: the packed axis (FroxelAxis::Packed) and a value y in; y's froxel coordinate and, taking y
-// as a froxel coordinate, its screen position out.
+// Per case: the packed axis (FroxelAxis::Packed) and a value y in; y's froxel coordinate and,
+// taking y as a froxel coordinate, its screen position out.
 layout(std430, set = 0, binding = 0) readonly buffer RowsInputs { vec4 rows_inputs[]; };
 layout(std430, set = 0, binding = 1) readonly buffer RowsValues { float rows_values[]; };
 layout(std430, set = 0, binding = 2) writeonly buffer RowsOutputs { vec2 rows_outputs[]; };
