@@ -28,6 +28,7 @@ struct InscatterMarch {
   float r, mu, mu_s, nu;
   bool ray_r_mu_intersects_ground;
   vec3 origin;  // GetRayOpticalDepthOrigin of the ray
+  vec3 ground_extinction;  // the air's extinction at the ground (ContinueInscatterMarchUnderGround)
   float distance;  // from the camera to the last sample
   vec3 transmittance;  // from the camera to the last sample
   // The integrands at the last sample: single scattering per unit of sunlight and scattering
@@ -66,6 +67,7 @@ InscatterMarch StartInscatterMarch(sampler2D transmittance_texture,
   march.ray_r_mu_intersects_ground = RayIntersectsGround(r, mu);
   march.origin = GetRayOpticalDepthOrigin(transmittance_texture, r, mu,
                                           march.ray_r_mu_intersects_ground);
+  march.ground_extinction = GetExtinction(AERIAL_ATMOSPHERE.bottom_radius);
   march.rayleigh_sum = vec3(0.0);
   march.mie_sum = vec3(0.0);
   march.multiple_sum = vec3(0.0);
@@ -73,23 +75,48 @@ InscatterMarch StartInscatterMarch(sampler2D transmittance_texture,
   return march;
 }
 
-// Moves the march to distance d (clamped to the atmosphere), integrating the step with
-// ExponentialStepIntegral; sun_visibility: the fraction of the step that sees the sun.
-void AdvanceInscatterMarch(sampler2D transmittance_texture, sampler3D multiple_density_texture,
-                           inout InscatterMarch march, float d, float sun_visibility) {
-  d = min(d, DistanceToNearestAtmosphereBoundary(march.r, march.mu,
-                                                 march.ray_r_mu_intersects_ground));
+// Beyond the ground the march goes on in air as it is at the ground point: each integrand keeps
+// its value there, attenuated by the ground's extinction over the distance gone under it. The
+// froxels need it: a pixel below the horizon reads the rows above and below its own, and the
+// lower row's ray meets the ground nearer than the pixel's surface. Held at the ground point's
+// value, that row's slices beyond it would give the pixel the inscatter of a shorter segment,
+// darkening the ground a few km away under a low sun.
+void ContinueInscatterMarchUnderGround(inout InscatterMarch march, float d, float sun_visibility) {
   float dx = d - march.distance;
   if (dx <= 0.0) return;
-  vec3 rayleigh_previous = march.rayleigh_integrand;
-  vec3 mie_previous = march.mie_integrand;
-  vec3 multiple_previous = march.multiple_integrand;
-  SampleInscatterIntegrands(transmittance_texture, multiple_density_texture, march, d);
-  float lit = sun_visibility * dx;
-  march.rayleigh_sum += ExponentialStepIntegral(rayleigh_previous, march.rayleigh_integrand) * lit;
-  march.mie_sum += ExponentialStepIntegral(mie_previous, march.mie_integrand) * lit;
-  march.multiple_sum +=
-      ExponentialStepIntegral(multiple_previous, march.multiple_integrand) * dx;
+  vec3 attenuation = exp(-march.ground_extinction * dx);
+  // The integral over [0, dx] of exp(-extinction s).
+  vec3 length_attenuated = (1.0 - attenuation) / max(march.ground_extinction, vec3(1e-30));
+  march.rayleigh_sum += march.rayleigh_integrand * length_attenuated * sun_visibility;
+  march.mie_sum += march.mie_integrand * length_attenuated * sun_visibility;
+  march.multiple_sum += march.multiple_integrand * length_attenuated;
+  march.rayleigh_integrand *= attenuation;
+  march.mie_integrand *= attenuation;
+  march.multiple_integrand *= attenuation;
+  march.transmittance *= attenuation;
+  march.distance = d;
+}
+
+// Moves the march to distance d, integrating the step with ExponentialStepIntegral up to the
+// atmosphere's boundary and on under the ground beyond it (ContinueInscatterMarchUnderGround);
+// sun_visibility: the fraction of the step that sees the sun.
+void AdvanceInscatterMarch(sampler2D transmittance_texture, sampler3D multiple_density_texture,
+                           inout InscatterMarch march, float d, float sun_visibility) {
+  float boundary = DistanceToNearestAtmosphereBoundary(march.r, march.mu,
+                                                       march.ray_r_mu_intersects_ground);
+  float dx = min(d, boundary) - march.distance;
+  if (dx > 0.0) {
+    vec3 rayleigh_previous = march.rayleigh_integrand;
+    vec3 mie_previous = march.mie_integrand;
+    vec3 multiple_previous = march.multiple_integrand;
+    SampleInscatterIntegrands(transmittance_texture, multiple_density_texture, march, min(d, boundary));
+    float lit = sun_visibility * dx;
+    march.rayleigh_sum += ExponentialStepIntegral(rayleigh_previous, march.rayleigh_integrand) * lit;
+    march.mie_sum += ExponentialStepIntegral(mie_previous, march.mie_integrand) * lit;
+    march.multiple_sum +=
+        ExponentialStepIntegral(multiple_previous, march.multiple_integrand) * dx;
+  }
+  if (march.ray_r_mu_intersects_ground) ContinueInscatterMarchUnderGround(march, d, sun_visibility);
 }
 
 // The march's inscatter so far, without phase: multiple scattering (phase included in J_ms) goes
