@@ -104,12 +104,13 @@ void AdvanceInscatterMarch(sampler2D transmittance_texture, sampler3D multiple_d
                            inout InscatterMarch march, float d, float sun_visibility) {
   float boundary = DistanceToNearestAtmosphereBoundary(march.r, march.mu,
                                                        march.ray_r_mu_intersects_ground);
-  float dx = min(d, boundary) - march.distance;
+  float in_air = min(d, boundary);
+  float dx = in_air - march.distance;
   if (dx > 0.0) {
     vec3 rayleigh_previous = march.rayleigh_integrand;
     vec3 mie_previous = march.mie_integrand;
     vec3 multiple_previous = march.multiple_integrand;
-    SampleInscatterIntegrands(transmittance_texture, multiple_density_texture, march, min(d, boundary));
+    SampleInscatterIntegrands(transmittance_texture, multiple_density_texture, march, in_air);
     float lit = sun_visibility * dx;
     march.rayleigh_sum += ExponentialStepIntegral(rayleigh_previous, march.rayleigh_integrand) * lit;
     march.mie_sum += ExponentialStepIntegral(mie_previous, march.mie_integrand) * lit;
