@@ -105,10 +105,10 @@ TEST_F(Render, FroxelMatchesPerPixelWithShadows) {
 // with the froxels' resolution. Below the horizon a pixel reads the froxel rows above and below
 // its own, and the lower row's ray meets the ground nearer: its slices beyond the ground must hold
 // the inscatter of a segment as long as the pixel's (the march goes on under the ground,
-// inscatter_march.glsl), not the shorter segment's to the ground. Held there, they made the bands
-// of 0.3-3 km 2.2-3.6% dark at sunrise and sunset. Measured now: at most 1.44% (sunset, 100-300 m:
-// between two slice centres the quadratic slices read inscatter that grows linearly with the
-// distance a little high); bound 2%.
+// inscatter_march.glsl), not the shorter segment's to the ground: held there, the bands of 0.3-3 km
+// read 2.2-3.6% dark at sunrise and sunset, which the bound catches. Measured: at most 1.44%
+// (sunset, 100-300 m: between two slice centres the quadratic slices read inscatter that grows
+// linearly with the distance a little high); bound 2%.
 TEST_F(Render, FroxelsKeepTheLightOfEveryDistance) {
   const double edges[] = {100.0, 300.0, 1000.0, 3000.0, 10000.0, 30000.0};
   for (const char* preset : {"sunrise", "sunset", "noon"}) {

@@ -45,9 +45,8 @@ namespace aerial {
 // 0.33 / 0.80%, evening 4.39 / 1.20 / 1.27 / 1.24 / 1.78%, sunrise 4.43 / 2.89 / 2.81 / 2.81 /
 // 2.95%, sunset 15.7 / 8.2 / 7.3 / 9.2 / 9.3%. Focusing higher, on the mountains rather than the
 // sea-level horizon, everywhere, helped sunrise by 0.3% and cost every other view more. These
-// figures and the columns' below were measured with the froxel march held at the ground where a
-// column's ray meets it; marched on under the ground (inscatter_march.glsl), the kept layout reads
-// 0.05% at noon, 1.19% at evening and 1.74% at sunrise.
+// figures and the columns' below rank the layouts; the kept layout's own figures are those of
+// Render.FroxelMatchesPerPixel* (render_test.cpp).
 inline constexpr double kFroxelRowSpread = 0.05;
 // Where the band below the horizon ends: at the screen row where the sea-level ground is this far
 // (a camera on the ground sees none so far and keeps kFroxelRowSpread). The far ground's error was
