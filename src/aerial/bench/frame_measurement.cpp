@@ -7,7 +7,6 @@
 #include "aerial/validation/image_metrics.h"
 
 namespace aerial::bench {
-namespace {
 
 double CpuClockMs(clockid_t clock) {
   timespec now{};
@@ -25,8 +24,6 @@ Scene Moved(const Scene& scene, Motion motion, int frame) {
   }
   return moved;
 }
-
-}  // namespace
 
 std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<FrameSource>& sources, const Scene& scene,
                                                   int warmup, int frames,

@@ -5,6 +5,7 @@
 // its GPU pass times, its wall-clock time (SceneRenderer::Render from the call to the end of the wait,
 // the CPU's part: terrain selection, sorting, recording, submitting, included), the process's
 // CPU time over it, and the calling thread's (that CPU part alone).
+#include <ctime>
 #include <functional>
 #include <limits>
 #include <vector>
@@ -28,6 +29,12 @@ inline constexpr const char* kShadowMapPass = "shadow map";
 // table every frame. Frames are drawn as the viewer draws them, not complete (SceneRenderer::Record):
 // a sky-view table made within 10 m of altitude is kept.
 enum class Motion { kCamera, kStill, kSun };
+
+// The scene of frame i under the motion.
+Scene Moved(const Scene& scene, Motion motion, int frame);
+
+// A CPU clock (CLOCK_PROCESS_CPUTIME_ID, CLOCK_THREAD_CPUTIME_ID) in milliseconds.
+double CpuClockMs(clockid_t clock);
 
 struct FrameSource {
   SceneRenderer* renderer;

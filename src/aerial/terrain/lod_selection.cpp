@@ -38,13 +38,6 @@ Bounds DescendantsBounds(const ChunkInfo& info) {
   return {info.bounds.min - margin, info.bounds.max + margin};
 }
 
-bool WithinTerrain(const ChunkId& id) {
-  Footprint f = FootprintOf(id);
-  double dx = std::max({f.x0, 0.0, -(f.x0 + f.size)});
-  double dy = std::max({f.y0, 0.0, -(f.y0 + f.size)});
-  return std::hypot(dx, dy) < kTerrainRadiusM;
-}
-
 // Quadtree order from the camera (its sea-level point): at every node, the child on the camera's
 // side of both splitting lines first, the one across both last. Two chunks are ordered at the
 // first node where their paths from the root part. A path's ranks (2 bits a level) are packed from
@@ -91,6 +84,13 @@ void LeaveOutHidden(const LodView& view, ChunkSource& source, Selection& selecti
 }
 
 }  // namespace
+
+bool WithinTerrain(const ChunkId& id) {
+  Footprint f = FootprintOf(id);
+  double dx = std::max({f.x0, 0.0, -(f.x0 + f.size)});
+  double dy = std::max({f.y0, 0.0, -(f.y0 + f.size)});
+  return std::hypot(dx, dy) < kTerrainRadiusM;
+}
 
 void MarkSkirts(std::vector<SelectedChunk>& chunks) {
   std::unordered_set<ChunkId, ChunkIdHash> drawn;

@@ -106,6 +106,10 @@ struct Selection {
 // it. Builds what it needs through source; the root chunk first.
 Selection SelectChunks(const LodView& view, ChunkSource& source);
 
+// Whether any of the chunk's footprint lies within kTerrainRadiusM of the origin (chunks entirely
+// beyond it are never drawn).
+bool WithinTerrain(const ChunkId& id);
+
 // Sets each chunk's skirts: a side needs none where the chunk across it is in the list at the same
 // level (both share the side's vertices exactly), and one everywhere else.
 void MarkSkirts(std::vector<SelectedChunk>& chunks);

@@ -1,0 +1,162 @@
+#include "aerial/render/gpu_chunk_selection.h"
+
+#include <array>
+#include <bit>
+#include <cstring>
+
+namespace aerial {
+namespace {
+
+using terrain::ChunkId;
+
+constexpr int32_t kNotBuilt = -1, kOutsideTerrain = -2;  // terrain_select.comp's
+constexpr uint32_t kWorkgroupSize = 256;
+
+// terrain_select.comp's SelectionView (std140).
+struct SelectionView {
+  std::array<glm::vec4, 5> planes;
+  glm::vec4 camera;  // w: pixels per radian
+  glm::vec4 limits;  // error bound (px), resolved error (m), the camera's sea-level x and y
+  glm::ivec4 root;   // root slot, generation, vertices per slot, first instance
+  std::array<glm::uvec4, 16> index_ranges;
+};
+static_assert(sizeof(SelectionView) == 384);
+
+// The same level's chunks across a chunk's sides, in the order of the skirt mask's bits
+// (terrain::ChunkSide: south, east, north, west).
+std::array<ChunkId, 4> Neighbours(const ChunkId& c) {
+  return {ChunkId{c.level, c.x, c.y - 1}, ChunkId{c.level, c.x + 1, c.y}, ChunkId{c.level, c.x, c.y + 1},
+          ChunkId{c.level, c.x - 1, c.y}};
+}
+int Opposite(int side) { return (side + 2) % 4; }
+// Which of its parent's children a chunk is (terrain::Children's order).
+int ChildIndex(const ChunkId& id) { return (id.x & 1) + 2 * (id.y & 1); }
+
+vk::Buffer StorageBuffer(const vk::Context& context, ::vk::DeviceSize size, bool host_visible,
+                         ::vk::BufferUsageFlags usage = {}) {
+  return vk::Buffer(context, {.size = size, .usage = ::vk::BufferUsageFlagBits::eStorageBuffer | usage,
+                              .host_visible = host_visible});
+}
+
+}  // namespace
+
+// terrain_select.comp's ChunkNode (std430).
+struct GpuChunkSelection::Node {
+  glm::vec4 lower;  // w: geometric error
+  glm::vec4 upper;
+  glm::ivec4 children, neighbours, id;
+};
+
+GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot,
+                                     uint32_t first_instance)
+    : slots_(slots),
+      vertices_per_slot_(vertices_per_slot),
+      first_instance_(first_instance),
+      id_in_slot_(slots),
+      tree_(StorageBuffer(context, slots * sizeof(Node), true)),
+      view_(context, vk::UniformBufferInfo(sizeof(SelectionView))),
+      queues_(StorageBuffer(context, 2 * slots * sizeof(int32_t), false)),
+      stamps_(StorageBuffer(context, slots * sizeof(uint32_t), true)),
+      keys_(StorageBuffer(context, std::bit_ceil(slots) * 2 * sizeof(uint32_t), false)),
+      draws_(StorageBuffer(context, kDrawsOffset + slots * sizeof(::vk::DrawIndexedIndirectCommand), true,
+                           ::vk::BufferUsageFlagBits::eIndirectBuffer)),
+      requests_(StorageBuffer(context, 4 * slots * sizeof(glm::ivec4), true)),
+      pipeline_(context, "frame/terrain_select.comp",
+                {{"ChunkTree", vk::kStorageBuffer},
+                 {"SelectionView", vk::kUniform},
+                 {"SelectionQueues", vk::kStorageBuffer},
+                 {"SelectionStamps", vk::kStorageBuffer},
+                 {"SelectionKeys", vk::kStorageBuffer},
+                 {"SelectionDraws", vk::kStorageBuffer},
+                 {"SelectionRequests", vk::kStorageBuffer}}) {
+  static_assert(sizeof(Node) == 80);
+  std::memset(stamps_.mapped(), 0, stamps_.size());
+}
+
+GpuChunkSelection::Node& GpuChunkSelection::NodeAt(uint32_t slot) const {
+  return reinterpret_cast<Node*>(tree_.mapped())[slot];
+}
+
+std::optional<uint32_t> GpuChunkSelection::SlotOf(const ChunkId& id) const {
+  auto it = slot_of_.find(id);
+  if (it == slot_of_.end()) return std::nullopt;
+  return it->second;
+}
+
+// Points the chunk's parent and neighbours at `slot` (kNotBuilt: at nothing).
+void GpuChunkSelection::Link(const ChunkId& id, int32_t slot) {
+  if (id.level > 0)
+    if (std::optional<uint32_t> parent = SlotOf(terrain::Parent(id))) NodeAt(*parent).children[ChildIndex(id)] = slot;
+  const std::array<ChunkId, 4> neighbours = Neighbours(id);
+  for (int side = 0; side < 4; ++side)
+    if (std::optional<uint32_t> neighbour = SlotOf(neighbours[side]))
+      NodeAt(*neighbour).neighbours[Opposite(side)] = slot;
+}
+
+void GpuChunkSelection::Insert(uint32_t slot, const ChunkId& id, const terrain::ChunkInfo& info) {
+  Node node{.lower = glm::vec4(glm::vec3(info.bounds.min), float(info.geometric_error_m)),
+            .upper = glm::vec4(glm::vec3(info.bounds.max), 0.0f),
+            .id = glm::ivec4(id.level, id.x, id.y, 0)};
+  const std::array<ChunkId, 4> children = terrain::Children(id);
+  for (int k = 0; k < 4; ++k) {
+    if (id.level == terrain::kMaxChunkLevel || !terrain::WithinTerrain(children[k]))
+      node.children[k] = kOutsideTerrain;
+    else
+      node.children[k] = int32_t(SlotOf(children[k]).value_or(kNotBuilt));
+  }
+  const std::array<ChunkId, 4> neighbours = Neighbours(id);
+  for (int side = 0; side < 4; ++side) node.neighbours[side] = int32_t(SlotOf(neighbours[side]).value_or(kNotBuilt));
+  NodeAt(slot) = node;
+  slot_of_[id] = slot;
+  id_in_slot_[slot] = id;
+  Link(id, int32_t(slot));
+}
+
+void GpuChunkSelection::Remove(uint32_t slot) {
+  const ChunkId id = id_in_slot_[slot];
+  slot_of_.erase(id);
+  Link(id, kNotBuilt);
+}
+
+void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodView& view) {
+  if (++generation_ == 0) ++generation_;  // stamps start at 0: no selection has drawn a slot
+  SelectionView block{};
+  for (size_t i = 0; i < view.planes.size(); ++i) block.planes[i] = glm::vec4(view.planes[i]);
+  // The sea-level point under the camera: the quadtree's order is taken from it.
+  const glm::dvec3 center(0.0, 0.0, -view.planet_radius_m);
+  const glm::dvec3 eye = center + view.planet_radius_m * glm::normalize(view.camera - center);
+  block.camera = glm::vec4(glm::vec3(view.camera), float(view.pixels_per_radian));
+  block.limits = glm::vec4(float(view.max_error_px), float(view.resolved_error_m), float(eye.x), float(eye.y));
+  block.root = glm::ivec4(int32_t(SlotOf(ChunkId{}).value_or(kNotBuilt)), int32_t(generation_),
+                          int32_t(vertices_per_slot_), int32_t(first_instance_));
+  for (uint32_t mask = 0; mask < 16; ++mask) {
+    terrain::IndexRange range = terrain::ChunkIndexRange(mask);
+    block.index_ranges[mask] = glm::uvec4(range.first, range.count, 0, 0);
+  }
+  view_.Write(std::as_bytes(std::span(&block, 1)));
+  pipeline_.Dispatch(cmd,
+                     {vk::StorageBufferSlot{&tree_}, vk::UniformBufferSlot{&view_}, vk::StorageBufferSlot{&queues_},
+                      vk::StorageBufferSlot{&stamps_}, vk::StorageBufferSlot{&keys_}, vk::StorageBufferSlot{&draws_},
+                      vk::StorageBufferSlot{&requests_}},
+                     {kWorkgroupSize, 1, 1}, {kWorkgroupSize, 1, 1});
+  vk::FullBarrier(cmd);
+}
+
+GpuChunkSelection::Result GpuChunkSelection::Read() const {
+  std::array<uint32_t, 3> header;  // draws, deferred, requested
+  std::memcpy(header.data(), draws_.mapped(), sizeof(header));
+  const auto* commands = reinterpret_cast<const ::vk::DrawIndexedIndirectCommand*>(draws_.mapped() + kDrawsOffset);
+  const auto* requests = reinterpret_cast<const glm::ivec4*>(requests_.mapped());
+  Result result{.deferred = int(header[1])};
+  for (uint32_t i = 0; i < header[0]; ++i) {
+    const uint32_t slot = uint32_t(commands[i].vertexOffset) / vertices_per_slot_;
+    uint32_t skirts = 0;
+    for (uint32_t mask = 0; mask < 16; ++mask)
+      if (terrain::ChunkIndexRange(mask).first == commands[i].firstIndex) skirts = mask;
+    result.chunks.push_back({id_in_slot_[slot], skirts});
+  }
+  for (uint32_t i = 0; i < header[2]; ++i) result.requested.push_back({requests[i].x, requests[i].y, requests[i].z});
+  return result;
+}
+
+}  // namespace aerial

@@ -1,0 +1,69 @@
+#pragma once
+// The terrain's level-of-detail selection made by the GPU (shaders/frame/terrain_select.comp):
+// the rule of terrain/lod_selection.h (frustum culling, Ulrich's screen-space error bound, a chunk
+// drawn in its children's place until they are built, skirts where a neighbour is drawn at another
+// level, front-to-back order), walked on the GPU over the chunks built so far, written as indexed
+// indirect draws. The CPU's part no longer grows with the terrain: it keeps the tree of built
+// chunks (a few links per chunk built or dropped) and builds the chunks the GPU asks for.
+//
+// The tree is the chunk slots' table: per slot, the chunk's bounds and error and the slots of its
+// children and of its level's neighbours. The GPU reads it from host-visible memory, so the CPU
+// changes it only while no selection it recorded is in flight.
+//
+// Not done here (the CPU selection's): occlusion culling (terrain/screen_horizon.h), the camera's
+// refinement slack, and the split of chunks by where they read the froxels.
+#include <cstdint>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+#include "aerial/terrain/lod_selection.h"
+#include "aerial/vk/compute_pipeline.h"
+#include "aerial/vk/resources.h"
+
+namespace aerial {
+
+class GpuChunkSelection {
+ public:
+  // slots: how many chunks the tree holds (the chunk cache's slots); vertices_per_slot: where
+  // slot s's vertices begin (s times it) in the vertex buffer the draws read; first_instance: the
+  // draws' first instance.
+  GpuChunkSelection(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot, uint32_t first_instance);
+
+  // The chunk `id`, built, is in `slot` (a free one) / is no longer there.
+  void Insert(uint32_t slot, const terrain::ChunkId& id, const terrain::ChunkInfo& info);
+  void Remove(uint32_t slot);
+  std::optional<uint32_t> SlotOf(const terrain::ChunkId& id) const;
+
+  // Records the selection of view's chunks (LodView::occlusion_culling and front_to_back are not
+  // read: there is no culling by occlusion, and the order is always front to back).
+  void Record(const vk::CommandBuffer& cmd, const terrain::LodView& view);
+
+  // What the last recorded selection wrote, once its commands have completed.
+  struct Result {
+    std::vector<terrain::SelectedChunk> chunks;  // front to back, with their skirts
+    std::vector<terrain::ChunkId> requested;     // children to build
+    int deferred = 0;                            // terrain::Selection::deferred
+  };
+  Result Read() const;
+
+  // The draws: their count (uint32) at offset 0, the VkDrawIndexedIndirectCommands from
+  // kDrawsOffset, at most slots of them (vkCmdDrawIndexedIndirectCount).
+  const vk::Buffer& draws() const { return draws_; }
+  static constexpr ::vk::DeviceSize kDrawsOffset = 12;
+  uint32_t max_draws() const { return slots_; }
+
+ private:
+  struct Node;
+  Node& NodeAt(uint32_t slot) const;
+  void Link(const terrain::ChunkId& id, int32_t slot);
+
+  uint32_t slots_, vertices_per_slot_, first_instance_;
+  uint32_t generation_ = 0;
+  std::unordered_map<terrain::ChunkId, uint32_t, terrain::ChunkIdHash> slot_of_;
+  std::vector<terrain::ChunkId> id_in_slot_;
+  vk::Buffer tree_, view_, queues_, stamps_, keys_, draws_, requests_;
+  vk::ComputePipeline pipeline_;
+};
+
+}  // namespace aerial

@@ -1,0 +1,160 @@
+// The terrain's selection made by the GPU (src/aerial/render/gpu_chunk_selection.h) against the
+// CPU's (src/aerial/terrain/lod_selection.h), which applies the same rule in double precision to
+// the same built chunks: the same chunks, skirts and order; a chunk whose children are not built
+// drawn in their place, and the children asked for; from the root alone, the asked-for chunks
+// lead to the CPU's selection.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+#include <string>
+
+#include "aerial/render/gpu_chunk_selection.h"
+#include "aerial/scene.h"
+#include "aerial/terrain/built_chunks.h"
+#include "aerial/terrain/terrain_chunk.h"
+#include "gpu_fixture.h"
+
+namespace aerial::testing {
+namespace {
+
+using terrain::ChunkId;
+using terrain::SelectedChunk;
+
+constexpr double kR = 6360e3;  // the default atmosphere's bottom radius
+constexpr double kAspect = 16.0 / 9.0;
+constexpr uint32_t kSlots = 8192;
+constexpr uint32_t kGroundInstance = 1;
+
+// Built chunks (from the process's shared store), each put into the GPU's tree as it is built;
+// building can be turned off, so that the CPU's selection, like the GPU's, draws a chunk in place
+// of children that are not built.
+class TreeChunks : public terrain::ChunkSource {
+ public:
+  explicit TreeChunks(GpuChunkSelection& gpu) : gpu_(gpu) {}
+  const terrain::ChunkInfo* Find(const ChunkId& id) override {
+    auto it = infos_.find(id);
+    return it == infos_.end() ? nullptr : &it->second;
+  }
+  void Build(std::span<const ChunkId> ids) override {
+    if (!building_) return;
+    for (const ChunkId& id : ids) {
+      if (infos_.contains(id)) continue;
+      const terrain::ChunkInfo& info = infos_[id] = terrain::InfoOf(*terrain::BuiltChunks::Shared().Get(id, kR));
+      gpu_.Insert(next_slot_++, id, info);
+    }
+  }
+  void Drop(const ChunkId& id) {
+    gpu_.Remove(*gpu_.SlotOf(id));
+    infos_.erase(id);
+  }
+  void set_building(bool building) { building_ = building; }
+  size_t size() const { return infos_.size(); }
+
+ private:
+  GpuChunkSelection& gpu_;
+  std::map<ChunkId, terrain::ChunkInfo> infos_;
+  uint32_t next_slot_ = 0;
+  bool building_ = true;
+};
+
+terrain::LodView ViewOf(const std::string& preset, int height_px, double error_px) {
+  Scene scene;
+  ApplyPresetView(scene, preset, kR);
+  terrain::LodView view = terrain::MakeLodView(scene.camera, kAspect, height_px, error_px, kR);
+  view.occlusion_culling = false;
+  return view;
+}
+
+class GpuChunkSelectionTest : public GpuTest {
+ protected:
+  GpuChunkSelection::Result SelectOnGpu(const terrain::LodView& view) {
+    SharedContext().Submit([&](const vk::CommandBuffer& cmd) { gpu_.Record(cmd, view); });
+    return gpu_.Read();
+  }
+  // The CPU's selection of what is built, building nothing.
+  terrain::Selection SelectOnCpu(const terrain::LodView& view) {
+    chunks_.set_building(false);
+    terrain::Selection selection = terrain::SelectChunks(view, chunks_);
+    chunks_.set_building(true);
+    return selection;
+  }
+
+  GpuChunkSelection gpu_{SharedContext(), kSlots, terrain::kChunkVertices, kGroundInstance};
+  TreeChunks chunks_{gpu_};
+};
+
+std::string Describe(const std::vector<SelectedChunk>& chunks) {
+  std::string text;
+  for (const SelectedChunk& c : chunks)
+    text += std::to_string(c.id.level) + "/" + std::to_string(c.id.x) + "/" + std::to_string(c.id.y) + ":" +
+            std::to_string(c.skirts) + " ";
+  return text;
+}
+
+// Over the chunks the CPU's selection built for itself, the GPU draws the same chunks in the same
+// order with the same skirts, and asks for nothing. The views: the default one at 720 and 2160
+// rows, the sunset view along the ridges at a 1 px bound, and the ground from 10 km up.
+TEST_F(GpuChunkSelectionTest, DrawsWhatTheCpuSelectionDraws) {
+  struct Case {
+    std::string preset;
+    int height_px;
+    double error_px;
+  };
+  for (const Case& c : {Case{"noon", 720, 4.0}, Case{"noon", 2160, 4.0}, Case{"sunset", 720, 1.0},
+                        Case{"high-altitude", 720, 4.0}}) {
+    const terrain::LodView view = ViewOf(c.preset, c.height_px, c.error_px);
+    const terrain::Selection cpu = terrain::SelectChunks(view, chunks_);
+    ASSERT_EQ(cpu.deferred, 0);
+    const GpuChunkSelection::Result gpu = SelectOnGpu(view);
+    SCOPED_TRACE(c.preset + " " + std::to_string(c.height_px));
+    EXPECT_GT(cpu.chunks.size(), 50u);
+    EXPECT_EQ(gpu.chunks, cpu.chunks) << "GPU: " << Describe(gpu.chunks) << "\nCPU: " << Describe(cpu.chunks);
+    EXPECT_TRUE(gpu.requested.empty());
+    EXPECT_EQ(gpu.deferred, 0);
+  }
+}
+
+// A drawn chunk that goes (evicted from the cache) leaves no hole: its parent is drawn in place of
+// its children, as the CPU's selection draws it when it may not build, and the chunk is asked for.
+TEST_F(GpuChunkSelectionTest, DrawsTheParentOfAChunkThatIsNotBuiltAndAsksForIt) {
+  const terrain::LodView view = ViewOf("noon", 720, 4.0);
+  const terrain::Selection full = terrain::SelectChunks(view, chunks_);
+  // A drawn chunk of the finest level drawn, so that its parent has drawn children.
+  const SelectedChunk* dropped = &full.chunks.front();
+  for (const SelectedChunk& c : full.chunks)
+    if (c.id.level > dropped->id.level) dropped = &c;
+  const ChunkId id = dropped->id, parent = terrain::Parent(id);
+  chunks_.Drop(id);
+
+  const terrain::Selection cpu = SelectOnCpu(view);
+  const GpuChunkSelection::Result gpu = SelectOnGpu(view);
+  EXPECT_EQ(gpu.chunks, cpu.chunks) << "GPU: " << Describe(gpu.chunks) << "\nCPU: " << Describe(cpu.chunks);
+  EXPECT_EQ(gpu.deferred, cpu.deferred);
+  EXPECT_EQ(gpu.deferred, 1);
+  EXPECT_TRUE(std::any_of(gpu.chunks.begin(), gpu.chunks.end(), [&](const SelectedChunk& c) { return c.id == parent; }));
+  EXPECT_EQ(gpu.requested, std::vector<ChunkId>{id});
+}
+
+// Starting from nothing built, each selection asks for the next level's chunks; building them
+// leads, in at most one selection a level (and one for the root), to the CPU's selection, and
+// nothing the CPU would not have built is asked for.
+TEST_F(GpuChunkSelectionTest, ChunksAskedForLeadToTheCpuSelection) {
+  const terrain::LodView view = ViewOf("noon", 720, 4.0);
+  GpuChunkSelection::Result gpu;
+  int selections = 0;
+  do {
+    gpu = SelectOnGpu(view);
+    chunks_.Build(gpu.requested);
+    ++selections;
+  } while (!gpu.requested.empty() && selections <= terrain::kMaxChunkLevel + 2);
+  EXPECT_LE(selections, terrain::kMaxChunkLevel + 2);
+  EXPECT_EQ(gpu.deferred, 0);
+  const size_t built = chunks_.size();
+  const terrain::Selection cpu = terrain::SelectChunks(view, chunks_);
+  EXPECT_EQ(chunks_.size(), built) << "the CPU's selection needed chunks the GPU did not ask for";
+  EXPECT_EQ(gpu.chunks, cpu.chunks) << "GPU: " << Describe(gpu.chunks) << "\nCPU: " << Describe(cpu.chunks);
+}
+
+}  // namespace
+}  // namespace aerial::testing
