@@ -5,8 +5,8 @@
 // lead to the CPU's selection.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
-#include <set>
 #include <string>
 
 #include "aerial/render/gpu_chunk_selection.h"
