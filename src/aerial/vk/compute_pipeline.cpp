@@ -34,4 +34,11 @@ void ComputePipeline::Dispatch(const CommandBuffer& cmd, const std::vector<Slot>
                groups(threads.depth, local_size.depth));
 }
 
+void ComputePipeline::DispatchIndirect(const CommandBuffer& cmd, const std::vector<Slot>& slots, const Buffer& args,
+                                       ::vk::DeviceSize offset, const void* push_constants) const {
+  cmd.bindPipeline(::vk::PipelineBindPoint::eCompute, *built_->pipeline);
+  built_->layout.Push(cmd, ::vk::PipelineBindPoint::eCompute, slots, push_constants, name_);
+  cmd.dispatchIndirect(args.handle(), offset);
+}
+
 }  // namespace aerial::vk

@@ -27,6 +27,11 @@ class ComputePipeline {
                 ::vk::Extent3D threads, ::vk::Extent3D local_size,
                 const void* push_constants = nullptr) const;
 
+  // The same with the workgroup counts read from `args` at `offset` when the commands run
+  // (a VkDispatchIndirectCommand, written by an earlier pass).
+  void DispatchIndirect(const CommandBuffer& cmd, const std::vector<Slot>& slots, const Buffer& args,
+                        ::vk::DeviceSize offset = 0, const void* push_constants = nullptr) const;
+
   const std::string& name() const { return name_; }
 
  private:
