@@ -1,4 +1,5 @@
 #version 450
+#extension GL_GOOGLE_include_directive : require
 // The terrain's level-of-detail selection (src/aerial/terrain/lod_selection.h) made by the GPU, so
 // that the CPU records a fixed number of draws whatever the terrain shows (render/gpu_chunk_selection.h).
 // One workgroup walks the tree of built chunks a level at a time, as SelectChunks does: a chunk
@@ -7,34 +8,21 @@
 // that may be in the frustum are built, and is drawn in their place (and asks for them) until
 // then. The chunks drawn are then sorted front to back in quadtree order from the camera, each
 // given the skirts of the sides whose neighbour is not drawn at its level, and written as indexed
-// indirect draws.
+// indirect draws. Before the sort, chunks that nearer terrain hides are left out, against the
+// horizon that terrain_occluders.comp builds from the chunks the walk kept (terrain_horizon.glsl).
 layout(local_size_x = 256) in;
+// 0: the walk, which leaves the chunks it would draw in SelectionKeys; 1: after the chunks added
+// their occluders (terrain_occluders.comp), the rest: those hidden left out, the sort, the draws.
+layout(constant_id = 0) const int kStage = 0;
 
-const int kNotBuilt = -1;
-const int kOutsideTerrain = -2;  // a child beyond the terrain's radius: never drawn
-const int kMaxChunkLevel = 13;
-const float kRootSizeM = 204800.0;
+#include "terrain_selection.glsl"
+#include "terrain_horizon.glsl"
+
 // A point h above sea level sits at (R + h) / R times its sea-level x and y, so a chunk's bounds
 // spread past its sea-level footprint by a little (lod_selection.cpp's kHorizontalSpread).
 const float kHorizontalSpread = 2e-3;
 const uint kWorkgroupSize = 256;
-
-struct ChunkNode {
-  vec4 lower;         // the bounds' lower corner in the scene frame (m); w: geometric error (m)
-  vec4 upper;         // the bounds' upper corner
-  ivec4 children;     // slots of the four children in terrain::Children order
-  ivec4 neighbours;   // slots of the chunks of its level across its south, east, north, west sides
-  ivec4 id;           // level, x, y
-};
-layout(std430, set = 0, binding = 0) readonly buffer ChunkTree { ChunkNode nodes[]; };
-
-layout(std140, set = 0, binding = 1) uniform SelectionView {
-  vec4 planes[5];             // the frustum's sides and near plane (terrain::LodView::planes)
-  vec4 camera;                // xyz: position; w: pixels per radian
-  vec4 limits;                // x: error bound (px); y: resolved error (m); zw: the camera's sea-level x, y
-  ivec4 root;                 // x: the root's slot or kNotBuilt; y: generation; z: vertices per slot; w: first instance
-  uvec4 index_ranges[16];     // per skirt mask (terrain::ChunkIndexRange): first index, index count
-};
+const uint kOccluderChunksPerGroup = 4u;  // terrain_occluders.comp's kChunksPerGroup
 
 // Two queues of slots, a level's and the next's, each as long as there are slots.
 layout(std430, set = 0, binding = 2) coherent buffer SelectionQueues { int queue[]; };
@@ -48,17 +36,23 @@ struct DrawCommand {  // VkDrawIndexedIndirectCommand
   int vertex_offset;
   uint first_instance;
 };
-layout(std430, set = 0, binding = 5) writeonly buffer SelectionDraws {
-  uint draw_count;
+layout(std430, set = 0, binding = 5) coherent buffer SelectionDraws {
+  uint draw_count;       // after the walk: the chunks it would draw, before those hidden are left out
   uint deferred;         // chunks drawn, or left, in place of children not built yet
   uint requested;        // entries of SelectionRequests written
+  uint hidden;           // chunks left out because nearer terrain hides them
   DrawCommand draws[];
 };
 // The children a refinement needs that are not built (level, x, y), for the CPU to build.
 layout(std430, set = 0, binding = 6) writeonly buffer SelectionRequests { ivec4 requests[]; };
+// The occluders' dispatch: a workgroup per kOccluderChunksPerGroup chunks the walk would draw
+// (VkDispatchIndirectCommand).
+layout(std430, set = 0, binding = 7) writeonly buffer OccluderDispatch { uvec3 occluder_groups; };
+// terrain_occluders.comp's, per band; made cumulative here, per band what lies within its edge.
+layout(std430, set = 0, binding = 8) coherent buffer TerrainHorizon { uint horizon[]; };
 
 shared uint queue_size[2];
-shared uint draw_size, deferred_size, request_size;
+shared uint draw_size, deferred_size, request_size, hidden_size;
 
 bool IntersectsFrustum(vec3 lower, vec3 upper) {
   for (int i = 0; i < 5; ++i) {
@@ -76,8 +70,6 @@ bool TooCoarse(ChunkNode node) {
   float distance = length(p - clamp(p, node.lower.xyz, node.upper.xyz));
   return node.lower.w * camera.w > limits.x * distance;
 }
-
-float ChunkSize(int level) { return kRootSizeM / float(1 << level); }
 
 // Where a child that is not built may lie: its footprint, widened for the spread, over its
 // parent's heights grown by the parent's error (EstimateChildBounds in lod_selection.cpp).
@@ -181,8 +173,41 @@ uint SkirtMask(int slot) {
   return mask;
 }
 
-void main() {
-  const uint t = gl_LocalInvocationIndex;
+// Whether nearer terrain hides the chunk's bounds from the camera: in every azimuth bin they span,
+// their highest tangent is under the horizon of the bands wholly in front of them.
+bool Hidden(ChunkNode node) {
+  float z_max = -1e30, z_abs = 0.0, far = 0.0, span_min = 1e30, span_max = -1e30, reference = 0.0;
+  for (int corner = 0; corner < 8; ++corner) {
+    vec3 offset = mix(node.lower.xyz, node.upper.xyz, bvec3(corner & 1, corner & 2, corner & 4)) - camera.xyz;
+    float z = dot(offset, vertical.xyz);
+    vec2 horizontal = vec2(dot(offset, east.xyz), dot(offset, north.xyz));
+    float azimuth = AzimuthInBins(atan(horizontal.y, horizontal.x));
+    if (corner == 0) reference = azimuth;
+    azimuth = UnwrapBins(azimuth, reference);
+    z_max = max(z_max, z);
+    z_abs = max(z_abs, abs(z));
+    far = max(far, length(horizontal));
+    span_min = min(span_min, azimuth);
+    span_max = max(span_max, azimuth);
+  }
+  // No point of the box is nearer the camera's vertical than this; when it is 0, the vertical
+  // passes through the box, whose azimuths then take the whole turn.
+  vec3 p = camera.xyz;
+  float distance = length(p - clamp(p, node.lower.xyz, node.upper.xyz));
+  float near_squared = distance * distance - z_abs * z_abs;
+  if (near_squared <= 0.0) return false;
+  float near = sqrt(near_squared);
+  int band = HorizonBandWithin(near);
+  if (band < 0) return false;
+  float tangent = z_max / (z_max >= 0.0 ? near : far);
+  for (int bin = int(floor(span_min)); bin <= int(floor(span_max)); ++bin) {
+    uint known = horizon[HorizonIndex(band, bin)];
+    if (known == 0u || tangent >= FromOrderedBits(known)) return false;
+  }
+  return true;
+}
+
+void Walk(uint t) {
   if (t == 0u) {
     queue_size[0] = 0u;
     queue_size[1] = 0u;
@@ -205,15 +230,44 @@ void main() {
     if (t == 0u) queue_size[current] = 0u;
     Synchronize();
   }
+  if (t == 0u) {
+    draw_count = draw_size;
+    deferred = deferred_size;
+    hidden = 0u;
+    // Children asked for beyond the list's length are asked for again by a later selection.
+    requested = min(request_size, uint(requests.length()));
+    occluder_groups = uvec3(north.w != 0.0 ? (draw_size + kOccluderChunksPerGroup - 1u) / kOccluderChunksPerGroup : 0u, 1u, 1u);
+  }
+}
 
-  const uint drawn = draw_size;
-  for (uint i = t; i < drawn; i += kWorkgroupSize) stamps[keys[i].y] = uint(root.y);
+void Finish(uint t) {
+  const uint candidates = draw_count;
+  if (t == 0u) hidden_size = 0u;
+  if (north.w != 0.0) {
+    // Each band from then on holds what the nearer ones hold.
+    for (uint bin = t; bin < uint(kHorizonAzimuths); bin += kWorkgroupSize) {
+      uint known = horizon[bin];
+      for (int band = 1; band < kHorizonBands; ++band) {
+        known = max(known, horizon[HorizonIndex(band, int(bin))]);
+        horizon[HorizonIndex(band, int(bin))] = known;
+      }
+    }
+    Synchronize();
+    for (uint i = t; i < candidates; i += kWorkgroupSize) {
+      if (!Hidden(nodes[keys[i].y])) continue;
+      keys[i].x = 0xffffffffu;  // sorted after every chunk drawn
+      atomicAdd(hidden_size, 1u);
+    }
+  }
   uint n = 1u;
-  while (n < drawn) n <<= 1u;
-  for (uint i = drawn + t; i < n; i += kWorkgroupSize) keys[i] = uvec2(0xffffffffu);
+  while (n < candidates) n <<= 1u;
+  for (uint i = candidates + t; i < n; i += kWorkgroupSize) keys[i] = uvec2(0xffffffffu);
   Synchronize();
   SortKeys(n, t);
 
+  const uint drawn = candidates - hidden_size;
+  for (uint i = t; i < drawn; i += kWorkgroupSize) stamps[keys[i].y] = uint(root.y);
+  Synchronize();
   for (uint i = t; i < drawn; i += kWorkgroupSize) {
     int slot = int(keys[i].y);
     uvec4 range = index_ranges[SkirtMask(slot)];
@@ -221,8 +275,13 @@ void main() {
   }
   if (t == 0u) {
     draw_count = drawn;
-    deferred = deferred_size;
-    // Children asked for beyond the list's length are asked for again by a later selection.
-    requested = min(request_size, uint(requests.length()));
+    hidden = hidden_size;
   }
+}
+
+void main() {
+  if (kStage == 0)
+    Walk(gl_LocalInvocationIndex);
+  else
+    Finish(gl_LocalInvocationIndex);
 }

@@ -11,6 +11,8 @@ using terrain::ChunkId;
 
 constexpr int32_t kNotBuilt = -1, kOutsideTerrain = -2;  // terrain_select.comp's
 constexpr uint32_t kWorkgroupSize = 256;
+constexpr uint32_t kHorizonEntries = 1024 * 48;  // terrain_horizon.glsl's kHorizonAzimuths * kHorizonBands
+constexpr int32_t kWalk = 0, kFinish = 1;         // terrain_select.comp's kStage
 
 // terrain_select.comp's SelectionView (std140).
 struct SelectionView {
@@ -18,9 +20,12 @@ struct SelectionView {
   glm::vec4 camera;  // w: pixels per radian
   glm::vec4 limits;  // error bound (px), resolved error (m), the camera's sea-level x and y
   glm::ivec4 root;   // root slot, generation, vertices per slot, first instance
+  glm::vec4 vertical;  // w: the camera's height above the sea-level sphere (m)
+  glm::vec4 east;      // w: the planet's radius (m)
+  glm::vec4 north;     // w: 1 to leave out hidden chunks
   std::array<glm::uvec4, 16> index_ranges;
 };
-static_assert(sizeof(SelectionView) == 384);
+static_assert(sizeof(SelectionView) == 432);
 
 // The same level's chunks across a chunk's sides, in the order of the skirt mask's bits
 // (terrain::ChunkSide: south, east, north, west).
@@ -31,6 +36,15 @@ std::array<ChunkId, 4> Neighbours(const ChunkId& c) {
 int Opposite(int side) { return (side + 2) % 4; }
 // Which of its parent's children a chunk is (terrain::Children's order).
 int ChildIndex(const ChunkId& id) { return (id.x & 1) + 2 * (id.y & 1); }
+
+// terrain_select.comp's bindings.
+vk::SlotLayout SelectSlots() {
+  return {{"ChunkTree", vk::kStorageBuffer},         {"SelectionView", vk::kUniform},
+          {"SelectionQueues", vk::kStorageBuffer},   {"SelectionStamps", vk::kStorageBuffer},
+          {"SelectionKeys", vk::kStorageBuffer},     {"SelectionDraws", vk::kStorageBuffer},
+          {"SelectionRequests", vk::kStorageBuffer}, {"OccluderDispatch", vk::kStorageBuffer},
+          {"TerrainHorizon", vk::kStorageBuffer}};
+}
 
 vk::Buffer StorageBuffer(const vk::Context& context, ::vk::DeviceSize size, bool host_visible,
                          ::vk::BufferUsageFlags usage = {}) {
@@ -54,6 +68,7 @@ GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots,
       first_instance_(first_instance),
       id_in_slot_(slots),
       tree_(StorageBuffer(context, slots * sizeof(Node), true)),
+      cell_lowest_(StorageBuffer(context, slots * sizeof(terrain::ChunkInfo::cell_lowest_m), true)),
       view_(context, vk::UniformBufferInfo(sizeof(SelectionView))),
       queues_(StorageBuffer(context, 2 * slots * sizeof(int32_t), false)),
       stamps_(StorageBuffer(context, slots * sizeof(uint32_t), true)),
@@ -61,14 +76,19 @@ GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots,
       draws_(StorageBuffer(context, kDrawsOffset + slots * sizeof(::vk::DrawIndexedIndirectCommand), true,
                            ::vk::BufferUsageFlagBits::eIndirectBuffer)),
       requests_(StorageBuffer(context, 4 * slots * sizeof(glm::ivec4), true)),
-      pipeline_(context, "frame/terrain_select.comp",
-                {{"ChunkTree", vk::kStorageBuffer},
-                 {"SelectionView", vk::kUniform},
-                 {"SelectionQueues", vk::kStorageBuffer},
-                 {"SelectionStamps", vk::kStorageBuffer},
-                 {"SelectionKeys", vk::kStorageBuffer},
-                 {"SelectionDraws", vk::kStorageBuffer},
-                 {"SelectionRequests", vk::kStorageBuffer}}) {
+      occluder_groups_(StorageBuffer(context, sizeof(::vk::DispatchIndirectCommand), false,
+                                     ::vk::BufferUsageFlagBits::eIndirectBuffer)),
+      horizon_(StorageBuffer(context, kHorizonEntries * sizeof(uint32_t), false,
+                             ::vk::BufferUsageFlagBits::eTransferDst)),
+      walk_(context, "frame/terrain_select.comp", SelectSlots(), 0, {kWalk}),
+      occluders_(context, "frame/terrain_occluders.comp",
+                 {{"ChunkTree", vk::kStorageBuffer},
+                  {"SelectionView", vk::kUniform},
+                  {"SelectionKeys", vk::kStorageBuffer},
+                  {"SelectionDraws", vk::kStorageBuffer},
+                  {"ChunkCellLowest", vk::kStorageBuffer},
+                  {"TerrainHorizon", vk::kStorageBuffer}}),
+      finish_(context, "frame/terrain_select.comp", SelectSlots(), 0, {kFinish}) {
   static_assert(sizeof(Node) == 80);
   std::memset(stamps_.mapped(), 0, stamps_.size());
 }
@@ -107,6 +127,8 @@ void GpuChunkSelection::Insert(uint32_t slot, const ChunkId& id, const terrain::
   const std::array<ChunkId, 4> neighbours = Neighbours(id);
   for (int side = 0; side < 4; ++side) node.neighbours[side] = int32_t(SlotOf(neighbours[side]).value_or(kNotBuilt));
   NodeAt(slot) = node;
+  std::memcpy(cell_lowest_.mapped() + slot * sizeof(info.cell_lowest_m), info.cell_lowest_m.data(),
+              sizeof(info.cell_lowest_m));
   slot_of_[id] = slot;
   id_in_slot_[slot] = id;
   Link(id, int32_t(slot));
@@ -129,25 +151,44 @@ void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodV
   block.limits = glm::vec4(float(view.max_error_px), float(view.resolved_error_m), float(eye.x), float(eye.y));
   block.root = glm::ivec4(int32_t(SlotOf(ChunkId{}).value_or(kNotBuilt)), int32_t(generation_),
                           int32_t(vertices_per_slot_), int32_t(first_instance_));
+  // The camera's vertical frame, for the horizon (terrain_horizon.glsl): azimuth 0 along the
+  // scene's x made horizontal.
+  const glm::dvec3 up = glm::normalize(view.camera - center);
+  const glm::dvec3 east = glm::normalize(glm::dvec3(1.0, 0.0, 0.0) - up.x * up);
+  block.vertical = glm::vec4(glm::vec3(up), float(glm::length(view.camera - center) - view.planet_radius_m));
+  block.east = glm::vec4(glm::vec3(east), float(view.planet_radius_m));
+  block.north = glm::vec4(glm::vec3(glm::cross(up, east)), view.occlusion_culling ? 1.0f : 0.0f);
   for (uint32_t mask = 0; mask < 16; ++mask) {
     terrain::IndexRange range = terrain::ChunkIndexRange(mask);
     block.index_ranges[mask] = glm::uvec4(range.first, range.count, 0, 0);
   }
   view_.Write(std::as_bytes(std::span(&block, 1)));
-  pipeline_.Dispatch(cmd,
-                     {vk::StorageBufferSlot{&tree_}, vk::UniformBufferSlot{&view_}, vk::StorageBufferSlot{&queues_},
-                      vk::StorageBufferSlot{&stamps_}, vk::StorageBufferSlot{&keys_}, vk::StorageBufferSlot{&draws_},
-                      vk::StorageBufferSlot{&requests_}},
-                     {kWorkgroupSize, 1, 1}, {kWorkgroupSize, 1, 1});
+  const std::vector<vk::Slot> slots = {
+      vk::StorageBufferSlot{&tree_},      vk::UniformBufferSlot{&view_},      vk::StorageBufferSlot{&queues_},
+      vk::StorageBufferSlot{&stamps_},    vk::StorageBufferSlot{&keys_},      vk::StorageBufferSlot{&draws_},
+      vk::StorageBufferSlot{&requests_},  vk::StorageBufferSlot{&occluder_groups_},
+      vk::StorageBufferSlot{&horizon_}};
+  if (view.occlusion_culling) cmd.fillBuffer(horizon_.handle(), 0, VK_WHOLE_SIZE, 0u);  // nothing known
+  vk::FullBarrier(cmd);
+  walk_.Dispatch(cmd, slots, {kWorkgroupSize, 1, 1}, {kWorkgroupSize, 1, 1});
+  vk::FullBarrier(cmd);
+  occluders_.DispatchIndirect(cmd,
+                              {vk::StorageBufferSlot{&tree_}, vk::UniformBufferSlot{&view_},
+                               vk::StorageBufferSlot{&keys_}, vk::StorageBufferSlot{&draws_},
+                               vk::StorageBufferSlot{&cell_lowest_},
+                               vk::StorageBufferSlot{&horizon_}},
+                              occluder_groups_);
+  vk::FullBarrier(cmd);
+  finish_.Dispatch(cmd, slots, {kWorkgroupSize, 1, 1}, {kWorkgroupSize, 1, 1});
   vk::FullBarrier(cmd);
 }
 
 GpuChunkSelection::Result GpuChunkSelection::Read() const {
-  std::array<uint32_t, 3> header;  // draws, deferred, requested
+  std::array<uint32_t, 4> header;  // draws, deferred, requested, hidden
   std::memcpy(header.data(), draws_.mapped(), sizeof(header));
   const auto* commands = reinterpret_cast<const ::vk::DrawIndexedIndirectCommand*>(draws_.mapped() + kDrawsOffset);
   const auto* requests = reinterpret_cast<const glm::ivec4*>(requests_.mapped());
-  Result result{.deferred = int(header[1])};
+  Result result{.deferred = int(header[1]), .hidden = int(header[3])};
   for (uint32_t i = 0; i < header[0]; ++i) {
     const uint32_t slot = uint32_t(commands[i].vertexOffset) / vertices_per_slot_;
     uint32_t skirts = 0;

@@ -3,15 +3,18 @@
 // the rule of terrain/lod_selection.h (frustum culling, Ulrich's screen-space error bound, a chunk
 // drawn in its children's place until they are built, skirts where a neighbour is drawn at another
 // level, front-to-back order), walked on the GPU over the chunks built so far, written as indexed
-// indirect draws. The CPU's part no longer grows with the terrain: it keeps the tree of built
-// chunks (a few links per chunk built or dropped) and builds the chunks the GPU asks for.
+// indirect draws. Chunks that nearer terrain hides are left out by a horizon around the camera's
+// vertical (shaders/include/terrain_horizon.glsl, terrain_occluders.comp), to which every chunk
+// the walk keeps adds its cells at once: unlike the CPU's horizon on the screen, no chunk waits
+// for those in front of it. The CPU's part no longer grows with the terrain: it keeps the tree of
+// built chunks (a few links per chunk built or dropped) and builds the chunks the GPU asks for.
 //
-// The tree is the chunk slots' table: per slot, the chunk's bounds and error and the slots of its
-// children and of its level's neighbours. The GPU reads it from host-visible memory, so the CPU
-// changes it only while no selection it recorded is in flight.
+// The tree is the chunk slots' table: per slot, the chunk's bounds and error, its cells' lowest
+// heights, and the slots of its children and of its level's neighbours. The GPU reads it from
+// host-visible memory, so the CPU changes it only while no selection it recorded is in flight.
 //
-// Not done here (the CPU selection's): occlusion culling (terrain/screen_horizon.h), the camera's
-// refinement slack, and the split of chunks by where they read the froxels.
+// Not done here (the CPU selection's): the camera's refinement slack, and the split of chunks by
+// where they read the froxels.
 #include <cstdint>
 #include <optional>
 #include <unordered_map>
@@ -35,8 +38,8 @@ class GpuChunkSelection {
   void Remove(uint32_t slot);
   std::optional<uint32_t> SlotOf(const terrain::ChunkId& id) const;
 
-  // Records the selection of view's chunks (LodView::occlusion_culling and front_to_back are not
-  // read: there is no culling by occlusion, and the order is always front to back).
+  // Records the selection of view's chunks (LodView::front_to_back is not read: the order is
+  // always front to back).
   void Record(const vk::CommandBuffer& cmd, const terrain::LodView& view);
 
   // What the last recorded selection wrote, once its commands have completed.
@@ -44,13 +47,14 @@ class GpuChunkSelection {
     std::vector<terrain::SelectedChunk> chunks;  // front to back, with their skirts
     std::vector<terrain::ChunkId> requested;     // children to build
     int deferred = 0;                            // terrain::Selection::deferred
+    int hidden = 0;                              // terrain::Selection::hidden
   };
   Result Read() const;
 
   // The draws: their count (uint32) at offset 0, the VkDrawIndexedIndirectCommands from
   // kDrawsOffset, at most slots of them (vkCmdDrawIndexedIndirectCount).
   const vk::Buffer& draws() const { return draws_; }
-  static constexpr ::vk::DeviceSize kDrawsOffset = 12;
+  static constexpr ::vk::DeviceSize kDrawsOffset = 16;
   uint32_t max_draws() const { return slots_; }
 
  private:
@@ -62,8 +66,8 @@ class GpuChunkSelection {
   uint32_t generation_ = 0;
   std::unordered_map<terrain::ChunkId, uint32_t, terrain::ChunkIdHash> slot_of_;
   std::vector<terrain::ChunkId> id_in_slot_;
-  vk::Buffer tree_, view_, queues_, stamps_, keys_, draws_, requests_;
-  vk::ComputePipeline pipeline_;
+  vk::Buffer tree_, cell_lowest_, view_, queues_, stamps_, keys_, draws_, requests_, occluder_groups_, horizon_;
+  vk::ComputePipeline walk_, occluders_, finish_;
 };
 
 }  // namespace aerial

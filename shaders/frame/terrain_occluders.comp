@@ -1,0 +1,128 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Every chunk the selection may draw adds its ground to the horizon (terrain_horizon.glsl), four
+// chunks a workgroup. A cell of the chunk's mesh never dips below its lowest vertex, so the shell at
+// that height, lowered by a margin, lies under the ground across the cell: any ray under a point of
+// it is hidden. A row of blocks of cells across the chunk is crossed by the vertical plane of every
+// azimuth within its span, each plane through blocks that overlap the azimuth's bin, so the bin's
+// tangent is the least of those blocks', known within the row's farthest distance.
+layout(local_size_x = 64) in;
+
+#include "terrain_selection.glsl"
+#include "terrain_horizon.glsl"
+
+// The selection's chunks (their slots in y).
+layout(std430, set = 0, binding = 2) readonly buffer SelectionKeys { uvec2 keys[]; };
+// The selection's header: the number of chunks the walk kept (terrain_select.comp's draw_count).
+layout(std430, set = 0, binding = 3) readonly buffer SelectionDraws { uint candidates; };
+// Per slot, its chunk's cells' lowest heights (m), kChunkCells^2 of them, row by row from the south-west.
+layout(std430, set = 0, binding = 4) readonly buffer ChunkCellLowest { float cell_lowest[]; };
+// Per band and azimuth bin, OrderedBits of the tangent below which rays are hidden.
+layout(std430, set = 0, binding = 5) coherent buffer TerrainHorizon { uint horizon[]; };
+
+// Occluders are blocks of 2 x 2 cells: at a quarter of the work, they hide nearly as much.
+const int kBlock = 2;
+const int kBlocks = kChunkCells / kBlock;  // per side
+const int kCorners = (kBlocks + 1) * (kBlocks + 1);
+const uint kChunksPerGroup = 4u, kInvocationsPerChunk = 16u;  // one per block
+const float kNoOccluder = -1e30;
+// How far an occluder is lowered below its cells' lowest vertex: 1 m plus 1 mm per m of distance,
+// for float rounding of the mesh and the chord of a cell below the curved shell (as the CPU's
+// terrain/screen_horizon.cpp).
+const float kMarginM = 1.0, kMarginPerM = 1e-3;
+// Half a diagonal, with 1 % for the spread of the footprint at height.
+const float kHalfDiagonal = 0.5 * 1.4142135 * 1.01;
+
+// Per chunk, per block corner, its sea-level direction seen from the camera's vertical: x: azimuth
+// (bins, within half a turn of corner 0's), y: horizontal length, z: drop below the camera's
+// horizontal plane (1 - cos of the angle between the two verticals).
+shared vec3 corners[kChunksPerGroup][kCorners];
+// Per chunk, per block: x: the tangent of its occluder (kNoOccluder: none); y, z: its azimuth span
+// (bins); w: its farthest horizontal distance (m).
+shared vec4 blocks[kChunksPerGroup][kBlocks * kBlocks];
+
+vec4 BlockOfStrip(uint chunk, uint strip, uint k) {
+  uint line = strip % uint(kBlocks);
+  return blocks[chunk][strip < uint(kBlocks) ? line * uint(kBlocks) + k : k * uint(kBlocks) + line];
+}
+
+void main() {
+  const uint chunk = gl_LocalInvocationIndex / kInvocationsPerChunk, t = gl_LocalInvocationIndex % kInvocationsPerChunk;
+  const uint index = gl_WorkGroupID.x * kChunksPerGroup + chunk;
+  const bool present = index < candidates;
+  const int slot = present ? int(keys[index].y) : 0;
+  const ivec3 id = nodes[slot].id.xyz;
+  const float R = east.w;
+  const float block_size = ChunkSize(id.x) / float(kBlocks);
+  const vec2 origin = ChunkOrigin(id);
+  const vec3 u = vertical.xyz;
+  for (uint c = t; c < uint(kCorners); c += kInvocationsPerChunk) {
+    vec2 xy = origin + vec2(c % uint(kBlocks + 1), c / uint(kBlocks + 1)) * block_size;
+    // The direction minus the camera's vertical, its z without cancelling: both are nearly 1
+    // (scene/terrain.h's SurfacePoint: the vertical at (x, y) is (x / R, y / R, sqrt(1 - q))).
+    float q = dot(xy, xy) / (R * R), q_camera = dot(u.xy, u.xy);
+    vec3 offset = vec3(xy / R - u.xy, (q_camera - q) / (sqrt(1.0 - q) + u.z));
+    vec2 horizontal = vec2(dot(offset, east.xyz), dot(offset, north.xyz));
+    corners[chunk][c] = vec3(AzimuthInBins(atan(horizontal.y, horizontal.x)), length(horizontal), 0.5 * dot(offset, offset));
+  }
+  barrier();
+  // A chunk around the camera's vertical has no span of azimuths; those near it add nothing.
+  const float nearest = min(min(corners[chunk][0].y, corners[chunk][kBlocks].y),
+                            min(corners[chunk][kCorners - 1 - kBlocks].y, corners[chunk][kCorners - 1].y));
+  const bool usable = present && nearest * R > kHalfDiagonal * float(kBlocks) * block_size;
+  {
+    const uint i = t % uint(kBlocks), j = t / uint(kBlocks);
+    const uint first = j * uint(kBlocks + 1) + i;
+    const uint block_corners[4] = uint[4](first, first + 1u, first + uint(kBlocks + 1), first + uint(kBlocks + 2));
+    float lowest = 1e30;
+    for (uint jj = j * uint(kBlock); jj < (j + 1u) * uint(kBlock); ++jj)
+      for (uint ii = i * uint(kBlock); ii < (i + 1u) * uint(kBlock); ++ii)
+        lowest = min(lowest, cell_lowest[slot * kChunkCells * kChunkCells + int(jj) * kChunkCells + int(ii)]);
+    const float reference = corners[chunk][0].x;
+    // At the height of the lowest vertex, to a ray's distance from the camera (height, horizontal).
+    vec3 first_corner = corners[chunk][first];
+    vec2 seen = vec2(lowest - vertical.w - (R + lowest) * first_corner.z, (R + lowest) * first_corner.y);
+    const float h = lowest - kMarginM - kMarginPerM * length(seen);
+    float z_min = 1e30, far = 0.0, near = 1e30, span_min = 1e30, span_max = -1e30;
+    for (int k = 0; k < 4; ++k) {
+      vec3 c = corners[chunk][block_corners[k]];
+      z_min = min(z_min, h - vertical.w - (R + h) * c.z);
+      far = max(far, (R + h) * c.y);
+      near = min(near, (R + h) * c.y);
+      float azimuth = UnwrapBins(c.x, reference);
+      span_min = min(span_min, azimuth);
+      span_max = max(span_max, azimuth);
+    }
+    // Tangents z / d over the block are at least its lowest z over the nearest distance when z < 0
+    // and over the farthest one otherwise; the nearest is no closer than the nearest corner less
+    // half a diagonal.
+    near -= kHalfDiagonal * block_size * (R + h) / R;
+    float tangent = near <= 0.0 ? kNoOccluder : z_min / (z_min < 0.0 ? near : far);
+    blocks[chunk][t] = vec4(tangent, span_min, span_max, far * 1.001);
+  }
+  barrier();
+  if (!usable) return;
+
+  // Rows (strips 0-3, along x) and columns (4-7, along y) of blocks, 2 invocations a strip.
+  const uint strip = t % uint(2 * kBlocks), lane = t / uint(2 * kBlocks);
+  float span_min = 1e30, span_max = -1e30, far = 0.0;
+  bool whole = true;
+  for (uint k = 0u; k < uint(kBlocks); ++k) {
+    vec4 b = BlockOfStrip(chunk, strip, k);
+    whole = whole && b.x > kNoOccluder;
+    span_min = min(span_min, b.y);
+    span_max = max(span_max, b.z);
+    far = max(far, b.w);
+  }
+  const int band = HorizonBandReaching(far);
+  if (!whole || band >= kHorizonBands) return;
+  // The bins wholly within the strip's span.
+  for (int bin = int(ceil(span_min)) + int(lane); float(bin + 1) <= span_max; bin += 2) {
+    float tangent = 1e30;
+    for (uint k = 0u; k < uint(kBlocks); ++k) {
+      vec4 b = BlockOfStrip(chunk, strip, k);
+      if (b.z >= float(bin) && b.y <= float(bin + 1)) tangent = min(tangent, b.x);
+    }
+    atomicMax(horizon[HorizonIndex(band, bin)], OrderedBits(tangent));
+  }
+}
