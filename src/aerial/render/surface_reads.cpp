@@ -34,4 +34,20 @@ bool ReadsFroxelsPerPixel(const FroxelGrid& grid, const AirScales& air, double e
   return !thin_in_air && !small_in_volume;
 }
 
+double PerPixelReadsWithinM(const FroxelGrid& grid, const AirScales& air, double edge_m, double rise_m) {
+  const bool thin_in_air = edge_m * air.ground_extinction_per_m <= kMaxEdgeOpticalThickness;
+  if (thin_in_air) return 0.0;
+  if (rise_m > kMaxRiseOfScaleHeight * air.smallest_scale_height_m) return std::numeric_limits<double>::infinity();
+  // Bisection for where SliceSpan falls to kMaxSliceSpan, which it does: it shrinks as
+  // 1 / sqrt(distance) far away.
+  double near = 0.0, far = grid.far_m;
+  if (SliceSpan(grid, edge_m, near) <= kMaxSliceSpan) return 0.0;
+  while (SliceSpan(grid, edge_m, far) > kMaxSliceSpan) far *= 2.0;
+  for (int i = 0; i < 64; ++i) {
+    const double middle = 0.5 * (near + far);
+    (SliceSpan(grid, edge_m, middle) <= kMaxSliceSpan ? far : near) = middle;
+  }
+  return far;
+}
+
 }  // namespace aerial

@@ -47,4 +47,10 @@ AirScales MakeAirScales(const AtmosphereParameters& atmosphere);
 bool ReadsFroxelsPerPixel(const FroxelGrid& grid, const AirScales& air, double edge_m, double rise_m,
                           double distance_m);
 
+// The distance within which ReadsFroxelsPerPixel holds for triangles of these edges and rises, so
+// that a chunk's choice is one comparison as the camera moves (the GPU's selection makes it): the
+// rule changes with the distance only through SliceSpan, which never grows farther away. 0: never
+// per pixel; infinity: at any distance.
+double PerPixelReadsWithinM(const FroxelGrid& grid, const AirScales& air, double edge_m, double rise_m);
+
 }  // namespace aerial

@@ -91,5 +91,27 @@ TEST(SurfaceReads, ADistanceBehindTheCameraCountsAsTheCamera) {
   EXPECT_DOUBLE_EQ(SliceSpan(grid, 500.0, -50.0), SliceSpan(grid, 500.0, 0.0));
 }
 
+// The distance a chunk's choice is made by agrees with the rule itself either side of it, for
+// ground cells of every size the terrain has, thin and thick in the air, low and high rises.
+TEST(SurfaceReads, PerPixelReadsWithinTheDistanceTheRuleSays) {
+  const FroxelGrid grid;
+  const AirScales air = MakeAirScales(AtmosphereParameters::Earth());
+  int within_the_volume = 0;
+  for (double edge : {1.0, 25.0, 100.0, 400.0, 3200.0, 25600.0})
+    for (double rise : {0.0, 100.0, 2000.0}) {
+      const double within = PerPixelReadsWithinM(grid, air, edge, rise);
+      for (double distance : {0.0, 1.0, 1e2, 1e3, 1e4, 1e5, 1e6})
+        EXPECT_EQ(ReadsFroxelsPerPixel(grid, air, edge, rise, distance), distance < within)
+            << "edge " << edge << " m, rise " << rise << " m, at " << distance << " m";
+      if (within > 0.0 && std::isfinite(within)) {
+        ++within_the_volume;
+        // The bisection ends within a few ulps of where the rule flips.
+        EXPECT_TRUE(ReadsFroxelsPerPixel(grid, air, edge, rise, within * (1.0 - 1e-9))) << edge << ", " << rise;
+        EXPECT_FALSE(ReadsFroxelsPerPixel(grid, air, edge, rise, within)) << edge << ", " << rise;
+      }
+    }
+  EXPECT_GT(within_the_volume, 3);
+}
+
 }  // namespace
 }  // namespace aerial
