@@ -7,10 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
 #include <map>
 #include <string>
 
 #include "aerial/render/gpu_chunk_selection.h"
+#include "aerial/render/surface_reads.h"
 #include "aerial/scene.h"
 #include "aerial/scene/terrain.h"
 #include "aerial/terrain/built_chunks.h"
@@ -28,12 +31,16 @@ constexpr double kAspect = 16.0 / 9.0;
 constexpr uint32_t kSlots = 8192;
 constexpr uint32_t kGroundInstance = 1;
 
+// Where a chunk reads the froxels: the distance within which it reads them per pixel.
+using ReadsRule = std::function<double(const terrain::ChunkInfo&)>;
+const ReadsRule kPerPixelEverywhere = [](const terrain::ChunkInfo&) { return INFINITY; };
+
 // Built chunks (from the process's shared store), each put into the GPU's tree as it is built;
 // building can be turned off, so that the CPU's selection, like the GPU's, draws a chunk in place
 // of children that are not built.
 class TreeChunks : public terrain::ChunkSource {
  public:
-  explicit TreeChunks(GpuChunkSelection& gpu) : gpu_(gpu) {}
+  TreeChunks(GpuChunkSelection& gpu, ReadsRule reads) : gpu_(gpu), reads_(std::move(reads)) {}
   const terrain::ChunkInfo* Find(const ChunkId& id) override {
     auto it = infos_.find(id);
     return it == infos_.end() ? nullptr : &it->second;
@@ -43,7 +50,7 @@ class TreeChunks : public terrain::ChunkSource {
     for (const ChunkId& id : ids) {
       if (infos_.contains(id)) continue;
       const terrain::ChunkInfo& info = infos_[id] = terrain::InfoOf(*terrain::BuiltChunks::Shared().Get(id, kR));
-      gpu_.Insert(next_slot_++, id, info);
+      gpu_.Insert(next_slot_++, id, info, reads_(info));
     }
   }
   void Drop(const ChunkId& id) {
@@ -55,6 +62,7 @@ class TreeChunks : public terrain::ChunkSource {
 
  private:
   GpuChunkSelection& gpu_;
+  ReadsRule reads_;
   std::map<ChunkId, terrain::ChunkInfo> infos_;
   uint32_t next_slot_ = 0;
   bool building_ = true;
@@ -93,7 +101,7 @@ class GpuChunkSelectionTest : public GpuTest {
   }
 
   GpuChunkSelection gpu_{SharedContext(), kSlots, terrain::kChunkVertices, kGroundInstance};
-  TreeChunks chunks_{gpu_};
+  TreeChunks chunks_{gpu_, kPerPixelEverywhere};
 };
 
 std::string Describe(const std::vector<SelectedChunk>& chunks) {
@@ -166,6 +174,43 @@ TEST_F(GpuChunkSelectionTest, ChunksAskedForLeadToTheCpuSelection) {
   const terrain::Selection cpu = terrain::SelectChunks(view, chunks_);
   EXPECT_EQ(chunks_.size(), built) << "the CPU's selection needed chunks the GPU did not ask for";
   EXPECT_EQ(gpu.chunks, cpu.chunks) << "GPU: " << Describe(gpu.chunks) << "\nCPU: " << Describe(cpu.chunks);
+}
+
+// The chunks come in two lists, as the renderer draws them (Renderer::ChooseFroxelReads): those
+// that read the froxels per pixel by the rule of surface_reads.h at their bounds' distance, then
+// the others, each front to back. Both lists are drawn from, in the default and the sunset views;
+// at a 64 px bound, near chunks are coarse enough that their distance decides.
+TEST_F(GpuChunkSelectionTest, SplitsTheChunksByWhereTheyReadTheFroxelsAsTheRendererDoes) {
+  const FroxelGrid grid;
+  const AirScales air = MakeAirScales(AtmosphereParameters::Earth());
+  GpuChunkSelection gpu(SharedContext(), kSlots, terrain::kChunkVertices, kGroundInstance);
+  TreeChunks chunks(gpu, [&](const terrain::ChunkInfo& info) {
+    return PerPixelReadsWithinM(grid, air, info.longest_edge_m, info.largest_rise_m);
+  });
+  int by_distance = 0;  // chunks read per pixel only because they are near
+  for (const auto& [preset, error_px] : {std::pair{"noon", 4.0}, std::pair{"sunset", 4.0}, std::pair{"noon", 64.0}}) {
+    const terrain::LodView view = ViewOf(preset, 720, error_px);
+    std::vector<SelectedChunk> expected = terrain::SelectChunks(view, chunks).chunks;
+    auto per_vertex = std::stable_partition(expected.begin(), expected.end(), [&](const SelectedChunk& chunk) {
+      const terrain::ChunkInfo& info = *chunks.Find(chunk.id);
+      return ReadsFroxelsPerPixel(grid, air, info.longest_edge_m, info.largest_rise_m,
+                                  terrain::DistanceToBounds(view.camera, info.bounds));
+    });
+    SharedContext().Submit([&](const vk::CommandBuffer& cmd) { gpu.Record(cmd, view); });
+    const GpuChunkSelection::Result result = gpu.Read();
+    const size_t per_pixel = size_t(per_vertex - expected.begin());
+    for (const SelectedChunk& chunk : expected) {
+      const terrain::ChunkInfo& info = *chunks.Find(chunk.id);
+      const double within = PerPixelReadsWithinM(grid, air, info.longest_edge_m, info.largest_rise_m);
+      by_distance += std::isfinite(within) && terrain::DistanceToBounds(view.camera, info.bounds) < within;
+    }
+    std::printf("%s: %zu of %zu chunks read per pixel\n", preset, per_pixel, expected.size());
+    EXPECT_GT(per_pixel, 0u);
+    EXPECT_LT(per_pixel, expected.size());
+    EXPECT_EQ(result.per_pixel, per_pixel);
+    EXPECT_EQ(result.chunks, expected) << "GPU: " << Describe(result.chunks) << "\nCPU: " << Describe(expected);
+  }
+  EXPECT_GT(by_distance, 0);
 }
 
 // With occlusion culling, the GPU leaves out only chunks that the terrain hides: every vertex of

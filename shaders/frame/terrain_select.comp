@@ -36,11 +36,15 @@ struct DrawCommand {  // VkDrawIndexedIndirectCommand
   int vertex_offset;
   uint first_instance;
 };
+// Two lists of draws, each front to back: the chunks that read the froxels per pixel, and those
+// that read them per vertex (render/surface_reads.h), from draws[0] and draws[stamps.length()].
 layout(std430, set = 0, binding = 5) coherent buffer SelectionDraws {
-  uint draw_count;       // after the walk: the chunks it would draw, before those hidden are left out
+  uint draw_count;       // per pixel; after the walk: all the chunks it would draw
   uint deferred;         // chunks drawn, or left, in place of children not built yet
   uint requested;        // entries of SelectionRequests written
   uint hidden;           // chunks left out because nearer terrain hides them
+  uint per_vertex_count;
+  uint header_end[3];
   DrawCommand draws[];
 };
 // The children a refinement needs that are not built (level, x, y), for the CPU to build.
@@ -52,7 +56,8 @@ layout(std430, set = 0, binding = 7) writeonly buffer OccluderDispatch { uvec3 o
 layout(std430, set = 0, binding = 8) coherent buffer TerrainHorizon { uint horizon[]; };
 
 shared uint queue_size[2];
-shared uint draw_size, deferred_size, request_size, hidden_size;
+shared uint draw_size, deferred_size, request_size, hidden_size, per_vertex_size;
+const uint kReadsPerVertex = 0x80000000u;  // the sort key's top bit
 
 bool IntersectsFrustum(vec3 lower, vec3 upper) {
   for (int i = 0; i < 5; ++i) {
@@ -82,8 +87,8 @@ bool ChildMayBeInFrustum(ivec3 child, ChunkNode parent) {
 }
 
 // The chunk's path from the root as ranks from the camera (2 bits a level, the child on the
-// camera's side of both splitting lines first), packed from the top bit down: sorting by it
-// sorts front to back (SortFrontToBack in lod_selection.cpp).
+// camera's side of both splitting lines first), packed from the second bit down: sorting by it
+// sorts front to back (SortFrontToBack in lod_selection.cpp). The top bit is left for the reads.
 uint FrontToBackKey(ivec3 id) {
   uint key = 0u;
   for (int level = 0; level < id.x; ++level) {
@@ -93,7 +98,7 @@ uint FrontToBackKey(ivec3 id) {
     bvec2 camera_side = greaterThanEqual(limits.zw, middle);
     ivec2 child = (ivec2(id.y, id.z) >> shift) & 1;
     uint rank = (child.x != int(camera_side.x) ? 1u : 0u) + (child.y != int(camera_side.y) ? 2u : 0u);
-    key |= rank << (30 - 2 * level);
+    key |= rank << (29 - 2 * level);
   }
   return key;
 }
@@ -242,7 +247,10 @@ void Walk(uint t) {
 
 void Finish(uint t) {
   const uint candidates = draw_count;
-  if (t == 0u) hidden_size = 0u;
+  if (t == 0u) {
+    hidden_size = 0u;
+    per_vertex_size = 0u;
+  }
   if (north.w != 0.0) {
     // Each band from then on holds what the nearer ones hold.
     for (uint bin = t; bin < uint(kHorizonAzimuths); bin += kWorkgroupSize) {
@@ -253,10 +261,17 @@ void Finish(uint t) {
       }
     }
     Synchronize();
-    for (uint i = t; i < candidates; i += kWorkgroupSize) {
-      if (!Hidden(nodes[keys[i].y])) continue;
-      keys[i].x = 0xffffffffu;  // sorted after every chunk drawn
+  }
+  // Chunks hidden are sorted after every chunk drawn, those that read per vertex after those that
+  // read per pixel: within its bounds' distance given by the CPU (PerPixelReadsWithinM).
+  for (uint i = t; i < candidates; i += kWorkgroupSize) {
+    ChunkNode node = nodes[keys[i].y];
+    if (north.w != 0.0 && Hidden(node)) {
+      keys[i].x = 0xffffffffu;
       atomicAdd(hidden_size, 1u);
+    } else if (!(length(camera.xyz - clamp(camera.xyz, node.lower.xyz, node.upper.xyz)) < node.upper.w)) {
+      keys[i].x |= kReadsPerVertex;
+      atomicAdd(per_vertex_size, 1u);
     }
   }
   uint n = 1u;
@@ -265,16 +280,18 @@ void Finish(uint t) {
   Synchronize();
   SortKeys(n, t);
 
-  const uint drawn = candidates - hidden_size;
+  const uint drawn = candidates - hidden_size, per_pixel = drawn - per_vertex_size;
   for (uint i = t; i < drawn; i += kWorkgroupSize) stamps[keys[i].y] = uint(root.y);
   Synchronize();
   for (uint i = t; i < drawn; i += kWorkgroupSize) {
     int slot = int(keys[i].y);
     uvec4 range = index_ranges[SkirtMask(slot)];
-    draws[i] = DrawCommand(range.y, 1u, range.x, slot * root.z, uint(root.w));
+    draws[i < per_pixel ? i : stamps.length() + i - per_pixel] =
+        DrawCommand(range.y, 1u, range.x, slot * root.z, uint(root.w));
   }
   if (t == 0u) {
-    draw_count = drawn;
+    draw_count = per_pixel;
+    per_vertex_count = per_vertex_size;
     hidden = hidden_size;
   }
 }

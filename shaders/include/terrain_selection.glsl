@@ -9,7 +9,7 @@ const int kChunkCells = 8;  // terrain::kChunkCells
 
 struct ChunkNode {
   vec4 lower;         // the bounds' lower corner in the scene frame (m); w: geometric error (m)
-  vec4 upper;         // the bounds' upper corner
+  vec4 upper;         // the bounds' upper corner; w: the distance within which it reads the froxels per pixel
   ivec4 children;     // slots of the four children in terrain::Children order
   ivec4 neighbours;   // slots of the chunks of its level across its south, east, north, west sides
   ivec4 id;           // level, x, y

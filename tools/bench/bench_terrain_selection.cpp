@@ -15,6 +15,7 @@
 #include "aerial/bench/pass_stats.h"
 #include "aerial/error.h"
 #include "aerial/render/gpu_chunk_selection.h"
+#include "aerial/render/surface_reads.h"
 #include "aerial/render/terrain_chunk_cache.h"
 #include "aerial/renderer.h"
 #include "aerial/scene.h"
@@ -54,14 +55,19 @@ Size ParseSize(const std::string& text) {
 // (whose slots the draws read) when the CPU's selections did not build it already.
 void FillTree(const aerial::vk::Context& context, const std::vector<aerial::terrain::LodView>& views,
               aerial::TerrainChunkCache& cache, aerial::GpuChunkSelection& gpu) {
+  // The renderer's split of the chunks by where they read the froxels, at its defaults.
+  const aerial::AirScales air = aerial::MakeAirScales(aerial::AtmosphereParameters::Earth());
   for (const aerial::terrain::LodView& view : views) {
     for (;;) {
       context.Submit([&](const aerial::vk::CommandBuffer& cmd) { gpu.Record(cmd, view); });
       const std::vector<aerial::terrain::ChunkId> requested = gpu.Read().requested;
       if (requested.empty()) break;
       cache.Build(requested);
-      for (const aerial::terrain::ChunkId& id : requested)
-        gpu.Insert(uint32_t(cache.VertexOffset(id)) / aerial::terrain::kChunkVertices, id, *cache.Find(id));
+      for (const aerial::terrain::ChunkId& id : requested) {
+        const aerial::terrain::ChunkInfo& info = *cache.Find(id);
+        gpu.Insert(uint32_t(cache.VertexOffset(id)) / aerial::terrain::kChunkVertices, id, info,
+                   aerial::PerPixelReadsWithinM(aerial::FroxelGrid{}, air, info.longest_edge_m, info.largest_rise_m));
+      }
     }
   }
 }

@@ -73,7 +73,7 @@ GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots,
       queues_(StorageBuffer(context, 2 * slots * sizeof(int32_t), false)),
       stamps_(StorageBuffer(context, slots * sizeof(uint32_t), true)),
       keys_(StorageBuffer(context, std::bit_ceil(slots) * 2 * sizeof(uint32_t), false)),
-      draws_(StorageBuffer(context, kDrawsOffset + slots * sizeof(::vk::DrawIndexedIndirectCommand), true,
+      draws_(StorageBuffer(context, kDrawsOffset + 2 * slots * sizeof(::vk::DrawIndexedIndirectCommand), true,
                            ::vk::BufferUsageFlagBits::eIndirectBuffer)),
       requests_(StorageBuffer(context, 4 * slots * sizeof(glm::ivec4), true)),
       occluder_groups_(StorageBuffer(context, sizeof(::vk::DispatchIndirectCommand), false,
@@ -113,9 +113,10 @@ void GpuChunkSelection::Link(const ChunkId& id, int32_t slot) {
       NodeAt(*neighbour).neighbours[Opposite(side)] = slot;
 }
 
-void GpuChunkSelection::Insert(uint32_t slot, const ChunkId& id, const terrain::ChunkInfo& info) {
+void GpuChunkSelection::Insert(uint32_t slot, const ChunkId& id, const terrain::ChunkInfo& info,
+                               double per_pixel_reads_within_m) {
   Node node{.lower = glm::vec4(glm::vec3(info.bounds.min), float(info.geometric_error_m)),
-            .upper = glm::vec4(glm::vec3(info.bounds.max), 0.0f),
+            .upper = glm::vec4(glm::vec3(info.bounds.max), float(per_pixel_reads_within_m)),
             .id = glm::ivec4(id.level, id.x, id.y, 0)};
   const std::array<ChunkId, 4> children = terrain::Children(id);
   for (int k = 0; k < 4; ++k) {
@@ -183,18 +184,24 @@ void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodV
   vk::FullBarrier(cmd);
 }
 
+::vk::DeviceSize GpuChunkSelection::per_vertex_draws_offset() const {
+  return kDrawsOffset + slots_ * sizeof(::vk::DrawIndexedIndirectCommand);
+}
+
 GpuChunkSelection::Result GpuChunkSelection::Read() const {
-  std::array<uint32_t, 4> header;  // draws, deferred, requested, hidden
+  std::array<uint32_t, 5> header;  // draws per pixel, deferred, requested, hidden, draws per vertex
   std::memcpy(header.data(), draws_.mapped(), sizeof(header));
-  const auto* commands = reinterpret_cast<const ::vk::DrawIndexedIndirectCommand*>(draws_.mapped() + kDrawsOffset);
   const auto* requests = reinterpret_cast<const glm::ivec4*>(requests_.mapped());
-  Result result{.deferred = int(header[1]), .hidden = int(header[3])};
-  for (uint32_t i = 0; i < header[0]; ++i) {
-    const uint32_t slot = uint32_t(commands[i].vertexOffset) / vertices_per_slot_;
-    uint32_t skirts = 0;
-    for (uint32_t mask = 0; mask < 16; ++mask)
-      if (terrain::ChunkIndexRange(mask).first == commands[i].firstIndex) skirts = mask;
-    result.chunks.push_back({id_in_slot_[slot], skirts});
+  Result result{.per_pixel = header[0], .deferred = int(header[1]), .hidden = int(header[3])};
+  for (auto [offset, count] : {std::pair{kDrawsOffset, header[0]}, std::pair{per_vertex_draws_offset(), header[4]}}) {
+    const auto* commands = reinterpret_cast<const ::vk::DrawIndexedIndirectCommand*>(draws_.mapped() + offset);
+    for (uint32_t i = 0; i < count; ++i) {
+      const uint32_t slot = uint32_t(commands[i].vertexOffset) / vertices_per_slot_;
+      uint32_t skirts = 0;
+      for (uint32_t mask = 0; mask < 16; ++mask)
+        if (terrain::ChunkIndexRange(mask).first == commands[i].firstIndex) skirts = mask;
+      result.chunks.push_back({id_in_slot_[slot], skirts});
+    }
   }
   for (uint32_t i = 0; i < header[2]; ++i) result.requested.push_back({requests[i].x, requests[i].y, requests[i].z});
   return result;

@@ -13,8 +13,10 @@
 // heights, and the slots of its children and of its level's neighbours. The GPU reads it from
 // host-visible memory, so the CPU changes it only while no selection it recorded is in flight.
 //
-// Not done here (the CPU selection's): the camera's refinement slack, and the split of chunks by
-// where they read the froxels.
+// The drawn chunks come in two lists, as the renderer draws them: those that read the froxels per
+// pixel, then those that read them per vertex (render/surface_reads.h), each front to back.
+//
+// Not done here (the CPU selection's): the camera's refinement slack.
 #include <cstdint>
 #include <optional>
 #include <unordered_map>
@@ -33,8 +35,11 @@ class GpuChunkSelection {
   // draws' first instance.
   GpuChunkSelection(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot, uint32_t first_instance);
 
-  // The chunk `id`, built, is in `slot` (a free one) / is no longer there.
-  void Insert(uint32_t slot, const terrain::ChunkId& id, const terrain::ChunkInfo& info);
+  // The chunk `id`, built, is in `slot` (a free one) / is no longer there. It reads the froxels
+  // per pixel while its bounds are within per_pixel_reads_within_m of the camera
+  // (PerPixelReadsWithinM), per vertex beyond.
+  void Insert(uint32_t slot, const terrain::ChunkId& id, const terrain::ChunkInfo& info,
+              double per_pixel_reads_within_m);
   void Remove(uint32_t slot);
   std::optional<uint32_t> SlotOf(const terrain::ChunkId& id) const;
 
@@ -44,17 +49,21 @@ class GpuChunkSelection {
 
   // What the last recorded selection wrote, once its commands have completed.
   struct Result {
-    std::vector<terrain::SelectedChunk> chunks;  // front to back, with their skirts
+    // With their skirts: those that read the froxels per pixel, front to back, then the others.
+    std::vector<terrain::SelectedChunk> chunks;
+    size_t per_pixel = 0;                        // how many of chunks read them per pixel
     std::vector<terrain::ChunkId> requested;     // children to build
     int deferred = 0;                            // terrain::Selection::deferred
     int hidden = 0;                              // terrain::Selection::hidden
   };
   Result Read() const;
 
-  // The draws: their count (uint32) at offset 0, the VkDrawIndexedIndirectCommands from
-  // kDrawsOffset, at most slots of them (vkCmdDrawIndexedIndirectCount).
+  // The draws, for vkCmdDrawIndexedIndirectCount, at most max_draws() in each list: per pixel,
+  // their count (uint32) at offset 0 and the VkDrawIndexedIndirectCommands from kDrawsOffset;
+  // per vertex, from kPerVertexCountOffset and per_vertex_draws_offset().
   const vk::Buffer& draws() const { return draws_; }
-  static constexpr ::vk::DeviceSize kDrawsOffset = 16;
+  static constexpr ::vk::DeviceSize kDrawsOffset = 32, kPerVertexCountOffset = 16;
+  ::vk::DeviceSize per_vertex_draws_offset() const;
   uint32_t max_draws() const { return slots_; }
 
  private:
