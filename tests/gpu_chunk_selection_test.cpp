@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <string>
@@ -154,6 +155,38 @@ TEST_F(GpuChunkSelectionTest, DrawsTheParentOfAChunkThatIsNotBuiltAndAsksForIt) 
   EXPECT_EQ(gpu.deferred, 1);
   EXPECT_TRUE(std::any_of(gpu.chunks.begin(), gpu.chunks.end(), [&](const SelectedChunk& c) { return c.id == parent; }));
   EXPECT_EQ(gpu.requested, std::vector<ChunkId>{id});
+}
+
+// Two selections recorded into one command buffer with a chunk dropped between them: the first
+// still draws it, as a frame in flight must, and the second draws its parent instead.
+TEST_F(GpuChunkSelectionTest, EachSelectionWalksTheTreeAsItWasWhenRecorded) {
+  const terrain::LodView view = ViewOf("noon", 720, 4.0);
+  const terrain::Selection full = terrain::SelectChunks(view, chunks_);
+  const SelectedChunk* dropped = &full.chunks.front();
+  for (const SelectedChunk& c : full.chunks)
+    if (c.id.level > dropped->id.level) dropped = &c;
+  const ChunkId id = dropped->id;
+  const int32_t vertex_offset = int32_t(*gpu_.SlotOf(id) * terrain::kChunkVertices);
+  vk::Buffer first(SharedContext(), {.size = gpu_.draws().size(),
+                                     .usage = ::vk::BufferUsageFlagBits::eTransferDst,
+                                     .host_visible = true});
+  SharedContext().Submit([&](const vk::CommandBuffer& cmd) {
+    gpu_.Record(cmd, view);
+    cmd.copyBuffer(gpu_.draws().handle(), first.handle(), ::vk::BufferCopy{.size = gpu_.draws().size()});
+    chunks_.Drop(id);
+    gpu_.Record(cmd, view);
+  });
+  uint32_t first_count = 0;
+  std::memcpy(&first_count, first.mapped(), sizeof(first_count));
+  const auto* commands =
+      reinterpret_cast<const ::vk::DrawIndexedIndirectCommand*>(first.mapped() + GpuChunkSelection::kDrawsOffset);
+  EXPECT_EQ(first_count, full.chunks.size());
+  EXPECT_TRUE(std::any_of(commands, commands + first_count,
+                          [&](const ::vk::DrawIndexedIndirectCommand& c) { return c.vertexOffset == vertex_offset; }))
+      << "the first selection did not draw the chunk dropped after it was recorded";
+  const GpuChunkSelection::Result second = gpu_.Read();
+  EXPECT_EQ(second.requested, std::vector<ChunkId>{id});
+  EXPECT_FALSE(std::any_of(second.chunks.begin(), second.chunks.end(), [&](const SelectedChunk& c) { return c.id == id; }));
 }
 
 // Starting from nothing built, each selection asks for the next level's chunks; building them

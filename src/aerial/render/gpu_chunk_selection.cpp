@@ -54,12 +54,6 @@ vk::Buffer StorageBuffer(const vk::Context& context, ::vk::DeviceSize size, bool
 
 }  // namespace
 
-// terrain_select.comp's ChunkNode (std430).
-struct GpuChunkSelection::Node {
-  glm::vec4 lower;  // w: geometric error
-  glm::vec4 upper;
-  glm::ivec4 children, neighbours, id;
-};
 
 GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot,
                                      uint32_t first_instance)
@@ -67,14 +61,18 @@ GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots,
       vertices_per_slot_(vertices_per_slot),
       first_instance_(first_instance),
       id_in_slot_(slots),
-      tree_(StorageBuffer(context, slots * sizeof(Node), true)),
-      cell_lowest_(StorageBuffer(context, slots * sizeof(terrain::ChunkInfo::cell_lowest_m), true)),
-      view_(context, vk::UniformBufferInfo(sizeof(SelectionView))),
+      nodes_(slots),
+      cell_lowest_m_(slots),
+      node_changed_(slots, false),
+      tree_(StorageBuffer(context, slots * sizeof(Node), false, ::vk::BufferUsageFlagBits::eTransferDst)),
+      cell_lowest_(StorageBuffer(context, slots * sizeof(terrain::ChunkInfo::cell_lowest_m), false,
+                                 ::vk::BufferUsageFlagBits::eTransferDst)),
+      view_(context, vk::RecordedUniformBufferInfo(sizeof(SelectionView))),
       queues_(StorageBuffer(context, 2 * slots * sizeof(int32_t), false)),
       stamps_(StorageBuffer(context, slots * sizeof(uint32_t), true)),
       keys_(StorageBuffer(context, std::bit_ceil(slots) * 2 * sizeof(uint32_t), false)),
       draws_(StorageBuffer(context, kDrawsOffset + 2 * slots * sizeof(::vk::DrawIndexedIndirectCommand), true,
-                           ::vk::BufferUsageFlagBits::eIndirectBuffer)),
+                           ::vk::BufferUsageFlagBits::eIndirectBuffer | ::vk::BufferUsageFlagBits::eTransferSrc)),
       requests_(StorageBuffer(context, 4 * slots * sizeof(glm::ivec4), true)),
       occluder_groups_(StorageBuffer(context, sizeof(::vk::DispatchIndirectCommand), false,
                                      ::vk::BufferUsageFlagBits::eIndirectBuffer)),
@@ -93,8 +91,10 @@ GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots,
   std::memset(stamps_.mapped(), 0, stamps_.size());
 }
 
-GpuChunkSelection::Node& GpuChunkSelection::NodeAt(uint32_t slot) const {
-  return reinterpret_cast<Node*>(tree_.mapped())[slot];
+GpuChunkSelection::Node& GpuChunkSelection::Change(uint32_t slot) {
+  if (!node_changed_[slot]) changed_nodes_.push_back(slot);
+  node_changed_[slot] = true;
+  return nodes_[slot];
 }
 
 std::optional<uint32_t> GpuChunkSelection::SlotOf(const ChunkId& id) const {
@@ -106,11 +106,11 @@ std::optional<uint32_t> GpuChunkSelection::SlotOf(const ChunkId& id) const {
 // Points the chunk's parent and neighbours at `slot` (kNotBuilt: at nothing).
 void GpuChunkSelection::Link(const ChunkId& id, int32_t slot) {
   if (id.level > 0)
-    if (std::optional<uint32_t> parent = SlotOf(terrain::Parent(id))) NodeAt(*parent).children[ChildIndex(id)] = slot;
+    if (std::optional<uint32_t> parent = SlotOf(terrain::Parent(id))) Change(*parent).children[ChildIndex(id)] = slot;
   const std::array<ChunkId, 4> neighbours = Neighbours(id);
   for (int side = 0; side < 4; ++side)
     if (std::optional<uint32_t> neighbour = SlotOf(neighbours[side]))
-      NodeAt(*neighbour).neighbours[Opposite(side)] = slot;
+      Change(*neighbour).neighbours[Opposite(side)] = slot;
 }
 
 void GpuChunkSelection::Insert(uint32_t slot, const ChunkId& id, const terrain::ChunkInfo& info,
@@ -127,9 +127,9 @@ void GpuChunkSelection::Insert(uint32_t slot, const ChunkId& id, const terrain::
   }
   const std::array<ChunkId, 4> neighbours = Neighbours(id);
   for (int side = 0; side < 4; ++side) node.neighbours[side] = int32_t(SlotOf(neighbours[side]).value_or(kNotBuilt));
-  NodeAt(slot) = node;
-  std::memcpy(cell_lowest_.mapped() + slot * sizeof(info.cell_lowest_m), info.cell_lowest_m.data(),
-              sizeof(info.cell_lowest_m));
+  Change(slot) = node;
+  cell_lowest_m_[slot] = info.cell_lowest_m;
+  inserted_.push_back(slot);
   slot_of_[id] = slot;
   id_in_slot_[slot] = id;
   Link(id, int32_t(slot));
@@ -163,7 +163,19 @@ void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodV
     terrain::IndexRange range = terrain::ChunkIndexRange(mask);
     block.index_ranges[mask] = glm::uvec4(range.first, range.count, 0, 0);
   }
-  view_.Write(std::as_bytes(std::span(&block, 1)));
+  // The tree's changes and the view, in the commands: each selection sees them as they were when
+  // it was recorded, whatever is in flight.
+  vk::FullBarrier(cmd);
+  for (uint32_t slot : changed_nodes_) {
+    cmd.updateBuffer(tree_.handle(), slot * sizeof(Node), ::vk::ArrayProxy<const Node>(1, &nodes_[slot]));
+    node_changed_[slot] = false;
+  }
+  for (uint32_t slot : inserted_)
+    cmd.updateBuffer(cell_lowest_.handle(), slot * sizeof(terrain::ChunkInfo::cell_lowest_m),
+                     ::vk::ArrayProxy<const float>(uint32_t(cell_lowest_m_[slot].size()), cell_lowest_m_[slot].data()));
+  changed_nodes_.clear();
+  inserted_.clear();
+  cmd.updateBuffer(view_.handle(), 0, ::vk::ArrayProxy<const SelectionView>(1, &block));
   const std::vector<vk::Slot> slots = {
       vk::StorageBufferSlot{&tree_},      vk::UniformBufferSlot{&view_},      vk::StorageBufferSlot{&queues_},
       vk::StorageBufferSlot{&stamps_},    vk::StorageBufferSlot{&keys_},      vk::StorageBufferSlot{&draws_},

@@ -10,13 +10,16 @@
 // built chunks (a few links per chunk built or dropped) and builds the chunks the GPU asks for.
 //
 // The tree is the chunk slots' table: per slot, the chunk's bounds and error, its cells' lowest
-// heights, and the slots of its children and of its level's neighbours. The GPU reads it from
-// host-visible memory, so the CPU changes it only while no selection it recorded is in flight.
+// heights, and the slots of its children and of its level's neighbours. Its changes reach the GPU
+// in the next recorded selection's commands, so each selection in flight walks the tree as it was
+// when it was recorded. A removed chunk's slot may be drawn by the selections recorded before the
+// removal: its vertices may be overwritten once those have completed.
 //
 // The drawn chunks come in two lists, as the renderer draws them: those that read the froxels per
 // pixel, then those that read them per vertex (render/surface_reads.h), each front to back.
 //
 // Not done here (the CPU selection's): the camera's refinement slack.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <unordered_map>
@@ -67,14 +70,23 @@ class GpuChunkSelection {
   uint32_t max_draws() const { return slots_; }
 
  private:
-  struct Node;
-  Node& NodeAt(uint32_t slot) const;
+  // terrain_select.comp's ChunkNode (std430).
+  struct Node {
+    glm::vec4 lower;  // w: geometric error
+    glm::vec4 upper;  // w: the distance within which it reads the froxels per pixel
+    glm::ivec4 children, neighbours, id;
+  };
+  Node& Change(uint32_t slot);  // the slot's node, to be written in the next selection's commands
   void Link(const terrain::ChunkId& id, int32_t slot);
 
   uint32_t slots_, vertices_per_slot_, first_instance_;
   uint32_t generation_ = 0;
   std::unordered_map<terrain::ChunkId, uint32_t, terrain::ChunkIdHash> slot_of_;
   std::vector<terrain::ChunkId> id_in_slot_;
+  std::vector<Node> nodes_;
+  std::vector<std::array<float, terrain::kChunkCells * terrain::kChunkCells>> cell_lowest_m_;
+  std::vector<bool> node_changed_;
+  std::vector<uint32_t> changed_nodes_, inserted_;  // since the last selection recorded
   vk::Buffer tree_, cell_lowest_, view_, queues_, stamps_, keys_, draws_, requests_, occluder_groups_, horizon_;
   vk::ComputePipeline walk_, occluders_, finish_;
 };
