@@ -14,6 +14,7 @@
 #include <string>
 
 #include "aerial/render/gpu_chunk_selection.h"
+#include "aerial/render/shadow_terrain.h"
 #include "aerial/render/surface_reads.h"
 #include "aerial/scene.h"
 #include "aerial/scene/terrain.h"
@@ -244,6 +245,38 @@ TEST_F(GpuChunkSelectionTest, SplitsTheChunksByWhereTheyReadTheFroxelsAsTheRende
     EXPECT_EQ(result.chunks, expected) << "GPU: " << Describe(result.chunks) << "\nCPU: " << Describe(expected);
   }
   EXPECT_GT(by_distance, 0);
+}
+
+// Each shadow cascade's casters, selected by the GPU for the cascade's view (CascadeCasterView: its
+// box, the resolved error of its texels, no occlusion culling), are the CPU's, skirts included:
+// the noon and sunset views, whose low sun stretches the last cascade's box over the terrain.
+TEST_F(GpuChunkSelectionTest, SelectsEachCascadesCastersAsTheCpuDoes) {
+  auto by_id = [](std::vector<SelectedChunk> chunks) {
+    std::sort(chunks.begin(), chunks.end(), [](const SelectedChunk& a, const SelectedChunk& b) { return a.id < b.id; });
+    return chunks;
+  };
+  size_t casters = 0;
+  for (const std::string preset : {"noon", "sunset"}) {
+    const Scene scene = BuildPreset(preset, kR);
+    const terrain::LodView frame_view = terrain::MakeLodView(scene.camera, kAspect, 720, 4.0, kR);
+    const CascadeFitInput fit{.camera = scene.camera,
+                              .aspect = kAspect,
+                              .sun = scene.sun.Direction(),
+                              .casters = {.radius_m = kTerrainRadiusM + 10e3,
+                                          .top_radius_m = kR + kTerrainMaxHeightM,
+                                          .bottom_radius_m = kR + kTerrainMinHeightM}};
+    for (const ShadowCascade& cascade : FitShadowCascades(fit)) {
+      const CascadeCasters cpu = SelectCascadeCasters(frame_view, cascade, chunks_);
+      ASSERT_EQ(cpu.deferred, 0);
+      const GpuChunkSelection::Result gpu = SelectOnGpu(CascadeCasterView(frame_view, cascade));
+      SCOPED_TRACE(preset + ", cascade to " + std::to_string(cascade.far_m) + " m");
+      EXPECT_FALSE(cpu.chunks.empty());
+      casters += cpu.chunks.size();
+      EXPECT_EQ(by_id(gpu.chunks), cpu.chunks) << "GPU: " << Describe(by_id(gpu.chunks)) << "\nCPU: " << Describe(cpu.chunks);
+      EXPECT_EQ(gpu.deferred, 0);
+    }
+  }
+  EXPECT_GT(casters, 1000u);
 }
 
 // With occlusion culling, the GPU leaves out only chunks that the terrain hides: every vertex of

@@ -12,14 +12,18 @@ constexpr double kCasterToleranceTexels = 0.25;
 
 }  // namespace
 
-CascadeCasters SelectCascadeCasters(const terrain::LodView& frame_view, const ShadowCascade& cascade,
-                                    terrain::ChunkSource& source) {
+terrain::LodView CascadeCasterView(const terrain::LodView& frame_view, const ShadowCascade& cascade) {
   terrain::LodView view = frame_view;
   view.occlusion_culling = false;
   view.front_to_back = false;
   view.planes = cascade.planes;
   view.resolved_error_m = kCasterToleranceTexels * cascade.texel_m;
-  terrain::Selection selection = terrain::SelectChunks(view, source);
+  return view;
+}
+
+CascadeCasters SelectCascadeCasters(const terrain::LodView& frame_view, const ShadowCascade& cascade,
+                                    terrain::ChunkSource& source) {
+  terrain::Selection selection = terrain::SelectChunks(CascadeCasterView(frame_view, cascade), source);
   // Sorted, so that two selections of the same chunks compare equal (ShadowTileRedrawn).
   std::sort(selection.chunks.begin(), selection.chunks.end(),
             [](const terrain::SelectedChunk& a, const terrain::SelectedChunk& b) { return a.id < b.id; });

@@ -43,5 +43,8 @@ struct CascadeCasters {
 // of detail moves by a level somewhere in it.
 CascadeCasters SelectCascadeCasters(const terrain::LodView& frame_view, const ShadowCascade& cascade,
                                     terrain::ChunkSource& source);
+// The view that selection is made for, for a selection made elsewhere (the GPU's:
+// gpu_chunk_selection.h).
+terrain::LodView CascadeCasterView(const terrain::LodView& frame_view, const ShadowCascade& cascade);
 
 }  // namespace aerial
