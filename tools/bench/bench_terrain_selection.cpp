@@ -2,8 +2,8 @@
 // renderer makes it: with occlusion culling, and without) against the one made by the GPU
 // (render/gpu_chunk_selection.h), per frame size: the selecting thread's CPU time per moving frame
 // (bench::Moved), the GPU time of the selection's passes, with occlusion culling and without, and
-// the chunks each draws. Every chunk
-// the frames need is built before they are timed: building is not counted.
+// the chunks each draws. Every chunk the frames need is built before they are timed: building is
+// not counted.
 #include <cstdio>
 #include <string>
 #include <vector>
