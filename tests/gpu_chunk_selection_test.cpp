@@ -2,8 +2,9 @@
 // CPU's (src/aerial/terrain/lod_selection.h), which applies the same rule in double precision to
 // the same built chunks: the same chunks, skirts and order; a chunk whose children are not built
 // drawn in their place, and the children asked for; from the root alone, the asked-for chunks
-// lead to the CPU's selection. With occlusion culling, each chunk it leaves out is hidden from the
-// camera by the terrain itself, ray-marched on the CPU.
+// lead to the CPU's selection; its split by froxel reads and each shadow cascade's casters are the
+// CPU's; a selection in flight keeps the tree it was recorded with. With occlusion culling, each
+// chunk it leaves out is hidden from the camera by the terrain itself, ray-marched on the CPU.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -137,16 +138,18 @@ TEST_F(GpuChunkSelectionTest, DrawsWhatTheCpuSelectionDraws) {
   }
 }
 
+// A drawn chunk of the finest level drawn, so that its parent has drawn children.
+ChunkId FinestDrawn(const terrain::Selection& selection) {
+  return std::max_element(selection.chunks.begin(), selection.chunks.end(),
+                          [](const SelectedChunk& a, const SelectedChunk& b) { return a.id.level < b.id.level; })
+      ->id;
+}
+
 // A drawn chunk that goes (evicted from the cache) leaves no hole: its parent is drawn in place of
 // its children, as the CPU's selection draws it when it may not build, and the chunk is asked for.
 TEST_F(GpuChunkSelectionTest, DrawsTheParentOfAChunkThatIsNotBuiltAndAsksForIt) {
   const terrain::LodView view = ViewOf("noon", 720, 4.0);
-  const terrain::Selection full = terrain::SelectChunks(view, chunks_);
-  // A drawn chunk of the finest level drawn, so that its parent has drawn children.
-  const SelectedChunk* dropped = &full.chunks.front();
-  for (const SelectedChunk& c : full.chunks)
-    if (c.id.level > dropped->id.level) dropped = &c;
-  const ChunkId id = dropped->id, parent = terrain::Parent(id);
+  const ChunkId id = FinestDrawn(terrain::SelectChunks(view, chunks_)), parent = terrain::Parent(id);
   chunks_.Drop(id);
 
   const terrain::Selection cpu = SelectOnCpu(view);
@@ -163,10 +166,7 @@ TEST_F(GpuChunkSelectionTest, DrawsTheParentOfAChunkThatIsNotBuiltAndAsksForIt) 
 TEST_F(GpuChunkSelectionTest, EachSelectionWalksTheTreeAsItWasWhenRecorded) {
   const terrain::LodView view = ViewOf("noon", 720, 4.0);
   const terrain::Selection full = terrain::SelectChunks(view, chunks_);
-  const SelectedChunk* dropped = &full.chunks.front();
-  for (const SelectedChunk& c : full.chunks)
-    if (c.id.level > dropped->id.level) dropped = &c;
-  const ChunkId id = dropped->id;
+  const ChunkId id = FinestDrawn(full);
   const int32_t vertex_offset = int32_t(*gpu_.SlotOf(id) * terrain::kChunkVertices);
   vk::Buffer first(SharedContext(), {.size = gpu_.draws().size(),
                                      .usage = ::vk::BufferUsageFlagBits::eTransferDst,
