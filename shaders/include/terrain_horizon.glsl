@@ -9,6 +9,8 @@
 // vertical frame (Downs, Möller and Séquin, I3D 2001; Lloyd and Egbert, IEEE Visualization 2002).
 // Unlike a horizon on the screen, no occluder needs another beneath it, so every chunk adds its
 // occluders at once, in parallel, and a chunk is tested only against the bands wholly in front of it.
+// Chunks left out add theirs too: a ray under a hidden chunk's ground crossed the ground in front
+// of it, and, by induction over the bands from the camera out, that crossing is on ground drawn.
 
 const int kHorizonAzimuths = 1024;  // 0.35 degrees each, about 5 px of a 720p frame
 const int kHorizonBands = 48;       // 32 m to 1,160 km, each 1.25 times the last
