@@ -68,13 +68,14 @@ bool IntersectsFrustum(vec3 lower, vec3 upper) {
   return true;
 }
 
+// The camera's distance to the chunk's bounds (0 inside them).
+float DistanceToBounds(ChunkNode node) {
+  return length(camera.xyz - clamp(camera.xyz, node.lower.xyz, node.upper.xyz));
+}
+
 // Ulrich's test: the geometric error seen from the bounds' nearest point spans more pixels than
 // the bound (inside the bounds, any error does).
-bool TooCoarse(ChunkNode node) {
-  vec3 p = camera.xyz;
-  float distance = length(p - clamp(p, node.lower.xyz, node.upper.xyz));
-  return node.lower.w * camera.w > limits.x * distance;
-}
+bool TooCoarse(ChunkNode node) { return node.lower.w * camera.w > limits.x * DistanceToBounds(node); }
 
 // Where a child that is not built may lie: its footprint, widened for the spread, over its
 // parent's heights grown by the parent's error (EstimateChildBounds in lod_selection.cpp).
@@ -197,8 +198,7 @@ bool Hidden(ChunkNode node) {
   }
   // No point of the box is nearer the camera's vertical than this; when it is 0, the vertical
   // passes through the box, whose azimuths then take the whole turn.
-  vec3 p = camera.xyz;
-  float distance = length(p - clamp(p, node.lower.xyz, node.upper.xyz));
+  float distance = DistanceToBounds(node);
   float near_squared = distance * distance - z_abs * z_abs;
   if (near_squared <= 0.0) return false;
   float near = sqrt(near_squared);
@@ -251,6 +251,7 @@ void Finish(uint t) {
     hidden_size = 0u;
     per_vertex_size = 0u;
   }
+  Synchronize();
   if (north.w != 0.0) {
     // Each band from then on holds what the nearer ones hold.
     for (uint bin = t; bin < uint(kHorizonAzimuths); bin += kWorkgroupSize) {
@@ -269,7 +270,7 @@ void Finish(uint t) {
     if (north.w != 0.0 && Hidden(node)) {
       keys[i].x = 0xffffffffu;
       atomicAdd(hidden_size, 1u);
-    } else if (!(length(camera.xyz - clamp(camera.xyz, node.lower.xyz, node.upper.xyz)) < node.upper.w)) {
+    } else if (!(DistanceToBounds(node) < node.upper.w)) {
       keys[i].x |= kReadsPerVertex;
       atomicAdd(per_vertex_size, 1u);
     }
