@@ -44,7 +44,8 @@ layout(std430, set = 0, binding = 5) coherent buffer SelectionDraws {
   uint requested;        // entries of SelectionRequests written
   uint hidden;           // chunks left out because nearer terrain hides them
   uint per_vertex_count;
-  uint header_end[3];
+  uint indices;          // of every chunk drawn, skirts included
+  uint header_end[2];
   DrawCommand draws[];
 };
 // The children a refinement needs that are not built (level, x, y), for the CPU to build.
@@ -56,7 +57,7 @@ layout(std430, set = 0, binding = 7) writeonly buffer OccluderDispatch { uvec3 o
 layout(std430, set = 0, binding = 8) coherent buffer TerrainHorizon { uint horizon[]; };
 
 shared uint queue_size[2];
-shared uint draw_size, deferred_size, request_size, hidden_size, per_vertex_size;
+shared uint draw_size, deferred_size, request_size, hidden_size, per_vertex_size, index_size;
 const uint kReadsPerVertex = 0x80000000u;  // the sort key's top bit
 
 bool IntersectsFrustum(vec3 lower, vec3 upper) {
@@ -250,6 +251,7 @@ void Finish(uint t) {
   if (t == 0u) {
     hidden_size = 0u;
     per_vertex_size = 0u;
+    index_size = 0u;
   }
   Synchronize();
   if (north.w != 0.0) {
@@ -289,11 +291,14 @@ void Finish(uint t) {
     uvec4 range = index_ranges[SkirtMask(slot)];
     draws[i < per_pixel ? i : stamps.length() + i - per_pixel] =
         DrawCommand(range.y, 1u, range.x, slot * root.z, uint(root.w));
+    atomicAdd(index_size, range.y);
   }
+  Synchronize();
   if (t == 0u) {
     draw_count = per_pixel;
     per_vertex_count = per_vertex_size;
     hidden = hidden_size;
+    indices = index_size;
   }
 }
 

@@ -1,8 +1,12 @@
 #include "aerial/render/gpu_chunk_selection.h"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstring>
+#include <string>
+
+#include "aerial/error.h"
 
 namespace aerial {
 namespace {
@@ -13,6 +17,12 @@ constexpr int32_t kNotBuilt = -1, kOutsideTerrain = -2;  // terrain_select.comp'
 constexpr uint32_t kWorkgroupSize = 256;
 constexpr uint32_t kHorizonEntries = 1024 * 48;  // terrain_horizon.glsl's kHorizonAzimuths * kHorizonBands
 constexpr int32_t kWalk = 0, kFinish = 1;         // terrain_select.comp's kStage
+// The draws' header: draws per pixel, deferred, requested, hidden, draws per vertex, indices.
+using Header = std::array<uint32_t, 6>;
+// A feedback's copy: the draws' header, the first requests, the stamps.
+constexpr ::vk::DeviceSize kFeedbackRequestsOffset = GpuChunkSelection::kDrawsOffset;
+constexpr ::vk::DeviceSize kFeedbackStampsOffset =
+    kFeedbackRequestsOffset + GpuChunkSelection::kFedBackRequests * sizeof(glm::ivec4);
 
 // terrain_select.comp's SelectionView (std140).
 struct SelectionView {
@@ -56,7 +66,7 @@ vk::Buffer StorageBuffer(const vk::Context& context, ::vk::DeviceSize size, bool
 
 
 GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot,
-                                     uint32_t first_instance)
+                                     uint32_t first_instance, uint32_t feedbacks)
     : slots_(slots),
       vertices_per_slot_(vertices_per_slot),
       first_instance_(first_instance),
@@ -69,11 +79,11 @@ GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots,
                                  ::vk::BufferUsageFlagBits::eTransferDst)),
       view_(context, vk::RecordedUniformBufferInfo(sizeof(SelectionView))),
       queues_(StorageBuffer(context, 2 * slots * sizeof(int32_t), false)),
-      stamps_(StorageBuffer(context, slots * sizeof(uint32_t), true)),
+      stamps_(StorageBuffer(context, slots * sizeof(uint32_t), true, ::vk::BufferUsageFlagBits::eTransferSrc)),
       keys_(StorageBuffer(context, std::bit_ceil(slots) * 2 * sizeof(uint32_t), false)),
       draws_(StorageBuffer(context, kDrawsOffset + 2 * slots * sizeof(::vk::DrawIndexedIndirectCommand), true,
                            ::vk::BufferUsageFlagBits::eIndirectBuffer | ::vk::BufferUsageFlagBits::eTransferSrc)),
-      requests_(StorageBuffer(context, 4 * slots * sizeof(glm::ivec4), true)),
+      requests_(StorageBuffer(context, 4 * slots * sizeof(glm::ivec4), true, ::vk::BufferUsageFlagBits::eTransferSrc)),
       occluder_groups_(StorageBuffer(context, sizeof(::vk::DispatchIndirectCommand), false,
                                      ::vk::BufferUsageFlagBits::eIndirectBuffer)),
       horizon_(StorageBuffer(context, kHorizonEntries * sizeof(uint32_t), false,
@@ -86,9 +96,14 @@ GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots,
                   {"SelectionDraws", vk::kStorageBuffer},
                   {"ChunkCellLowest", vk::kStorageBuffer},
                   {"TerrainHorizon", vk::kStorageBuffer}}),
-      finish_(context, "frame/terrain_select.comp", SelectSlots(), 0, {kFinish}) {
+      finish_(context, "frame/terrain_select.comp", SelectSlots(), 0, {kFinish}),
+      feedback_generations_(feedbacks, 0) {
   static_assert(sizeof(Node) == 80);
   std::memset(stamps_.mapped(), 0, stamps_.size());
+  for (uint32_t i = 0; i < feedbacks; ++i)
+    feedbacks_.emplace_back(context, vk::BufferCreateInfo{.size = kFeedbackStampsOffset + slots * sizeof(uint32_t),
+                                                    .usage = ::vk::BufferUsageFlagBits::eTransferDst,
+                                                    .host_visible = true});
 }
 
 GpuChunkSelection::Node& GpuChunkSelection::Change(uint32_t slot) {
@@ -141,7 +156,9 @@ void GpuChunkSelection::Remove(uint32_t slot) {
   Link(id, kNotBuilt);
 }
 
-void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodView& view) {
+void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodView& view, uint32_t feedback) {
+  if (feedback >= feedbacks_.size())
+    throw Error("terrain selection feedback", std::to_string(feedback), "below " + std::to_string(feedbacks_.size()));
   if (++generation_ == 0) ++generation_;  // stamps start at 0: no selection has drawn a slot
   SelectionView block{};
   for (size_t i = 0; i < view.planes.size(); ++i) block.planes[i] = glm::vec4(view.planes[i]);
@@ -194,14 +211,41 @@ void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodV
   vk::FullBarrier(cmd);
   finish_.Dispatch(cmd, slots, {kWorkgroupSize, 1, 1}, {kWorkgroupSize, 1, 1});
   vk::FullBarrier(cmd);
+  const ::vk::Buffer copy = feedbacks_[feedback].handle();
+  cmd.copyBuffer(draws_.handle(), copy, ::vk::BufferCopy{0, 0, sizeof(Header)});
+  cmd.copyBuffer(requests_.handle(), copy,
+                 ::vk::BufferCopy{0, kFeedbackRequestsOffset, std::min(kFedBackRequests * sizeof(glm::ivec4), requests_.size())});
+  cmd.copyBuffer(stamps_.handle(), copy, ::vk::BufferCopy{0, kFeedbackStampsOffset, slots_ * sizeof(uint32_t)});
+  vk::FullBarrier(cmd);
+  feedback_generations_[feedback] = generation_;
 }
 
 ::vk::DeviceSize GpuChunkSelection::per_vertex_draws_offset() const {
   return kDrawsOffset + slots_ * sizeof(::vk::DrawIndexedIndirectCommand);
 }
 
+GpuChunkSelection::Feedback GpuChunkSelection::ReadFeedback(uint32_t feedback) const {
+  const std::byte* copy = feedbacks_.at(feedback).mapped();
+  Header header;
+  std::memcpy(header.data(), copy, sizeof(header));
+  Feedback result{.generation = feedback_generations_[feedback]};
+  if (result.generation == 0) return result;
+  result.per_pixel = header[0];
+  result.per_vertex = header[4];
+  result.indices = header[5];
+  result.deferred = int(header[1]);
+  result.hidden = int(header[3]);
+  const auto* requests = reinterpret_cast<const glm::ivec4*>(copy + kFeedbackRequestsOffset);
+  for (uint32_t i = 0; i < std::min(header[2], kFedBackRequests); ++i)
+    result.requested.push_back({requests[i].x, requests[i].y, requests[i].z});
+  const auto* stamps = reinterpret_cast<const uint32_t*>(copy + kFeedbackStampsOffset);
+  for (uint32_t slot = 0; slot < slots_; ++slot)
+    if (stamps[slot] == result.generation) result.drawn_slots.push_back(slot);
+  return result;
+}
+
 GpuChunkSelection::Result GpuChunkSelection::Read() const {
-  std::array<uint32_t, 5> header;  // draws per pixel, deferred, requested, hidden, draws per vertex
+  Header header;
   std::memcpy(header.data(), draws_.mapped(), sizeof(header));
   const auto* requests = reinterpret_cast<const glm::ivec4*>(requests_.mapped());
   Result result{.per_pixel = header[0], .deferred = int(header[1]), .hidden = int(header[3])};

@@ -35,8 +35,10 @@ class GpuChunkSelection {
  public:
   // slots: how many chunks the tree holds (the chunk cache's slots); vertices_per_slot: where
   // slot s's vertices begin (s times it) in the vertex buffer the draws read; first_instance: the
-  // draws' first instance.
-  GpuChunkSelection(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot, uint32_t first_instance);
+  // draws' first instance; feedbacks: how many selections may be in flight at once, each with its
+  // own copy of what it tells the CPU (ReadFeedback).
+  GpuChunkSelection(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot, uint32_t first_instance,
+                    uint32_t feedbacks = 1);
 
   // The chunk `id`, built, is in `slot` (a free one) / is no longer there. It reads the froxels
   // per pixel while its bounds are within per_pixel_reads_within_m of the camera
@@ -46,9 +48,28 @@ class GpuChunkSelection {
   void Remove(uint32_t slot);
   std::optional<uint32_t> SlotOf(const terrain::ChunkId& id) const;
 
+  // Whether the tree changed since the last selection was recorded: if not, a selection of the
+  // same view draws what that one drew.
+  bool tree_changed() const { return !changed_nodes_.empty() || !inserted_.empty(); }
+  uint32_t generation() const { return generation_; }  // of the last selection recorded (0: none)
+
   // Records the selection of view's chunks (LodView::front_to_back is not read: the order is
-  // always front to back).
-  void Record(const vk::CommandBuffer& cmd, const terrain::LodView& view);
+  // always front to back), and the copy of its feedback (< feedbacks) for the CPU.
+  void Record(const vk::CommandBuffer& cmd, const terrain::LodView& view, uint32_t feedback = 0);
+
+  // What a selection tells the CPU, without the list of its chunks: copied into the feedback it was
+  // recorded with, so that it may be read once that selection completed whatever was recorded
+  // after it.
+  struct Feedback {
+    uint32_t generation = 0;  // which selection wrote it, later ones higher; 0: none yet
+    size_t per_pixel = 0, per_vertex = 0;  // chunks drawn, by where they read the froxels
+    size_t indices = 0;                    // of the chunks drawn, skirts included
+    int deferred = 0, hidden = 0;          // terrain::Selection's
+    std::vector<terrain::ChunkId> requested;  // the first kFedBackRequests children to build
+    std::vector<uint32_t> drawn_slots;        // the slots of the chunks drawn
+  };
+  static constexpr uint32_t kFedBackRequests = 1024;
+  Feedback ReadFeedback(uint32_t feedback) const;
 
   // What the last recorded selection wrote, once its commands have completed.
   struct Result {
@@ -61,9 +82,10 @@ class GpuChunkSelection {
   };
   Result Read() const;
 
-  // The draws, for vkCmdDrawIndexedIndirectCount, at most max_draws() in each list: per pixel,
-  // their count (uint32) at offset 0 and the VkDrawIndexedIndirectCommands from kDrawsOffset;
-  // per vertex, from kPerVertexCountOffset and per_vertex_draws_offset().
+  // The draws of the last selection recorded, for vkCmdDrawIndexedIndirectCount, at most
+  // max_draws() in each list: per pixel, their count (uint32) at offset 0 and the
+  // VkDrawIndexedIndirectCommands from kDrawsOffset; per vertex, from kPerVertexCountOffset and
+  // per_vertex_draws_offset().
   const vk::Buffer& draws() const { return draws_; }
   static constexpr ::vk::DeviceSize kDrawsOffset = 32, kPerVertexCountOffset = 16;
   ::vk::DeviceSize per_vertex_draws_offset() const;
@@ -89,6 +111,8 @@ class GpuChunkSelection {
   std::vector<uint32_t> changed_nodes_, inserted_;  // since the last selection recorded
   vk::Buffer tree_, cell_lowest_, view_, queues_, stamps_, keys_, draws_, requests_, occluder_groups_, horizon_;
   vk::ComputePipeline walk_, occluders_, finish_;
+  std::vector<uint32_t> feedback_generations_;
+  std::vector<vk::Buffer> feedbacks_;  // the draws' header, kFedBackRequests requests, the stamps
 };
 
 }  // namespace aerial

@@ -27,20 +27,24 @@ vk::Buffer IndexBuffer(const vk::Context& context) {
 }  // namespace
 
 TerrainChunkCache::TerrainChunkCache(const vk::Context& context, double planet_radius_m,
-                                     uint32_t capacity, uint32_t frames_in_flight, terrain::BuiltChunks* shared)
+                                     uint32_t capacity, uint32_t frames_in_flight, terrain::BuiltChunks* shared,
+                                     bool log_slot_changes)
     : planet_radius_m_(planet_radius_m),
       capacity_(capacity),
       frames_in_flight_(frames_in_flight),
       shared_(shared),
+      log_slot_changes_(log_slot_changes),
       vertices_(context, {.size = capacity * kSlotBytes,
                           .usage = ::vk::BufferUsageFlagBits::eVertexBuffer,
                           .host_visible = true}),
-      indices_(IndexBuffer(context)) {
+      indices_(IndexBuffer(context)),
+      id_in_slot_(capacity) {
   for (uint32_t slot = capacity; slot > 0; --slot) free_slots_.push_back(slot - 1);
 }
 
 void TerrainChunkCache::BeginFrame(double budget_ms) {
   ++frame_;
+  ReclaimEmptied();
   built_this_frame_ = 0;
   limited_ = budget_ms > 0.0;
   deadline_ = std::chrono::steady_clock::now() +
@@ -55,19 +59,55 @@ const terrain::ChunkInfo* TerrainChunkCache::Find(const ChunkId& id) {
   return &it->second.info;
 }
 
-// A free slot, or the slot of the chunk used longest ago if no frame in flight can still draw it.
-std::optional<uint32_t> TerrainChunkCache::TakeSlot() {
-  if (!free_slots_.empty()) {
-    uint32_t slot = free_slots_.back();
-    free_slots_.pop_back();
-    return slot;
+void TerrainChunkCache::Used(uint32_t slot) {
+  ChunkId id = id_in_slot_.at(slot);
+  auto it = chunks_.find(id);
+  if (it == chunks_.end() || it->second.slot != slot) return;
+  // Up to the first chunk already used this frame: those above it were found on the way to it.
+  while (it->second.last_used != frame_) {
+    it->second.last_used = frame_;
+    if (id.level == 0) return;
+    id = terrain::Parent(id);
+    it = chunks_.find(id);
+    if (it == chunks_.end()) return;
   }
-  auto oldest = std::min_element(chunks_.begin(), chunks_.end(), [](const auto& a, const auto& b) {
-    return a.second.last_used < b.second.last_used;
-  });
-  if (oldest == chunks_.end() || oldest->second.last_used + frames_in_flight_ >= frame_) return std::nullopt;
-  uint32_t slot = oldest->second.slot;
-  chunks_.erase(oldest);
+}
+
+// The slots emptied may be filled again once no frame recorded before can draw their chunks: at
+// once where only the CPU's selections draw (they draw only chunks they found, and no chunk found
+// by a frame in flight is emptied); with a log for a GPU's tree, after frames_in_flight frames.
+void TerrainChunkCache::ReclaimEmptied() {
+  const uint64_t delay = log_slot_changes_ ? frames_in_flight_ : 0;
+  size_t reclaimed = 0;
+  while (reclaimed < emptied_slots_.size() && emptied_slots_[reclaimed].first + delay <= frame_)
+    free_slots_.push_back(emptied_slots_[reclaimed++].second);
+  emptied_slots_.erase(emptied_slots_.begin(), emptied_slots_.begin() + ptrdiff_t(reclaimed));
+}
+
+// Empties the slots of the chunks used longest ago, a sixteenth of the pool at a time (one pass
+// over the pool for many slots), none that a frame in flight found.
+void TerrainChunkCache::EmptyLeastUsed() {
+  std::vector<std::pair<uint64_t, ChunkId>> unused;
+  for (const auto& [id, entry] : chunks_)
+    if (entry.last_used + frames_in_flight_ < frame_) unused.push_back({entry.last_used, id});
+  const size_t count = std::min(unused.size(), size_t(std::max(1u, capacity_ / 16)));
+  std::nth_element(unused.begin(), unused.begin() + ptrdiff_t(count), unused.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (size_t i = 0; i < count; ++i) {
+    auto it = chunks_.find(unused[i].second);
+    emptied_slots_.push_back({frame_, it->second.slot});
+    if (log_slot_changes_) slot_changes_.push_back({it->second.slot, it->first, std::nullopt});
+    chunks_.erase(it);
+  }
+  ReclaimEmptied();
+}
+
+// A free slot, if there is one or the pool has chunks to spare.
+std::optional<uint32_t> TerrainChunkCache::TakeSlot() {
+  if (free_slots_.empty()) EmptyLeastUsed();
+  if (free_slots_.empty()) return std::nullopt;
+  uint32_t slot = free_slots_.back();
+  free_slots_.pop_back();
   return slot;
 }
 
@@ -103,6 +143,8 @@ void TerrainChunkCache::Build(std::span<const ChunkId> ids) {
   for (size_t i = 0; i < work.size(); ++i) {
     if (infos[i]) {
       chunks_[work[i].first] = {*infos[i], work[i].second, frame_};
+      id_in_slot_[work[i].second] = work[i].first;
+      if (log_slot_changes_) slot_changes_.push_back({work[i].second, work[i].first, infos[i]});
       ++built_this_frame_;
     } else {
       free_slots_.push_back(work[i].second);

@@ -2,12 +2,15 @@
 // The terrain chunks on the GPU: a fixed pool of chunk-sized slots in one host-visible vertex
 // buffer, and the index buffer every chunk shares. Chunks are built on the CPU when the LOD
 // selection first asks for them (terrain/lod_selection.h), written into a free slot, and kept
-// until the pool is full; then the chunk used longest ago goes, but never one that a frame still
-// in flight may draw. Chunks come from a BuiltChunks shared with other renderers if given one.
+// until the pool is full; then the chunks used longest ago go. A slot emptied is filled again only
+// once every frame recorded before may have completed: a selection made on the GPU may draw any
+// chunk the tree held when it was recorded. Chunks come from a BuiltChunks shared with other
+// renderers if given one.
 #include <chrono>
 #include <optional>
 #include <span>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "aerial/terrain/built_chunks.h"
@@ -21,14 +24,27 @@ class TerrainChunkCache : public terrain::ChunkSource {
   // capacity: chunk slots (each kChunkVertices vertices); frames_in_flight: how many frames after
   // its last use a slot may still be read by the GPU; shared: where built chunks are found and kept
   // (null: each is built here).
+  // log_slot_changes: keep the slots filled and emptied for TakeSlotChanges.
   TerrainChunkCache(const vk::Context& context, double planet_radius_m, uint32_t capacity,
-                    uint32_t frames_in_flight, terrain::BuiltChunks* shared);
+                    uint32_t frames_in_flight, terrain::BuiltChunks* shared, bool log_slot_changes = false);
 
   // Starts a frame: building stops once budget_ms of building has been spent in it (0: no limit).
   void BeginFrame(double budget_ms);
 
   const terrain::ChunkInfo* Find(const terrain::ChunkId& id) override;
   void Build(std::span<const terrain::ChunkId> ids) override;
+  // The chunk in `slot`, and every chunk above it, was drawn by a selection made elsewhere (the
+  // GPU's): it counts as used this frame, as Find would have made it.
+  void Used(uint32_t slot);
+
+  // A slot filled with a chunk (info set) or emptied, in the order they happened.
+  struct SlotChange {
+    uint32_t slot;
+    terrain::ChunkId id;
+    std::optional<terrain::ChunkInfo> info;
+  };
+  // The slot changes since the last call (with log_slot_changes).
+  std::vector<SlotChange> TakeSlotChanges() { return std::exchange(slot_changes_, {}); }
 
   // The first vertex of a built chunk in vertices().
   int32_t VertexOffset(const terrain::ChunkId& id) const;
@@ -45,13 +61,19 @@ class TerrainChunkCache : public terrain::ChunkSource {
     uint64_t last_used;
   };
   std::optional<uint32_t> TakeSlot();
+  void EmptyLeastUsed();
+  void ReclaimEmptied();
 
   double planet_radius_m_;
   uint32_t capacity_, frames_in_flight_;
   terrain::BuiltChunks* shared_;
+  bool log_slot_changes_;
   vk::Buffer vertices_, indices_;
   std::unordered_map<terrain::ChunkId, Entry, terrain::ChunkIdHash> chunks_;
+  std::vector<terrain::ChunkId> id_in_slot_;
   std::vector<uint32_t> free_slots_;
+  std::vector<std::pair<uint64_t, uint32_t>> emptied_slots_;  // (frame emptied, slot), oldest first
+  std::vector<SlotChange> slot_changes_;
   uint64_t frame_ = 0;
   std::chrono::steady_clock::time_point deadline_;
   bool limited_ = false;
