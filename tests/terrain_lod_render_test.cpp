@@ -2,11 +2,13 @@
 // cracks, the render scale, and the sky-view table's cache.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 
 #include "aerial/render/frame_cache_policy.h"
 #include "aerial/render/renderer.h"
+#include "aerial/render/renderer_options.h"
 #include "aerial/scene.h"
 #include "aerial/scene/terrain.h"
 #include "aerial/validation/image_metrics.h"
@@ -112,20 +114,25 @@ TEST_F(LeanFrame, NoCracksBetweenLevels) {
   EXPECT_EQ(holes, 0u);
 }
 
-// Chunks that nearer terrain hides are left out, and nothing else: the picture is the same bit for
-// bit, at the default view and looking down from 2 km, where little is hidden.
-TEST_F(LeanFrame, OcclusionCullingLeavesOutOnlyHiddenChunks) {
+// The default view, where nearer terrain hides much, and looking down from 2 km, where little is.
+std::array<Scene, 2> DefaultViewAndFromAbove() {
   double R = FullTables().atmosphere().bottom_radius_m;
   Scene noon = BuildPreset("noon", R);
   Scene above = noon;
   above.camera.position = SurfacePoint(-1500.0, 9000.0, 2000.0 + TerrainHeightM(-1500.0, 9000.0), R);
   above.camera.pitch_deg = -55.0;
   above.camera.yaw_deg = 300.0;
-  for (const Scene* scene : {&noon, &above}) {
-    Renderer culled(FullTables(), *scene, {.width = kWidth, .height = kHeight});
-    Renderer all(FullTables(), *scene, {.width = kWidth, .height = kHeight, .terrain_occlusion_culling = false});
-    culled.Render(*scene);
-    all.Render(*scene);
+  return {noon, above};
+}
+
+// Chunks that nearer terrain hides are left out, and nothing else: the picture is the same bit for
+// bit, at the default view and looking down from 2 km, where little is hidden.
+TEST_F(LeanFrame, OcclusionCullingLeavesOutOnlyHiddenChunks) {
+  for (const Scene& scene : DefaultViewAndFromAbove()) {
+    Renderer culled(FullTables(), scene, {.width = kWidth, .height = kHeight});
+    Renderer all(FullTables(), scene, {.width = kWidth, .height = kHeight, .terrain_occlusion_culling = false});
+    culled.Render(scene);
+    all.Render(scene);
     std::printf("%d of %zu chunks hidden\n", culled.frame_info().hidden,
                 culled.frame_info().chunks + culled.frame_info().hidden);
     EXPECT_EQ(culled.frame_info().chunks + culled.frame_info().hidden, all.frame_info().chunks);
@@ -364,6 +371,57 @@ TEST_F(LeanFrame, OneOffFramesAreCompleteWhateverCameBefore) {
   streamed.Render(scene, kStream);
   EXPECT_FALSE(streamed.frame_info().sky_view_updated);
   EXPECT_NE(streamed.ReadOutput().rgba, fresh.ReadOutput().rgba);
+}
+
+// The terrain selected on the GPU (gpu_chunk_selection.h) draws the CPU selection's picture bit for
+// bit: the same chunks at the same levels wherever they are seen (its horizon hides others than
+// the CPU's screen horizon, only hidden ones). At the default view and looking down from 2 km.
+TEST_F(LeanFrame, TerrainSelectedOnTheGpuDrawsTheCpuSelectionsPicture) {
+  for (const Scene& scene : DefaultViewAndFromAbove()) {
+    RendererOptions cpu{{.width = kWidth, .height = kHeight}};
+    RendererOptions gpu = cpu;
+    gpu.terrain_selector = TerrainSelector::kGpu;
+    Renderer by_cpu(FullTables(), scene, cpu), by_gpu(FullTables(), scene, gpu);
+    by_cpu.Render(scene);
+    by_gpu.Render(scene);
+    EXPECT_EQ(by_gpu.ReadOutput().rgba, by_cpu.ReadOutput().rgba);
+    // Its counts are read back with the next frames, which select again while chunks enter the
+    // tree (the shadow casters' too). The two horizons hide about as much
+    // (GpuChunkSelection.LeavesOutOnlyChunksTheTerrainHides bounds the same ratio).
+    int frames = 1;
+    do {
+      by_gpu.Render(scene, kStream);
+    } while (++frames < 6 && by_gpu.frame_info().terrain_selected);
+    EXPECT_FALSE(by_gpu.frame_info().terrain_selected) << "the same view over the same tree is not selected again";
+    EXPECT_TRUE(by_gpu.frame_info().settled);
+    std::printf("chunks drawn: CPU %zu, GPU %zu, after %d frames\n", by_cpu.frame_info().chunks,
+                by_gpu.frame_info().chunks, frames);
+    EXPECT_GE(double(by_gpu.frame_info().chunks), 0.8 * double(by_cpu.frame_info().chunks));
+    EXPECT_LE(double(by_gpu.frame_info().chunks), 1.25 * double(by_cpu.frame_info().chunks));
+    EXPECT_EQ(by_gpu.ReadOutput().rgba, by_cpu.ReadOutput().rgba);
+  }
+}
+
+// Streamed, the GPU's selection asks for the chunks it lacks, the CPU builds them a frame later,
+// and once the view holds still the frame settles on the one-off frame of that view, bit for bit.
+TEST_F(LeanFrame, TerrainSelectedOnTheGpuSettlesOnTheOneOffFrame) {
+  Scene first = BuildPreset("noon", FullTables().atmosphere().bottom_radius_m);
+  Scene scene = first;
+  scene.camera.yaw_deg += 90.0;  // ground the first frame did not need
+  RendererOptions options{{.width = kWidth, .height = kHeight}};
+  options.terrain_selector = TerrainSelector::kGpu;
+  Renderer streamed(FullTables(), first, options);
+  streamed.Render(first, kStream);
+  streamed.Render(scene, kStream);
+  EXPECT_FALSE(streamed.frame_info().settled);
+  int frames = 2;
+  for (; frames < 10 && !streamed.frame_info().settled; ++frames) streamed.Render(scene, kStream);
+  std::printf("settled after %d frames, %d chunks built in the last\n", frames, streamed.frame_info().built);
+  EXPECT_TRUE(streamed.frame_info().settled);
+  EXPECT_EQ(streamed.frame_info().deferred, 0);
+  Renderer fresh(FullTables(), scene, options);
+  fresh.Render(scene);
+  EXPECT_EQ(streamed.ReadOutput().rgba, fresh.ReadOutput().rgba);
 }
 
 }  // namespace

@@ -36,13 +36,15 @@ struct DeviceHandoff {
 inline constexpr std::array<const char*, 1> kRequiredDeviceExtensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
 
 // The device features aerial uses: storage images written without a format in the shader (the
-// precompute), indirect draws of many commands each with its own first instance (the terrain's
-// chunks), dynamic rendering (raster passes) and host query reset (GPU timers).
+// precompute), indirect draws of many commands each with its own first instance, their count read
+// from a buffer (the terrain's chunks, selected on the CPU or the GPU), dynamic rendering (raster
+// passes) and host query reset (GPU timers).
 struct RequiredDeviceFeatures {
   VkPhysicalDeviceFeatures core{.multiDrawIndirect = VK_TRUE,
                                 .drawIndirectFirstInstance = VK_TRUE,
                                 .shaderStorageImageWriteWithoutFormat = VK_TRUE};
   VkPhysicalDeviceVulkan12Features vulkan12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
+                                            .drawIndirectCount = VK_TRUE,
                                             .hostQueryReset = VK_TRUE};
   VkPhysicalDeviceVulkan13Features vulkan13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
                                             .dynamicRendering = VK_TRUE};

@@ -96,6 +96,8 @@ std::vector<Configuration> AllConfigurations() {
        [](RendererOptions& o) { o.mode = aerial::AerialMode::kTableDifference; }},
       {"fine-mesh", "fixed fine terrain mesh", [](RendererOptions& o) { o.terrain = aerial::TerrainMode::kStaticMesh; }},
       {"no-occlusion", "no terrain occlusion culling", [](RendererOptions& o) { o.terrain_occlusion_culling = false; }},
+      {"gpu-selection", "terrain selected on the GPU",
+       [](RendererOptions& o) { o.terrain_selector = aerial::TerrainSelector::kGpu; }},
       {"no-froxel-reads", "without the surfaces' froxel reads",
        [](RendererOptions& o) { o.left_out_reads.froxels = true; }, Motion::kCamera, true},
       {"no-sun-visibility", "without the surfaces' sun visibility",

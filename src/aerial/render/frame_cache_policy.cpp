@@ -77,8 +77,8 @@ bool FroxelsReusable(const std::optional<FrameUniforms>& built_for, const FrameU
 }
 
 bool SunVisibilityReusable(const std::optional<SunVisibilityKey>& written_for, const FrameUniforms& frame,
-                           const std::vector<terrain::SelectedChunk>& chunks, bool shadow_map_updated) {
-  return written_for && !shadow_map_updated && written_for->chunks == chunks && SameFrame(written_for->frame, frame);
+                           uint64_t terrain, bool shadow_map_updated) {
+  return written_for && !shadow_map_updated && written_for->terrain == terrain && SameFrame(written_for->frame, frame);
 }
 
 bool SunVisibilityWorthCaching(bool first_frame, bool still_view) { return first_frame || still_view; }

@@ -90,12 +90,12 @@ bool FroxelsReusable(const std::optional<FrameUniforms>& built_for, const FrameU
 // What the frame that wrote it showed.
 struct SunVisibilityKey {
   FrameUniforms frame;
-  std::vector<terrain::SelectedChunk> chunks;
+  uint64_t terrain = 0;  // the renderer's count of the changes of the terrain chunks it draws
 };
 // A frame may read what the last caching frame wrote when it draws the same surfaces (its uniforms,
 // so the camera and the sun, and its terrain chunks are that frame's) under the same shadow map.
 bool SunVisibilityReusable(const std::optional<SunVisibilityKey>& written_for, const FrameUniforms& frame,
-                           const std::vector<terrain::SelectedChunk>& chunks, bool shadow_map_updated);
+                           uint64_t terrain, bool shadow_map_updated);
 // Whether a frame that looks the sun visibility up also writes it for the next frames: the write
 // is a second color target and a raster scope of its own, which only a next frame of the same
 // view reads. So a renderer's first frame writes it (a still image, or a view about to stay), and

@@ -158,14 +158,14 @@ TEST(FrameCachePolicy, FroxelsKeptForTheSameFrameUnderTheSameShadowMap) {
 }
 
 TEST(FrameCachePolicy, SunVisibilityReadBackOnlyForTheSameSurfacesUnderTheSameShadowMap) {
-  const SunVisibilityKey written{Frame(), Chunks(4)};
+  const SunVisibilityKey written{Frame(), 4};
   FrameUniforms moved = Frame();
   moved.camera_scene_position[2] += 1.0f;
-  EXPECT_FALSE(SunVisibilityReusable(std::nullopt, Frame(), Chunks(4), false)) << "none written yet";
-  EXPECT_TRUE(SunVisibilityReusable(written, Frame(), Chunks(4), false));
-  EXPECT_FALSE(SunVisibilityReusable(written, Frame(), Chunks(4), true)) << "the shadow map was redrawn";
-  EXPECT_FALSE(SunVisibilityReusable(written, Frame(), Chunks(5), false)) << "other terrain chunks";
-  EXPECT_FALSE(SunVisibilityReusable(written, moved, Chunks(4), false)) << "the camera moved";
+  EXPECT_FALSE(SunVisibilityReusable(std::nullopt, Frame(), 4, false)) << "none written yet";
+  EXPECT_TRUE(SunVisibilityReusable(written, Frame(), 4, false));
+  EXPECT_FALSE(SunVisibilityReusable(written, Frame(), 4, true)) << "the shadow map was redrawn";
+  EXPECT_FALSE(SunVisibilityReusable(written, Frame(), 5, false)) << "other terrain chunks";
+  EXPECT_FALSE(SunVisibilityReusable(written, moved, 4, false)) << "the camera moved";
 }
 
 TEST(FrameCachePolicy, SunVisibilityWrittenByFirstAndStillFramesOnly) {

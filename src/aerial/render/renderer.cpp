@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "aerial/core/format_number.h"
 #include "aerial/error.h"
@@ -34,6 +35,8 @@ int32_t PerPixel(AerialMode mode) {
 // Terrain chunk slots on the GPU: the default view at 720p draws a few hundred chunks and walks
 // through about as many coarser ones; the rest keeps chunks around for a camera that moves.
 constexpr uint32_t kTerrainChunkSlots = 8192;
+// The ground's draws are numbered as opaque.vert's kGroundDetailInstance: its albedo detail.
+constexpr uint32_t kGroundDetailInstance = 1;
 
 // Opaque and transparent meshes read the same resources: the atmosphere and frame blocks, the
 // transmittance and irradiance tables (lighting), the multiple density table (marched per-pixel
@@ -267,7 +270,15 @@ std::unique_ptr<TerrainChunkCache> TerrainCache(const vk::Context& context, cons
                                                 const RendererOptions& options, double R) {
   if (!scene.terrain || options.terrain != TerrainMode::kLod) return nullptr;
   return std::make_unique<TerrainChunkCache>(context, R, kTerrainChunkSlots, options.frames_in_flight,
-                                             options.share_built_terrain ? &terrain::BuiltChunks::Shared() : nullptr);
+                                             options.share_built_terrain ? &terrain::BuiltChunks::Shared() : nullptr,
+                                             options.terrain_selector == TerrainSelector::kGpu);
+}
+
+std::unique_ptr<GpuChunkSelection> GpuTerrainSelection(const vk::Context& context, const TerrainChunkCache* cache,
+                                                       const RendererOptions& options) {
+  if (!cache || options.terrain_selector != TerrainSelector::kGpu) return nullptr;
+  return std::make_unique<GpuChunkSelection>(context, kTerrainChunkSlots, terrain::kChunkVertices,
+                                             kGroundDetailInstance, options.frames_in_flight);
 }
 
 }  // namespace
@@ -314,6 +325,7 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       geometry_(tables.context(), scene, options.frames_in_flight,
                 ReferenceTerrain(scene, options, tables.atmosphere().bottom_radius_m)),
       terrain_(TerrainCache(tables.context(), scene, options, tables.atmosphere().bottom_radius_m)),
+      gpu_terrain_(GpuTerrainSelection(tables.context(), terrain_.get(), options)),
       froxels_(tables.context(), options.froxels),
       depth_(tables.context(), Target(options, vk::kDepth32f)),
       output_(tables.context(), Target(options, vk::kRgba32f)),
@@ -389,7 +401,8 @@ terrain::LodView Renderer::FrameLodView(const Scene& scene) const {
 
 // The chunks to draw, nearest first (terrain/lod_selection.h), built as needed; a still camera
 // keeps its last frame's (TerrainSelectionKept).
-void Renderer::SelectTerrain(const Scene& scene, bool complete) {
+void Renderer::SelectTerrain(const Scene& scene, bool complete, uint32_t slot) {
+  gpu_terrain_due_ = false;
   if (!terrain_ || !options_.passes.terrain) {
     terrain_chunks_.clear();
     return;
@@ -398,6 +411,10 @@ void Renderer::SelectTerrain(const Scene& scene, bool complete) {
   terrain_->BeginFrame(complete || frames_recorded_ == 0 ? 0.0 : options_.terrain_build_budget_ms);
   terrain::LodView view = FrameLodView(scene);
   view.occlusion_culling = options_.terrain_occlusion_culling;
+  if (gpu_terrain_) {
+    PrepareGpuTerrainSelection(view, complete || frames_recorded_ == 0, slot);
+    return;
+  }
   if (TerrainSelectionKept(view == terrain_selected_for_, terrain_deferred_ == 0)) {
     // Found again so that the cache, which evicts the chunk used longest ago, keeps them.
     for (const terrain::SelectedChunk& chunk : terrain_chunks_) terrain_->Find(chunk.id);
@@ -405,6 +422,7 @@ void Renderer::SelectTerrain(const Scene& scene, bool complete) {
     terrain_selected_for_ = view;
     frame_info_.terrain_selected = true;
     terrain::Selection selection = terrain::SelectChunks(view, *terrain_);
+    if (selection.chunks != terrain_chunks_) ++terrain_changes_;
     terrain_chunks_ = std::move(selection.chunks);
     terrain_hidden_ = selection.hidden;
     terrain_deferred_ = selection.deferred;
@@ -416,6 +434,66 @@ void Renderer::SelectTerrain(const Scene& scene, bool complete) {
   frame_info_.deferred = terrain_deferred_;
   frame_info_.hidden = terrain_hidden_;
   frame_info_.built = terrain_->built_this_frame();
+}
+
+void Renderer::PrepareGpuTerrainSelection(const terrain::LodView& view, bool complete, uint32_t slot) {
+  // The slot's last frame has completed, and with it the selection it recorded, if any.
+  if (GpuChunkSelection::Feedback feedback = gpu_terrain_->ReadFeedback(slot);
+      feedback.generation > gpu_terrain_feedback_.generation) {
+    for (uint32_t drawn : feedback.drawn_slots) terrain_->Used(drawn);
+    terrain_->Build(feedback.requested);
+    gpu_terrain_feedback_ = std::move(feedback);
+  }
+  int deferred = gpu_terrain_feedback_.deferred;
+  if (complete) {
+    // Every chunk the GPU may ask for: those of the CPU's rule without the horizon, which hides
+    // less than the GPU's (and could hide chunks that the GPU draws).
+    terrain::LodView unculled = view;
+    unculled.occlusion_culling = false;
+    deferred = terrain::SelectChunks(unculled, *terrain_).deferred;
+  }
+  for (TerrainChunkCache::SlotChange& change : terrain_->TakeSlotChanges()) {
+    if (change.info)
+      gpu_terrain_->Insert(change.slot, change.id, *change.info, PerPixelReadsWithinM(*change.info));
+    else
+      gpu_terrain_->Remove(change.slot);
+  }
+  // The same view over the same tree draws what the last selection drew.
+  gpu_terrain_due_ = !(view == terrain_selected_for_) || gpu_terrain_->tree_changed();
+  if (gpu_terrain_due_) {
+    terrain_selected_for_ = view;
+    ++terrain_changes_;
+    frame_info_.terrain_selected = true;
+  }
+  // What the last selection read back drew: a frame or more late.
+  frame_info_.chunks = gpu_terrain_feedback_.per_pixel + gpu_terrain_feedback_.per_vertex;
+  frame_info_.triangles = gpu_terrain_feedback_.indices / 3;
+  frame_info_.hidden = gpu_terrain_feedback_.hidden;
+  frame_info_.deferred = deferred;
+  frame_info_.built = terrain_->built_this_frame();
+  // Until the feedback of the selection that draws is read, it may ask for chunks.
+  terrain_feedback_pending_ =
+      !complete && (gpu_terrain_due_ || gpu_terrain_feedback_.generation != gpu_terrain_->generation());
+}
+
+void Renderer::RecordTerrainSelection(const vk::CommandBuffer& cmd, uint32_t slot) {
+  if (!gpu_terrain_due_) return;
+  vk::GpuTimer& timer = *timers_[slot];
+  timer.Begin(cmd, "terrain selection");
+  gpu_terrain_->Record(cmd, *terrain_selected_for_, slot);
+  timer.End(cmd);
+}
+
+double Renderer::PerPixelReadsWithinM(const terrain::ChunkInfo& info) const {
+  switch (options_.surface_froxel_reads) {
+    case SurfaceFroxelReads::kPerPixel: return std::numeric_limits<double>::infinity();
+    case SurfaceFroxelReads::kPerVertexWhereThin:
+      return aerial::PerPixelReadsWithinM(options_.froxels, MakeAirScales(tables_.atmosphere()), info.longest_edge_m,
+                                          info.largest_rise_m);
+    case SurfaceFroxelReads::kPerVertex:
+    case SurfaceFroxelReads::kFullScreenPass: break;
+  }
+  return 0.0;
 }
 
 // When the sky-view table is remade: frame_cache_policy.h (SkyViewReusable), and after a band of
@@ -619,8 +697,7 @@ void Renderer::BeginOpaqueCommands(vk::IndirectDraws& commands) const {
 RecordedDraws Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
                                       const std::vector<vk::Slot>& slots, std::optional<bool> pixel_reads,
                                       vk::IndirectDraws& commands) const {
-  // The ground's draws are numbered as opaque.vert's kGroundDetailInstance: its albedo detail.
-  constexpr uint32_t ground = 1;
+  constexpr uint32_t ground = kGroundDetailInstance;
   RecordedDraws recorded{.binds = 1};
   pipeline.Bind(cmd, slots);
   vk::BindMesh(cmd, geometry_.opaque_vertices(), geometry_.opaque_indices());
@@ -633,6 +710,20 @@ RecordedDraws Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::Gr
     }
     vk::SetCullMode(cmd, double_sided ? ::vk::CullModeFlagBits::eNone : ::vk::CullModeFlagBits::eBack);
     recorded.draws += commands.Draw(cmd);
+  }
+  if (gpu_terrain_ && options_.passes.terrain) {
+    vk::SetCullMode(cmd, ::vk::CullModeFlagBits::eBack);
+    vk::BindMesh(cmd, terrain_->vertices(), terrain_->indices());
+    const vk::Buffer& selected = gpu_terrain_->draws();
+    auto draw_list = [&](::vk::DeviceSize count_offset, ::vk::DeviceSize draws_offset) {
+      cmd.drawIndexedIndirectCount(selected.handle(), draws_offset, selected.handle(), count_offset,
+                                   gpu_terrain_->max_draws(), sizeof(::vk::DrawIndexedIndirectCommand));
+      ++recorded.draws;
+    };
+    if (pixel_reads.value_or(true)) draw_list(0, GpuChunkSelection::kDrawsOffset);
+    if (!pixel_reads.value_or(false))
+      draw_list(GpuChunkSelection::kPerVertexCountOffset, gpu_terrain_->per_vertex_draws_offset());
+    return recorded;
   }
   if (terrain_chunks_.empty()) return recorded;
   vk::SetCullMode(cmd, ::vk::CullModeFlagBits::eBack);
@@ -723,12 +814,13 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   frame_buffers_[slot].Write(std::as_bytes(std::span(&frame_uniforms_, 1)));
   geometry_.SortTransparent(scene.camera.position, slot);
   frame_info_ = {};
-  SelectTerrain(scene, complete);
+  SelectTerrain(scene, complete, slot);
   ChooseFroxelReads(scene.camera);
 
   // The previous frame's reads and writes of the shared images come before this frame's.
   vk::FullBarrier(cmd);
   timer.Reset(cmd);
+  RecordTerrainSelection(cmd, slot);
   timer.Begin(cmd, "shadow map");
   RecordShadowMap(cmd, scene, slot, complete);
   timer.End(cmd);
@@ -770,12 +862,12 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   RecordedDraws recorded;
   frame_info_.sun_visibility_cached =
       cacheable &&
-      SunVisibilityReusable(sun_visibility_key_, frame_uniforms_, terrain_chunks_, frame_info_.shadow_map_updated);
+      SunVisibilityReusable(sun_visibility_key_, frame_uniforms_, terrain_changes_, frame_info_.shadow_map_updated);
   const bool caching = !frame_info_.sun_visibility_cached && cacheable &&
                        SunVisibilityWorthCaching(frames_recorded_ == 0, still_view_);
   SunVisibilitySource source = SunVisibilitySource::kLookUp;
   if (caching) {
-    sun_visibility_key_ = SunVisibilityKey{frame_uniforms_, terrain_chunks_};
+    sun_visibility_key_ = SunVisibilityKey{frame_uniforms_, terrain_changes_};
     source = SunVisibilitySource::kLookUpAndCache;
   } else if (frame_info_.sun_visibility_cached) {
     source = SunVisibilitySource::kCache;
@@ -815,7 +907,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   const bool lattice_caught_up = options_.mode != AerialMode::kFroxel ||
                                  SkyViewLatticeCaughtUp(sky_view_lattice_keys_, MakeSkyViewKey(frame_uniforms_));
   const bool shadows_caught_up = !options_.shadows || ShadowTilesCaughtUp(shadow_cascades_, scene.sun.Direction());
-  frame_info_.settled = frame_info_.deferred == 0 && (!shadowed_terrain || shadow_selection_whole_) &&
+  frame_info_.settled = frame_info_.deferred == 0 && !terrain_feedback_pending_ && (!shadowed_terrain || shadow_selection_whole_) &&
                         lattice_caught_up && shadows_caught_up;
   ++frames_recorded_;
   last_slot_ = slot;

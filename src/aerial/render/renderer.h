@@ -21,6 +21,7 @@
 #include "aerial/precompute/atmosphere_tables.h"
 #include "aerial/render/frame_cache_policy.h"
 #include "aerial/render/frame_uniforms.h"
+#include "aerial/render/gpu_chunk_selection.h"
 #include "aerial/render/recorded_draws.h"
 #include "aerial/render/renderer_options.h"
 #include "aerial/render/scene_geometry.h"
@@ -122,7 +123,14 @@ class Renderer {
 
  private:
   terrain::LodView FrameLodView(const Scene& scene) const;
-  void SelectTerrain(const Scene& scene, bool complete);
+  void SelectTerrain(const Scene& scene, bool complete, uint32_t slot);
+  // The GPU's selection: builds what the last one read back asked for (a complete frame: all the
+  // view needs, found by the CPU's rule), passes the chunk slots' changes to its tree, and decides
+  // whether this frame selects again (RecordTerrainSelection) or draws what the last one chose.
+  void PrepareGpuTerrainSelection(const terrain::LodView& view, bool complete, uint32_t slot);
+  void RecordTerrainSelection(const vk::CommandBuffer& cmd, uint32_t slot);
+  // Within which distance a chunk reads the froxels per pixel (ChooseFroxelReads's rule).
+  double PerPixelReadsWithinM(const terrain::ChunkInfo& info) const;
   void RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t slot, bool exact);
   // Whether this frame remakes the sky-view table (stale, or a band of its lattice was remade); if
   // so, its key becomes this frame's.
@@ -156,6 +164,14 @@ class Renderer {
   RendererOptions options_;
   SceneGeometry geometry_;
   std::unique_ptr<TerrainChunkCache> terrain_;  // null without a terrain or with the fixed mesh
+  // With TerrainSelector::kGpu: the selection, which writes the terrain's draws (terrain_chunks_
+  // stays empty), whether this frame records one, and the last selection whose feedback was read.
+  std::unique_ptr<GpuChunkSelection> gpu_terrain_;
+  bool gpu_terrain_due_ = false;
+  GpuChunkSelection::Feedback gpu_terrain_feedback_;
+  bool terrain_feedback_pending_ = false;  // the selection that draws may still ask for chunks
+  // Counts the changes of the terrain chunks drawn: equal counts, the same chunks.
+  uint64_t terrain_changes_ = 0;
   // Front to back within each of two runs: the chunks that read the froxels per pixel first
   // (surface_reads.h), terrain_per_pixel_ of them, then those that read them per vertex.
   std::vector<terrain::SelectedChunk> terrain_chunks_;

@@ -11,6 +11,11 @@ namespace aerial {
 // against.
 enum class TerrainMode { kLod, kStaticMesh };
 
+// Where the terrain's chunks are selected (terrain/lod_selection.h's rule either way): on the CPU,
+// which then records a command per chunk drawn, or on the GPU (gpu_chunk_selection.h), which writes
+// the draws itself; the CPU then builds what the GPU asked for, a frame or more later.
+enum class TerrainSelector { kCpu, kGpu };
+
 // Passes a benchmark may leave out to measure what they cost (lavapipe's timestamps inside one
 // raster pass do not bracket its draws): every frame has all of them.
 struct FramePasses {
@@ -33,6 +38,7 @@ struct LeftOutReads {
 // RendererOptions{{.width = 96, .height = 54}, TerrainMode::kStaticMesh}.
 struct RendererOptions : RenderOptions {
   TerrainMode terrain = TerrainMode::kLod;
+  TerrainSelector terrain_selector = TerrainSelector::kCpu;
   FramePasses passes;
   SurfaceFroxelReads surface_froxel_reads = SurfaceFroxelReads::kPerVertexWhereThin;
   LeftOutReads left_out_reads;
