@@ -697,7 +697,6 @@ void Renderer::BeginOpaqueCommands(vk::IndirectDraws& commands) const {
 RecordedDraws Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::GraphicsPipeline& pipeline,
                                       const std::vector<vk::Slot>& slots, std::optional<bool> pixel_reads,
                                       vk::IndirectDraws& commands) const {
-  constexpr uint32_t ground = kGroundDetailInstance;
   RecordedDraws recorded{.binds = 1};
   pipeline.Bind(cmd, slots);
   vk::BindMesh(cmd, geometry_.opaque_vertices(), geometry_.opaque_indices());
@@ -706,7 +705,7 @@ RecordedDraws Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::Gr
     for (size_t i = 0; i < draws.size(); ++i) {
       if (draws[i].double_sided != double_sided) continue;
       if (pixel_reads && bool(mesh_reads_per_pixel_[i]) != *pixel_reads) continue;
-      commands.Add(draws[i].index_count, draws[i].first_index, 0, draws[i].ground ? ground : 0);
+      commands.Add(draws[i].index_count, draws[i].first_index, 0, draws[i].ground ? kGroundDetailInstance : 0);
     }
     vk::SetCullMode(cmd, double_sided ? ::vk::CullModeFlagBits::eNone : ::vk::CullModeFlagBits::eBack);
     recorded.draws += commands.Draw(cmd);
@@ -732,7 +731,7 @@ RecordedDraws Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::Gr
   const size_t end = pixel_reads.value_or(false) ? terrain_per_pixel_ : terrain_chunks_.size();
   for (size_t i = first; i < end; ++i) {
     terrain::IndexRange range = terrain::ChunkIndexRange(terrain_chunks_[i].skirts);
-    commands.Add(range.count, range.first, terrain_->VertexOffset(terrain_chunks_[i].id), ground);
+    commands.Add(range.count, range.first, terrain_->VertexOffset(terrain_chunks_[i].id), kGroundDetailInstance);
   }
   recorded.draws += commands.Draw(cmd);
   return recorded;
