@@ -38,7 +38,8 @@ TerrainChunkCache::TerrainChunkCache(const vk::Context& context, double planet_r
                           .usage = ::vk::BufferUsageFlagBits::eVertexBuffer,
                           .host_visible = true}),
       indices_(IndexBuffer(context)),
-      id_in_slot_(capacity) {
+      id_in_slot_(capacity),
+      drawn_frame_(capacity, 0) {
   for (uint32_t slot = capacity; slot > 0; --slot) free_slots_.push_back(slot - 1);
 }
 
@@ -59,17 +60,22 @@ const terrain::ChunkInfo* TerrainChunkCache::Find(const ChunkId& id) {
   return &it->second.info;
 }
 
-void TerrainChunkCache::Used(uint32_t slot) {
-  ChunkId id = id_in_slot_.at(slot);
-  auto it = chunks_.find(id);
-  if (it == chunks_.end() || it->second.slot != slot) return;
-  // Up to the first chunk already used this frame: those above it were found on the way to it.
-  while (it->second.last_used != frame_) {
-    it->second.last_used = frame_;
-    if (id.level == 0) return;
-    id = terrain::Parent(id);
-    it = chunks_.find(id);
-    if (it == chunks_.end()) return;
+// Thousands of slots a frame (a far shadow tile's casters): only noted here, by slot, and folded
+// into the chunks and their ancestors when slots are to be emptied (FoldDrawnSlots), which is rare.
+void TerrainChunkCache::Used(uint32_t slot) { drawn_frame_.at(slot) = frame_; }
+
+void TerrainChunkCache::FoldDrawnSlots() {
+  for (auto& [id, entry] : chunks_) {
+    const uint64_t drawn = drawn_frame_[entry.slot];
+    if (drawn <= entry.last_used) continue;
+    entry.last_used = drawn;
+    // Up to the first ancestor used as late: those above it are too.
+    for (ChunkId above = id; above.level > 0;) {
+      above = terrain::Parent(above);
+      auto it = chunks_.find(above);
+      if (it == chunks_.end() || it->second.last_used >= drawn) break;
+      it->second.last_used = drawn;
+    }
   }
 }
 
@@ -87,6 +93,7 @@ void TerrainChunkCache::ReclaimEmptied() {
 // Empties the slots of the chunks used longest ago, a sixteenth of the pool at a time (one pass
 // over the pool for many slots), none that a frame in flight found.
 void TerrainChunkCache::EmptyLeastUsed() {
+  FoldDrawnSlots();
   std::vector<std::pair<uint64_t, ChunkId>> unused;
   for (const auto& [id, entry] : chunks_)
     if (entry.last_used + frames_in_flight_ < frame_) unused.push_back({entry.last_used, id});

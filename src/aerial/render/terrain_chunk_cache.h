@@ -62,6 +62,7 @@ class TerrainChunkCache : public terrain::ChunkSource {
   };
   std::optional<uint32_t> TakeSlot();
   void EmptyLeastUsed();
+  void FoldDrawnSlots();  // Used's marks into the chunks' last_used, and their ancestors'
   void ReclaimEmptied();
 
   double planet_radius_m_;
@@ -71,6 +72,7 @@ class TerrainChunkCache : public terrain::ChunkSource {
   vk::Buffer vertices_, indices_;
   std::unordered_map<terrain::ChunkId, Entry, terrain::ChunkIdHash> chunks_;
   std::vector<terrain::ChunkId> id_in_slot_;
+  std::vector<uint64_t> drawn_frame_;  // per slot, the last frame Used marked it in (0: none)
   std::vector<uint32_t> free_slots_;
   std::vector<std::pair<uint64_t, uint32_t>> emptied_slots_;  // (frame emptied, slot), oldest first
   std::vector<SlotChange> slot_changes_;

@@ -1,0 +1,99 @@
+// The terrain chunk cache's eviction (src/aerial/render/terrain_chunk_cache.h) where a GPU's
+// selection draws: the chunks it drew (TerrainChunkCache::Used) and their ancestors, which its
+// walk from the root passes through, count as used; a slot emptied is filled again only after
+// the frames in flight.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <vector>
+
+#include "aerial/render/terrain_chunk_cache.h"
+#include "aerial/terrain/built_chunks.h"
+#include "gpu_fixture.h"
+
+namespace aerial::testing {
+namespace {
+
+using terrain::ChunkId;
+
+constexpr double kR = 6360e3;
+constexpr uint32_t kFramesInFlight = 2;
+
+class TerrainChunkCacheTest : public GpuTest {
+ protected:
+  void BeginFrame() {
+    cache_.BeginFrame(0.0);
+    ++frame_;
+  }
+  // The slots filled and emptied since the last call.
+  void TakeChanges() {
+    for (const TerrainChunkCache::SlotChange& change : cache_.TakeSlotChanges()) {
+      if (change.info) {
+        slot_of_[change.id] = change.slot;
+        if (auto it = emptied_in_frame_.find(change.slot); it != emptied_in_frame_.end()) {
+          EXPECT_GE(frame_, it->second + kFramesInFlight) << "slot " << change.slot << " filled again too soon";
+        }
+      } else {
+        emptied_.push_back(change.id);
+        emptied_in_frame_[change.slot] = frame_;
+      }
+    }
+  }
+  bool Emptied(const ChunkId& id) const { return std::find(emptied_.begin(), emptied_.end(), id) != emptied_.end(); }
+
+  // 21 chunks (the root and two levels) fill all but 3 of its 24 slots; it empties one at a time.
+  TerrainChunkCache cache_{SharedContext(), kR, 24, kFramesInFlight, &terrain::BuiltChunks::Shared(), true};
+  uint64_t frame_ = 0;
+  std::map<ChunkId, uint32_t> slot_of_;
+  std::map<uint32_t, uint64_t> emptied_in_frame_;
+  std::vector<ChunkId> emptied_;
+};
+
+std::vector<ChunkId> Level(int level) {
+  std::vector<ChunkId> ids;
+  for (int x = 0; x < (1 << level); ++x)
+    for (int y = 0; y < (1 << level); ++y) ids.push_back({level, x, y});
+  return ids;
+}
+
+// The GPU draws one chunk every frame and nothing is found on the CPU, while eight finer chunks
+// need five slots of the full pool: those emptied are chunks not used since they were built,
+// never the drawn one or its ancestors, and each is filled again only after the frames in flight.
+TEST_F(TerrainChunkCacheTest, KeepsTheChunksTheGpuDrewAndTheirAncestors) {
+  BeginFrame();
+  for (int level = 0; level <= 2; ++level) cache_.Build(Level(level));
+  TakeChanges();
+  ASSERT_EQ(slot_of_.size(), 21u);
+  // The drawn chunk and its ancestors are the least recently found: without the GPU's marks they
+  // would be the first emptied.
+  const ChunkId drawn{2, 1, 2};
+  const std::vector<ChunkId> kept = {drawn, terrain::Parent(drawn), ChunkId{}};
+  BeginFrame();
+  for (const auto& [id, slot] : slot_of_)
+    if (std::find(kept.begin(), kept.end(), id) == kept.end()) cache_.Find(id);
+  for (int frame = 0; frame < 5; ++frame) {
+    BeginFrame();
+    cache_.Used(slot_of_.at(drawn));
+  }
+  std::vector<ChunkId> finer;
+  for (const ChunkId& parent : {ChunkId{2, 0, 0}, ChunkId{2, 3, 3}})
+    for (const ChunkId& child : terrain::Children(parent)) finer.push_back(child);
+  int frames = 0;
+  for (; frames < 20 && !std::all_of(finer.begin(), finer.end(), [&](const ChunkId& id) { return slot_of_.contains(id); });
+       ++frames) {
+    BeginFrame();
+    cache_.Used(slot_of_.at(drawn));
+    cache_.Build(finer);
+    TakeChanges();
+  }
+  EXPECT_LT(frames, 20) << "the finer chunks were never all built";
+  // Five slots, and while emptied ones wait out the frames in flight, a frame that finds none
+  // free empties one more.
+  EXPECT_GE(emptied_.size(), 5u);
+  EXPECT_LE(emptied_.size(), 5u + kFramesInFlight);
+  for (const ChunkId& id : kept) EXPECT_FALSE(Emptied(id)) << id.level << "/" << id.x << "/" << id.y;
+}
+
+}  // namespace
+}  // namespace aerial::testing
