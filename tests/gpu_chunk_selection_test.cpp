@@ -107,6 +107,14 @@ class GpuChunkSelectionTest : public GpuTest {
   TreeChunks chunks_{gpu_, kPerPixelEverywhere};
 };
 
+// The camera's slack, the least over the refinement tests, is the CPU's within single precision: a
+// distance of up to 100 km (the terrain's radius) rounded to 8 mm, a few times over. Slacks are
+// metres to kilometres, so an error in which test is the least would show.
+void ExpectSlack(const GpuChunkSelection::Result& gpu, double cpu_slack_m) {
+  ASSERT_TRUE(std::isfinite(cpu_slack_m));
+  EXPECT_NEAR(gpu.camera_slack_m, cpu_slack_m, 0.05 + 1e-5 * cpu_slack_m);
+}
+
 std::string Describe(const std::vector<SelectedChunk>& chunks) {
   std::string text;
   for (const SelectedChunk& c : chunks)
@@ -135,6 +143,7 @@ TEST_F(GpuChunkSelectionTest, DrawsWhatTheCpuSelectionDraws) {
     EXPECT_EQ(gpu.chunks, cpu.chunks) << "GPU: " << Describe(gpu.chunks) << "\nCPU: " << Describe(cpu.chunks);
     EXPECT_TRUE(gpu.requested.empty());
     EXPECT_EQ(gpu.deferred, 0);
+    ExpectSlack(gpu, cpu.camera_slack_m);
   }
 }
 
@@ -159,6 +168,28 @@ TEST_F(GpuChunkSelectionTest, DrawsTheParentOfAChunkThatIsNotBuiltAndAsksForIt) 
   EXPECT_EQ(gpu.deferred, 1);
   EXPECT_TRUE(std::any_of(gpu.chunks.begin(), gpu.chunks.end(), [&](const SelectedChunk& c) { return c.id == parent; }));
   EXPECT_EQ(gpu.requested, std::vector<ChunkId>{id});
+}
+
+// A selection that compares reports whether the chunks it draws (their slots, fills and skirts)
+// differ from those the last one that compared drew: the first one, and after a drawn chunk went
+// (its parent drawn instead, its neighbours' skirts changed), but not the same view again. One
+// that is redrawn anyway reports a change; one that does not compare, none.
+TEST_F(GpuChunkSelectionTest, ReportsWhetherTheChunksItDrawsChanged) {
+  using Compare = GpuChunkSelection::Compare;
+  const terrain::LodView view = ViewOf("noon", 720, 4.0);
+  const ChunkId id = FinestDrawn(terrain::SelectChunks(view, chunks_));
+  auto changed = [&](Compare compare) {
+    SharedContext().Submit([&](const vk::CommandBuffer& cmd) { gpu_.Record(cmd, view, 0, compare); });
+    return gpu_.Read().changed;
+  };
+  EXPECT_TRUE(changed(Compare::kWithTheLast));
+  EXPECT_FALSE(changed(Compare::kWithTheLast));
+  chunks_.Drop(id);
+  EXPECT_TRUE(changed(Compare::kWithTheLast));
+  EXPECT_FALSE(changed(Compare::kWithTheLast));
+  EXPECT_TRUE(changed(Compare::kRedrawn));
+  EXPECT_FALSE(changed(Compare::kWithTheLast));
+  EXPECT_FALSE(changed(Compare::kNothing));
 }
 
 // Two selections recorded into one command buffer with a chunk dropped between them: the first
@@ -274,6 +305,7 @@ TEST_F(GpuChunkSelectionTest, SelectsEachCascadesCastersAsTheCpuDoes) {
       casters += cpu.chunks.size();
       EXPECT_EQ(by_id(gpu.chunks), cpu.chunks) << "GPU: " << Describe(by_id(gpu.chunks)) << "\nCPU: " << Describe(cpu.chunks);
       EXPECT_EQ(gpu.deferred, 0);
+      ExpectSlack(gpu, cpu.camera_slack_m);
     }
   }
   EXPECT_GT(casters, 1000u);

@@ -402,8 +402,10 @@ TEST_F(LeanFrame, TerrainSelectedOnTheGpuDrawsTheCpuSelectionsPicture) {
   }
 }
 
-// Streamed, the GPU's selection asks for the chunks it lacks, the CPU builds them a frame later,
-// and once the view holds still the frame settles on the one-off frame of that view, bit for bit.
+// Streamed, the GPU's selections (the frame's and the shadow casters') ask for the chunks they
+// lack, the CPU builds them once it reads that selection back (two frames later: a level of the
+// tree per round), and once the view holds still the frame settles on the one-off frame of that
+// view, bit for bit.
 TEST_F(LeanFrame, TerrainSelectedOnTheGpuSettlesOnTheOneOffFrame) {
   Scene first = BuildPreset("noon", FullTables().atmosphere().bottom_radius_m);
   Scene scene = first;
@@ -415,7 +417,7 @@ TEST_F(LeanFrame, TerrainSelectedOnTheGpuSettlesOnTheOneOffFrame) {
   streamed.Render(scene, kStream);
   EXPECT_FALSE(streamed.frame_info().settled);
   int frames = 2;
-  for (; frames < 10 && !streamed.frame_info().settled; ++frames) streamed.Render(scene, kStream);
+  for (; frames < 20 && !streamed.frame_info().settled; ++frames) streamed.Render(scene, kStream);
   std::printf("settled after %d frames, %d chunks built in the last\n", frames, streamed.frame_info().built);
   EXPECT_TRUE(streamed.frame_info().settled);
   EXPECT_EQ(streamed.frame_info().deferred, 0);

@@ -32,13 +32,16 @@ struct DeviceHandoff {
   bool pipeline_statistics = false;
 };
 
-// The device extensions aerial uses (descriptors are pushed, not allocated from pools).
-inline constexpr std::array<const char*, 1> kRequiredDeviceExtensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+// The device extensions aerial uses: descriptors are pushed, not allocated from pools; draws are
+// made conditional on a value the GPU wrote (a shadow map's tile redrawn only where the casters
+// the GPU selected changed).
+inline constexpr std::array<const char*, 2> kRequiredDeviceExtensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME,
+                                                                         VK_EXT_CONDITIONAL_RENDERING_EXTENSION_NAME};
 
 // The device features aerial uses: storage images written without a format in the shader (the
 // precompute), indirect draws of many commands each with its own first instance, their count read
 // from a buffer (the terrain's chunks, selected on the CPU or the GPU), dynamic rendering (raster
-// passes) and host query reset (GPU timers).
+// passes), host query reset (GPU timers) and conditional rendering.
 struct RequiredDeviceFeatures {
   VkPhysicalDeviceFeatures core{.multiDrawIndirect = VK_TRUE,
                                 .drawIndirectFirstInstance = VK_TRUE,
@@ -48,10 +51,13 @@ struct RequiredDeviceFeatures {
                                             .hostQueryReset = VK_TRUE};
   VkPhysicalDeviceVulkan13Features vulkan13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
                                             .dynamicRendering = VK_TRUE};
+  VkPhysicalDeviceConditionalRenderingFeaturesEXT conditional_rendering{
+      .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_CONDITIONAL_RENDERING_FEATURES_EXT, .conditionalRendering = VK_TRUE};
   // The chain for VkDeviceCreateInfo::pNext, with pEnabledFeatures = &core; next: the caller's
   // own chain, placed after it. Valid while this object lives and stays where it is.
   void* Chain(void* next = nullptr) {
-    vulkan13.pNext = next;
+    conditional_rendering.pNext = next;
+    vulkan13.pNext = &conditional_rendering;
     vulkan12.pNext = &vulkan13;
     return &vulkan12;
   }

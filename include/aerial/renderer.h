@@ -77,7 +77,9 @@ struct FrameInfo {
   bool sky_view_updated = false;  // the sky-view table was remade (the camera's r or mu_s moved)
   bool froxels_updated = false;   // the froxel volume was rebuilt (the camera or the sun moved)
   bool shadow_map_updated = false;  // the shadow map was redrawn (shadow_map.h), in part or whole
-  int shadow_tiles_redrawn = 0;     // of its kShadowCascades tiles, one per cascade, whole
+  // Of its kShadowCascades tiles, one per cascade, those redrawn whole; with the terrain's casters
+  // selected on the GPU, those whose casters it selected again, which it redraws only if they changed.
+  int shadow_tiles_redrawn = 0;
   // Tiles redrawn in part: only the texels where the terrain chunks they draw changed.
   int shadow_tile_regions_redrawn = 0;
   // Draw calls and pipeline binds (each with its descriptors pushed) that the frame's raster passes

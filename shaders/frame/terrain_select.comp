@@ -45,11 +45,18 @@ layout(std430, set = 0, binding = 5) coherent buffer SelectionDraws {
   uint hidden;           // chunks left out because nearer terrain hides them
   uint per_vertex_count;
   uint indices;          // of every chunk drawn, skirts included
-  uint header_end[2];
+  // How far the camera may move before a refinement test could come out otherwise (m, as float
+  // bits: terrain::Selection::camera_slack_m).
+  uint camera_slack;
+  // 1 where the chunks drawn (their slots, fills and skirts) differ from the last selection's
+  // (SelectionView::compare), else 0: a condition for the draws of an image that keeps what it drew.
+  uint changed;
   DrawCommand draws[];
 };
 // The children a refinement needs that are not built (level, x, y), for the CPU to build.
 layout(std430, set = 0, binding = 6) writeonly buffer SelectionRequests { ivec4 requests[]; };
+// Per slot, what the last comparing selection drew there: its fill and 1 + its skirt mask; 0 if none.
+layout(std430, set = 0, binding = 9) buffer TileContent { uvec2 content[]; };
 // The occluders' dispatch: a workgroup per kOccluderChunksPerGroup chunks the walk would draw
 // (VkDispatchIndirectCommand).
 layout(std430, set = 0, binding = 7) writeonly buffer OccluderDispatch { uvec3 occluder_groups; };
@@ -57,7 +64,7 @@ layout(std430, set = 0, binding = 7) writeonly buffer OccluderDispatch { uvec3 o
 layout(std430, set = 0, binding = 8) coherent buffer TerrainHorizon { uint horizon[]; };
 
 shared uint queue_size[2];
-shared uint draw_size, deferred_size, request_size, hidden_size, per_vertex_size, index_size;
+shared uint draw_size, deferred_size, request_size, hidden_size, per_vertex_size, index_size, slack_bits, changed_size;
 const uint kReadsPerVertex = 0x80000000u;  // the sort key's top bit
 
 bool IntersectsFrustum(vec3 lower, vec3 upper) {
@@ -77,6 +84,13 @@ float DistanceToBounds(ChunkNode node) {
 // Ulrich's test: the geometric error seen from the bounds' nearest point spans more pixels than
 // the bound (inside the bounds, any error does).
 bool TooCoarse(ChunkNode node) { return node.lower.w * camera.w > limits.x * DistanceToBounds(node); }
+
+// How far the camera may move before TooCoarse could change its answer (RefinementSlackM): the
+// distance from the bounds at which the error projects to the bound is error * pixels per radian
+// / bound.
+float RefinementSlack(ChunkNode node) {
+  return abs(DistanceToBounds(node) - node.lower.w * camera.w / limits.x);
+}
 
 // Where a child that is not built may lie: its footprint, widened for the spread, over its
 // parent's heights grown by the parent's error (EstimateChildBounds in lod_selection.cpp).
@@ -121,7 +135,13 @@ void Visit(int slot, int next_queue) {
   const bool inside = IntersectsFrustum(node.lower.xyz, node.upper.xyz);
   // A chunk's descendants lie within its bounds grown by its error.
   if (!inside && !IntersectsFrustum(node.lower.xyz - error, node.upper.xyz + error)) return;
-  if (error <= limits.y || node.id.x == kMaxChunkLevel || !TooCoarse(node)) {
+  if (error <= limits.y) {
+    if (inside) Draw(slot, node);
+    return;
+  }
+  // Non-negative floats order as their bits do.
+  if (node.id.x < kMaxChunkLevel && error > 0.0) atomicMin(slack_bits, floatBitsToUint(RefinementSlack(node)));
+  if (node.id.x == kMaxChunkLevel || !TooCoarse(node)) {
     if (inside) Draw(slot, node);
     return;
   }
@@ -220,6 +240,7 @@ void Walk(uint t) {
     draw_size = 0u;
     deferred_size = 0u;
     request_size = 0u;
+    slack_bits = 0x7f800000u;  // +infinity
     if (root.x == kNotBuilt) {
       Request(ivec3(0));
     } else {
@@ -242,6 +263,7 @@ void Walk(uint t) {
     hidden = 0u;
     // Children asked for beyond the list's length are asked for again by a later selection.
     requested = min(request_size, uint(requests.length()));
+    camera_slack = slack_bits;
     occluder_groups = uvec3(north.w != 0.0 ? (draw_size + kOccluderChunksPerGroup - 1u) / kOccluderChunksPerGroup : 0u, 1u, 1u);
   }
 }
@@ -293,8 +315,20 @@ void Finish(uint t) {
         DrawCommand(range.y, 1u, range.x, slot * root.z, uint(root.w));
     atomicAdd(index_size, range.y);
   }
+  if (compare.x != 0u) {
+    if (t == 0u) changed_size = compare.y;
+    Synchronize();
+    for (uint slot = t; slot < uint(stamps.length()); slot += kWorkgroupSize) {
+      uvec2 drawn_here = stamps[slot] == uint(root.y) ? uvec2(nodes[slot].id.w, SkirtMask(int(slot)) + 1u) : uvec2(0u);
+      if (content[slot] != drawn_here) {
+        content[slot] = drawn_here;
+        atomicOr(changed_size, 1u);
+      }
+    }
+  }
   Synchronize();
   if (t == 0u) {
+    changed = compare.x != 0u ? changed_size : 0u;
     draw_count = per_pixel;
     per_vertex_count = per_vertex_size;
     hidden = hidden_size;

@@ -12,7 +12,7 @@ struct ChunkNode {
   vec4 upper;         // the bounds' upper corner; w: the distance within which it reads the froxels per pixel
   ivec4 children;     // slots of the four children in terrain::Children order
   ivec4 neighbours;   // slots of the chunks of its level across its south, east, north, west sides
-  ivec4 id;           // level, x, y
+  ivec4 id;           // level, x, y; how many chunks the slot's tree had taken in before this one
 };
 layout(std430, set = 0, binding = 0) readonly buffer ChunkTree { ChunkNode nodes[]; };
 
@@ -24,6 +24,9 @@ layout(std140, set = 0, binding = 1) uniform SelectionView {
   vec4 vertical;              // xyz: the camera's local vertical; w: its height above the sea-level sphere (m)
   vec4 east;                  // xyz: a horizontal direction there, azimuth 0; w: the planet's radius (m)
   vec4 north;                 // xyz: the horizontal direction at azimuth 90 degrees; w: 1 to leave out hidden chunks
+  // x: 1 to compare the chunks drawn with the last selection's (TileContent); y: 1 to report them
+  // changed whatever they are.
+  uvec4 compare;
   uvec4 index_ranges[16];     // per skirt mask (terrain::ChunkIndexRange): first index, index count
 };
 

@@ -17,8 +17,9 @@ constexpr int32_t kNotBuilt = -1, kOutsideTerrain = -2;  // terrain_select.comp'
 constexpr uint32_t kWorkgroupSize = 256;
 constexpr uint32_t kHorizonEntries = 1024 * 48;  // terrain_horizon.glsl's kHorizonAzimuths * kHorizonBands
 constexpr int32_t kWalk = 0, kFinish = 1;         // terrain_select.comp's kStage
-// The draws' header: draws per pixel, deferred, requested, hidden, draws per vertex, indices.
-using Header = std::array<uint32_t, 6>;
+// The draws' header: draws per pixel, deferred, requested, hidden, draws per vertex, indices, the
+// camera's slack (float bits), changed.
+using Header = std::array<uint32_t, 8>;
 // A feedback's copy: the draws' header, the first requests, the stamps.
 constexpr ::vk::DeviceSize kFeedbackRequestsOffset = GpuChunkSelection::kDrawsOffset;
 constexpr ::vk::DeviceSize kFeedbackStampsOffset =
@@ -33,9 +34,10 @@ struct SelectionView {
   glm::vec4 vertical;  // w: the camera's height above the sea-level sphere (m)
   glm::vec4 east;      // w: the planet's radius (m)
   glm::vec4 north;     // w: 1 to leave out hidden chunks
+  glm::uvec4 compare;  // x: compare with the last selection's chunks; y: report them changed
   std::array<glm::uvec4, 16> index_ranges;
 };
-static_assert(sizeof(SelectionView) == 432);
+static_assert(sizeof(SelectionView) == 448);
 
 // The same level's chunks across a chunk's sides, in the order of the skirt mask's bits
 // (terrain::ChunkSide: south, east, north, west).
@@ -53,7 +55,7 @@ vk::SlotLayout SelectSlots() {
           {"SelectionQueues", vk::kStorageBuffer},   {"SelectionStamps", vk::kStorageBuffer},
           {"SelectionKeys", vk::kStorageBuffer},     {"SelectionDraws", vk::kStorageBuffer},
           {"SelectionRequests", vk::kStorageBuffer}, {"OccluderDispatch", vk::kStorageBuffer},
-          {"TerrainHorizon", vk::kStorageBuffer}};
+          {"TerrainHorizon", vk::kStorageBuffer},    {"TileContent", vk::kStorageBuffer}};
 }
 
 vk::Buffer StorageBuffer(const vk::Context& context, ::vk::DeviceSize size, bool host_visible,
@@ -62,8 +64,9 @@ vk::Buffer StorageBuffer(const vk::Context& context, ::vk::DeviceSize size, bool
                               .host_visible = host_visible});
 }
 
-}  // namespace
+double CameraSlackM(uint32_t bits) { return double(std::bit_cast<float>(bits)); }
 
+}  // namespace
 
 GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot,
                                      uint32_t first_instance, uint32_t feedbacks)
@@ -82,12 +85,14 @@ GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots,
       stamps_(StorageBuffer(context, slots * sizeof(uint32_t), true, ::vk::BufferUsageFlagBits::eTransferSrc)),
       keys_(StorageBuffer(context, std::bit_ceil(slots) * 2 * sizeof(uint32_t), false)),
       draws_(StorageBuffer(context, kDrawsOffset + 2 * slots * sizeof(::vk::DrawIndexedIndirectCommand), true,
-                           ::vk::BufferUsageFlagBits::eIndirectBuffer | ::vk::BufferUsageFlagBits::eTransferSrc)),
+                           ::vk::BufferUsageFlagBits::eIndirectBuffer | ::vk::BufferUsageFlagBits::eTransferSrc |
+                               ::vk::BufferUsageFlagBits::eConditionalRenderingEXT)),
       requests_(StorageBuffer(context, 4 * slots * sizeof(glm::ivec4), true, ::vk::BufferUsageFlagBits::eTransferSrc)),
       occluder_groups_(StorageBuffer(context, sizeof(::vk::DispatchIndirectCommand), false,
                                      ::vk::BufferUsageFlagBits::eIndirectBuffer)),
       horizon_(StorageBuffer(context, kHorizonEntries * sizeof(uint32_t), false,
                              ::vk::BufferUsageFlagBits::eTransferDst)),
+      content_(StorageBuffer(context, slots * sizeof(glm::uvec2), true)),
       walk_(context, "frame/terrain_select.comp", SelectSlots(), 0, {kWalk}),
       occluders_(context, "frame/terrain_occluders.comp",
                  {{"ChunkTree", vk::kStorageBuffer},
@@ -100,6 +105,7 @@ GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots,
       feedback_generations_(feedbacks, 0) {
   static_assert(sizeof(Node) == 80);
   std::memset(stamps_.mapped(), 0, stamps_.size());
+  std::memset(content_.mapped(), 0, content_.size());
   for (uint32_t i = 0; i < feedbacks; ++i)
     feedbacks_.emplace_back(context, vk::BufferCreateInfo{.size = kFeedbackStampsOffset + slots * sizeof(uint32_t),
                                                     .usage = ::vk::BufferUsageFlagBits::eTransferDst,
@@ -132,7 +138,7 @@ void GpuChunkSelection::Insert(uint32_t slot, const ChunkId& id, const terrain::
                                double per_pixel_reads_within_m) {
   Node node{.lower = glm::vec4(glm::vec3(info.bounds.min), float(info.geometric_error_m)),
             .upper = glm::vec4(glm::vec3(info.bounds.max), float(per_pixel_reads_within_m)),
-            .id = glm::ivec4(id.level, id.x, id.y, 0)};
+            .id = glm::ivec4(id.level, id.x, id.y, int32_t(fills_++))};
   const std::array<ChunkId, 4> children = terrain::Children(id);
   for (int k = 0; k < 4; ++k) {
     if (id.level == terrain::kMaxChunkLevel || !terrain::WithinTerrain(children[k]))
@@ -156,7 +162,8 @@ void GpuChunkSelection::Remove(uint32_t slot) {
   Link(id, kNotBuilt);
 }
 
-void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodView& view, uint32_t feedback) {
+void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodView& view, uint32_t feedback,
+                               Compare compare) {
   if (feedback >= feedbacks_.size())
     throw Error("terrain selection feedback", std::to_string(feedback), "below " + std::to_string(feedbacks_.size()));
   if (++generation_ == 0) ++generation_;  // stamps start at 0: no selection has drawn a slot
@@ -176,6 +183,7 @@ void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodV
   block.vertical = glm::vec4(glm::vec3(up), float(glm::length(view.camera - center) - view.planet_radius_m));
   block.east = glm::vec4(glm::vec3(east), float(view.planet_radius_m));
   block.north = glm::vec4(glm::vec3(glm::cross(up, east)), view.occlusion_culling ? 1.0f : 0.0f);
+  block.compare = glm::uvec4(compare != Compare::kNothing, compare == Compare::kRedrawn, 0, 0);
   for (uint32_t mask = 0; mask < 16; ++mask) {
     terrain::IndexRange range = terrain::ChunkIndexRange(mask);
     block.index_ranges[mask] = glm::uvec4(range.first, range.count, 0, 0);
@@ -197,7 +205,7 @@ void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodV
       vk::StorageBufferSlot{&tree_},      vk::UniformBufferSlot{&view_},      vk::StorageBufferSlot{&queues_},
       vk::StorageBufferSlot{&stamps_},    vk::StorageBufferSlot{&keys_},      vk::StorageBufferSlot{&draws_},
       vk::StorageBufferSlot{&requests_},  vk::StorageBufferSlot{&occluder_groups_},
-      vk::StorageBufferSlot{&horizon_}};
+      vk::StorageBufferSlot{&horizon_},   vk::StorageBufferSlot{&content_}};
   if (view.occlusion_culling) cmd.fillBuffer(horizon_.handle(), 0, VK_WHOLE_SIZE, 0u);  // nothing known
   vk::FullBarrier(cmd);
   walk_.Dispatch(cmd, slots, {kWorkgroupSize, 1, 1}, {kWorkgroupSize, 1, 1});
@@ -224,6 +232,22 @@ void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodV
   return kDrawsOffset + slots_ * sizeof(::vk::DrawIndexedIndirectCommand);
 }
 
+void GpuChunkSelection::BeginIfChanged(const vk::CommandBuffer& cmd) const {
+  cmd.beginConditionalRenderingEXT(::vk::ConditionalRenderingBeginInfoEXT{.buffer = draws_.handle(), .offset = kChangedOffset});
+}
+
+int GpuChunkSelection::Draw(const vk::CommandBuffer& cmd, std::optional<bool> per_pixel) const {
+  int draws = 0;
+  auto draw_list = [&](::vk::DeviceSize count_offset, ::vk::DeviceSize draws_offset) {
+    cmd.drawIndexedIndirectCount(draws_.handle(), draws_offset, draws_.handle(), count_offset, slots_,
+                                 sizeof(::vk::DrawIndexedIndirectCommand));
+    ++draws;
+  };
+  if (per_pixel.value_or(true)) draw_list(0, kDrawsOffset);
+  if (!per_pixel.value_or(false)) draw_list(kPerVertexCountOffset, per_vertex_draws_offset());
+  return draws;
+}
+
 GpuChunkSelection::Feedback GpuChunkSelection::ReadFeedback(uint32_t feedback) const {
   const std::byte* copy = feedbacks_.at(feedback).mapped();
   Header header;
@@ -235,6 +259,7 @@ GpuChunkSelection::Feedback GpuChunkSelection::ReadFeedback(uint32_t feedback) c
   result.indices = header[5];
   result.deferred = int(header[1]);
   result.hidden = int(header[3]);
+  result.camera_slack_m = CameraSlackM(header[6]);
   const auto* requests = reinterpret_cast<const glm::ivec4*>(copy + kFeedbackRequestsOffset);
   for (uint32_t i = 0; i < std::min(header[2], kFedBackRequests); ++i)
     result.requested.push_back({requests[i].x, requests[i].y, requests[i].z});
@@ -248,7 +273,11 @@ GpuChunkSelection::Result GpuChunkSelection::Read() const {
   Header header;
   std::memcpy(header.data(), draws_.mapped(), sizeof(header));
   const auto* requests = reinterpret_cast<const glm::ivec4*>(requests_.mapped());
-  Result result{.per_pixel = header[0], .deferred = int(header[1]), .hidden = int(header[3])};
+  Result result{.per_pixel = header[0],
+                .deferred = int(header[1]),
+                .hidden = int(header[3]),
+                .camera_slack_m = CameraSlackM(header[6]),
+                .changed = header[7] != 0};
   for (auto [offset, count] : {std::pair{kDrawsOffset, header[0]}, std::pair{per_vertex_draws_offset(), header[4]}}) {
     const auto* commands = reinterpret_cast<const ::vk::DrawIndexedIndirectCommand*>(draws_.mapped() + offset);
     for (uint32_t i = 0; i < count; ++i) {

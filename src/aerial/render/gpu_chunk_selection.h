@@ -53,9 +53,16 @@ class GpuChunkSelection {
   bool tree_changed() const { return !changed_nodes_.empty() || !inserted_.empty(); }
   uint32_t generation() const { return generation_; }  // of the last selection recorded (0: none)
 
+  // For a caller that draws into an image that keeps what it drew (a shadow map's tile): whether
+  // a selection compares the chunks it draws (their slots, which chunk fills each, their skirts)
+  // with those of the last selection that compared, to report them changed or not (BeginIfChanged),
+  // or reports them changed whatever they are (the caller redraws regardless).
+  enum class Compare { kNothing, kWithTheLast, kRedrawn };
+
   // Records the selection of view's chunks (LodView::front_to_back is not read: the order is
   // always front to back), and the copy of its feedback (< feedbacks) for the CPU.
-  void Record(const vk::CommandBuffer& cmd, const terrain::LodView& view, uint32_t feedback = 0);
+  void Record(const vk::CommandBuffer& cmd, const terrain::LodView& view, uint32_t feedback = 0,
+              Compare compare = Compare::kNothing);
 
   // What a selection tells the CPU, without the list of its chunks: copied into the feedback it was
   // recorded with, so that it may be read once that selection completed whatever was recorded
@@ -65,6 +72,7 @@ class GpuChunkSelection {
     size_t per_pixel = 0, per_vertex = 0;  // chunks drawn, by where they read the froxels
     size_t indices = 0;                    // of the chunks drawn, skirts included
     int deferred = 0, hidden = 0;          // terrain::Selection's
+    double camera_slack_m = 0.0;           // terrain::Selection's, in single precision
     std::vector<terrain::ChunkId> requested;  // the first kFedBackRequests children to build
     std::vector<uint32_t> drawn_slots;        // the slots of the chunks drawn
   };
@@ -79,19 +87,30 @@ class GpuChunkSelection {
     std::vector<terrain::ChunkId> requested;     // children to build
     int deferred = 0;                            // terrain::Selection::deferred
     int hidden = 0;                              // terrain::Selection::hidden
+    double camera_slack_m = 0.0;                 // terrain::Selection's, in single precision
+    bool changed = false;                        // what it reported (Compare)
   };
   Result Read() const;
 
-  // The draws of the last selection recorded, for vkCmdDrawIndexedIndirectCount, at most
-  // max_draws() in each list: per pixel, their count (uint32) at offset 0 and the
-  // VkDrawIndexedIndirectCommands from kDrawsOffset; per vertex, from kPerVertexCountOffset and
-  // per_vertex_draws_offset().
+  // Records the draws of the last selection recorded (one vkCmdDrawIndexedIndirectCount per
+  // list, with the index and vertex buffers the caller bound): the chunks that read the froxels
+  // per pixel (per_pixel true), per vertex (false), or both lists (nullopt). Returns the draws.
+  int Draw(const vk::CommandBuffer& cmd, std::optional<bool> per_pixel) const;
+  // Begins conditional rendering (VK_EXT_conditional_rendering) on whether the last selection,
+  // recorded with Compare::kWithTheLast or kRedrawn, reported its chunks changed.
+  void BeginIfChanged(const vk::CommandBuffer& cmd) const;
+
+  // The draws' buffer, for the tests: the count of the chunks that read per pixel (uint32) at
+  // offset 0, their VkDrawIndexedIndirectCommands from kDrawsOffset.
   const vk::Buffer& draws() const { return draws_; }
-  static constexpr ::vk::DeviceSize kDrawsOffset = 32, kPerVertexCountOffset = 16;
-  ::vk::DeviceSize per_vertex_draws_offset() const;
-  uint32_t max_draws() const { return slots_; }
+  static constexpr ::vk::DeviceSize kDrawsOffset = 32;
 
  private:
+  // Those that read per vertex: their count at kPerVertexCountOffset, their commands from
+  // per_vertex_draws_offset(); at most slots_ in each list.
+  static constexpr ::vk::DeviceSize kPerVertexCountOffset = 16, kChangedOffset = 28;
+  ::vk::DeviceSize per_vertex_draws_offset() const;
+
   // terrain_select.comp's ChunkNode (std430).
   struct Node {
     glm::vec4 lower;  // w: geometric error
@@ -103,6 +122,7 @@ class GpuChunkSelection {
 
   uint32_t slots_, vertices_per_slot_, first_instance_;
   uint32_t generation_ = 0;
+  uint32_t fills_ = 0;  // chunks inserted so far
   std::unordered_map<terrain::ChunkId, uint32_t, terrain::ChunkIdHash> slot_of_;
   std::vector<terrain::ChunkId> id_in_slot_;
   std::vector<Node> nodes_;
@@ -110,6 +130,7 @@ class GpuChunkSelection {
   std::vector<bool> node_changed_;
   std::vector<uint32_t> changed_nodes_, inserted_;  // since the last selection recorded
   vk::Buffer tree_, cell_lowest_, view_, queues_, stamps_, keys_, draws_, requests_, occluder_groups_, horizon_;
+  vk::Buffer content_;  // terrain_select.comp's TileContent
   vk::ComputePipeline walk_, occluders_, finish_;
   std::vector<uint32_t> feedback_generations_;
   std::vector<vk::Buffer> feedbacks_;  // the draws' header, kFedBackRequests requests, the stamps

@@ -281,6 +281,13 @@ std::unique_ptr<GpuChunkSelection> GpuTerrainSelection(const vk::Context& contex
                                              kGroundDetailInstance, options.frames_in_flight);
 }
 
+std::unique_ptr<GpuShadowCasters> GpuCasterSelection(const vk::Context& context, const TerrainChunkCache* cache,
+                                                     const RendererOptions& options) {
+  if (!cache || options.terrain_selector != TerrainSelector::kGpu || !options.shadows) return nullptr;
+  return std::make_unique<GpuShadowCasters>(context, kTerrainChunkSlots, terrain::kChunkVertices,
+                                            options.frames_in_flight);
+}
+
 }  // namespace
 
 FrameMemory EstimateFrameMemory(const RenderOptions& o) {
@@ -324,8 +331,9 @@ Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const Ren
       options_((options.Validate(), options)),
       geometry_(tables.context(), scene, options.frames_in_flight,
                 ReferenceTerrain(scene, options, tables.atmosphere().bottom_radius_m)),
-      terrain_(TerrainCache(tables.context(), scene, options, tables.atmosphere().bottom_radius_m)),
-      gpu_terrain_(GpuTerrainSelection(tables.context(), terrain_.get(), options)),
+      terrain_(TerrainCache(tables.context(), scene, options_, tables.atmosphere().bottom_radius_m)),
+      gpu_terrain_(GpuTerrainSelection(tables.context(), terrain_.get(), options_)),
+      gpu_casters_(GpuCasterSelection(tables.context(), terrain_.get(), options_)),
       froxels_(tables.context(), options.froxels),
       depth_(tables.context(), Target(options, vk::kDepth32f)),
       output_(tables.context(), Target(options, vk::kRgba32f)),
@@ -444,6 +452,7 @@ void Renderer::PrepareGpuTerrainSelection(const terrain::LodView& view, bool com
     terrain_->Build(feedback.requested);
     gpu_terrain_feedback_ = std::move(feedback);
   }
+  if (gpu_casters_) gpu_casters_->ReadFeedback(slot, *terrain_);
   int deferred = gpu_terrain_feedback_.deferred;
   if (complete) {
     // Every chunk the GPU may ask for: those of the CPU's rule without the horizon, which hides
@@ -452,12 +461,7 @@ void Renderer::PrepareGpuTerrainSelection(const terrain::LodView& view, bool com
     unculled.occlusion_culling = false;
     deferred = terrain::SelectChunks(unculled, *terrain_).deferred;
   }
-  for (TerrainChunkCache::SlotChange& change : terrain_->TakeSlotChanges()) {
-    if (change.info)
-      gpu_terrain_->Insert(change.slot, change.id, *change.info, PerPixelReadsWithinM(*change.info));
-    else
-      gpu_terrain_->Remove(change.slot);
-  }
+  ApplyTerrainSlotChanges();
   // The same view over the same tree draws what the last selection drew.
   gpu_terrain_due_ = !(view == terrain_selected_for_) || gpu_terrain_->tree_changed();
   if (gpu_terrain_due_) {
@@ -474,6 +478,17 @@ void Renderer::PrepareGpuTerrainSelection(const terrain::LodView& view, bool com
   // Until the feedback of the selection that draws is read, it may ask for chunks.
   terrain_feedback_pending_ =
       !complete && (gpu_terrain_due_ || gpu_terrain_feedback_.generation != gpu_terrain_->generation());
+}
+
+void Renderer::ApplyTerrainSlotChanges() {
+  const std::vector<TerrainChunkCache::SlotChange> changes = terrain_->TakeSlotChanges();
+  for (const TerrainChunkCache::SlotChange& change : changes) {
+    if (change.info)
+      gpu_terrain_->Insert(change.slot, change.id, *change.info, PerPixelReadsWithinM(*change.info));
+    else
+      gpu_terrain_->Remove(change.slot);
+  }
+  if (gpu_casters_) gpu_casters_->Apply(changes);
 }
 
 void Renderer::RecordTerrainSelection(const vk::CommandBuffer& cmd, uint32_t slot) {
@@ -578,8 +593,15 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
   for (int i = 0; i < kShadowCascades; ++i) {
     key.cascades[i] = shadow_cascades_[i];
     // A tile waiting for its turn to catch up with the sun is not redrawn for chunks that arrived.
-    if ((keep_sun[i] && !moved[i]) || CastersKept(key.selections[i], lod_view, shadow_cascades_[i], moved[i]))
+    if (keep_sun[i] && !moved[i]) continue;
+    if (gpu_casters_ && select_terrain) {
+      if (RecordGpuCasters(cmd, i, lod_view, slot, moved[i], exact)) {
+        redraw[i] = WholeTile(kShadowTileTexels);
+        ++frame_info_.shadow_tiles_redrawn;
+      }
       continue;
+    }
+    if (CastersKept(key.selections[i], lod_view, shadow_cascades_[i], moved[i])) continue;
     std::vector<terrain::SelectedChunk> casters;
     if (select_terrain) {
       CascadeCasters selected = SelectCascadeCasters(lod_view, shadow_cascades_[i], *terrain_);
@@ -602,15 +624,32 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
     key.casters[i] = std::move(casters);
   }
   shadow_selection_whole_ =
-      !select_terrain || std::all_of(key.selections.begin(), key.selections.end(),
-                                     [](const std::optional<CasterSelection>& s) { return s && s->whole; });
+      !select_terrain ||
+      (gpu_casters_ ? gpu_casters_->whole()
+                    : std::all_of(key.selections.begin(), key.selections.end(),
+                                  [](const std::optional<CasterSelection>& s) { return s && s->whole; }));
   if (frame_info_.shadow_tiles_redrawn + frame_info_.shadow_tile_regions_redrawn == 0) return;
   RecordedDraws recorded = shadow_map_.Record(cmd, shadow_cascades_, redraw, scene.camera.position, geometry_,
-                                              terrain_.get(), drawn, shadow_commands_[slot]);
+                                              terrain_.get(), drawn, select_terrain ? gpu_casters_.get() : nullptr,
+                                              shadow_commands_[slot]);
   frame_info_.draws += recorded.draws;
   frame_info_.draw_binds += recorded.binds;
   vk::FullBarrier(cmd);  // the froxel pass and the surfaces read it
   frame_info_.shadow_map_updated = true;
+}
+
+// An exact frame selects every tile's casters again, over every chunk the CPU's rule would draw,
+// built first: the GPU then asks for none.
+bool Renderer::RecordGpuCasters(const vk::CommandBuffer& cmd, int cascade, const terrain::LodView& lod_view,
+                                uint32_t slot, bool moved, bool exact) {
+  const ShadowCascade& now = shadow_cascades_[cascade];
+  if (!exact && gpu_casters_->Kept(cascade, lod_view, now, moved)) return false;
+  if (exact) {
+    SelectCascadeCasters(lod_view, now, *terrain_);
+    ApplyTerrainSlotChanges();
+  }
+  gpu_casters_->Record(cmd, cascade, lod_view, now, slot, moved || exact);
+  return true;
 }
 
 // The marched per-pixel path takes the mesh passes' variant for a high sun where the sun is high
@@ -713,15 +752,7 @@ RecordedDraws Renderer::DrawOpaqueRun(const vk::CommandBuffer& cmd, const vk::Gr
   if (gpu_terrain_ && options_.passes.terrain) {
     vk::SetCullMode(cmd, ::vk::CullModeFlagBits::eBack);
     vk::BindMesh(cmd, terrain_->vertices(), terrain_->indices());
-    const vk::Buffer& selected = gpu_terrain_->draws();
-    auto draw_list = [&](::vk::DeviceSize count_offset, ::vk::DeviceSize draws_offset) {
-      cmd.drawIndexedIndirectCount(selected.handle(), draws_offset, selected.handle(), count_offset,
-                                   gpu_terrain_->max_draws(), sizeof(::vk::DrawIndexedIndirectCommand));
-      ++recorded.draws;
-    };
-    if (pixel_reads.value_or(true)) draw_list(0, GpuChunkSelection::kDrawsOffset);
-    if (!pixel_reads.value_or(false))
-      draw_list(GpuChunkSelection::kPerVertexCountOffset, gpu_terrain_->per_vertex_draws_offset());
+    recorded.draws += gpu_terrain_->Draw(cmd, pixel_reads);
     return recorded;
   }
   if (terrain_chunks_.empty()) return recorded;
@@ -821,7 +852,7 @@ void Renderer::Record(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t
   timer.Reset(cmd);
   RecordTerrainSelection(cmd, slot);
   timer.Begin(cmd, "shadow map");
-  RecordShadowMap(cmd, scene, slot, complete);
+  RecordShadowMap(cmd, scene, slot, complete || frames_recorded_ == 0);  // the first frame builds all it needs
   timer.End(cmd);
   ShadowUniforms shadow =
       MakeShadowUniforms(shadow_cascades_, scene.sun.Direction(), scene.camera, casters_, options_.shadows);

@@ -124,14 +124,20 @@ class Renderer {
  private:
   terrain::LodView FrameLodView(const Scene& scene) const;
   void SelectTerrain(const Scene& scene, bool complete, uint32_t slot);
-  // The GPU's selection: builds what the last one read back asked for (a complete frame: all the
-  // view needs, found by the CPU's rule), passes the chunk slots' changes to its tree, and decides
+  // The GPU's selection: builds what the last ones read back asked for (the frame's and the
+  // shadow casters'; a complete frame: all the view needs, found by the CPU's rule), passes the
+  // chunk slots' changes to the trees (ApplyTerrainSlotChanges), and decides
   // whether this frame selects again (RecordTerrainSelection) or draws what the last one chose.
   void PrepareGpuTerrainSelection(const terrain::LodView& view, bool complete, uint32_t slot);
   void RecordTerrainSelection(const vk::CommandBuffer& cmd, uint32_t slot);
+  void ApplyTerrainSlotChanges();
   // Within which distance a chunk reads the froxels per pixel (ChooseFroxelReads's rule).
   double PerPixelReadsWithinM(const terrain::ChunkInfo& info) const;
   void RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene, uint32_t slot, bool exact);
+  // With the GPU's caster selection: whether the tile of `cascade` is redrawn, its casters selected
+  // again (gpu_shadow_casters.h); moved: its window moved.
+  bool RecordGpuCasters(const vk::CommandBuffer& cmd, int cascade, const terrain::LodView& lod_view, uint32_t slot,
+                        bool moved, bool exact);
   // Whether this frame remakes the sky-view table (stale, or a band of its lattice was remade); if
   // so, its key becomes this frame's.
   bool SkyViewStale(bool exact, bool lattice_remade);
@@ -167,6 +173,7 @@ class Renderer {
   // With TerrainSelector::kGpu: the selection, which writes the terrain's draws (terrain_chunks_
   // stays empty), whether this frame records one, and the last selection whose feedback was read.
   std::unique_ptr<GpuChunkSelection> gpu_terrain_;
+  std::unique_ptr<GpuShadowCasters> gpu_casters_;  // with it and the shadows: the tiles' casters
   bool gpu_terrain_due_ = false;
   GpuChunkSelection::Feedback gpu_terrain_feedback_;
   bool terrain_feedback_pending_ = false;  // the selection that draws may still ask for chunks

@@ -58,11 +58,14 @@ RecordedDraws ShadowMap::Record(const vk::CommandBuffer& cmd, const ShadowCascad
                                 const std::array<std::optional<TileTexels>, kShadowCascades>& redraw,
                                 const glm::dvec3& camera_position, const SceneGeometry& geometry,
                                 const TerrainChunkCache* terrain, const ShadowTerrain& chunks,
-                                vk::IndirectDraws& commands) const {
+                                const GpuShadowCasters* gpu_casters, vk::IndirectDraws& commands) const {
   // One scope for all tiles (each scope costs a pass over the whole atlas on a CPU rasterizer):
-  // cleared whole when every tile is redrawn whole, else loaded with the redrawn texels cleared.
+  // cleared whole when every tile is redrawn whole for sure, else loaded with the redrawn texels
+  // cleared.
   const TileTexels whole = WholeTile(kShadowTileTexels);
-  const bool all = std::all_of(redraw.begin(), redraw.end(), [&](const auto& r) { return r == whole; });
+  auto if_changed = [&](int i) { return gpu_casters && gpu_casters->IfChanged(i); };
+  bool all = true;
+  for (int i = 0; i < kShadowCascades; ++i) all = all && redraw[i] == whole && !if_changed(i);
   size_t chunk_count = 0;
   for (int i = 0; i < kShadowCascades; ++i)
     if (redraw[i]) chunk_count += chunks[i].size();
@@ -76,6 +79,8 @@ RecordedDraws ShadowMap::Record(const vk::CommandBuffer& cmd, const ShadowCascad
                             (i / kShadowAtlasTilesPerRow) * kShadowTileTexels);
     const glm::ivec2 from = corner + redraw[i]->min, size = redraw[i]->max - redraw[i]->min;
     const ::vk::Rect2D texels{{from.x, from.y}, {uint32_t(size.x), uint32_t(size.y)}};
+    // The clear and the draws, where the GPU decides, only if the casters it selected changed.
+    if (if_changed(i)) gpu_casters->BeginIfChanged(cmd, i);
     if (!all) vk::ClearDepth(cmd, texels, 0.0f);
     vk::SetViewport(cmd, tile, {corner.x, corner.y});
     vk::SetScissor(cmd, texels);
@@ -90,14 +95,20 @@ RecordedDraws ShadowMap::Record(const vk::CommandBuffer& cmd, const ShadowCascad
       vk::DrawIndexed(cmd, geometry.opaque_index_count());
       ++recorded.draws;
     }
-    if (!terrain || chunks[i].empty()) continue;
-    vk::SetCullMode(cmd, kTerrainTurnedAwayFromTheSun);
-    vk::BindMesh(cmd, terrain->vertices(), terrain->indices());
-    for (const terrain::SelectedChunk& chunk : chunks[i]) {
-      terrain::IndexRange range = terrain::ChunkIndexRange(chunk.skirts);
-      commands.Add(range.count, range.first, terrain->VertexOffset(chunk.id), 0);
+    if (terrain && (gpu_casters || !chunks[i].empty())) {
+      vk::SetCullMode(cmd, kTerrainTurnedAwayFromTheSun);
+      vk::BindMesh(cmd, terrain->vertices(), terrain->indices());
+      if (gpu_casters) {
+        recorded.draws += gpu_casters->Draw(cmd, i);
+      } else {
+        for (const terrain::SelectedChunk& chunk : chunks[i]) {
+          terrain::IndexRange range = terrain::ChunkIndexRange(chunk.skirts);
+          commands.Add(range.count, range.first, terrain->VertexOffset(chunk.id), 0);
+        }
+        recorded.draws += commands.Draw(cmd);
+      }
     }
-    recorded.draws += commands.Draw(cmd);
+    if (if_changed(i)) cmd.endConditionalRenderingEXT();
   }
   return recorded;
 }

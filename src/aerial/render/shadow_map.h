@@ -13,6 +13,7 @@
 // (shadow_tile_region.h). A still camera redraws nothing, a moving one a tile now and then.
 #include <cstdint>
 
+#include "aerial/render/gpu_shadow_casters.h"
 #include "aerial/render/recorded_draws.h"
 #include "aerial/render/scene_geometry.h"
 #include "aerial/render/shadow_cascades.h"
@@ -39,13 +40,15 @@ class ShadowMap {
 
   // Clears the texels of each tile in `redraw` (nullopt: kept; the whole tile, or the region where
   // its casters changed: shadow_tile_region.h) and draws its casters there: the scene's opaque
-  // meshes (both faces: a mesh open to the sun still shades what is behind it) and `chunks`, the
-  // terrain chunks that reach the texels, one indirect draw per tile from `commands` (the frame
-  // slot's). Other texels keep what they hold. Returns what it recorded.
+  // meshes (both faces: a mesh open to the sun still shades what is behind it) and the terrain
+  // chunks that reach the texels: `chunks`, one indirect draw per tile from `commands` (the frame
+  // slot's), or, with gpu_casters, the draws of the tile's casters that the GPU selected. Other
+  // texels keep what they hold. Returns what it recorded.
   RecordedDraws Record(const vk::CommandBuffer& cmd, const ShadowCascades& cascades,
                        const std::array<std::optional<TileTexels>, kShadowCascades>& redraw,
                        const glm::dvec3& camera_position, const SceneGeometry& geometry,
-                       const TerrainChunkCache* terrain, const ShadowTerrain& chunks, vk::IndirectDraws& commands) const;
+                       const TerrainChunkCache* terrain, const ShadowTerrain& chunks,
+                       const GpuShadowCasters* gpu_casters, vk::IndirectDraws& commands) const;
 
   const vk::Image& atlas() const { return atlas_; }
   // The atlas with its comparing sampler, as the shaders bind it (shadow_map in shadow.glsl).
