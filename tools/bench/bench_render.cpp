@@ -98,6 +98,8 @@ std::vector<Configuration> AllConfigurations() {
       {"no-occlusion", "no terrain occlusion culling", [](RendererOptions& o) { o.terrain_occlusion_culling = false; }},
       {"gpu-selection", "terrain selected on the GPU",
        [](RendererOptions& o) { o.terrain_selector = aerial::TerrainSelector::kGpu; }},
+      {"cpu-selection", "terrain selected on the CPU",
+       [](RendererOptions& o) { o.terrain_selector = aerial::TerrainSelector::kCpu; }},
       {"no-froxel-reads", "without the surfaces' froxel reads",
        [](RendererOptions& o) { o.left_out_reads.froxels = true; }, Motion::kCamera, true},
       {"no-sun-visibility", "without the surfaces' sun visibility",

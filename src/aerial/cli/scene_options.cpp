@@ -116,6 +116,10 @@ void FrameOptions::AddTo(CLI::App& command, const std::string& size_help) {
                      "Terrain: lod (level of detail following the camera, default) or mesh (the fixed "
                      "294K-triangle reference mesh)")
       ->check(CLI::IsMember({"lod", "mesh"}));
+  command.add_option("--terrain-selection", terrain_selection,
+                     "Where the terrain's chunks and shadow casters are selected: auto (on the GPU, on the "
+                     "CPU on a CPU device such as lavapipe; default), cpu or gpu")
+      ->check(CLI::IsMember({"auto", "cpu", "gpu"}));
   command.add_option("--terrain-error-px", terrain_error_px,
                      "Terrain level of detail: largest height error on screen, in pixels at 720 rows "
                      "or more (0.25 to 64)");
@@ -169,6 +173,9 @@ RendererOptions FrameOptions::MakeRenderOptions() const {
                                                                 : SurfaceFroxelReads::kPerVertexWhereThin;
   render.render_scale = render_scale;
   render.terrain = terrain == "mesh" ? TerrainMode::kStaticMesh : TerrainMode::kLod;
+  render.terrain_selector = terrain_selection == "cpu"   ? TerrainSelector::kCpu
+                            : terrain_selection == "gpu" ? TerrainSelector::kGpu
+                                                         : TerrainSelector::kAuto;
   render.terrain_error_px = terrain_error_px;
   render.shadows = ParseShadows(shadows);
   render.Validate();

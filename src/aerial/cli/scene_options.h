@@ -61,12 +61,14 @@ struct FrameOptions {
   std::string froxel_reads = "auto";
   double render_scale = 1.0;
   std::string terrain = "lod";
+  std::string terrain_selection = "auto";
   double terrain_error_px = kDefaultTerrainErrorPx;
   std::string shadows = "on";
   std::string white_balance = "on";
 
   // The froxel options, --width/--height (size_help: what they size, "Image"), --exposure,
-  // --aerial, --froxel-reads, --render-scale, --terrain, --terrain-error-px, --shadows and --white-balance.
+  // --aerial, --froxel-reads, --render-scale, --terrain, --terrain-selection, --terrain-error-px,
+  // --shadows and --white-balance.
   void AddTo(CLI::App& command, const std::string& size_help);
   RendererOptions MakeRenderOptions() const;  // validated
   Exposure MakeExposure() const;            // validated

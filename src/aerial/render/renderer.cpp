@@ -274,6 +274,15 @@ std::unique_ptr<TerrainChunkCache> TerrainCache(const vk::Context& context, cons
                                              options.terrain_selector == TerrainSelector::kGpu);
 }
 
+// The options with TerrainSelector::kAuto resolved for the device.
+RendererOptions WithTerrainSelector(const vk::Context& context, RendererOptions options) {
+  if (options.terrain_selector == TerrainSelector::kAuto)
+    options.terrain_selector = context.physical_device().getProperties().deviceType == ::vk::PhysicalDeviceType::eCpu
+                                   ? TerrainSelector::kCpu
+                                   : TerrainSelector::kGpu;
+  return options;
+}
+
 std::unique_ptr<GpuChunkSelection> GpuTerrainSelection(const vk::Context& context, const TerrainChunkCache* cache,
                                                        const RendererOptions& options) {
   if (!cache || options.terrain_selector != TerrainSelector::kGpu) return nullptr;
@@ -328,7 +337,7 @@ int RenderOptions::render_height() const { return std::max(1, int(std::lround(he
 
 Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const RendererOptions& options)
     : tables_(tables),
-      options_((options.Validate(), options)),
+      options_(WithTerrainSelector(tables.context(), (options.Validate(), options))),
       geometry_(tables.context(), scene, options.frames_in_flight,
                 ReferenceTerrain(scene, options, tables.atmosphere().bottom_radius_m)),
       terrain_(TerrainCache(tables.context(), scene, options_, tables.atmosphere().bottom_radius_m)),

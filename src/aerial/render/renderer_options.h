@@ -11,10 +11,13 @@ namespace aerial {
 // against.
 enum class TerrainMode { kLod, kStaticMesh };
 
-// Where the terrain's chunks are selected (terrain/lod_selection.h's rule either way): on the CPU,
-// which then records a command per chunk drawn, or on the GPU (gpu_chunk_selection.h), which writes
-// the draws itself; the CPU then builds what the GPU asked for, a frame or more later.
-enum class TerrainSelector { kCpu, kGpu };
+// Where the terrain's chunks, the frame's and the shadow casters', are selected
+// (terrain/lod_selection.h's rule either way): on the CPU, which then records a command per chunk
+// drawn, or on the GPU (gpu_chunk_selection.h, gpu_shadow_casters.h), which writes the draws
+// itself; the CPU then builds what the GPU asked for, a frame or more later. kAuto: on the GPU,
+// except on a CPU device (lavapipe), where its passes cost the frame more than they spare the
+// CPU (docs/speed.md).
+enum class TerrainSelector { kAuto, kCpu, kGpu };
 
 // Passes a benchmark may leave out to measure what they cost (lavapipe's timestamps inside one
 // raster pass do not bracket its draws): every frame has all of them.
@@ -38,7 +41,7 @@ struct LeftOutReads {
 // RendererOptions{{.width = 96, .height = 54}, TerrainMode::kStaticMesh}.
 struct RendererOptions : RenderOptions {
   TerrainMode terrain = TerrainMode::kLod;
-  TerrainSelector terrain_selector = TerrainSelector::kCpu;
+  TerrainSelector terrain_selector = TerrainSelector::kAuto;
   FramePasses passes;
   SurfaceFroxelReads surface_froxel_reads = SurfaceFroxelReads::kPerVertexWhereThin;
   LeftOutReads left_out_reads;
