@@ -1,7 +1,5 @@
 #include "aerial/render/shadow_map.h"
 
-#include <algorithm>
-
 #include "aerial/render/shadow_uniforms.h"
 #include "aerial/shader_abi/frame_geometry.h"
 #include "aerial/terrain/terrain_chunk.h"
