@@ -18,7 +18,9 @@
 // The drawn chunks come in two lists, as the renderer draws them: those that read the froxels per
 // pixel, then those that read them per vertex (render/surface_reads.h), each front to back.
 //
-// Not done here (the CPU selection's): the camera's refinement slack.
+// Like the CPU's, it finds how far the camera may move before a refinement test would come out
+// otherwise (terrain::Selection::camera_slack_m), in single precision. For a caller that keeps
+// what the chunks drew (a shadow map's tile), it can also report whether they changed (Compare).
 #include <array>
 #include <cstdint>
 #include <optional>
