@@ -60,7 +60,7 @@ struct FrameMemory {
   uint64_t targets = 0;   // radiance and depth at the render size, the sky-view tables
   uint64_t readback = 0;  // ReadOutput's copies (read back, upscaled) and the encoded image
   uint64_t froxels = 0;   // the froxel volume
-  uint64_t terrain = 0;   // the terrain chunk slots
+  uint64_t terrain = 0;   // the terrain chunk slots, and the buffers that select them on a GPU device
   uint64_t shadows = 0;   // the shadow map's depth atlas (--shadows on)
 };
 FrameMemory EstimateFrameMemory(const RenderOptions& options);

@@ -68,6 +68,33 @@ double CameraSlackM(uint32_t bits) { return double(std::bit_cast<float>(bits)); 
 
 }  // namespace
 
+// The bytes of each buffer a selection over `slots` chunk slots holds.
+struct GpuChunkSelection::BufferBytes {
+  explicit BufferBytes(uint32_t slots) : slots(slots) {}
+  uint32_t slots;
+  ::vk::DeviceSize tree() const { return slots * sizeof(Node); }
+  ::vk::DeviceSize cell_lowest() const { return slots * sizeof(terrain::ChunkInfo::cell_lowest_m); }
+  ::vk::DeviceSize queues() const { return 2 * slots * sizeof(int32_t); }
+  ::vk::DeviceSize stamps() const { return slots * sizeof(uint32_t); }
+  ::vk::DeviceSize keys() const { return std::bit_ceil(slots) * 2 * sizeof(uint32_t); }
+  ::vk::DeviceSize draws() const {
+    return kDrawsOffset + 2 * slots * sizeof(::vk::DrawIndexedIndirectCommand);
+  }
+  ::vk::DeviceSize requests() const { return 4 * slots * sizeof(glm::ivec4); }
+  static constexpr ::vk::DeviceSize occluder_groups() { return sizeof(::vk::DispatchIndirectCommand); }
+  static constexpr ::vk::DeviceSize horizon() { return kHorizonEntries * sizeof(uint32_t); }
+  ::vk::DeviceSize content() const { return slots * sizeof(glm::uvec2); }
+  ::vk::DeviceSize feedback() const { return kFeedbackStampsOffset + slots * sizeof(uint32_t); }
+  ::vk::DeviceSize all(uint32_t feedbacks) const {
+    return tree() + cell_lowest() + sizeof(SelectionView) + queues() + stamps() + keys() + draws() + requests() +
+           occluder_groups() + horizon() + content() + feedbacks * feedback();
+  }
+};
+
+uint64_t GpuChunkSelection::MemoryBytes(uint32_t slots, uint32_t feedbacks) {
+  return BufferBytes(slots).all(feedbacks);
+}
+
 GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot,
                                      uint32_t first_instance, uint32_t feedbacks)
     : slots_(slots),
@@ -77,22 +104,22 @@ GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots,
       nodes_(slots),
       cell_lowest_m_(slots),
       node_changed_(slots, false),
-      tree_(StorageBuffer(context, slots * sizeof(Node), false, ::vk::BufferUsageFlagBits::eTransferDst)),
-      cell_lowest_(StorageBuffer(context, slots * sizeof(terrain::ChunkInfo::cell_lowest_m), false,
+      tree_(StorageBuffer(context, BufferBytes(slots).tree(), false, ::vk::BufferUsageFlagBits::eTransferDst)),
+      cell_lowest_(StorageBuffer(context, BufferBytes(slots).cell_lowest(), false,
                                  ::vk::BufferUsageFlagBits::eTransferDst)),
       view_(context, vk::RecordedUniformBufferInfo(sizeof(SelectionView))),
-      queues_(StorageBuffer(context, 2 * slots * sizeof(int32_t), false)),
-      stamps_(StorageBuffer(context, slots * sizeof(uint32_t), true, ::vk::BufferUsageFlagBits::eTransferSrc)),
-      keys_(StorageBuffer(context, std::bit_ceil(slots) * 2 * sizeof(uint32_t), false)),
-      draws_(StorageBuffer(context, kDrawsOffset + 2 * slots * sizeof(::vk::DrawIndexedIndirectCommand), true,
+      queues_(StorageBuffer(context, BufferBytes(slots).queues(), false)),
+      stamps_(StorageBuffer(context, BufferBytes(slots).stamps(), true, ::vk::BufferUsageFlagBits::eTransferSrc)),
+      keys_(StorageBuffer(context, BufferBytes(slots).keys(), false)),
+      draws_(StorageBuffer(context, BufferBytes(slots).draws(), true,
                            ::vk::BufferUsageFlagBits::eIndirectBuffer | ::vk::BufferUsageFlagBits::eTransferSrc |
                                ::vk::BufferUsageFlagBits::eConditionalRenderingEXT)),
-      requests_(StorageBuffer(context, 4 * slots * sizeof(glm::ivec4), true, ::vk::BufferUsageFlagBits::eTransferSrc)),
-      occluder_groups_(StorageBuffer(context, sizeof(::vk::DispatchIndirectCommand), false,
+      requests_(StorageBuffer(context, BufferBytes(slots).requests(), true, ::vk::BufferUsageFlagBits::eTransferSrc)),
+      occluder_groups_(StorageBuffer(context, BufferBytes::occluder_groups(), false,
                                      ::vk::BufferUsageFlagBits::eIndirectBuffer)),
-      horizon_(StorageBuffer(context, kHorizonEntries * sizeof(uint32_t), false,
+      horizon_(StorageBuffer(context, BufferBytes::horizon(), false,
                              ::vk::BufferUsageFlagBits::eTransferDst)),
-      content_(StorageBuffer(context, slots * sizeof(glm::uvec2), true)),
+      content_(StorageBuffer(context, BufferBytes(slots).content(), true)),
       walk_(context, "frame/terrain_select.comp", SelectSlots(), 0, {kWalk}),
       occluders_(context, "frame/terrain_occluders.comp",
                  {{"ChunkTree", vk::kStorageBuffer},
@@ -107,7 +134,7 @@ GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots,
   std::memset(stamps_.mapped(), 0, stamps_.size());
   std::memset(content_.mapped(), 0, content_.size());
   for (uint32_t i = 0; i < feedbacks; ++i)
-    feedbacks_.emplace_back(context, vk::BufferCreateInfo{.size = kFeedbackStampsOffset + slots * sizeof(uint32_t),
+    feedbacks_.emplace_back(context, vk::BufferCreateInfo{.size = BufferBytes(slots).feedback(),
                                                     .usage = ::vk::BufferUsageFlagBits::eTransferDst,
                                                     .host_visible = true});
 }

@@ -41,6 +41,8 @@ class GpuChunkSelection {
   // own copy of what it tells the CPU (ReadFeedback).
   GpuChunkSelection(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot, uint32_t first_instance,
                     uint32_t feedbacks = 1);
+  // The device memory such a selection holds.
+  static uint64_t MemoryBytes(uint32_t slots, uint32_t feedbacks);
 
   // The chunk `id`, built, is in `slot` (a free one) / is no longer there. It reads the froxels
   // per pixel while its bounds are within per_pixel_reads_within_m of the camera
@@ -119,6 +121,7 @@ class GpuChunkSelection {
     glm::vec4 upper;  // w: the distance within which it reads the froxels per pixel
     glm::ivec4 children, neighbours, id;
   };
+  struct BufferBytes;
   Node& Change(uint32_t slot);  // the slot's node, to be written in the next selection's commands
   void Link(const terrain::ChunkId& id, int32_t slot);
 

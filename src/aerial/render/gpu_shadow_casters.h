@@ -29,6 +29,9 @@ class GpuShadowCasters {
  public:
   // As GpuChunkSelection's; each tile's draws start at instance 0.
   GpuShadowCasters(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot, uint32_t feedbacks);
+  static uint64_t MemoryBytes(uint32_t slots, uint32_t feedbacks) {
+    return kShadowCascades * GpuChunkSelection::MemoryBytes(slots, feedbacks);
+  }
 
   // The chunk cache's slot changes (TerrainChunkCache::TakeSlotChanges), for every tile's tree.
   void Apply(const std::vector<TerrainChunkCache::SlotChange>& changes);

@@ -299,6 +299,11 @@ std::unique_ptr<GpuShadowCasters> GpuCasterSelection(const vk::Context& context,
 
 }  // namespace
 
+uint64_t GpuTerrainSelectionBytes(const RenderOptions& o) {
+  return GpuChunkSelection::MemoryBytes(kTerrainChunkSlots, o.frames_in_flight) +
+         (o.shadows ? GpuShadowCasters::MemoryBytes(kTerrainChunkSlots, o.frames_in_flight) : 0);
+}
+
 FrameMemory EstimateFrameMemory(const RenderOptions& o) {
   const uint64_t rendered = uint64_t(o.render_width()) * o.render_height();
   const uint64_t output = uint64_t(o.width) * o.height;
@@ -314,7 +319,9 @@ FrameMemory EstimateFrameMemory(const RenderOptions& o) {
       // upscaled image and the encoded file at most 16 bytes per output pixel each.
       .readback = rendered * 32 + output * 32,
       .froxels = 3 * froxels * 16,  // Rayleigh, Mie, transmittance; rgba32f
-      .terrain = uint64_t(kTerrainChunkSlots) * terrain::kChunkVertices * sizeof(Vertex),
+      // The chunk slots' vertices and, as a GPU device selects them by default, its selection's
+      // buffers (the frame's and the shadow casters').
+      .terrain = uint64_t(kTerrainChunkSlots) * terrain::kChunkVertices * sizeof(Vertex) + GpuTerrainSelectionBytes(o),
       .shadows = ShadowMap::MemoryBytes(o.shadows) + (o.shadows ? rendered * 4 : 0),  // + r32f visibility
   };
 }

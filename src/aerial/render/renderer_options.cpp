@@ -10,6 +10,7 @@ bool AerialPerspectiveInFullScreenPass(const RendererOptions& options) {
 FrameMemory EstimateFrameMemory(const RendererOptions& options) {
   FrameMemory memory = EstimateFrameMemory(static_cast<const RenderOptions&>(options));
   if (options.terrain != TerrainMode::kLod) memory.terrain = 0;
+  else if (options.terrain_selector == TerrainSelector::kCpu) memory.terrain -= GpuTerrainSelectionBytes(options);
   // The surfaces' radiance that the full-screen pass reads, rgba32f at the render size, which the
   // public estimate counts for the per-pixel modes (they take that pass by default).
   const uint64_t surface_radiance = uint64_t(options.render_width()) * options.render_height() * 16;

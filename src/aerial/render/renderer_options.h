@@ -69,8 +69,12 @@ struct RendererOptions : RenderOptions {
 // it applies their aerial perspective: froxels read in that pass, or a per-pixel mode's there.
 bool AerialPerspectiveInFullScreenPass(const RendererOptions& options);
 
-// EstimateFrameMemory (aerial/renderer.h), without the terrain chunk slots for the fixed mesh.
+// EstimateFrameMemory (aerial/renderer.h), without the terrain chunk slots for the fixed mesh and
+// without the GPU's selection of them for TerrainSelector::kCpu. kAuto counts it: the estimate is
+// made before a device is chosen.
 FrameMemory EstimateFrameMemory(const RendererOptions& options);
+// The device memory of the terrain's selection on the GPU (TerrainSelector::kGpu).
+uint64_t GpuTerrainSelectionBytes(const RenderOptions& options);
 
 // A SceneRenderer (aerial/renderer.h) with these options (src/aerial/api/scene_renderer.cpp).
 SceneRenderer MakeSceneRenderer(const Tables& tables, const Scene& scene, const RendererOptions& options);
