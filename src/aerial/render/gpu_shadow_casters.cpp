@@ -17,12 +17,13 @@ double TrustedSlackM(double gpu_slack_m) { return std::max(0.0, gpu_slack_m * (1
 
 GpuShadowCasters::GpuShadowCasters(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot,
                                    uint32_t feedbacks) {
-  for (Tile& tile : tiles_)
-    tile.selection = std::make_unique<GpuChunkSelection>(context, slots, vertices_per_slot, 0, feedbacks);
+  for (int cascade = kFirstGpuCasterCascade; cascade < kShadowCascades; ++cascade)
+    tiles_[cascade].selection = std::make_unique<GpuChunkSelection>(context, slots, vertices_per_slot, 0, feedbacks);
 }
 
 void GpuShadowCasters::Apply(const std::vector<TerrainChunkCache::SlotChange>& changes) {
   for (Tile& tile : tiles_) {
+    if (!tile.selection) continue;
     for (const TerrainChunkCache::SlotChange& change : changes) {
       // Casters read no froxels: every chunk goes to the list that Draw records.
       if (change.info)
@@ -35,6 +36,7 @@ void GpuShadowCasters::Apply(const std::vector<TerrainChunkCache::SlotChange>& c
 
 void GpuShadowCasters::ReadFeedback(uint32_t feedback, TerrainChunkCache& cache) {
   for (Tile& tile : tiles_) {
+    if (!tile.selection) continue;
     GpuChunkSelection::Feedback read = tile.selection->ReadFeedback(feedback);
     if (read.generation <= tile.read_generation) continue;
     tile.read_generation = read.generation;
@@ -70,7 +72,8 @@ void GpuShadowCasters::Record(const vk::CommandBuffer& cmd, int cascade, const t
 }
 
 bool GpuShadowCasters::whole() const {
-  return std::all_of(tiles_.begin(), tiles_.end(), [](const Tile& t) { return t.read && t.made->whole; });
+  return std::all_of(tiles_.begin(), tiles_.end(),
+                     [](const Tile& t) { return !t.selection || (t.read && t.made->whole); });
 }
 
 void GpuShadowCasters::BeginIfChanged(const vk::CommandBuffer& cmd, int cascade) const {

@@ -1,8 +1,15 @@
 #pragma once
-// The shadow map's terrain casters selected by the GPU (TerrainSelector::kGpu): per cascade, a
-// GpuChunkSelection over the chunk cache's slots for the cascade's view (CascadeCasterView), whose
-// draws the tile records (ShadowMap::Record). A tile redrawn then costs the CPU a few commands,
-// whatever the terrain it draws.
+// The shadow map's terrain casters selected by the GPU (TerrainSelector::kGpu): per cascade from
+// kFirstGpuCasterCascade, a GpuChunkSelection over the chunk cache's slots for the cascade's view
+// (CascadeCasterView), whose draws the tile records (ShadowMap::Record). A tile redrawn then costs
+// the CPU a few commands, whatever the terrain it draws.
+//
+// The nearest cascade's casters stay with the CPU (SelectCascadeCasters). Its window is the
+// smallest and nearest the camera, so a moving camera leaves the slack of its selection (a metre
+// or a few) nearly every frame, and the GPU would select them again each frame: on lavapipe one
+// such selection with its redraw test cost more than the whole GPU frame may grow (a ratio of
+// 1.26-1.36 against 1.09-1.11 without it, aerial_bench_render). It also holds the fewest chunks
+// (4 at 1280x720), which the CPU selects and compares in microseconds.
 //
 // The CPU learns what a selection picked from its feedback only, once its frame has completed:
 // how far the camera may move before it would pick other chunks (its camera slack) and whether
@@ -25,13 +32,18 @@
 
 namespace aerial {
 
+inline constexpr int kFirstGpuCasterCascade = 1;
+
 class GpuShadowCasters {
  public:
   // As GpuChunkSelection's; each tile's draws start at instance 0.
   GpuShadowCasters(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot, uint32_t feedbacks);
   static uint64_t MemoryBytes(uint32_t slots, uint32_t feedbacks) {
-    return kShadowCascades * GpuChunkSelection::MemoryBytes(slots, feedbacks);
+    return (kShadowCascades - kFirstGpuCasterCascade) * GpuChunkSelection::MemoryBytes(slots, feedbacks);
   }
+
+  // Whether the GPU selects the casters of `cascade`.
+  static bool Selects(int cascade) { return cascade >= kFirstGpuCasterCascade; }
 
   // The chunk cache's slot changes (TerrainChunkCache::TakeSlotChanges), for every tile's tree.
   void Apply(const std::vector<TerrainChunkCache::SlotChange>& changes);
@@ -48,19 +60,19 @@ class GpuShadowCasters {
   void Record(const vk::CommandBuffer& cmd, int cascade, const terrain::LodView& frame_view,
               const ShadowCascade& now, uint32_t feedback, bool redrawn);
 
-  // Whether every tile's casters were read back, lacking no chunk.
+  // Whether every tile whose casters it selects has them read back, lacking no chunk.
   bool whole() const;
 
   // Records the draws of the casters last selected for `cascade` (ShadowMap::Record).
   int Draw(const vk::CommandBuffer& cmd, int cascade) const;
   // Whether the last selection of the tile of `cascade` decides on the GPU if it is redrawn; if so,
   // its redraw goes between BeginIfChanged and cmd.endConditionalRenderingEXT().
-  bool IfChanged(int cascade) const { return tiles_.at(cascade).if_changed; }
+  bool IfChanged(int cascade) const { return Selects(cascade) && tiles_.at(cascade).if_changed; }
   void BeginIfChanged(const vk::CommandBuffer& cmd, int cascade) const;
 
  private:
   struct Tile {
-    std::unique_ptr<GpuChunkSelection> selection;
+    std::unique_ptr<GpuChunkSelection> selection;  // none for the cascades the CPU selects
     uint32_t drawn_generation = 0;  // of the selection whose casters the tile holds
     uint32_t read_generation = 0;   // of the last feedback read
     // What the drawn casters were selected for; their slack and wholeness once read back.

@@ -610,7 +610,7 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
     key.cascades[i] = shadow_cascades_[i];
     // A tile waiting for its turn to catch up with the sun is not redrawn for chunks that arrived.
     if (keep_sun[i] && !moved[i]) continue;
-    if (gpu_casters_ && select_terrain) {
+    if (gpu_casters_ && select_terrain && GpuShadowCasters::Selects(i)) {
       if (RecordGpuCasters(cmd, i, lod_view, slot, moved[i], exact)) {
         redraw[i] = WholeTile(kShadowTileTexels);
         ++frame_info_.shadow_tiles_redrawn;
@@ -623,6 +623,7 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
       CascadeCasters selected = SelectCascadeCasters(lod_view, shadow_cascades_[i], *terrain_);
       key.selections[i] = MakeCasterSelection(lod_view, shadow_cascades_[i], selected);
       casters = std::move(selected.chunks);
+      if (gpu_terrain_) ApplyTerrainSlotChanges();  // the chunks it built, for the GPU's trees
     }
     if (!ShadowTileRedrawn(moved[i], casters, key.casters[i])) continue;
     // A window that held, with casters that changed: only where they changed, when that is known
@@ -639,11 +640,10 @@ void Renderer::RecordShadowMap(const vk::CommandBuffer& cmd, const Scene& scene,
     }
     key.casters[i] = std::move(casters);
   }
-  shadow_selection_whole_ =
-      !select_terrain ||
-      (gpu_casters_ ? gpu_casters_->whole()
-                    : std::all_of(key.selections.begin(), key.selections.end(),
-                                  [](const std::optional<CasterSelection>& s) { return s && s->whole; }));
+  shadow_selection_whole_ = !select_terrain || !gpu_casters_ || gpu_casters_->whole();
+  for (int i = 0; i < kShadowCascades && select_terrain; ++i)
+    if (!gpu_casters_ || !GpuShadowCasters::Selects(i))
+      shadow_selection_whole_ = shadow_selection_whole_ && key.selections[i] && key.selections[i]->whole;
   if (frame_info_.shadow_tiles_redrawn + frame_info_.shadow_tile_regions_redrawn == 0) return;
   RecordedDraws recorded = shadow_map_.Record(cmd, shadow_cascades_, redraw, scene.camera.position, geometry_,
                                               terrain_.get(), drawn, select_terrain ? gpu_casters_.get() : nullptr,

@@ -93,10 +93,11 @@ RecordedDraws ShadowMap::Record(const vk::CommandBuffer& cmd, const ShadowCascad
       vk::DrawIndexed(cmd, geometry.opaque_index_count());
       ++recorded.draws;
     }
-    if (terrain && (gpu_casters || !chunks[i].empty())) {
+    const bool gpu_selected = gpu_casters && GpuShadowCasters::Selects(i);
+    if (terrain && (gpu_selected || !chunks[i].empty())) {
       vk::SetCullMode(cmd, kTerrainTurnedAwayFromTheSun);
       vk::BindMesh(cmd, terrain->vertices(), terrain->indices());
-      if (gpu_casters) {
+      if (gpu_selected) {
         recorded.draws += gpu_casters->Draw(cmd, i);
       } else {
         for (const terrain::SelectedChunk& chunk : chunks[i]) {

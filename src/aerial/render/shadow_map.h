@@ -42,8 +42,9 @@ class ShadowMap {
   // its casters changed: shadow_tile_region.h) and draws its casters there: the scene's opaque
   // meshes (both faces: a mesh open to the sun still shades what is behind it) and the terrain
   // chunks that reach the texels: `chunks`, one indirect draw per tile from `commands` (the frame
-  // slot's), or, with gpu_casters, the draws of the tile's casters that the GPU selected. Other
-  // texels keep what they hold. Returns what it recorded.
+  // slot's), or, with gpu_casters for the tiles it selects (GpuShadowCasters::Selects), the
+  // draws of the casters that the GPU selected. Other texels keep what they hold. Returns what it
+  // recorded.
   RecordedDraws Record(const vk::CommandBuffer& cmd, const ShadowCascades& cascades,
                        const std::array<std::optional<TileTexels>, kShadowCascades>& redraw,
                        const glm::dvec3& camera_position, const SceneGeometry& geometry,
