@@ -1,6 +1,6 @@
 // The benchmarks' frame loop (bench/frame_measurement.h): every source gets its warm-up frames and
 // then its measured frames, all of them unless it sets max_frames (the quick bench's marched
-// per-pixel path), each with positive GPU and wall-clock times.
+// per-pixel path), each with positive GPU and wall-clock times; each round starts one source later.
 #include <gtest/gtest.h>
 
 #include "aerial/bench/frame_measurement.h"
@@ -17,16 +17,19 @@ TEST_F(BenchFrames, EverySourceGetsItsFramesAndAtMostItsLimit) {
   const RenderOptions options{.width = 64, .height = 36};
   SceneRenderer unlimited(SmallPublicTables(), scene, options), limited(SmallPublicTables(), scene, options),
       still(SmallPublicTables(), scene, options);
-  int calls = 0;
+  std::vector<size_t> calls;
   std::vector<std::vector<bench::RunResult>> frames = bench::MeasureFrames(
       {{.renderer = &unlimited}, {.renderer = &limited, .max_frames = 1},
        {.renderer = &still, .motion = bench::Motion::kStill}},
-      scene, /*warmup=*/2, /*frames=*/3, [&] { ++calls; });
+      scene, /*warmup=*/2, /*frames=*/3, [&](size_t source) { calls.push_back(source); });
   ASSERT_EQ(frames.size(), 3u);
   EXPECT_EQ(frames[0].size(), 3u);
   EXPECT_EQ(frames[1].size(), 1u);
   EXPECT_EQ(frames[2].size(), 3u);
-  EXPECT_EQ(calls, (2 + 3) + (2 + 1) + (2 + 3)) << "on_frame after every frame, warm-up included";
+  // on_frame after every frame, warm-up included; the limited source stops after its one measured
+  // frame (rounds 0 and 1 warm up).
+  const std::vector<size_t> rounds = {0, 1, 2, 1, 2, 0, 2, 0, 1, 0, 2, 2, 0};
+  EXPECT_EQ(calls, rounds);
   for (const auto& source : frames)
     for (const bench::RunResult& frame : source) {
       EXPECT_FALSE(frame.passes.empty());

@@ -191,7 +191,7 @@ void Bench(const BenchOptions& cli) {
   std::vector<RunResult> tap_runs;
   // The reference pass runs once after every round of frames, so it sees the same load.
   int round = 0;
-  auto frames = aerial::bench::MeasureFrames(order, scene, cli.warmup, cli.frames, [&] {
+  auto frames = aerial::bench::MeasureFrames(order, scene, cli.warmup, cli.frames, [&](size_t) {
     if (++round % int(order.size()) != 0) return;
     RunResult run{.passes = tap.Run()};
     if (round / int(order.size()) > cli.warmup) tap_runs.push_back(run);

@@ -27,10 +27,14 @@ Scene Moved(const Scene& scene, Motion motion, int frame) {
 
 std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<FrameSource>& sources, const Scene& scene,
                                                   int warmup, int frames,
-                                                  const std::function<void()>& on_frame) {
+                                                  const std::function<void(size_t source)>& on_frame) {
   std::vector<std::vector<RunResult>> measured(sources.size());
   for (int i = 0; i < warmup + frames; ++i)
-    for (size_t r = 0; r < sources.size(); ++r) {
+    for (size_t k = 0; k < sources.size(); ++k) {
+      // Each round starts one renderer later: the one that follows another (whose caches and
+      // lavapipe's threads it finds in that one's state) changes from round to round. In a fixed
+      // order two renderers of the same settings measured 35.6 and 29.2 ms GPU.
+      const size_t r = (k + size_t(i)) % sources.size();
       if (i - warmup >= sources[r].max_frames) continue;
       Scene frame_scene = Moved(scene, sources[r].motion, i);
       auto start = std::chrono::steady_clock::now();
@@ -46,7 +50,7 @@ std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<FrameSource>
       frame.wall_ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       if (i >= warmup) measured[r].push_back(std::move(frame));
-      if (on_frame) on_frame();
+      if (on_frame) on_frame(r);
     }
   return measured;
 }

@@ -1,6 +1,7 @@
 #pragma once
-// Frames of several renderers of one scene, interleaved (frame i: every renderer in turn) so that
-// all see the same machine noise, after warm-up frames: lavapipe compiles each pipeline on its
+// Frames of several renderers of one scene, interleaved (frame i: every renderer in turn, from
+// renderer i modulo their number) so that all see the same machine noise and none always follows
+// the same other one, after warm-up frames: lavapipe compiles each pipeline on its
 // first use, so the first frame of a renderer costs far more than the next ones. Each frame has
 // its GPU pass times, its wall-clock time (SceneRenderer::Render from the call to the end of the wait,
 // the CPU's part: terrain selection, sorting, recording, submitting, included), the process's
@@ -44,11 +45,11 @@ struct FrameSource {
   int max_frames = std::numeric_limits<int>::max();
 };
 
-// frames[r] holds source r's measured frames, in order. on_frame (may be empty) is called after
-// every frame, warm-up included.
+// frames[r] holds source r's measured frames, in order. on_frame (may be empty) is called with r
+// after every frame of source r, warm-up included.
 std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<FrameSource>& sources, const Scene& scene,
                                                   int warmup, int frames,
-                                                  const std::function<void()>& on_frame);
+                                                  const std::function<void(size_t source)>& on_frame);
 
 // The pixels that the renderer's last frame's opaque surfaces cover (the rest is sky), from its
 // surface image (Renderer::ReadSurface).

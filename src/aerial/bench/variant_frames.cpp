@@ -36,7 +36,10 @@ void MeasureVariantFrames(VariantResult& lut4d, const Tables& tables4d, VariantR
       order.push_back({.renderer = renderers.back().get(), .max_frames = max_frames});
       destinations.push_back(&(result->*frames));
     }
-  std::vector<std::vector<RunResult>> measured = MeasureFrames(order, scene, plan.frame_warmup, plan.frames, on_frame);
+  std::vector<std::vector<RunResult>> measured =
+      MeasureFrames(order, scene, plan.frame_warmup, plan.frames, [&](size_t) {
+        if (on_frame) on_frame();
+      });
   for (size_t i = 0; i < measured.size(); ++i) *destinations[i] = std::move(measured[i]);
 }
 
