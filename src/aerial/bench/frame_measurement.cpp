@@ -31,9 +31,9 @@ std::vector<std::vector<RunResult>> MeasureFrames(const std::vector<FrameSource>
   std::vector<std::vector<RunResult>> measured(sources.size());
   for (int i = 0; i < warmup + frames; ++i)
     for (size_t k = 0; k < sources.size(); ++k) {
-      // Each round starts one renderer later: the one that follows another (whose caches and
-      // lavapipe's threads it finds in that one's state) changes from round to round. In a fixed
-      // order two renderers of the same settings measured 35.6 and 29.2 ms GPU.
+      // Each round starts one renderer later, so that the one a renderer follows (whose state it
+      // finds in the caches and lavapipe's threads) changes from round to round: in a fixed order,
+      // two renderers of the same settings differed by more than most configurations do.
       const size_t r = (k + size_t(i)) % sources.size();
       if (i - warmup >= sources[r].max_frames) continue;
       Scene frame_scene = Moved(scene, sources[r].motion, i);
