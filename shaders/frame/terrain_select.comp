@@ -10,7 +10,8 @@
 // given the skirts of the sides whose neighbour is not drawn at its level, and written as indexed
 // indirect draws. Before the sort, chunks that nearer terrain hides are left out, against the
 // horizon that terrain_occluders.comp builds from the chunks the walk kept (terrain_horizon.glsl).
-layout(local_size_x = 256) in;
+// One workgroup, of kWorkgroupSize invocations (render/gpu_chunk_selection.cpp chooses it).
+layout(local_size_x_id = 1) in;
 // 0: the walk, which leaves the chunks it would draw in SelectionKeys; 1: after the chunks added
 // their occluders (terrain_occluders.comp), the rest: those hidden left out, the sort, the draws.
 layout(constant_id = 0) const int kStage = 0;
@@ -21,7 +22,7 @@ layout(constant_id = 0) const int kStage = 0;
 // A point h above sea level sits at (R + h) / R times its sea-level x and y, so a chunk's bounds
 // spread past its sea-level footprint by a little (lod_selection.cpp's kHorizontalSpread).
 const float kHorizontalSpread = 2e-3;
-const uint kWorkgroupSize = 256;
+const uint kWorkgroupSize = gl_WorkGroupSize.x;
 const uint kOccluderChunksPerGroup = 4u;  // terrain_occluders.comp's kChunksPerGroup
 
 // Two queues of slots, a level's and the next's, each as long as there are slots.

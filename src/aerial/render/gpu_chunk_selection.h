@@ -136,6 +136,7 @@ class GpuChunkSelection {
   std::vector<uint32_t> changed_nodes_, inserted_;  // since the last selection recorded
   vk::Buffer tree_, cell_lowest_, view_, queues_, stamps_, keys_, draws_, requests_, occluder_groups_, horizon_;
   vk::Buffer content_;  // terrain_select.comp's TileContent
+  uint32_t workgroup_size_;  // terrain_select.comp's
   vk::ComputePipeline walk_, occluders_, finish_;
   std::vector<uint32_t> feedback_generations_;
   std::vector<vk::Buffer> feedbacks_;  // the draws' header, kFedBackRequests requests, the stamps
