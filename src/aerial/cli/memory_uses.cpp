@@ -46,7 +46,8 @@ std::vector<MemoryUse> FrameMemoryUses(const RendererOptions& render, int render
        renderers * frame.targets + frame.readback},
       {"--froxels", Join({render.froxels.width, render.froxels.height, render.froxels.depth}, "x"),
        "froxel volume", renderers * frame.froxels}};
-  if (frame.terrain > 0) uses.push_back({"--terrain", "lod", "terrain chunk slots and their selection", renderers * frame.terrain});
+  if (frame.terrain > 0)
+    uses.push_back({"--terrain", "lod", "terrain chunk slots and their selection", renderers * frame.terrain});
   if (render.shadows) uses.push_back({"--shadows", "on", "shadow map and sun visibility", renderers * frame.shadows});
   return uses;
 }

@@ -65,10 +65,9 @@ vk::Buffer StorageBuffer(const vk::Context& context, ::vk::DeviceSize size, bool
 
 // The invocations of terrain_select.comp's one workgroup. A CPU rasterizer (llvmpipe) runs a
 // workgroup on one thread, a SIMD group of 8 at a time, switching between its groups at every
-// barrier: there 256 invocations spent more time switching than working, and 32 took a selection
-// of the 720p view from 1.0 to 0.6 ms (without occlusion culling; aerial_bench_terrain_selection).
-// A GPU runs them side by side: 256 keeps its loops over a level's chunks and the sort's
-// stages short.
+// barrier: there 256 invocations spend more of a selection switching than working, and 32 take
+// far less time (aerial_bench_terrain_selection; docs/speed.md). A GPU runs them side by side:
+// 256 keeps its loops over a level's chunks and the sort's stages short.
 uint32_t SelectionWorkgroupSize(const vk::Context& context) {
   return context.physical_device().getProperties().deviceType == ::vk::PhysicalDeviceType::eCpu ? 32 : 256;
 }

@@ -6,10 +6,10 @@
 //
 // The nearest cascade's casters stay with the CPU (SelectCascadeCasters). Its window is the
 // smallest and nearest the camera, so a moving camera leaves the slack of its selection (a metre
-// or a few) nearly every frame, and the GPU would select them again each frame: on lavapipe one
-// such selection with its redraw test cost more than the whole GPU frame may grow (a ratio of
-// 1.26-1.36 against 1.09-1.11 without it, aerial_bench_render). It also holds the fewest chunks
-// (4 at 1280x720), which the CPU selects and compares in microseconds.
+// or a few) nearly every frame, and the GPU would select them again each frame: on lavapipe that
+// selection with its redraw test cost the frame more than all the others (docs/speed.md). The
+// tile also holds the fewest chunks (a handful), which the CPU selects and compares in
+// microseconds.
 //
 // The CPU learns what a selection picked from its feedback only, once its frame has completed:
 // how far the camera may move before it would pick other chunks (its camera slack) and whether
@@ -32,6 +32,7 @@
 
 namespace aerial {
 
+// The first cascade whose casters the GPU selects (see above).
 inline constexpr int kFirstGpuCasterCascade = 1;
 
 class GpuShadowCasters {
