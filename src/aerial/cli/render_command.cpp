@@ -86,8 +86,7 @@ void RunRender(const RenderCommandOptions& options) {
   if (options.timings) {
     // A CPU rasterizer (lavapipe) bins a raster scope's draws and rasterizes them when the scope
     // ends, after the timestamps around each draw: those times are not the draws' own.
-    const bool binned = ImplOf(device).context->physical_device().getProperties().deviceType ==
-                        ::vk::PhysicalDeviceType::eCpu;
+    const bool binned = ImplOf(device).context->cpu_device();
     const std::set<std::string> raster = {"opaque raster", "sky", "transparent raster"};
     double total = 0.0;
     for (const auto& pass : times) {

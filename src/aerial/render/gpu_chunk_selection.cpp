@@ -69,7 +69,7 @@ vk::Buffer StorageBuffer(const vk::Context& context, ::vk::DeviceSize size, bool
 // far less time (aerial_bench_terrain_selection; docs/speed.md). A GPU runs them side by side:
 // 256 keeps its loops over a level's chunks and the sort's stages short.
 uint32_t SelectionWorkgroupSize(const vk::Context& context) {
-  return context.physical_device().getProperties().deviceType == ::vk::PhysicalDeviceType::eCpu ? 32 : 256;
+  return context.cpu_device() ? 32 : 256;
 }
 
 double CameraSlackM(uint32_t bits) { return double(std::bit_cast<float>(bits)); }

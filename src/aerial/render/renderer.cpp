@@ -277,9 +277,7 @@ std::unique_ptr<TerrainChunkCache> TerrainCache(const vk::Context& context, cons
 // The options with TerrainSelector::kAuto resolved for the device.
 RendererOptions WithTerrainSelector(const vk::Context& context, RendererOptions options) {
   if (options.terrain_selector == TerrainSelector::kAuto)
-    options.terrain_selector = context.physical_device().getProperties().deviceType == ::vk::PhysicalDeviceType::eCpu
-                                   ? TerrainSelector::kCpu
-                                   : TerrainSelector::kGpu;
+    options.terrain_selector = context.cpu_device() ? TerrainSelector::kCpu : TerrainSelector::kGpu;
   return options;
 }
 

@@ -50,14 +50,10 @@ constexpr uint32_t kFramesInFlight = 2;
 // The X11 presenter where the device renders into host memory (a CPU device: its frames are read
 // where they are) and the window takes its texels; a swapchain everywhere else, and always on a
 // GPU, whose images would cross the bus each frame (x11_presenter.h).
-bool IsCpuDevice(const vk::Context& context) {
-  return context.physical_device().getProperties().deviceType == ::vk::PhysicalDeviceType::eCpu;
-}
-
 std::unique_ptr<vk::PresentTarget> MakePresentTarget(const vk::Context& context, const Window& window,
                                                      PresentMode mode) {
   const bool x11 = mode == PresentMode::kX11 ||
-                   (mode == PresentMode::kAuto && IsCpuDevice(context) && !X11Presenter::Unsupported(window.handle()));
+                   (mode == PresentMode::kAuto && context.cpu_device() && !X11Presenter::Unsupported(window.handle()));
   if (x11)
     return std::make_unique<X11Presenter>(context, window.handle(), window.framebuffer_extent(), kFramesInFlight);
   return std::make_unique<vk::Swapchain>(context, window.surface(), window.framebuffer_extent(), kFramesInFlight);
@@ -225,7 +221,7 @@ Viewer::Impl::Impl(ViewerOptions options)
   settings_.terrain_error_px = float(options_.render.terrain_error_px);
   settings_.auto_exposure = options_.exposure.mode == Exposure::Mode::kAuto;
   if (!settings_.auto_exposure) settings_.ev100 = float(options_.exposure.FixedEv100());
-  const double target_ms = options_.target_ms.value_or(IsCpuDevice(context_) ? kCpuDeviceTargetMs : 0.0);
+  const double target_ms = options_.target_ms.value_or(context_.cpu_device() ? kCpuDeviceTargetMs : 0.0);
   if (target_ms > 0.0) {
     resolution_.emplace(target_ms);
     settings_.render_scale = std::min(settings_.render_scale, DynamicResolution::kMinScale);

@@ -238,6 +238,10 @@ DeviceHandoff Context::Handoff() const {
           .pipeline_statistics = pipeline_statistics_};
 }
 
+bool Context::cpu_device() const {
+  return physical_device_.getProperties().deviceType == ::vk::PhysicalDeviceType::eCpu;
+}
+
 std::string Context::device_name() const {
   return physical_device_.getProperties().deviceName.data();
 }

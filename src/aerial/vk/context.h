@@ -51,6 +51,9 @@ class Context {
   const ::vk::raii::Queue& queue() const { return queue_; }
   uint32_t queue_family() const { return queue_family_; }
   std::string device_name() const;
+  // Whether the device is a CPU (lavapipe): it runs shaders on the host's cores, rasterizes in bins
+  // and renders into host memory.
+  bool cpu_device() const;
   // This context's handles, to hand to aerial::Device (the viewer's window device, a bench's).
   DeviceHandoff Handoff() const;
   bool validation_enabled() const { return validation_; }
