@@ -25,7 +25,8 @@ const float kHorizontalSpread = 2e-3;
 const uint kWorkgroupSize = gl_WorkGroupSize.x;
 const uint kOccluderChunksPerGroup = 4u;  // terrain_occluders.comp's kChunksPerGroup
 
-// Two queues of slots, a level's and the next's, each as long as there are slots.
+// Two queues of slots, a level's and the next's, each as long as there are slots; after the walk,
+// the chunks drawn as pairs of key and slot.
 layout(std430, set = 0, binding = 2) coherent buffer SelectionQueues { int queue[]; };
 // Per slot, the generation of the last selection that drew it.
 layout(std430, set = 0, binding = 3) coherent buffer SelectionStamps { uint stamps[]; };
@@ -65,7 +66,7 @@ layout(std430, set = 0, binding = 7) writeonly buffer OccluderDispatch { uvec3 o
 layout(std430, set = 0, binding = 8) coherent buffer TerrainHorizon { uint horizon[]; };
 
 shared uint queue_size[2];
-shared uint draw_size, deferred_size, request_size, hidden_size, per_vertex_size, index_size, slack_bits, changed_size;
+shared uint draw_size, deferred_size, request_size, drawn_size, per_vertex_size, index_size, slack_bits, changed_size;
 const uint kReadsPerVertex = 0x80000000u;  // the sort key's top bit
 
 bool IntersectsFrustum(vec3 lower, vec3 upper) {
@@ -272,7 +273,7 @@ void Walk(uint t) {
 void Finish(uint t) {
   const uint candidates = draw_count;
   if (t == 0u) {
-    hidden_size = 0u;
+    drawn_size = 0u;
     per_vertex_size = 0u;
     index_size = 0u;
   }
@@ -288,25 +289,30 @@ void Finish(uint t) {
     }
     Synchronize();
   }
-  // Chunks hidden are sorted after every chunk drawn, those that read per vertex after those that
-  // read per pixel: within its bounds' distance given by the CPU (PerPixelReadsWithinM).
+  // The chunks drawn gather in the queues, free since the walk, in any order: they are sorted next,
+  // and the sort's cost grows with the power of two it sorts. Those that read per vertex sort after
+  // those that read per pixel: within its bounds' distance given by the CPU (PerPixelReadsWithinM).
   for (uint i = t; i < candidates; i += kWorkgroupSize) {
-    ChunkNode node = nodes[keys[i].y];
-    if (north.w != 0.0 && Hidden(node)) {
-      keys[i].x = 0xffffffffu;
-      atomicAdd(hidden_size, 1u);
-    } else if (!(DistanceToBounds(node) < node.upper.w)) {
-      keys[i].x |= kReadsPerVertex;
+    uvec2 key = keys[i];
+    ChunkNode node = nodes[key.y];
+    if (north.w != 0.0 && Hidden(node)) continue;
+    if (!(DistanceToBounds(node) < node.upper.w)) {
+      key.x |= kReadsPerVertex;
       atomicAdd(per_vertex_size, 1u);
     }
+    uint kept = atomicAdd(drawn_size, 1u);
+    queue[2u * kept] = int(key.x);
+    queue[2u * kept + 1u] = int(key.y);
   }
+  Synchronize();
+  const uint drawn = drawn_size, per_pixel = drawn - per_vertex_size;
   uint n = 1u;
-  while (n < candidates) n <<= 1u;
-  for (uint i = candidates + t; i < n; i += kWorkgroupSize) keys[i] = uvec2(0xffffffffu);
+  while (n < drawn) n <<= 1u;
+  for (uint i = t; i < n; i += kWorkgroupSize)
+    keys[i] = i < drawn ? uvec2(uint(queue[2u * i]), uint(queue[2u * i + 1u])) : uvec2(0xffffffffu);
   Synchronize();
   SortKeys(n, t);
 
-  const uint drawn = candidates - hidden_size, per_pixel = drawn - per_vertex_size;
   for (uint i = t; i < drawn; i += kWorkgroupSize) stamps[keys[i].y] = uint(root.y);
   Synchronize();
   for (uint i = t; i < drawn; i += kWorkgroupSize) {
@@ -332,7 +338,7 @@ void Finish(uint t) {
     changed = compare.x != 0u ? changed_size : 0u;
     draw_count = per_pixel;
     per_vertex_count = per_vertex_size;
-    hidden = hidden_size;
+    hidden = candidates - drawn;
     indices = index_size;
   }
 }
