@@ -5,7 +5,8 @@
 // that height, lowered by a margin, lies under the ground across the cell: any ray under a point of
 // it is hidden. A row of blocks of cells across the chunk is crossed by the vertical plane of every
 // azimuth within its span, each plane through blocks that overlap the azimuth's bin, so the bin's
-// tangent is the least of those blocks', known within the row's farthest distance.
+// tangent is the least of those blocks', known within the row's farthest distance; a block that
+// spans the whole bin alone is crossed by every plane of it, and its own tangent holds there.
 layout(local_size_x = 64) in;
 
 #include "terrain_selection.glsl"
@@ -118,11 +119,12 @@ void main() {
   if (!whole || band >= kHorizonBands) return;
   // The bins wholly within the strip's span.
   for (int bin = int(ceil(span_min)) + int(lane); float(bin + 1) <= span_max; bin += 2) {
-    float tangent = 1e30;
+    float tangent = 1e30, within = kNoOccluder;
     for (uint k = 0u; k < uint(kBlocks); ++k) {
       vec4 b = BlockOfStrip(chunk, strip, k);
       if (b.z >= float(bin) && b.y <= float(bin + 1)) tangent = min(tangent, b.x);
+      if (b.y <= float(bin) && b.z >= float(bin + 1)) within = max(within, b.x);
     }
-    atomicMax(horizon[HorizonIndex(band, bin)], OrderedBits(tangent));
+    atomicMax(horizon[HorizonIndex(band, bin)], OrderedBits(max(tangent, within)));
   }
 }
