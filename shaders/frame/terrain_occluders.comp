@@ -1,12 +1,14 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Every chunk the selection may draw adds its ground to the horizon (terrain_horizon.glsl), four
-// chunks a workgroup. A cell of the chunk's mesh never dips below its lowest vertex, so the shell at
+// chunks a workgroup, and leaves what terrain_hidden.comp tests against it. A cell of the chunk's mesh never dips below its lowest vertex, so the shell at
 // that height, lowered by a margin, lies under the ground across the cell: any ray under a point of
 // it is hidden. A row of blocks of cells across the chunk is crossed by the vertical plane of every
 // azimuth within its span, each plane through blocks that overlap the azimuth's bin, so the bin's
 // tangent is the least of those blocks', known within the row's farthest distance; a block that
 // spans the whole bin alone is crossed by every plane of it, and its own tangent holds there.
+// Seen as a target, a block's mesh lies under its cells' highest vertex, so its rays rise no higher
+// than that height over its nearest distance (or its farthest, when below the camera).
 layout(local_size_x = 64) in;
 
 #include "terrain_selection.glsl"
@@ -16,10 +18,15 @@ layout(local_size_x = 64) in;
 layout(std430, set = 0, binding = 2) readonly buffer SelectionKeys { uvec2 keys[]; };
 // The selection's header: the number of chunks the walk kept (terrain_select.comp's draw_count).
 layout(std430, set = 0, binding = 3) readonly buffer SelectionDraws { uint candidates; };
-// Per slot, its chunk's cells' lowest heights (m), kChunkCells^2 of them, row by row from the south-west.
-layout(std430, set = 0, binding = 4) readonly buffer ChunkCellLowest { float cell_lowest[]; };
+// Per slot, its chunk's cells' lowest heights then their highest (m), kChunkCells^2 each, row by
+// row from the south-west: the mesh over a cell lies between them.
+layout(std430, set = 0, binding = 4) readonly buffer ChunkCellHeights { float cell_heights[]; };
 // Per band and azimuth bin, OrderedBits of the tangent below which rays are hidden.
 layout(std430, set = 0, binding = 5) coherent buffer TerrainHorizon { uint horizon[]; };
+// Per chunk the walk kept, per block, the block as a target (terrain_hidden.comp): x: the highest
+// tangent of its rays; y, z: its azimuth span (bins); w: the last band wholly in front of it, or -1
+// when it cannot be hidden.
+layout(std430, set = 0, binding = 6) writeonly buffer BlockTargets { vec4 targets[]; };
 
 // Occluders are blocks of 2 x 2 cells: at a quarter of the work, they hide nearly as much.
 const int kBlock = 2;
@@ -33,6 +40,9 @@ const float kNoOccluder = -1e30;
 const float kMarginM = 1.0, kMarginPerM = 1e-3;
 // Half a diagonal, with 1 % for the spread of the footprint at height.
 const float kHalfDiagonal = 0.5 * 1.4142135 * 1.01;
+// Added to a target's highest point for float rounding (m); its nearest distance is taken from
+// the chunk's point nearest the planet's centre, for the skirts that hang below the cells.
+const float kTargetMarginM = 1.0;
 
 // Per chunk, per block corner, its sea-level direction seen from the camera's vertical: x: azimuth
 // (bins, within half a turn of corner 0's), y: horizontal length, z: drop below the camera's
@@ -75,21 +85,26 @@ void main() {
     const uint i = t % uint(kBlocks), j = t / uint(kBlocks);
     const uint first = j * uint(kBlocks + 1) + i;
     const uint block_corners[4] = uint[4](first, first + 1u, first + uint(kBlocks + 1), first + uint(kBlocks + 2));
-    float lowest = 1e30;
-    for (uint jj = j * uint(kBlock); jj < (j + 1u) * uint(kBlock); ++jj)
-      for (uint ii = i * uint(kBlock); ii < (i + 1u) * uint(kBlock); ++ii)
-        lowest = min(lowest, cell_lowest[slot * kChunkCells * kChunkCells + int(jj) * kChunkCells + int(ii)]);
+    const int cells = kChunkCells * kChunkCells;
+    float lowest = 1e30, highest = -1e30;
+    for (uint jj = j * uint(kBlock); jj < (j + 1u) * uint(kBlock); ++jj) {
+      for (uint ii = i * uint(kBlock); ii < (i + 1u) * uint(kBlock); ++ii) {
+        const int cell = 2 * slot * cells + int(jj) * kChunkCells + int(ii);
+        lowest = min(lowest, cell_heights[cell]);
+        highest = max(highest, cell_heights[cell + cells]);
+      }
+    }
     const float reference = corners[chunk][0].x;
     // At the height of the lowest vertex, to a ray's distance from the camera (height, horizontal).
     vec3 first_corner = corners[chunk][first];
     vec2 seen = vec2(lowest - vertical.w - (R + lowest) * first_corner.z, (R + lowest) * first_corner.y);
     const float h = lowest - kMarginM - kMarginPerM * length(seen);
-    float z_min = 1e30, far = 0.0, near = 1e30, span_min = 1e30, span_max = -1e30;
+    float z_min = 1e30, near_unit = 1e30, far_unit = 0.0, span_min = 1e30, span_max = -1e30;
     for (int k = 0; k < 4; ++k) {
       vec3 c = corners[chunk][block_corners[k]];
       z_min = min(z_min, h - vertical.w - (R + h) * c.z);
-      far = max(far, (R + h) * c.y);
-      near = min(near, (R + h) * c.y);
+      near_unit = min(near_unit, c.y);
+      far_unit = max(far_unit, c.y);
       float azimuth = UnwrapBins(c.x, reference);
       span_min = min(span_min, azimuth);
       span_max = max(span_max, azimuth);
@@ -97,9 +112,19 @@ void main() {
     // Tangents z / d over the block are at least its lowest z over the nearest distance when z < 0
     // and over the farthest one otherwise; the nearest is no closer than the nearest corner less
     // half a diagonal.
-    near -= kHalfDiagonal * block_size * (R + h) / R;
+    near_unit -= kHalfDiagonal * block_size / R;
+    const float near = (R + h) * near_unit, far = (R + h) * far_unit;
     float tangent = near <= 0.0 ? kNoOccluder : z_min / (z_min < 0.0 ? near : far);
     blocks[chunk][t] = vec4(tangent, span_min, span_max, far * 1.001);
+
+    // The drop (1 - cos) of a point of the block is at least half its horizontal length squared.
+    const float z_max = highest - vertical.w - (R + highest) * 0.5 * near_unit * near_unit + kTargetMarginM;
+    const vec3 center = vec3(0.0, 0.0, -R);
+    const float r_lowest = length(clamp(center, nodes[slot].lower.xyz, nodes[slot].upper.xyz) - center) - kTargetMarginM;
+    const float target_near = r_lowest * near_unit;
+    const int band = usable && near_unit > 0.0 ? HorizonBandWithin(target_near) : -1;
+    const float target = z_max / (z_max >= 0.0 ? target_near : (R + highest) * far_unit * 1.001);
+    if (present) targets[index * kInvocationsPerChunk + t] = vec4(target, span_min, span_max, float(band));
   }
   barrier();
   if (!usable) return;

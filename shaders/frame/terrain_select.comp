@@ -8,22 +8,22 @@
 // that may be in the frustum are built, and is drawn in their place (and asks for them) until
 // then. The chunks drawn are then sorted front to back in quadtree order from the camera, each
 // given the skirts of the sides whose neighbour is not drawn at its level, and written as indexed
-// indirect draws. Before the sort, chunks that nearer terrain hides are left out, against the
-// horizon that terrain_occluders.comp builds from the chunks the walk kept (terrain_horizon.glsl).
+// indirect draws. Before the sort, the chunks that nearer terrain hides are left out: those that
+// terrain_hidden.comp marked, against the horizon terrain_occluders.comp built from the chunks the
+// walk kept (terrain_horizon.glsl).
 // One workgroup, of kWorkgroupSize invocations (render/gpu_chunk_selection.cpp chooses it).
 layout(local_size_x_id = 1) in;
-// 0: the walk, which leaves the chunks it would draw in SelectionKeys; 1: after the chunks added
-// their occluders (terrain_occluders.comp), the rest: those hidden left out, the sort, the draws.
+// 0: the walk, which leaves the chunks it would draw in SelectionKeys; 1: after the horizon's passes,
+// the rest: those hidden left out, the sort, the draws.
 layout(constant_id = 0) const int kStage = 0;
 
 #include "terrain_selection.glsl"
-#include "terrain_horizon.glsl"
 
 // A point h above sea level sits at (R + h) / R times its sea-level x and y, so a chunk's bounds
 // spread past its sea-level footprint by a little (lod_selection.cpp's kHorizontalSpread).
 const float kHorizontalSpread = 2e-3;
 const uint kWorkgroupSize = gl_WorkGroupSize.x;
-const uint kOccluderChunksPerGroup = 4u;  // terrain_occluders.comp's kChunksPerGroup
+const uint kBlockChunksPerGroup = 4u;  // terrain_occluders.comp's and terrain_hidden.comp's kChunksPerGroup
 
 // Two queues of slots, a level's and the next's, each as long as there are slots; after the walk,
 // the chunks drawn as pairs of key and slot.
@@ -57,17 +57,16 @@ layout(std430, set = 0, binding = 5) coherent buffer SelectionDraws {
 };
 // The children a refinement needs that are not built (level, x, y), for the CPU to build.
 layout(std430, set = 0, binding = 6) writeonly buffer SelectionRequests { ivec4 requests[]; };
+// The dispatch of the horizon's passes over chunks (terrain_occluders.comp, terrain_hidden.comp): a
+// workgroup per kBlockChunksPerGroup chunks the walk would draw (VkDispatchIndirectCommand).
+layout(std430, set = 0, binding = 7) writeonly buffer BlockDispatch { uvec3 block_groups; };
 // Per slot, what the last comparing selection drew there: its fill and 1 + its skirt mask; 0 if none.
-layout(std430, set = 0, binding = 9) buffer TileContent { uvec2 content[]; };
-// The occluders' dispatch: a workgroup per kOccluderChunksPerGroup chunks the walk would draw
-// (VkDispatchIndirectCommand).
-layout(std430, set = 0, binding = 7) writeonly buffer OccluderDispatch { uvec3 occluder_groups; };
-// terrain_occluders.comp's, per band; made cumulative here, per band what lies within its edge.
-layout(std430, set = 0, binding = 8) coherent buffer TerrainHorizon { uint horizon[]; };
+layout(std430, set = 0, binding = 8) buffer TileContent { uvec2 content[]; };
 
 shared uint queue_size[2];
 shared uint draw_size, deferred_size, request_size, drawn_size, per_vertex_size, index_size, slack_bits, changed_size;
 const uint kReadsPerVertex = 0x80000000u;  // the sort key's top bit
+const uint kHidden = 0x80000000u;          // on a chunk's slot, by terrain_hidden.comp
 
 bool IntersectsFrustum(vec3 lower, vec3 upper) {
   for (int i = 0; i < 5; ++i) {
@@ -202,39 +201,6 @@ uint SkirtMask(int slot) {
   return mask;
 }
 
-// Whether nearer terrain hides the chunk's bounds from the camera: in every azimuth bin they span,
-// their highest tangent is under the horizon of the bands wholly in front of them.
-bool Hidden(ChunkNode node) {
-  float z_max = -1e30, z_abs = 0.0, far = 0.0, span_min = 1e30, span_max = -1e30, reference = 0.0;
-  for (int corner = 0; corner < 8; ++corner) {
-    vec3 offset = mix(node.lower.xyz, node.upper.xyz, bvec3(corner & 1, corner & 2, corner & 4)) - camera.xyz;
-    float z = dot(offset, vertical.xyz);
-    vec2 horizontal = vec2(dot(offset, east.xyz), dot(offset, north.xyz));
-    float azimuth = AzimuthInBins(atan(horizontal.y, horizontal.x));
-    if (corner == 0) reference = azimuth;
-    azimuth = UnwrapBins(azimuth, reference);
-    z_max = max(z_max, z);
-    z_abs = max(z_abs, abs(z));
-    far = max(far, length(horizontal));
-    span_min = min(span_min, azimuth);
-    span_max = max(span_max, azimuth);
-  }
-  // No point of the box is nearer the camera's vertical than this; when it is 0, the vertical
-  // passes through the box, whose azimuths then take the whole turn.
-  float distance = DistanceToBounds(node);
-  float near_squared = distance * distance - z_abs * z_abs;
-  if (near_squared <= 0.0) return false;
-  float near = sqrt(near_squared);
-  int band = HorizonBandWithin(near);
-  if (band < 0) return false;
-  float tangent = z_max / (z_max >= 0.0 ? near : far);
-  for (int bin = int(floor(span_min)); bin <= int(floor(span_max)); ++bin) {
-    uint known = horizon[HorizonIndex(band, bin)];
-    if (known == 0u || tangent >= FromOrderedBits(known)) return false;
-  }
-  return true;
-}
-
 void Walk(uint t) {
   if (t == 0u) {
     queue_size[0] = 0u;
@@ -266,7 +232,7 @@ void Walk(uint t) {
     // Children asked for beyond the list's length are asked for again by a later selection.
     requested = min(request_size, uint(requests.length()));
     camera_slack = slack_bits;
-    occluder_groups = uvec3(north.w != 0.0 ? (draw_size + kOccluderChunksPerGroup - 1u) / kOccluderChunksPerGroup : 0u, 1u, 1u);
+    block_groups = uvec3((draw_size + kBlockChunksPerGroup - 1u) / kBlockChunksPerGroup, 1u, 1u);
   }
 }
 
@@ -278,24 +244,13 @@ void Finish(uint t) {
     index_size = 0u;
   }
   Synchronize();
-  if (north.w != 0.0) {
-    // Each band from then on holds what the nearer ones hold.
-    for (uint bin = t; bin < uint(kHorizonAzimuths); bin += kWorkgroupSize) {
-      uint known = horizon[bin];
-      for (int band = 1; band < kHorizonBands; ++band) {
-        known = max(known, horizon[HorizonIndex(band, int(bin))]);
-        horizon[HorizonIndex(band, int(bin))] = known;
-      }
-    }
-    Synchronize();
-  }
   // The chunks drawn gather in the queues, free since the walk, in any order: they are sorted next,
   // and the sort's cost grows with the power of two it sorts. Those that read per vertex sort after
   // those that read per pixel: within its bounds' distance given by the CPU (PerPixelReadsWithinM).
   for (uint i = t; i < candidates; i += kWorkgroupSize) {
     uvec2 key = keys[i];
+    if ((key.y & kHidden) != 0u) continue;
     ChunkNode node = nodes[key.y];
-    if (north.w != 0.0 && Hidden(node)) continue;
     if (!(DistanceToBounds(node) < node.upper.w)) {
       key.x |= kReadsPerVertex;
       atomicAdd(per_vertex_size, 1u);

@@ -23,7 +23,7 @@ layout(std140, set = 0, binding = 1) uniform SelectionView {
   ivec4 root;                 // x: the root's slot or kNotBuilt; y: generation; z: vertices per slot; w: first instance
   vec4 vertical;              // xyz: the camera's local vertical; w: its height above the sea-level sphere (m)
   vec4 east;                  // xyz: a horizontal direction there, azimuth 0; w: the planet's radius (m)
-  vec4 north;                 // xyz: the horizontal direction at azimuth 90 degrees; w: 1 to leave out hidden chunks
+  vec4 north;                 // xyz: the horizontal direction at azimuth 90 degrees; w: unused
   // x: 1 to compare the chunks drawn with the last selection's (TileContent); y: 1 to report them
   // changed whatever they are.
   uvec4 compare;

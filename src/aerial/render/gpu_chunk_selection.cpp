@@ -14,8 +14,12 @@ namespace {
 using terrain::ChunkId;
 
 constexpr int32_t kNotBuilt = -1, kOutsideTerrain = -2;  // terrain_select.comp's
-constexpr uint32_t kHorizonEntries = 1024 * 48;  // terrain_horizon.glsl's kHorizonAzimuths * kHorizonBands
-constexpr int32_t kWalk = 0, kFinish = 1;         // terrain_select.comp's kStage
+constexpr uint32_t kHorizonAzimuths = 1024;  // terrain_horizon.glsl's
+constexpr uint32_t kHorizonEntries = kHorizonAzimuths * 48;  // times its kHorizonBands
+constexpr int32_t kWalk = 0, kFinish = 1;                    // terrain_select.comp's kStage
+constexpr int32_t kCumulativeHorizon = 0, kHiddenChunks = 1;  // terrain_hidden.comp's kStage
+constexpr uint32_t kHiddenWorkgroupSize = 64;                 // and its local size
+constexpr uint32_t kBlocksPerChunk = 16;                      // terrain_occluders.comp's
 // The draws' header: draws per pixel, deferred, requested, hidden, draws per vertex, indices, the
 // camera's slack (float bits), changed.
 using Header = std::array<uint32_t, 8>;
@@ -32,7 +36,7 @@ struct SelectionView {
   glm::ivec4 root;   // root slot, generation, vertices per slot, first instance
   glm::vec4 vertical;  // w: the camera's height above the sea-level sphere (m)
   glm::vec4 east;      // w: the planet's radius (m)
-  glm::vec4 north;     // w: 1 to leave out hidden chunks
+  glm::vec4 north;     // w: unused (hidden chunks are left out by the passes recorded)
   glm::uvec4 compare;  // x: compare with the last selection's chunks; y: report them changed
   std::array<glm::uvec4, 16> index_ranges;
 };
@@ -53,8 +57,22 @@ vk::SlotLayout SelectSlots() {
   return {{"ChunkTree", vk::kStorageBuffer},         {"SelectionView", vk::kUniform},
           {"SelectionQueues", vk::kStorageBuffer},   {"SelectionStamps", vk::kStorageBuffer},
           {"SelectionKeys", vk::kStorageBuffer},     {"SelectionDraws", vk::kStorageBuffer},
-          {"SelectionRequests", vk::kStorageBuffer}, {"OccluderDispatch", vk::kStorageBuffer},
-          {"TerrainHorizon", vk::kStorageBuffer},    {"TileContent", vk::kStorageBuffer}};
+          {"SelectionRequests", vk::kStorageBuffer}, {"BlockDispatch", vk::kStorageBuffer},
+          {"TileContent", vk::kStorageBuffer}};
+}
+
+vk::SlotLayout OccluderSlots() {
+  return {{"ChunkTree", vk::kStorageBuffer},        {"SelectionView", vk::kUniform},
+          {"SelectionKeys", vk::kStorageBuffer},    {"SelectionDraws", vk::kStorageBuffer},
+          {"ChunkCellHeights", vk::kStorageBuffer}, {"TerrainHorizon", vk::kStorageBuffer},
+          {"BlockTargets", vk::kStorageBuffer}};
+}
+
+vk::SlotLayout HiddenSlots() {
+  return {{"SelectionKeys", vk::kStorageBuffer},
+          {"SelectionDraws", vk::kStorageBuffer},
+          {"BlockTargets", vk::kStorageBuffer},
+          {"TerrainHorizon", vk::kStorageBuffer}};
 }
 
 vk::Buffer StorageBuffer(const vk::Context& context, ::vk::DeviceSize size, bool host_visible,
@@ -76,12 +94,15 @@ double CameraSlackM(uint32_t bits) { return double(std::bit_cast<float>(bits)); 
 
 }  // namespace
 
-// The bytes of each buffer a selection over `slots` chunk slots holds.
+// The bytes of each buffer a selection over `slots` chunk slots holds. One that never leaves out
+// hidden chunks holds the horizon's buffers at a placeholder's size.
 struct GpuChunkSelection::BufferBytes {
-  explicit BufferBytes(uint32_t slots) : slots(slots) {}
+  BufferBytes(uint32_t slots, bool occlusion_culling) : slots(slots), culling(occlusion_culling) {}
   uint32_t slots;
+  bool culling;
+  ::vk::DeviceSize ForCulling(::vk::DeviceSize bytes) const { return culling ? bytes : sizeof(glm::vec4); }
   ::vk::DeviceSize tree() const { return slots * sizeof(Node); }
-  ::vk::DeviceSize cell_lowest() const { return slots * sizeof(terrain::ChunkInfo::cell_lowest_m); }
+  ::vk::DeviceSize cell_heights() const { return ForCulling(2 * slots * sizeof(terrain::ChunkInfo::cell_lowest_m)); }
   ::vk::DeviceSize queues() const { return 2 * slots * sizeof(int32_t); }
   ::vk::DeviceSize stamps() const { return slots * sizeof(uint32_t); }
   ::vk::DeviceSize keys() const { return std::bit_ceil(slots) * 2 * sizeof(uint32_t); }
@@ -89,61 +110,62 @@ struct GpuChunkSelection::BufferBytes {
     return kDrawsOffset + 2 * slots * sizeof(::vk::DrawIndexedIndirectCommand);
   }
   ::vk::DeviceSize requests() const { return 4 * slots * sizeof(glm::ivec4); }
-  static constexpr ::vk::DeviceSize occluder_groups() { return sizeof(::vk::DispatchIndirectCommand); }
-  static constexpr ::vk::DeviceSize horizon() { return kHorizonEntries * sizeof(uint32_t); }
+  static constexpr ::vk::DeviceSize block_groups() { return sizeof(::vk::DispatchIndirectCommand); }
+  ::vk::DeviceSize horizon() const { return ForCulling(kHorizonEntries * sizeof(uint32_t)); }
+  ::vk::DeviceSize block_targets() const { return ForCulling(slots * kBlocksPerChunk * sizeof(glm::vec4)); }
   ::vk::DeviceSize content() const { return slots * sizeof(glm::uvec2); }
   ::vk::DeviceSize feedback() const { return kFeedbackStampsOffset + slots * sizeof(uint32_t); }
   ::vk::DeviceSize all(uint32_t feedbacks) const {
-    return tree() + cell_lowest() + sizeof(SelectionView) + queues() + stamps() + keys() + draws() + requests() +
-           occluder_groups() + horizon() + content() + feedbacks * feedback();
+    return tree() + cell_heights() + sizeof(SelectionView) + queues() + stamps() + keys() + draws() + requests() +
+           block_groups() + horizon() + block_targets() + content() + feedbacks * feedback();
   }
 };
 
-uint64_t GpuChunkSelection::MemoryBytes(uint32_t slots, uint32_t feedbacks) {
-  return BufferBytes(slots).all(feedbacks);
+GpuChunkSelection::BufferBytes GpuChunkSelection::bytes() const { return BufferBytes(slots_, occlusion_culling_); }
+
+uint64_t GpuChunkSelection::MemoryBytes(uint32_t slots, uint32_t feedbacks, bool occlusion_culling) {
+  return BufferBytes(slots, occlusion_culling).all(feedbacks);
 }
 
 GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot,
-                                     uint32_t first_instance, uint32_t feedbacks)
+                                     uint32_t first_instance, uint32_t feedbacks, bool occlusion_culling)
     : slots_(slots),
+      occlusion_culling_(occlusion_culling),
       vertices_per_slot_(vertices_per_slot),
       first_instance_(first_instance),
       id_in_slot_(slots),
       nodes_(slots),
-      cell_lowest_m_(slots),
+      cell_heights_m_(occlusion_culling ? slots : 0),
       node_changed_(slots, false),
-      tree_(StorageBuffer(context, BufferBytes(slots).tree(), false, ::vk::BufferUsageFlagBits::eTransferDst)),
-      cell_lowest_(StorageBuffer(context, BufferBytes(slots).cell_lowest(), false,
-                                 ::vk::BufferUsageFlagBits::eTransferDst)),
+      tree_(StorageBuffer(context, bytes().tree(), false, ::vk::BufferUsageFlagBits::eTransferDst)),
+      cell_heights_(StorageBuffer(context, bytes().cell_heights(), false,
+                                  ::vk::BufferUsageFlagBits::eTransferDst)),
       view_(context, vk::RecordedUniformBufferInfo(sizeof(SelectionView))),
-      queues_(StorageBuffer(context, BufferBytes(slots).queues(), false)),
-      stamps_(StorageBuffer(context, BufferBytes(slots).stamps(), true, ::vk::BufferUsageFlagBits::eTransferSrc)),
-      keys_(StorageBuffer(context, BufferBytes(slots).keys(), false)),
-      draws_(StorageBuffer(context, BufferBytes(slots).draws(), true,
+      queues_(StorageBuffer(context, bytes().queues(), false)),
+      stamps_(StorageBuffer(context, bytes().stamps(), true, ::vk::BufferUsageFlagBits::eTransferSrc)),
+      keys_(StorageBuffer(context, bytes().keys(), false)),
+      draws_(StorageBuffer(context, bytes().draws(), true,
                            ::vk::BufferUsageFlagBits::eIndirectBuffer | ::vk::BufferUsageFlagBits::eTransferSrc |
                                ::vk::BufferUsageFlagBits::eConditionalRenderingEXT)),
-      requests_(StorageBuffer(context, BufferBytes(slots).requests(), true, ::vk::BufferUsageFlagBits::eTransferSrc)),
-      occluder_groups_(StorageBuffer(context, BufferBytes::occluder_groups(), false,
-                                     ::vk::BufferUsageFlagBits::eIndirectBuffer)),
-      horizon_(StorageBuffer(context, BufferBytes::horizon(), false,
+      requests_(StorageBuffer(context, bytes().requests(), true, ::vk::BufferUsageFlagBits::eTransferSrc)),
+      block_groups_(StorageBuffer(context, BufferBytes::block_groups(), false,
+                                  ::vk::BufferUsageFlagBits::eIndirectBuffer)),
+      horizon_(StorageBuffer(context, bytes().horizon(), false,
                              ::vk::BufferUsageFlagBits::eTransferDst)),
-      content_(StorageBuffer(context, BufferBytes(slots).content(), true)),
+      block_targets_(StorageBuffer(context, bytes().block_targets(), false)),
+      content_(StorageBuffer(context, bytes().content(), true)),
       workgroup_size_(SelectionWorkgroupSize(context)),
       walk_(context, "frame/terrain_select.comp", SelectSlots(), 0, {kWalk, int32_t(workgroup_size_)}),
-      occluders_(context, "frame/terrain_occluders.comp",
-                 {{"ChunkTree", vk::kStorageBuffer},
-                  {"SelectionView", vk::kUniform},
-                  {"SelectionKeys", vk::kStorageBuffer},
-                  {"SelectionDraws", vk::kStorageBuffer},
-                  {"ChunkCellLowest", vk::kStorageBuffer},
-                  {"TerrainHorizon", vk::kStorageBuffer}}),
+      occluders_(context, "frame/terrain_occluders.comp", OccluderSlots()),
+      cumulative_horizon_(context, "frame/terrain_hidden.comp", HiddenSlots(), 0, {kCumulativeHorizon}),
+      hidden_(context, "frame/terrain_hidden.comp", HiddenSlots(), 0, {kHiddenChunks}),
       finish_(context, "frame/terrain_select.comp", SelectSlots(), 0, {kFinish, int32_t(workgroup_size_)}),
       feedback_generations_(feedbacks, 0) {
   static_assert(sizeof(Node) == 80);
   std::memset(stamps_.mapped(), 0, stamps_.size());
   std::memset(content_.mapped(), 0, content_.size());
   for (uint32_t i = 0; i < feedbacks; ++i)
-    feedbacks_.emplace_back(context, vk::BufferCreateInfo{.size = BufferBytes(slots).feedback(),
+    feedbacks_.emplace_back(context, vk::BufferCreateInfo{.size = bytes().feedback(),
                                                     .usage = ::vk::BufferUsageFlagBits::eTransferDst,
                                                     .host_visible = true});
 }
@@ -185,7 +207,11 @@ void GpuChunkSelection::Insert(uint32_t slot, const ChunkId& id, const terrain::
   const std::array<ChunkId, 4> neighbours = Neighbours(id);
   for (int side = 0; side < 4; ++side) node.neighbours[side] = int32_t(SlotOf(neighbours[side]).value_or(kNotBuilt));
   Change(slot) = node;
-  cell_lowest_m_[slot] = info.cell_lowest_m;
+  if (occlusion_culling_) {
+    std::copy(info.cell_lowest_m.begin(), info.cell_lowest_m.end(), cell_heights_m_[slot].begin());
+    std::copy(info.cell_highest_m.begin(), info.cell_highest_m.end(),
+              cell_heights_m_[slot].begin() + info.cell_lowest_m.size());
+  }
   inserted_.push_back(slot);
   slot_of_[id] = slot;
   id_in_slot_[slot] = id;
@@ -202,6 +228,8 @@ void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodV
                                Compare compare) {
   if (feedback >= feedbacks_.size())
     throw Error("terrain selection feedback", std::to_string(feedback), "below " + std::to_string(feedbacks_.size()));
+  if (view.occlusion_culling && !occlusion_culling_)
+    throw Error("terrain selection view", "occlusion culling", "a selection built for it");
   if (++generation_ == 0) ++generation_;  // stamps start at 0: no selection has drawn a slot
   SelectionView block{};
   for (size_t i = 0; i < view.planes.size(); ++i) block.planes[i] = glm::vec4(view.planes[i]);
@@ -218,7 +246,7 @@ void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodV
   const glm::dvec3 east = glm::normalize(glm::dvec3(1.0, 0.0, 0.0) - up.x * up);
   block.vertical = glm::vec4(glm::vec3(up), float(glm::length(view.camera - center) - view.planet_radius_m));
   block.east = glm::vec4(glm::vec3(east), float(view.planet_radius_m));
-  block.north = glm::vec4(glm::vec3(glm::cross(up, east)), view.occlusion_culling ? 1.0f : 0.0f);
+  block.north = glm::vec4(glm::vec3(glm::cross(up, east)), 0.0f);
   block.compare = glm::uvec4(compare != Compare::kNothing, compare == Compare::kRedrawn, 0, 0);
   for (uint32_t mask = 0; mask < 16; ++mask) {
     terrain::IndexRange range = terrain::ChunkIndexRange(mask);
@@ -231,28 +259,37 @@ void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodV
     cmd.updateBuffer(tree_.handle(), slot * sizeof(Node), ::vk::ArrayProxy<const Node>(1, &nodes_[slot]));
     node_changed_[slot] = false;
   }
-  for (uint32_t slot : inserted_)
-    cmd.updateBuffer(cell_lowest_.handle(), slot * sizeof(terrain::ChunkInfo::cell_lowest_m),
-                     ::vk::ArrayProxy<const float>(uint32_t(cell_lowest_m_[slot].size()), cell_lowest_m_[slot].data()));
+  if (occlusion_culling_) {
+    for (uint32_t slot : inserted_)
+      cmd.updateBuffer(cell_heights_.handle(), slot * sizeof(cell_heights_m_[slot]),
+                       ::vk::ArrayProxy<const float>(uint32_t(cell_heights_m_[slot].size()), cell_heights_m_[slot].data()));
+  }
   changed_nodes_.clear();
   inserted_.clear();
   cmd.updateBuffer(view_.handle(), 0, ::vk::ArrayProxy<const SelectionView>(1, &block));
   const std::vector<vk::Slot> slots = {
-      vk::StorageBufferSlot{&tree_},      vk::UniformBufferSlot{&view_},      vk::StorageBufferSlot{&queues_},
-      vk::StorageBufferSlot{&stamps_},    vk::StorageBufferSlot{&keys_},      vk::StorageBufferSlot{&draws_},
-      vk::StorageBufferSlot{&requests_},  vk::StorageBufferSlot{&occluder_groups_},
-      vk::StorageBufferSlot{&horizon_},   vk::StorageBufferSlot{&content_}};
+      vk::StorageBufferSlot{&tree_},      vk::UniformBufferSlot{&view_},        vk::StorageBufferSlot{&queues_},
+      vk::StorageBufferSlot{&stamps_},    vk::StorageBufferSlot{&keys_},        vk::StorageBufferSlot{&draws_},
+      vk::StorageBufferSlot{&requests_},  vk::StorageBufferSlot{&block_groups_}, vk::StorageBufferSlot{&content_}};
+  const std::vector<vk::Slot> occluder_slots = {
+      vk::StorageBufferSlot{&tree_},  vk::UniformBufferSlot{&view_},         vk::StorageBufferSlot{&keys_},
+      vk::StorageBufferSlot{&draws_}, vk::StorageBufferSlot{&cell_heights_}, vk::StorageBufferSlot{&horizon_},
+      vk::StorageBufferSlot{&block_targets_}};
+  const std::vector<vk::Slot> hidden_slots = {vk::StorageBufferSlot{&keys_}, vk::StorageBufferSlot{&draws_},
+                                              vk::StorageBufferSlot{&block_targets_},
+                                              vk::StorageBufferSlot{&horizon_}};
   if (view.occlusion_culling) cmd.fillBuffer(horizon_.handle(), 0, VK_WHOLE_SIZE, 0u);  // nothing known
   vk::FullBarrier(cmd);
   walk_.Dispatch(cmd, slots, {workgroup_size_, 1, 1}, {workgroup_size_, 1, 1});
   vk::FullBarrier(cmd);
-  occluders_.DispatchIndirect(cmd,
-                              {vk::StorageBufferSlot{&tree_}, vk::UniformBufferSlot{&view_},
-                               vk::StorageBufferSlot{&keys_}, vk::StorageBufferSlot{&draws_},
-                               vk::StorageBufferSlot{&cell_lowest_},
-                               vk::StorageBufferSlot{&horizon_}},
-                              occluder_groups_);
-  vk::FullBarrier(cmd);
+  if (view.occlusion_culling) {
+    occluders_.DispatchIndirect(cmd, occluder_slots, block_groups_);
+    vk::FullBarrier(cmd);
+    cumulative_horizon_.Dispatch(cmd, hidden_slots, {kHorizonAzimuths, 1, 1}, {kHiddenWorkgroupSize, 1, 1});
+    vk::FullBarrier(cmd);
+    hidden_.DispatchIndirect(cmd, hidden_slots, block_groups_);
+    vk::FullBarrier(cmd);
+  }
   finish_.Dispatch(cmd, slots, {workgroup_size_, 1, 1}, {workgroup_size_, 1, 1});
   vk::FullBarrier(cmd);
   const ::vk::Buffer copy = feedbacks_[feedback].handle();

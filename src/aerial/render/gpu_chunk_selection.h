@@ -6,11 +6,12 @@
 // indirect draws. Chunks that nearer terrain hides are left out by a horizon around the camera's
 // vertical (shaders/include/terrain_horizon.glsl, terrain_occluders.comp), to which every chunk
 // the walk keeps adds its cells at once: unlike the CPU's horizon on the screen, no chunk waits
-// for those in front of it. The CPU's part no longer grows with the terrain: it keeps the tree of
+// for those in front of it. Each is then tested against it block by block of its cells, at their
+// highest (terrain_hidden.comp). The CPU's part no longer grows with the terrain: it keeps the tree of
 // built chunks (a few links per chunk built or dropped) and builds the chunks the GPU asks for.
 //
-// The tree is the chunk slots' table: per slot, the chunk's bounds and error, its cells' lowest
-// heights, and the slots of its children and of its level's neighbours. Its changes reach the GPU
+// The tree is the chunk slots' table: per slot, the chunk's bounds and error, its cells' lowest and
+// highest heights, and the slots of its children and of its level's neighbours. Its changes reach the GPU
 // in the next recorded selection's commands, so each selection in flight walks the tree as it was
 // when it was recorded. A removed chunk's slot may be drawn by the selections recorded before the
 // removal: its vertices may be overwritten once those have completed.
@@ -38,11 +39,13 @@ class GpuChunkSelection {
   // slots: how many chunks the tree holds (the chunk cache's slots); vertices_per_slot: where
   // slot s's vertices begin (s times it) in the vertex buffer the draws read; first_instance: the
   // draws' first instance; feedbacks: how many selections may be in flight at once, each with its
-  // own copy of what it tells the CPU (ReadFeedback).
+  // own copy of what it tells the CPU (ReadFeedback); occlusion_culling: whether its views may
+  // leave out hidden chunks (terrain::LodView::occlusion_culling), for which it holds the horizon,
+  // the cells' heights and their blocks as targets.
   GpuChunkSelection(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot, uint32_t first_instance,
-                    uint32_t feedbacks = 1);
+                    uint32_t feedbacks = 1, bool occlusion_culling = true);
   // The device memory such a selection holds.
-  static uint64_t MemoryBytes(uint32_t slots, uint32_t feedbacks);
+  static uint64_t MemoryBytes(uint32_t slots, uint32_t feedbacks, bool occlusion_culling);
 
   // The chunk `id`, built, is in `slot` (a free one) / is no longer there. It reads the froxels
   // per pixel while its bounds are within per_pixel_reads_within_m of the camera
@@ -122,22 +125,26 @@ class GpuChunkSelection {
     glm::ivec4 children, neighbours, id;
   };
   struct BufferBytes;
+  BufferBytes bytes() const;
   Node& Change(uint32_t slot);  // the slot's node, to be written in the next selection's commands
   void Link(const terrain::ChunkId& id, int32_t slot);
 
-  uint32_t slots_, vertices_per_slot_, first_instance_;
+  uint32_t slots_;
+  bool occlusion_culling_;
+  uint32_t vertices_per_slot_, first_instance_;
   uint32_t generation_ = 0;
   uint32_t fills_ = 0;  // chunks inserted so far
   std::unordered_map<terrain::ChunkId, uint32_t, terrain::ChunkIdHash> slot_of_;
   std::vector<terrain::ChunkId> id_in_slot_;
   std::vector<Node> nodes_;
-  std::vector<std::array<float, terrain::kChunkCells * terrain::kChunkCells>> cell_lowest_m_;
+  std::vector<std::array<float, 2 * terrain::kChunkCells * terrain::kChunkCells>> cell_heights_m_;
   std::vector<bool> node_changed_;
   std::vector<uint32_t> changed_nodes_, inserted_;  // since the last selection recorded
-  vk::Buffer tree_, cell_lowest_, view_, queues_, stamps_, keys_, draws_, requests_, occluder_groups_, horizon_;
-  vk::Buffer content_;  // terrain_select.comp's TileContent
+  vk::Buffer tree_, cell_heights_, view_, queues_, stamps_, keys_, draws_, requests_, block_groups_, horizon_;
+  vk::Buffer block_targets_;  // terrain_occluders.comp's BlockTargets
+  vk::Buffer content_;        // terrain_select.comp's TileContent
   uint32_t workgroup_size_;  // terrain_select.comp's
-  vk::ComputePipeline walk_, occluders_, finish_;
+  vk::ComputePipeline walk_, occluders_, cumulative_horizon_, hidden_, finish_;
   std::vector<uint32_t> feedback_generations_;
   std::vector<vk::Buffer> feedbacks_;  // the draws' header, kFedBackRequests requests, the stamps
 };

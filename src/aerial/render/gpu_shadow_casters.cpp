@@ -18,7 +18,8 @@ double TrustedSlackM(double gpu_slack_m) { return std::max(0.0, gpu_slack_m * (1
 GpuShadowCasters::GpuShadowCasters(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot,
                                    uint32_t feedbacks) {
   for (int cascade = kFirstGpuCasterCascade; cascade < kShadowCascades; ++cascade)
-    tiles_[cascade].selection = std::make_unique<GpuChunkSelection>(context, slots, vertices_per_slot, 0, feedbacks);
+    tiles_[cascade].selection = std::make_unique<GpuChunkSelection>(context, slots, vertices_per_slot, 0, feedbacks,
+                                                                    /*occlusion_culling=*/false);
 }
 
 void GpuShadowCasters::Apply(const std::vector<TerrainChunkCache::SlotChange>& changes) {

@@ -40,7 +40,7 @@ class GpuShadowCasters {
   // As GpuChunkSelection's; each tile's draws start at instance 0.
   GpuShadowCasters(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot, uint32_t feedbacks);
   static uint64_t MemoryBytes(uint32_t slots, uint32_t feedbacks) {
-    return (kShadowCascades - kFirstGpuCasterCascade) * GpuChunkSelection::MemoryBytes(slots, feedbacks);
+    return (kShadowCascades - kFirstGpuCasterCascade) * GpuChunkSelection::MemoryBytes(slots, feedbacks, false);
   }
 
   // Whether the GPU selects the casters of `cascade`.

@@ -298,7 +298,7 @@ std::unique_ptr<GpuShadowCasters> GpuCasterSelection(const vk::Context& context,
 }  // namespace
 
 uint64_t GpuTerrainSelectionBytes(const RenderOptions& o) {
-  return GpuChunkSelection::MemoryBytes(kTerrainChunkSlots, o.frames_in_flight) +
+  return GpuChunkSelection::MemoryBytes(kTerrainChunkSlots, o.frames_in_flight, true) +
          (o.shadows ? GpuShadowCasters::MemoryBytes(kTerrainChunkSlots, o.frames_in_flight) : 0);
 }
 

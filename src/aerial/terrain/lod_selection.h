@@ -62,10 +62,12 @@ struct ChunkInfo {
   double longest_edge_m = 0.0;  // TerrainChunk::longest_edge_m
   double largest_rise_m = 0.0;  // TerrainChunk::largest_rise_m
   std::array<float, kChunkCells * kChunkCells> cell_lowest_m{};  // TerrainChunk::cell_lowest_m
+  std::array<float, kChunkCells * kChunkCells> cell_highest_m{};  // TerrainChunk::cell_highest_m
 };
 
 inline ChunkInfo InfoOf(const TerrainChunk& chunk) {
-  return {chunk.geometric_error_m, chunk.bounds, chunk.longest_edge_m, chunk.largest_rise_m, chunk.cell_lowest_m};
+  return {chunk.geometric_error_m, chunk.bounds, chunk.longest_edge_m, chunk.largest_rise_m, chunk.cell_lowest_m,
+          chunk.cell_highest_m};
 }
 
 // Where chunks come from: built on demand (on the CPU, then uploaded) and kept.

@@ -188,6 +188,7 @@ TerrainChunk BuildTerrainChunk(const ChunkId& id, double planet_radius_m) {
         highest = std::max(highest, height);
       }
       chunk.cell_lowest_m[j * N + i] = float(lowest);
+      chunk.cell_highest_m[j * N + i] = float(highest);
       chunk.largest_rise_m = std::max(chunk.largest_rise_m, highest - lowest);
     }
   }

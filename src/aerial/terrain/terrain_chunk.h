@@ -39,6 +39,7 @@ struct TerrainChunk {
   // Per cell (row by row), the height above the sphere of its lowest corner: the mesh over the
   // cell never dips below it (occluders, screen_horizon.h).
   std::array<float, kChunkCells * kChunkCells> cell_lowest_m{};
+  std::array<float, kChunkCells * kChunkCells> cell_highest_m{};
   Bounds bounds;  // of every vertex, the skirt included
 };
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 
@@ -34,6 +35,31 @@ TEST(TerrainChunk, GridVerticesLieOnTheSurface) {
       // Float positions up to 100 km out are rounded to ~4 mm per axis; slopes below 3 turn that
       // into at most ~1.2 cm of height along the radial line, so 5 cm leaves room.
       ASSERT_NEAR(Radial(p) - kR, SurfaceHeightBelow(p), 0.05) << "level " << id.level << " vertex " << k;
+    }
+  }
+}
+
+// Each cell's lowest and highest heights bound its four grid vertices' heights above the sphere
+// and are reached by one of them (float vertices: within the 5 cm of the test above); the mesh's
+// triangles over the cell lie between its corners, so the horizon's occluders and targets
+// (terrain_occluders.comp) bound it.
+TEST(TerrainChunk, CellHeightsAreTheirCornersExtremes) {
+  for (const ChunkId& id : kChunks) {
+    TerrainChunk chunk = BuildTerrainChunk(id, kR);
+    for (int j = 0; j < kChunkCells; ++j) {
+      for (int i = 0; i < kChunkCells; ++i) {
+        double lowest = INFINITY, highest = -INFINITY;
+        for (int corner = 0; corner < 4; ++corner) {
+          const int vertex = (j + (corner >> 1)) * (kChunkCells + 1) + i + (corner & 1);
+          const double height = Radial(glm::dvec3(chunk.vertices[vertex].position)) - kR;
+          lowest = std::min(lowest, height);
+          highest = std::max(highest, height);
+        }
+        const int cell = j * kChunkCells + i;
+        EXPECT_NEAR(chunk.cell_lowest_m[cell], lowest, 0.05) << "level " << id.level << " cell " << cell;
+        EXPECT_NEAR(chunk.cell_highest_m[cell], highest, 0.05) << "level " << id.level << " cell " << cell;
+        EXPECT_LE(chunk.cell_lowest_m[cell], chunk.cell_highest_m[cell]);
+      }
     }
   }
 }
