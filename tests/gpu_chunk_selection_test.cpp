@@ -311,9 +311,10 @@ TEST_F(GpuChunkSelectionTest, SelectsEachCascadesCastersAsTheCpuDoes) {
   EXPECT_GT(casters, 1000u);
 }
 
-// With occlusion culling, the GPU leaves out only chunks that the terrain hides: every vertex of
-// a 5 x 5 lattice over each chunk left out (the corners of its blocks of 2 x 2 cells, each tested
-// on its own) is behind the ground as the CPU marches it, and the chunks drawn are the rest of those
+// With occlusion culling, the GPU leaves out only chunks, and blocks of chunks, that the terrain
+// hides: every vertex of a 5 x 5 lattice over each chunk left out (the corners of its blocks of
+// 2 x 2 cells, each tested on its own), and of a 3 x 3 lattice over each block left out of a chunk's
+// draw, is behind the ground as the CPU marches it, and the chunks drawn are the rest of those
 // without culling, in the same order. It hides about as much as the CPU's horizon on the screen
 // (terrain/screen_horizon.h): a different rule (a horizon per azimuth around the camera's vertical,
 // by bands of distance, with blocks of 2 x 2 cells as occluders at their lowest and as targets at
@@ -327,6 +328,10 @@ TEST_F(GpuChunkSelectionTest, LeavesOutOnlyChunksTheTerrainHides) {
   above.camera.yaw_deg = 300.0;
   terrain::LodView above_view = terrain::MakeLodView(above.camera, kAspect, 720, 4.0, kR);
   above_view.occlusion_culling = false;
+  // Looking along the ground, a fifth of the drawn chunks' blocks are left out (0.20 at noon and
+  // sunset); looking down, few are hidden.
+  const std::array<double, 3> least_blocks_left_out = {0.1, 0.1, 0.0};
+  int v = 0;
   for (terrain::LodView view : {ViewOf("noon", 720, 4.0), ViewOf("sunset", 720, 4.0), above_view}) {
     terrain::SelectChunks(view, chunks_);
     const GpuChunkSelection::Result all = SelectOnGpu(view);
@@ -340,23 +345,38 @@ TEST_F(GpuChunkSelectionTest, LeavesOutOnlyChunksTheTerrainHides) {
     EXPECT_LE(double(culled.chunks.size()), 1.1 * double(cpu.chunks.size()));
     EXPECT_GE(double(culled.chunks.size()), 0.9 * double(cpu.chunks.size()));
 
-    size_t next = 0, points = 0, seen = 0;
+    size_t next = 0, points = 0, seen = 0, blocks_left_out = 0;
+    // The points of a chunk's footprint at (i, j) / 8 of its side that the camera sees.
+    auto check_hidden = [&](const ChunkId& id, int i0, int i1, int j0, int j1, int step, const char* what) {
+      const terrain::Footprint f = terrain::FootprintOf(id);
+      for (int j = j0; j <= j1; j += step)
+        for (int i = i0; i <= i1; i += step) {
+          ++points;
+          if (!TerrainHides(view.camera, TerrainPoint(f.x0 + f.size * i / 8, f.y0 + f.size * j / 8, kR))) {
+            ++seen;
+            ADD_FAILURE() << "chunk " << id.level << "/" << id.x << "/" << id.y << ": " << what << ", its point ("
+                          << i << ", " << j << ") / 8 seen";
+          }
+        }
+    };
     for (const SelectedChunk& chunk : all.chunks) {
       if (next < culled.chunks.size() && culled.chunks[next].id == chunk.id) {
+        // Blocks of 2 x 2 cells, a quarter of the side: their corners and the middles of their sides.
+        for (uint32_t block = 0; block < terrain::kBlocksPerChunk; ++block) {
+          if (!(culled.blocks_left_out[next] >> block & 1u)) continue;
+          ++blocks_left_out;
+          const int i = 2 * int(block % terrain::kChunkBlocks), j = 2 * int(block / terrain::kChunkBlocks);
+          check_hidden(chunk.id, i, i + 2, j, j + 2, 1, "block left out");
+        }
         ++next;
         continue;
       }
-      const terrain::Footprint f = terrain::FootprintOf(chunk.id);
-      for (int j = 0; j <= 4; ++j)
-        for (int i = 0; i <= 4; ++i) {
-          ++points;
-          if (!TerrainHides(view.camera, TerrainPoint(f.x0 + f.size * i / 4, f.y0 + f.size * j / 4, kR))) {
-            ++seen;
-            ADD_FAILURE() << "chunk " << chunk.id.level << "/" << chunk.id.x << "/" << chunk.id.y << " left out, "
-                          << "its point (" << i << ", " << j << ") seen";
-          }
-        }
+      check_hidden(chunk.id, 0, 8, 0, 8, 2, "left out");
     }
+    std::printf("blocks left out of the chunks drawn: %zu of %zu\n", blocks_left_out,
+                culled.chunks.size() * terrain::kBlocksPerChunk);
+    EXPECT_GE(double(blocks_left_out),
+              least_blocks_left_out[v++] * double(culled.chunks.size() * terrain::kBlocksPerChunk));
     EXPECT_EQ(next, culled.chunks.size()) << "a chunk drawn with culling, not without, or out of order";
     EXPECT_EQ(seen, 0u) << "of " << points;
   }

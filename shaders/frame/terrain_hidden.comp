@@ -1,16 +1,21 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The chunks the walk kept that nearer terrain hides: those whose every block of 2 x 2 cells, as a
-// target (terrain_occluders.comp), rises no higher than the horizon (terrain_horizon.glsl) of the
-// bands wholly in front of it, in every azimuth bin it spans. Each of its rays then passes under
-// the ground first. Stage 0 first makes the horizon cumulative, so that each band holds what the
-// nearer ones hold; stage 1 tests four chunks a workgroup, an invocation per block.
+// The chunks the walk kept that nearer terrain hides, whole or in part: a block of 2 x 2 cells is
+// hidden when, as a target (terrain_occluders.comp), it rises no higher than the horizon
+// (terrain_horizon.glsl) of the bands wholly in front of it, in every azimuth bin it spans: each of
+// its rays then passes under the ground first. A chunk whose every block is hidden is left out;
+// of the others, the hidden blocks that come last in one of the block orders are left out of the
+// chunk's draw, in the order that leaves out most (terrain::ChunkBlockIndexRange). Stage 0 first
+// makes the horizon cumulative, so that each band holds what the nearer ones hold; stage 1 tests
+// four chunks a workgroup, an invocation per block.
 layout(local_size_x = 64) in;
 layout(constant_id = 0) const int kStage = 0;
 
 #include "terrain_horizon.glsl"
+#include "terrain_keys.glsl"
 
-// The selection's chunks: x their key (terrain_select.comp), y their slot.
+// The selection's chunks: x their key (terrain_select.comp), y their slot and what this pass finds
+// (terrain_keys.glsl).
 layout(std430, set = 0, binding = 0) buffer SelectionKeys { uvec2 keys[]; };
 // The selection's header: the number of chunks the walk kept (terrain_select.comp's draw_count).
 layout(std430, set = 0, binding = 1) readonly buffer SelectionDraws { uint candidates; };
@@ -21,9 +26,40 @@ layout(std430, set = 0, binding = 2) readonly buffer BlockTargets { vec4 targets
 layout(std430, set = 0, binding = 3) buffer TerrainHorizon { uint horizon[]; };
 
 const uint kBlocksPerChunk = 16u, kChunksPerGroup = 4u;  // terrain_occluders.comp's
-const uint kHidden = 0x80000000u;                        // terrain_select.comp's, on the slot
+const uint kChunkBlocks = 4u;                            // a side (terrain::kChunkBlocks)
+const uint kBlockOrders = 4u;
 
-shared bool visible[kChunksPerGroup];
+// Per chunk, a bit per block seen (j * kChunkBlocks + i for block (i, j)).
+shared uint visible_blocks[kChunksPerGroup];
+
+// Where block (i, j) comes in a block order (terrain::BlockAtPosition's inverse): rows from the
+// south or the north, columns from the west or the east.
+uint PositionInOrder(uint order, uint i, uint j) {
+  const uint last = kChunkBlocks - 1u;
+  switch (order) {
+    case 0u: return j * kChunkBlocks + i;
+    case 1u: return (last - j) * kChunkBlocks + i;
+    case 2u: return i * kChunkBlocks + j;
+    default: return (last - i) * kChunkBlocks + j;
+  }
+}
+
+// The chunk's key word with the most hidden blocks that come last in a block order left out.
+uint LeaveOutHiddenBlocks(uint word, uint visible) {
+  uint best_order = 0u, best_left_out = 0u;
+  for (uint order = 0u; order < kBlockOrders; ++order) {
+    uint last_seen = 0u;
+    for (uint block = 0u; block < kBlocksPerChunk; ++block)
+      if ((visible & (1u << block)) != 0u)
+        last_seen = max(last_seen, PositionInOrder(order, block % kChunkBlocks, block / kChunkBlocks));
+    const uint left_out = kBlocksPerChunk - 1u - last_seen;
+    if (left_out > best_left_out) {
+      best_order = order;
+      best_left_out = left_out;
+    }
+  }
+  return best_left_out == 0u ? word : WithBlocksLeftOut(word, best_order, best_left_out);
+}
 
 bool TargetHidden(vec4 target) {
   const int band = int(target.w);
@@ -45,13 +81,14 @@ void main() {
     }
     return;
   }
-  const uint chunk = gl_LocalInvocationIndex / kBlocksPerChunk;
+  const uint chunk = gl_LocalInvocationIndex / kBlocksPerChunk, block = gl_LocalInvocationIndex % kBlocksPerChunk;
   const uint index = gl_WorkGroupID.x * kChunksPerGroup + chunk;
   const bool present = index < candidates;
-  if (gl_LocalInvocationIndex % kBlocksPerChunk == 0u) visible[chunk] = false;
+  if (block == 0u) visible_blocks[chunk] = 0u;
   barrier();
-  if (present && !TargetHidden(targets[index * kBlocksPerChunk + gl_LocalInvocationIndex % kBlocksPerChunk]))
-    visible[chunk] = true;
+  if (present && !TargetHidden(targets[index * kBlocksPerChunk + block])) atomicOr(visible_blocks[chunk], 1u << block);
   barrier();
-  if (present && gl_LocalInvocationIndex % kBlocksPerChunk == 0u && !visible[chunk]) keys[index].y |= kHidden;
+  if (!present || block != 0u) return;
+  const uint visible = visible_blocks[chunk];
+  keys[index].y = visible == 0u ? keys[index].y | kHidden : LeaveOutHiddenBlocks(keys[index].y, visible);
 }

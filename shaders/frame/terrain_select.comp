@@ -10,7 +10,8 @@
 // given the skirts of the sides whose neighbour is not drawn at its level, and written as indexed
 // indirect draws. Before the sort, the chunks that nearer terrain hides are left out: those that
 // terrain_hidden.comp marked, against the horizon terrain_occluders.comp built from the chunks the
-// walk kept (terrain_horizon.glsl).
+// walk kept (terrain_horizon.glsl); a chunk it found hidden in part draws without the hidden blocks
+// that come last in a block order (terrain_keys.glsl).
 // One workgroup, of kWorkgroupSize invocations (render/gpu_chunk_selection.cpp chooses it).
 layout(local_size_x_id = 1) in;
 // 0: the walk, which leaves the chunks it would draw in SelectionKeys; 1: after the horizon's passes,
@@ -18,6 +19,7 @@ layout(local_size_x_id = 1) in;
 layout(constant_id = 0) const int kStage = 0;
 
 #include "terrain_selection.glsl"
+#include "terrain_keys.glsl"
 
 // A point h above sea level sits at (R + h) / R times its sea-level x and y, so a chunk's bounds
 // spread past its sea-level footprint by a little (lod_selection.cpp's kHorizontalSpread).
@@ -66,7 +68,6 @@ layout(std430, set = 0, binding = 8) buffer TileContent { uvec2 content[]; };
 shared uint queue_size[2];
 shared uint draw_size, deferred_size, request_size, drawn_size, per_vertex_size, index_size, slack_bits, changed_size;
 const uint kReadsPerVertex = 0x80000000u;  // the sort key's top bit
-const uint kHidden = 0x80000000u;          // on a chunk's slot, by terrain_hidden.comp
 
 bool IntersectsFrustum(vec3 lower, vec3 upper) {
   for (int i = 0; i < 5; ++i) {
@@ -250,7 +251,7 @@ void Finish(uint t) {
   for (uint i = t; i < candidates; i += kWorkgroupSize) {
     uvec2 key = keys[i];
     if ((key.y & kHidden) != 0u) continue;
-    ChunkNode node = nodes[key.y];
+    ChunkNode node = nodes[SlotOfKey(key.y)];
     if (!(DistanceToBounds(node) < node.upper.w)) {
       key.x |= kReadsPerVertex;
       atomicAdd(per_vertex_size, 1u);
@@ -268,14 +269,18 @@ void Finish(uint t) {
   Synchronize();
   SortKeys(n, t);
 
-  for (uint i = t; i < drawn; i += kWorkgroupSize) stamps[keys[i].y] = uint(root.y);
+  for (uint i = t; i < drawn; i += kWorkgroupSize) stamps[SlotOfKey(keys[i].y)] = uint(root.y);
   Synchronize();
   for (uint i = t; i < drawn; i += kWorkgroupSize) {
-    int slot = int(keys[i].y);
-    uvec4 range = index_ranges[SkirtMask(slot)];
+    const uint word = keys[i].y, left_out = BlocksLeftOutOfKey(word);
+    const int slot = int(SlotOfKey(word));
+    const uint skirts = SkirtMask(slot);
+    // The whole list, or the one whose last blocks in the order found are left out.
+    const uint first = left_out == 0u ? index_ranges[skirts].x : block_firsts[skirts][BlockOrderOfKey(word)];
+    const uint count = index_ranges[skirts].y - left_out * kBlockIndices;
     draws[i < per_pixel ? i : stamps.length() + i - per_pixel] =
-        DrawCommand(range.y, 1u, range.x, slot * root.z, uint(root.w));
-    atomicAdd(index_size, range.y);
+        DrawCommand(count, 1u, first, slot * root.z, uint(root.w));
+    atomicAdd(index_size, count);
   }
   if (compare.x != 0u) {
     if (t == 0u) changed_size = compare.y;

@@ -28,6 +28,7 @@ layout(std140, set = 0, binding = 1) uniform SelectionView {
   // changed whatever they are.
   uvec4 compare;
   uvec4 index_ranges[16];     // per skirt mask (terrain::ChunkIndexRange): first index, index count
+  uvec4 block_firsts[16];     // per skirt mask, per block order: first index (terrain::ChunkBlockIndexRange)
 };
 
 float ChunkSize(int level) { return kRootSizeM / float(1 << level); }

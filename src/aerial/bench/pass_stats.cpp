@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <map>
+#include <stdexcept>
+#include <string>
 
 #include "aerial/error.h"
 
@@ -63,6 +65,15 @@ Stats Summarize(std::vector<double> values) {
   size_t n = values.size();
   double median = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
   return {median, values.front(), values.back()};
+}
+
+double MedianPairedRatio(const std::vector<double>& numerators, const std::vector<double>& denominators) {
+  if (numerators.empty() || numerators.size() != denominators.size())
+    throw std::invalid_argument("paired ratio: " + std::to_string(numerators.size()) + " numerators for " +
+                                std::to_string(denominators.size()) + " denominators");
+  std::vector<double> ratios;
+  for (size_t i = 0; i < numerators.size(); ++i) ratios.push_back(numerators[i] / denominators[i]);
+  return Summarize(std::move(ratios)).median;
 }
 
 std::vector<Series> GroupPasses(const std::vector<RunResult>& runs,

@@ -51,6 +51,10 @@ struct Stats {
   double median = 0.0, min = 0.0, max = 0.0;
 };
 Stats Summarize(std::vector<double> values);  // values must not be empty
+// The median over runs of numerators[i] / denominators[i]: where two configurations' runs take
+// turns, each pair saw the same stretch of a noisy machine, which a ratio of their medians does
+// not cancel. The two must be as long, and not empty.
+double MedianPairedRatio(const std::vector<double>& numerators, const std::vector<double>& denominators);
 
 // The values of one named quantity, one per run.
 struct Series {

@@ -28,5 +28,14 @@ TEST(MedianFragmentInvocations, SumsWithinARunAndTakesTheMedianOverRuns) {
   EXPECT_EQ(MedianFragmentInvocations({run(std::nullopt, std::nullopt)}, "opaque raster"), std::nullopt);
 }
 
+// Pairs are divided one by one and the median taken of their ratios (2, 1, 3): 2, where the ratio
+// of the medians is 3 / 3.
+TEST(MedianPairedRatio, DividesEachPairAndTakesTheMedian) {
+  EXPECT_DOUBLE_EQ(MedianPairedRatio({2.0, 3.0, 30.0}, {1.0, 3.0, 10.0}), 2.0);
+  EXPECT_DOUBLE_EQ(MedianPairedRatio({2.5, 3.0}, {2.0, 2.0}), 1.375);
+  EXPECT_THROW(MedianPairedRatio({1.0}, {1.0, 2.0}), std::invalid_argument);
+  EXPECT_THROW(MedianPairedRatio({}, {}), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace aerial::bench

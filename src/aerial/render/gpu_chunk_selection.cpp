@@ -39,8 +39,13 @@ struct SelectionView {
   glm::vec4 north;     // w: unused (hidden chunks are left out by the passes recorded)
   glm::uvec4 compare;  // x: compare with the last selection's chunks; y: report them changed
   std::array<glm::uvec4, 16> index_ranges;
+  std::array<glm::uvec4, 16> block_firsts;  // per skirt mask, per block order
 };
-static_assert(sizeof(SelectionView) == 448);
+static_assert(sizeof(SelectionView) == 704);
+static_assert(terrain::kBlockOrders == 4);
+
+// terrain_keys.glsl's: the slots a key's word holds.
+constexpr uint32_t kMaxSlots = 1u << 24;
 
 // The same level's chunks across a chunk's sides, in the order of the skirt mask's bits
 // (terrain::ChunkSide: south, east, north, west).
@@ -79,6 +84,12 @@ vk::Buffer StorageBuffer(const vk::Context& context, ::vk::DeviceSize size, bool
                          ::vk::BufferUsageFlags usage = {}) {
   return vk::Buffer(context, {.size = size, .usage = ::vk::BufferUsageFlagBits::eStorageBuffer | usage,
                               .host_visible = host_visible});
+}
+
+uint32_t CheckedSlots(uint32_t slots) {
+  if (slots > kMaxSlots)
+    throw Error("terrain selection slots", std::to_string(slots), "at most " + std::to_string(kMaxSlots));
+  return slots;
 }
 
 // The invocations of terrain_select.comp's one workgroup. A CPU rasterizer (llvmpipe) runs a
@@ -129,7 +140,7 @@ uint64_t GpuChunkSelection::MemoryBytes(uint32_t slots, uint32_t feedbacks, bool
 
 GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot,
                                      uint32_t first_instance, uint32_t feedbacks, bool occlusion_culling)
-    : slots_(slots),
+    : slots_(CheckedSlots(slots)),
       occlusion_culling_(occlusion_culling),
       vertices_per_slot_(vertices_per_slot),
       first_instance_(first_instance),
@@ -251,6 +262,8 @@ void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodV
   for (uint32_t mask = 0; mask < 16; ++mask) {
     terrain::IndexRange range = terrain::ChunkIndexRange(mask);
     block.index_ranges[mask] = glm::uvec4(range.first, range.count, 0, 0);
+    for (int order = 0; order < terrain::kBlockOrders; ++order)
+      block.block_firsts[mask][order] = terrain::ChunkBlockIndexRange(mask, order).first;
   }
   // The tree's changes and the view, in the commands: each selection sees them as they were when
   // it was recorded, whatever is in flight.
@@ -355,10 +368,20 @@ GpuChunkSelection::Result GpuChunkSelection::Read() const {
     const auto* commands = reinterpret_cast<const ::vk::DrawIndexedIndirectCommand*>(draws_.mapped() + offset);
     for (uint32_t i = 0; i < count; ++i) {
       const uint32_t slot = uint32_t(commands[i].vertexOffset) / vertices_per_slot_;
-      uint32_t skirts = 0;
-      for (uint32_t mask = 0; mask < 16; ++mask)
-        if (terrain::ChunkIndexRange(mask).first == commands[i].firstIndex) skirts = mask;
+      uint32_t skirts = 0, left_out = 0;
+      for (uint32_t mask = 0; mask <= terrain::kAllSides; ++mask) {
+        const terrain::IndexRange whole = terrain::ChunkIndexRange(mask);
+        if (whole.first == commands[i].firstIndex) skirts = mask;
+        for (int order = 0; order < terrain::kBlockOrders; ++order) {
+          if (terrain::ChunkBlockIndexRange(mask, order).first != commands[i].firstIndex) continue;
+          skirts = mask;
+          // The order's last blocks, as many as the draw leaves out.
+          for (uint32_t k = (whole.count - commands[i].indexCount) / terrain::kBlockIndices; k > 0; --k)
+            left_out |= 1u << terrain::BlockAtPosition(order, terrain::kBlocksPerChunk - k);
+        }
+      }
       result.chunks.push_back({id_in_slot_[slot], skirts});
+      result.blocks_left_out.push_back(left_out);
     }
   }
   for (uint32_t i = 0; i < header[2]; ++i) result.requested.push_back({requests[i].x, requests[i].y, requests[i].z});

@@ -7,7 +7,10 @@
 // vertical (shaders/include/terrain_horizon.glsl, terrain_occluders.comp), to which every chunk
 // the walk keeps adds its cells at once: unlike the CPU's horizon on the screen, no chunk waits
 // for those in front of it. Each is then tested against it block by block of its cells, at their
-// highest (terrain_hidden.comp). The CPU's part no longer grows with the terrain: it keeps the tree of
+// highest (terrain_hidden.comp): a chunk whose blocks are all hidden is left out, and one hidden in
+// part draws without its hidden blocks that come last in one of four block orders (rows or columns,
+// from either side; terrain::ChunkBlockIndexRange), as GPU-driven renderers cull clusters of a
+// mesh (Wihlidal, "Optimizing the Graphics Pipeline with Compute", GDC 2016). The CPU's part no longer grows with the terrain: it keeps the tree of
 // built chunks (a few links per chunk built or dropped) and builds the chunks the GPU asks for.
 //
 // The tree is the chunk slots' table: per slot, the chunk's bounds and error, its cells' lowest and
@@ -36,7 +39,7 @@ namespace aerial {
 
 class GpuChunkSelection {
  public:
-  // slots: how many chunks the tree holds (the chunk cache's slots); vertices_per_slot: where
+  // slots: how many chunks the tree holds (the chunk cache's slots, at most 2^24); vertices_per_slot: where
   // slot s's vertices begin (s times it) in the vertex buffer the draws read; first_instance: the
   // draws' first instance; feedbacks: how many selections may be in flight at once, each with its
   // own copy of what it tells the CPU (ReadFeedback); occlusion_culling: whether its views may
@@ -90,6 +93,9 @@ class GpuChunkSelection {
   struct Result {
     // With their skirts: those that read the froxels per pixel, front to back, then the others.
     std::vector<terrain::SelectedChunk> chunks;
+    // Per chunk, a bit per block of its cells (terrain::kBlocksPerChunk) that its draw leaves out,
+    // nearer terrain hiding it.
+    std::vector<uint32_t> blocks_left_out;
     size_t per_pixel = 0;                        // how many of chunks read them per pixel
     std::vector<terrain::ChunkId> requested;     // children to build
     int deferred = 0;                            // terrain::Selection::deferred

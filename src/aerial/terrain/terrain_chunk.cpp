@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 
 #include "aerial/scene/terrain.h"
 
@@ -131,21 +132,46 @@ void AppendSkirt(int side, std::vector<uint32_t>& indices) {
   }
 }
 
+// The grid's triangles block by block in `order` (GridIndices' two triangles per cell, row by row
+// within each block).
+std::vector<uint32_t> BlockGridIndices(int order) {
+  const std::vector<uint32_t> grid = GridIndices();
+  std::vector<uint32_t> indices;
+  for (uint32_t position = 0; position < kBlocksPerChunk; ++position) {
+    const uint32_t block = BlockAtPosition(order, position);
+    const int bi = int(block) % kChunkBlocks, bj = int(block) / kChunkBlocks;
+    for (int j = bj * kBlockCells; j < (bj + 1) * kBlockCells; ++j)
+      for (int i = bi * kBlockCells; i < (bi + 1) * kBlockCells; ++i) {
+        const auto cell = grid.begin() + 6 * (j * N + i);
+        indices.insert(indices.end(), cell, cell + 6);
+      }
+  }
+  return indices;
+}
+
 struct IndexLists {
   std::vector<uint32_t> indices;
   std::array<IndexRange, kAllSides + 1> ranges;
+  std::array<std::array<IndexRange, kAllSides + 1>, kBlockOrders> block_ranges;
 };
 
 const IndexLists& Lists() {
   static const IndexLists lists = [] {
     IndexLists made;
-    const std::vector<uint32_t> grid = GridIndices();
-    for (uint32_t mask = 0; mask <= kAllSides; ++mask) {
-      made.ranges[mask].first = uint32_t(made.indices.size());
-      made.indices.insert(made.indices.end(), grid.begin(), grid.end());
+    auto append = [&](const std::vector<uint32_t>& grid, bool skirts_first, uint32_t mask) {
+      IndexRange range{.first = uint32_t(made.indices.size())};
+      if (!skirts_first) made.indices.insert(made.indices.end(), grid.begin(), grid.end());
       for (int side = 0; side < 4; ++side)
         if (mask & (1u << side)) AppendSkirt(side, made.indices);
-      made.ranges[mask].count = uint32_t(made.indices.size()) - made.ranges[mask].first;
+      if (skirts_first) made.indices.insert(made.indices.end(), grid.begin(), grid.end());
+      range.count = uint32_t(made.indices.size()) - range.first;
+      return range;
+    };
+    const std::vector<uint32_t> grid = GridIndices();
+    for (uint32_t mask = 0; mask <= kAllSides; ++mask) made.ranges[mask] = append(grid, false, mask);
+    for (int order = 0; order < kBlockOrders; ++order) {
+      const std::vector<uint32_t> blocks = BlockGridIndices(order);
+      for (uint32_t mask = 0; mask <= kAllSides; ++mask) made.block_ranges[order][mask] = append(blocks, true, mask);
     }
     return made;
   }();
@@ -167,6 +193,21 @@ std::vector<uint32_t> SkirtEdgeVertices() {
 const std::vector<uint32_t>& ChunkIndices() { return Lists().indices; }
 
 IndexRange ChunkIndexRange(uint32_t skirt_mask) { return Lists().ranges.at(skirt_mask & kAllSides); }
+
+uint32_t BlockAtPosition(int order, uint32_t position) {
+  const uint32_t line = position / kChunkBlocks, along = position % kChunkBlocks, last = kChunkBlocks - 1;
+  switch (order) {
+    case 0: return line * kChunkBlocks + along;           // rows, from the south
+    case 1: return (last - line) * kChunkBlocks + along;  // rows, from the north
+    case 2: return along * kChunkBlocks + line;           // columns, from the west
+    case 3: return along * kChunkBlocks + (last - line);  // columns, from the east
+  }
+  throw std::out_of_range("block order");
+}
+
+IndexRange ChunkBlockIndexRange(uint32_t skirt_mask, int order) {
+  return Lists().block_ranges.at(size_t(order)).at(skirt_mask & kAllSides);
+}
 
 TerrainChunk BuildTerrainChunk(const ChunkId& id, double planet_radius_m) {
   const double R = planet_radius_m;

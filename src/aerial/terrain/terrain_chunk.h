@@ -68,6 +68,23 @@ struct IndexRange {
 };
 IndexRange ChunkIndexRange(uint32_t skirt_mask);
 
+// The cells in blocks of kBlockCells x kBlockCells, kChunkBlocks a side: block (i, j), numbered
+// j * kChunkBlocks + i, holds cells [kBlockCells * i, kBlockCells * (i + 1)) x [kBlockCells * j,
+// kBlockCells * (j + 1)). The GPU's selection tests blocks against the horizon, and leaves out of a
+// chunk's draw the hidden blocks that come last in one of kBlockOrders orders: rows from the south
+// (0) or from the north (1), columns from the west (2) or from the east (3).
+inline constexpr int kBlockCells = 2;
+inline constexpr int kChunkBlocks = kChunkCells / kBlockCells;
+inline constexpr uint32_t kBlocksPerChunk = kChunkBlocks * kChunkBlocks;
+inline constexpr uint32_t kBlockIndices = 6 * kBlockCells * kBlockCells;
+inline constexpr int kBlockOrders = 4;
+// The block at `position` (< kBlocksPerChunk) of `order`.
+uint32_t BlockAtPosition(int order, uint32_t position);
+// Where the list of ChunkIndexRange(skirt_mask)'s triangles lies in ChunkIndices() with the skirts
+// first and then the cells block by block in `order`: its first count - k * kBlockIndices indices
+// leave out the order's last k blocks.
+IndexRange ChunkBlockIndexRange(uint32_t skirt_mask, int order);
+
 // The grid vertex indices around the chunk's border, counter-clockwise seen from above, starting
 // at the corner (0, 0): 4 * kChunkCells of them, kChunkCells per side in the order south, east,
 // north, west. Skirt vertex kChunkGridVertices + k hangs below border vertex k.

@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
+#include <set>
+#include <stdexcept>
 
 #include "aerial/scene/terrain.h"
 
@@ -90,6 +93,48 @@ TEST(TerrainChunk, IndexListsHoldTheGridAndTheMaskedSides) {
     ASSERT_LE(range.first + range.count, indices.size());
     for (uint32_t i = range.first; i < range.first + range.count; ++i) ASSERT_LT(indices[i], kChunkVertices);
   }
+}
+
+// The block lists draw the same triangles as the row lists, skirts first, then block by block:
+// each group of kBlockIndices indices is the order's next block's cells, every block once.
+TEST(TerrainChunk, BlockListsHoldTheSameTrianglesBlockByBlock) {
+  const std::vector<uint32_t>& indices = ChunkIndices();
+  constexpr uint32_t kSide = kChunkCells * 6;
+  auto triangles = [&](IndexRange range) {
+    std::multiset<std::array<uint32_t, 3>> made;
+    for (uint32_t i = range.first; i < range.first + range.count; i += 3)
+      made.insert({indices[i], indices[i + 1], indices[i + 2]});
+    return made;
+  };
+  for (int order = 0; order < kBlockOrders; ++order) {
+    std::set<uint32_t> blocks;
+    for (uint32_t position = 0; position < kBlocksPerChunk; ++position)
+      blocks.insert(BlockAtPosition(order, position));
+    EXPECT_EQ(blocks.size(), kBlocksPerChunk) << "order " << order;
+    for (uint32_t mask = 0; mask <= kAllSides; ++mask) {
+      const IndexRange range = ChunkBlockIndexRange(mask, order);
+      ASSERT_LE(range.first + range.count, indices.size());
+      EXPECT_EQ(triangles(range), triangles(ChunkIndexRange(mask))) << "order " << order << ", mask " << mask;
+      const uint32_t grid_first = range.first + std::popcount(mask) * kSide;
+      ASSERT_EQ(range.first + range.count - grid_first, kBlocksPerChunk * kBlockIndices);
+      for (uint32_t position = 0; position < kBlocksPerChunk; ++position) {
+        const uint32_t block = BlockAtPosition(order, position);
+        const uint32_t i0 = kBlockCells * (block % kChunkBlocks), j0 = kBlockCells * (block / kChunkBlocks);
+        for (uint32_t k = 0; k < kBlockIndices; ++k) {
+          const uint32_t vertex = indices[grid_first + position * kBlockIndices + k];
+          const uint32_t i = vertex % (kChunkCells + 1), j = vertex / (kChunkCells + 1);
+          EXPECT_TRUE(i >= i0 && i <= i0 + kBlockCells && j >= j0 && j <= j0 + kBlockCells)
+              << "order " << order << ", position " << position << ": vertex " << vertex << " outside block " << block;
+        }
+      }
+    }
+  }
+  // The orders run from the south, the north, the west and the east.
+  EXPECT_EQ(BlockAtPosition(0, 0), 0u);
+  EXPECT_EQ(BlockAtPosition(1, 0), uint32_t(kChunkBlocks * (kChunkBlocks - 1)));
+  EXPECT_EQ(BlockAtPosition(2, 1), uint32_t(kChunkBlocks));
+  EXPECT_EQ(BlockAtPosition(3, 0), uint32_t(kChunkBlocks - 1));
+  EXPECT_THROW(ChunkBlockIndexRange(0, kBlockOrders), std::out_of_range);
 }
 
 // Counter-clockwise seen from the side the terrain faces: grid triangles face up, skirt

@@ -1,0 +1,13 @@
+// A chunk the selection's walk kept, as the second word of its key (terrain_select.comp's
+// SelectionKeys): its slot in the low 24 bits; what terrain_hidden.comp found: the top bit when
+// nearer terrain hides the whole chunk, or else how many of its blocks of cells come last, and
+// hidden, in one of the block orders (terrain::BlockAtPosition), for its draw to leave them out
+// (terrain::ChunkBlockIndexRange).
+const uint kSlotMask = 0x00ffffffu;
+const uint kHidden = 0x80000000u;
+const uint kBlockIndices = 24u;  // terrain::kBlockIndices
+
+uint SlotOfKey(uint word) { return word & kSlotMask; }
+uint BlockOrderOfKey(uint word) { return (word >> 24u) & 3u; }
+uint BlocksLeftOutOfKey(uint word) { return (word >> 26u) & 15u; }
+uint WithBlocksLeftOut(uint word, uint order, uint left_out) { return word | (order << 24u) | (left_out << 26u); }
