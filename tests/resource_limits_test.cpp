@@ -98,7 +98,7 @@ TEST(ResourceLimits, MaxMemoryMibSetsTheBudget) {
   fs::path out = fs::temp_directory_path() / ("aerial-budget-" + std::to_string(::getpid()) + ".png");
   const std::string render = "render --small-tables --quiet --width 1152 --height 1152 --out " + out.string();
   ExpectRejected(render + " --max-memory-mib 128",
-                 {"--width/--height = 1152x1152 is invalid", "estimated 268.2 MiB", "> budget 128.0 MiB (--max-memory-mib 128)"});
+                 {"--width/--height = 1152x1152 is invalid", "estimated 265.2 MiB", "> budget 128.0 MiB (--max-memory-mib 128)"});
   EXPECT_FALSE(fs::exists(out));
   CommandRun run = RunAerial(render + " --max-memory-mib 512");
   EXPECT_EQ(run.exit_code, 0) << run.err;

@@ -18,9 +18,9 @@ layout(local_size_x = 64) in;
 layout(std430, set = 0, binding = 2) readonly buffer SelectionKeys { uvec2 keys[]; };
 // The selection's header: the number of chunks the walk kept (terrain_select.comp's draw_count).
 layout(std430, set = 0, binding = 3) readonly buffer SelectionDraws { uint candidates; };
-// Per slot, its chunk's cells' lowest heights then their highest (m), kChunkCells^2 each, row by
-// row from the south-west: the mesh over a cell lies between them.
-layout(std430, set = 0, binding = 4) readonly buffer ChunkCellHeights { float cell_heights[]; };
+// Per slot, per block of its chunk (j * kBlocks + i), its cells' lowest and highest heights (m):
+// the mesh over the block lies between them (terrain::BlockHeights).
+layout(std430, set = 0, binding = 4) readonly buffer ChunkBlockHeights { vec2 block_heights[]; };
 // Per band and azimuth bin, OrderedBits of the tangent below which rays are hidden.
 layout(std430, set = 0, binding = 5) coherent buffer TerrainHorizon { uint horizon[]; };
 // Per chunk the walk kept, per block, the block as a target (terrain_hidden.comp): x: the highest
@@ -85,15 +85,8 @@ void main() {
     const uint i = t % uint(kBlocks), j = t / uint(kBlocks);
     const uint first = j * uint(kBlocks + 1) + i;
     const uint block_corners[4] = uint[4](first, first + 1u, first + uint(kBlocks + 1), first + uint(kBlocks + 2));
-    const int cells = kChunkCells * kChunkCells;
-    float lowest = 1e30, highest = -1e30;
-    for (uint jj = j * uint(kBlock); jj < (j + 1u) * uint(kBlock); ++jj) {
-      for (uint ii = i * uint(kBlock); ii < (i + 1u) * uint(kBlock); ++ii) {
-        const int cell = 2 * slot * cells + int(jj) * kChunkCells + int(ii);
-        lowest = min(lowest, cell_heights[cell]);
-        highest = max(highest, cell_heights[cell + cells]);
-      }
-    }
+    const vec2 heights = block_heights[uint(slot) * kInvocationsPerChunk + t];
+    const float lowest = heights.x, highest = heights.y;
     const float reference = corners[chunk][0].x;
     // At the height of the lowest vertex, to a ray's distance from the camera (height, horizontal).
     vec3 first_corner = corners[chunk][first];

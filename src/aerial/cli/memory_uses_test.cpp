@@ -30,8 +30,8 @@ TEST(MemoryUses, RenderScaleShrinksTheTargetsNotTheOutput) {
 // The terrain's selection on the GPU holds, per chunk slot and per selection, 216 bytes: the tree's
 // node (80), the walk's queues (8), stamps (4) and sort keys (8), two lists of indirect draws (40),
 // the children asked for (64), the tile content (8) and the stamps' feedback copy (4). The frame's,
-// which leaves out hidden chunks, also holds its cells' lowest and highest heights (2 x 8x8
-// floats, 512) and their blocks as targets (16 vec4s, 256): 984 bytes; besides, under half a
+// which leaves out hidden chunks, also holds its blocks' lowest and highest heights (16 vec2s,
+// 128) and the blocks as targets (16 vec4s, 256): 600 bytes; besides, under half a
 // megabyte for its horizon and the rest. There is one for the frame and, with shadows, one per
 // cascade's casters but the nearest's (GpuShadowCasters::Selects), which culls nothing. The CPU's
 // selection has none of these; kAuto counts them, its device being unknown.
@@ -42,7 +42,7 @@ TEST(MemoryUses, GpuTerrainSelectionCountsItsBuffers) {
   gpu.terrain_selector = gpu_unshadowed.terrain_selector = TerrainSelector::kGpu;
   automatic.terrain_selector = TerrainSelector::kAuto;
   gpu_unshadowed.shadows = cpu_unshadowed.shadows = false;
-  const uint64_t frame_selection = 8192 * 984, caster_selection = 8192 * 216;
+  const uint64_t frame_selection = 8192 * 600, caster_selection = 8192 * 216;
   const uint64_t all = EstimateFrameMemory(gpu).terrain - EstimateFrameMemory(cpu).terrain;
   EXPECT_GE(all, frame_selection + 3 * caster_selection);
   EXPECT_LE(all, frame_selection + 3 * caster_selection + 4 * (512u << 10));

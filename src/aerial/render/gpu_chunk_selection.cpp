@@ -69,7 +69,7 @@ vk::SlotLayout SelectSlots() {
 vk::SlotLayout OccluderSlots() {
   return {{"ChunkTree", vk::kStorageBuffer},        {"SelectionView", vk::kUniform},
           {"SelectionKeys", vk::kStorageBuffer},    {"SelectionDraws", vk::kStorageBuffer},
-          {"ChunkCellHeights", vk::kStorageBuffer}, {"TerrainHorizon", vk::kStorageBuffer},
+          {"ChunkBlockHeights", vk::kStorageBuffer}, {"TerrainHorizon", vk::kStorageBuffer},
           {"BlockTargets", vk::kStorageBuffer}};
 }
 
@@ -113,7 +113,7 @@ struct GpuChunkSelection::BufferBytes {
   bool culling;
   ::vk::DeviceSize ForCulling(::vk::DeviceSize bytes) const { return culling ? bytes : sizeof(glm::vec4); }
   ::vk::DeviceSize tree() const { return slots * sizeof(Node); }
-  ::vk::DeviceSize cell_heights() const { return ForCulling(2 * slots * sizeof(terrain::ChunkInfo::cell_lowest_m)); }
+  ::vk::DeviceSize block_heights() const { return ForCulling(slots * terrain::kBlocksPerChunk * sizeof(glm::vec2)); }
   ::vk::DeviceSize queues() const { return 2 * slots * sizeof(int32_t); }
   ::vk::DeviceSize stamps() const { return slots * sizeof(uint32_t); }
   ::vk::DeviceSize keys() const { return std::bit_ceil(slots) * 2 * sizeof(uint32_t); }
@@ -127,7 +127,7 @@ struct GpuChunkSelection::BufferBytes {
   ::vk::DeviceSize content() const { return slots * sizeof(glm::uvec2); }
   ::vk::DeviceSize feedback() const { return kFeedbackStampsOffset + slots * sizeof(uint32_t); }
   ::vk::DeviceSize all(uint32_t feedbacks) const {
-    return tree() + cell_heights() + sizeof(SelectionView) + queues() + stamps() + keys() + draws() + requests() +
+    return tree() + block_heights() + sizeof(SelectionView) + queues() + stamps() + keys() + draws() + requests() +
            block_groups() + horizon() + block_targets() + content() + feedbacks * feedback();
   }
 };
@@ -146,10 +146,10 @@ GpuChunkSelection::GpuChunkSelection(const vk::Context& context, uint32_t slots,
       first_instance_(first_instance),
       id_in_slot_(slots),
       nodes_(slots),
-      cell_heights_m_(occlusion_culling ? slots : 0),
+      block_heights_m_(occlusion_culling ? slots : 0),
       node_changed_(slots, false),
       tree_(StorageBuffer(context, bytes().tree(), false, ::vk::BufferUsageFlagBits::eTransferDst)),
-      cell_heights_(StorageBuffer(context, bytes().cell_heights(), false,
+      block_heights_(StorageBuffer(context, bytes().block_heights(), false,
                                   ::vk::BufferUsageFlagBits::eTransferDst)),
       view_(context, vk::RecordedUniformBufferInfo(sizeof(SelectionView))),
       queues_(StorageBuffer(context, bytes().queues(), false)),
@@ -218,11 +218,7 @@ void GpuChunkSelection::Insert(uint32_t slot, const ChunkId& id, const terrain::
   const std::array<ChunkId, 4> neighbours = Neighbours(id);
   for (int side = 0; side < 4; ++side) node.neighbours[side] = int32_t(SlotOf(neighbours[side]).value_or(kNotBuilt));
   Change(slot) = node;
-  if (occlusion_culling_) {
-    std::copy(info.cell_lowest_m.begin(), info.cell_lowest_m.end(), cell_heights_m_[slot].begin());
-    std::copy(info.cell_highest_m.begin(), info.cell_highest_m.end(),
-              cell_heights_m_[slot].begin() + info.cell_lowest_m.size());
-  }
+  if (occlusion_culling_) block_heights_m_[slot] = terrain::BlockHeights(info.cell_lowest_m, info.cell_highest_m);
   inserted_.push_back(slot);
   slot_of_[id] = slot;
   id_in_slot_[slot] = id;
@@ -274,8 +270,8 @@ void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodV
   }
   if (occlusion_culling_) {
     for (uint32_t slot : inserted_)
-      cmd.updateBuffer(cell_heights_.handle(), slot * sizeof(cell_heights_m_[slot]),
-                       ::vk::ArrayProxy<const float>(uint32_t(cell_heights_m_[slot].size()), cell_heights_m_[slot].data()));
+      cmd.updateBuffer(block_heights_.handle(), slot * sizeof(block_heights_m_[slot]),
+                       ::vk::ArrayProxy<const glm::vec2>(uint32_t(block_heights_m_[slot].size()), block_heights_m_[slot].data()));
   }
   changed_nodes_.clear();
   inserted_.clear();
@@ -286,7 +282,7 @@ void GpuChunkSelection::Record(const vk::CommandBuffer& cmd, const terrain::LodV
       vk::StorageBufferSlot{&requests_},  vk::StorageBufferSlot{&block_groups_}, vk::StorageBufferSlot{&content_}};
   const std::vector<vk::Slot> occluder_slots = {
       vk::StorageBufferSlot{&tree_},  vk::UniformBufferSlot{&view_},         vk::StorageBufferSlot{&keys_},
-      vk::StorageBufferSlot{&draws_}, vk::StorageBufferSlot{&cell_heights_}, vk::StorageBufferSlot{&horizon_},
+      vk::StorageBufferSlot{&draws_}, vk::StorageBufferSlot{&block_heights_}, vk::StorageBufferSlot{&horizon_},
       vk::StorageBufferSlot{&block_targets_}};
   const std::vector<vk::Slot> hidden_slots = {vk::StorageBufferSlot{&keys_}, vk::StorageBufferSlot{&draws_},
                                               vk::StorageBufferSlot{&block_targets_},

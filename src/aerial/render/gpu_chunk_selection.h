@@ -143,10 +143,10 @@ class GpuChunkSelection {
   std::unordered_map<terrain::ChunkId, uint32_t, terrain::ChunkIdHash> slot_of_;
   std::vector<terrain::ChunkId> id_in_slot_;
   std::vector<Node> nodes_;
-  std::vector<std::array<float, 2 * terrain::kChunkCells * terrain::kChunkCells>> cell_heights_m_;
+  std::vector<std::array<glm::vec2, terrain::kBlocksPerChunk>> block_heights_m_;
   std::vector<bool> node_changed_;
   std::vector<uint32_t> changed_nodes_, inserted_;  // since the last selection recorded
-  vk::Buffer tree_, cell_heights_, view_, queues_, stamps_, keys_, draws_, requests_, block_groups_, horizon_;
+  vk::Buffer tree_, block_heights_, view_, queues_, stamps_, keys_, draws_, requests_, block_groups_, horizon_;
   vk::Buffer block_targets_;  // terrain_occluders.comp's BlockTargets
   vk::Buffer content_;        // terrain_select.comp's TileContent
   uint32_t workgroup_size_;  // terrain_select.comp's

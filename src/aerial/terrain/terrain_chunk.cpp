@@ -205,6 +205,19 @@ uint32_t BlockAtPosition(int order, uint32_t position) {
   throw std::out_of_range("block order");
 }
 
+std::array<glm::vec2, kBlocksPerChunk> BlockHeights(const std::array<float, kChunkCells * kChunkCells>& cell_lowest_m,
+                                                     const std::array<float, kChunkCells * kChunkCells>& cell_highest_m) {
+  std::array<glm::vec2, kBlocksPerChunk> blocks;
+  blocks.fill(glm::vec2(INFINITY, -INFINITY));
+  for (int j = 0; j < N; ++j)
+    for (int i = 0; i < N; ++i) {
+      glm::vec2& block = blocks[(j / kBlockCells) * kChunkBlocks + i / kBlockCells];
+      block.x = std::min(block.x, cell_lowest_m[j * N + i]);
+      block.y = std::max(block.y, cell_highest_m[j * N + i]);
+    }
+  return blocks;
+}
+
 IndexRange ChunkBlockIndexRange(uint32_t skirt_mask, int order) {
   return Lists().block_ranges.at(size_t(order)).at(skirt_mask & kAllSides);
 }

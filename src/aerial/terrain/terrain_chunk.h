@@ -80,6 +80,10 @@ inline constexpr uint32_t kBlockIndices = 6 * kBlockCells * kBlockCells;
 inline constexpr int kBlockOrders = 4;
 // The block at `position` (< kBlocksPerChunk) of `order`.
 uint32_t BlockAtPosition(int order, uint32_t position);
+// Per block, its cells' lowest and highest heights (x, y; TerrainChunk::cell_lowest_m,
+// ::cell_highest_m): the mesh over the block lies between them.
+std::array<glm::vec2, kBlocksPerChunk> BlockHeights(const std::array<float, kChunkCells * kChunkCells>& cell_lowest_m,
+                                                     const std::array<float, kChunkCells * kChunkCells>& cell_highest_m);
 // Where the list of ChunkIndexRange(skirt_mask)'s triangles lies in ChunkIndices() with the skirts
 // first and then the cells block by block in `order`: its first count - k * kBlockIndices indices
 // leave out the order's last k blocks.

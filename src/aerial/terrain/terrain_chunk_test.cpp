@@ -137,6 +137,21 @@ TEST(TerrainChunk, BlockListsHoldTheSameTrianglesBlockByBlock) {
   EXPECT_THROW(ChunkBlockIndexRange(0, kBlockOrders), std::out_of_range);
 }
 
+// A block's heights are the lowest and highest of its 2 x 2 cells' (a cell at (i, j) holding
+// i + 10 j as its lowest and 100 + i + 10 j as its highest): block (1, 2), cells (2-3, 4-5).
+TEST(TerrainChunk, BlockHeightsAreTheirCellsExtremes) {
+  std::array<float, kChunkCells * kChunkCells> lowest, highest;
+  for (int j = 0; j < kChunkCells; ++j)
+    for (int i = 0; i < kChunkCells; ++i) {
+      lowest[j * kChunkCells + i] = float(i + 10 * j);
+      highest[j * kChunkCells + i] = float(100 + i + 10 * j);
+    }
+  const std::array<glm::vec2, kBlocksPerChunk> blocks = BlockHeights(lowest, highest);
+  EXPECT_EQ(blocks[2 * kChunkBlocks + 1], glm::vec2(42.0f, 153.0f));
+  EXPECT_EQ(blocks[0], glm::vec2(0.0f, 111.0f));
+  EXPECT_EQ(blocks[kBlocksPerChunk - 1], glm::vec2(66.0f, 177.0f));
+}
+
 // Counter-clockwise seen from the side the terrain faces: grid triangles face up, skirt
 // triangles face away from the chunk, so back faces can be culled.
 TEST(TerrainChunk, TrianglesFaceUpAndSkirtsFaceOut) {
