@@ -10,10 +10,11 @@
 // highest (terrain_hidden.comp): a chunk whose blocks are all hidden is left out, and one hidden in
 // part draws without its hidden blocks that come last in one of four block orders (rows or columns,
 // from either side; terrain::ChunkBlockIndexRange), as GPU-driven renderers cull clusters of a
-// mesh (Wihlidal, "Optimizing the Graphics Pipeline with Compute", GDC 2016). The CPU's part no longer grows with the terrain: it keeps the tree of
-// built chunks (a few links per chunk built or dropped) and builds the chunks the GPU asks for.
+// mesh (Wihlidal, "Optimizing the Graphics Pipeline with Compute", GDC 2016). The CPU's part no
+// longer grows with the terrain: it keeps the tree of built chunks (a few links per chunk built or
+// dropped) and builds the chunks the GPU asks for.
 //
-// The tree is the chunk slots' table: per slot, the chunk's bounds and error, its cells' lowest and
+// The tree is the chunk slots' table: per slot, the chunk's bounds and error, its blocks' lowest and
 // highest heights, and the slots of its children and of its level's neighbours. Its changes reach the GPU
 // in the next recorded selection's commands, so each selection in flight walks the tree as it was
 // when it was recorded. A removed chunk's slot may be drawn by the selections recorded before the
@@ -39,12 +40,13 @@ namespace aerial {
 
 class GpuChunkSelection {
  public:
-  // slots: how many chunks the tree holds (the chunk cache's slots, at most 2^24); vertices_per_slot: where
-  // slot s's vertices begin (s times it) in the vertex buffer the draws read; first_instance: the
-  // draws' first instance; feedbacks: how many selections may be in flight at once, each with its
-  // own copy of what it tells the CPU (ReadFeedback); occlusion_culling: whether its views may
-  // leave out hidden chunks (terrain::LodView::occlusion_culling), for which it holds the horizon,
-  // the cells' heights and their blocks as targets.
+  // slots: how many chunks the tree holds (the chunk cache's slots, at most 2^24);
+  // vertices_per_slot: where slot s's vertices begin (s times it) in the vertex buffer the draws
+  // read; first_instance: the draws' first instance; feedbacks: how many selections may be in
+  // flight at once, each with its own copy of what it tells the CPU (ReadFeedback);
+  // occlusion_culling: whether its views may leave out hidden chunks
+  // (terrain::LodView::occlusion_culling), for which it holds the horizon, the blocks' heights and
+  // the blocks as targets.
   GpuChunkSelection(const vk::Context& context, uint32_t slots, uint32_t vertices_per_slot, uint32_t first_instance,
                     uint32_t feedbacks = 1, bool occlusion_culling = true);
   // The device memory such a selection holds.
