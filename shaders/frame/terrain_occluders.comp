@@ -1,12 +1,13 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Every chunk the selection may draw adds its ground to the horizon (terrain_horizon.glsl), four
-// chunks a workgroup, and leaves what terrain_hidden.comp tests against it. A cell of the chunk's mesh never dips below its lowest vertex, so the shell at
-// that height, lowered by a margin, lies under the ground across the cell: any ray under a point of
-// it is hidden. A row of blocks of cells across the chunk is crossed by the vertical plane of every
-// azimuth within its span, each plane through blocks that overlap the azimuth's bin, so the bin's
-// tangent is the least of those blocks', known within the row's farthest distance; a block that
-// spans the whole bin alone is crossed by every plane of it, and its own tangent holds there.
+// chunks a workgroup, and leaves what terrain_hidden.comp tests against it. A cell of the chunk's
+// mesh never dips below its lowest vertex, so the shell at that height, lowered by a margin, lies
+// under the ground across the cell: any ray under a point of it is hidden. A row of blocks of
+// cells across the chunk is crossed by the vertical plane of every azimuth within its span, each
+// plane through blocks that overlap the azimuth's bin, so the bin's tangent is the least of those
+// blocks', known within the row's farthest distance; a block that spans the whole bin alone is
+// crossed by every plane of it, and its own tangent holds there.
 // Seen as a target, a block's mesh lies under its cells' highest vertex, so its rays rise no higher
 // than that height over its nearest distance (or its farthest, when below the camera).
 layout(local_size_x = 64) in;

@@ -19,7 +19,6 @@ constexpr uint32_t kHorizonEntries = kHorizonAzimuths * 48;  // times its kHoriz
 constexpr int32_t kWalk = 0, kFinish = 1;                    // terrain_select.comp's kStage
 constexpr int32_t kCumulativeHorizon = 0, kHiddenChunks = 1;  // terrain_hidden.comp's kStage
 constexpr uint32_t kHiddenWorkgroupSize = 64;                 // and its local size
-constexpr uint32_t kBlocksPerChunk = 16;                      // terrain_occluders.comp's
 // The draws' header: draws per pixel, deferred, requested, hidden, draws per vertex, indices, the
 // camera's slack (float bits), changed.
 using Header = std::array<uint32_t, 8>;
@@ -123,7 +122,7 @@ struct GpuChunkSelection::BufferBytes {
   ::vk::DeviceSize requests() const { return 4 * slots * sizeof(glm::ivec4); }
   static constexpr ::vk::DeviceSize block_groups() { return sizeof(::vk::DispatchIndirectCommand); }
   ::vk::DeviceSize horizon() const { return ForCulling(kHorizonEntries * sizeof(uint32_t)); }
-  ::vk::DeviceSize block_targets() const { return ForCulling(slots * kBlocksPerChunk * sizeof(glm::vec4)); }
+  ::vk::DeviceSize block_targets() const { return ForCulling(slots * terrain::kBlocksPerChunk * sizeof(glm::vec4)); }
   ::vk::DeviceSize content() const { return slots * sizeof(glm::uvec2); }
   ::vk::DeviceSize feedback() const { return kFeedbackStampsOffset + slots * sizeof(uint32_t); }
   ::vk::DeviceSize all(uint32_t feedbacks) const {
