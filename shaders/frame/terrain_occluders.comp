@@ -32,7 +32,6 @@ layout(std430, set = 0, binding = 6) writeonly buffer BlockTargets { vec4 target
 // Occluders are blocks of 2 x 2 cells: at a quarter of the work, they hide nearly as much.
 const int kBlock = 2;
 const int kBlocks = kChunkCells / kBlock;  // per side
-const int kCorners = (kBlocks + 1) * (kBlocks + 1);
 const uint kChunksPerGroup = 4u, kInvocationsPerChunk = 16u;  // one per block
 const float kNoOccluder = -1e30;
 // How far an occluder is lowered below its cells' lowest vertex: 1 m plus 1 mm per m of distance,
@@ -45,10 +44,6 @@ const float kHalfDiagonal = 0.5 * 1.4142135 * 1.01;
 // the chunk's point nearest the planet's centre, for the skirts that hang below the cells.
 const float kTargetMarginM = 1.0;
 
-// Per chunk, per block corner, its sea-level direction seen from the camera's vertical: x: azimuth
-// (bins, within half a turn of corner 0's), y: horizontal length, z: drop below the camera's
-// horizontal plane (1 - cos of the angle between the two verticals).
-shared vec3 corners[kChunksPerGroup][kCorners];
 // Per chunk, per block: x: the tangent of its occluder (kNoOccluder: none); y, z: its azimuth span
 // (bins); w: its farthest horizontal distance (m).
 shared vec4 blocks[kChunksPerGroup][kBlocks * kBlocks];
@@ -56,6 +51,28 @@ shared vec4 blocks[kChunksPerGroup][kBlocks * kBlocks];
 vec4 BlockOfStrip(uint chunk, uint strip, uint k) {
   uint line = strip % uint(kBlocks);
   return blocks[chunk][strip < uint(kBlocks) ? line * uint(kBlocks) + k : k * uint(kBlocks) + line];
+}
+
+// A sea-level point's vertical minus the camera's, its z without cancelling: both are nearly 1
+// (scene/terrain.h's SurfacePoint: the vertical at (x, y) is (x / R, y / R, sqrt(1 - q))).
+vec3 OffsetFromCameraVertical(vec2 xy) {
+  const float R = east.w;
+  const vec3 u = vertical.xyz;
+  float q = dot(xy, xy) / (R * R), q_camera = dot(u.xy, u.xy);
+  return vec3(xy / R - u.xy, (q_camera - q) / (sqrt(1.0 - q) + u.z));
+}
+
+float HorizontalLength(vec2 xy) {
+  vec3 offset = OffsetFromCameraVertical(xy);
+  return length(vec2(dot(offset, east.xyz), dot(offset, north.xyz)));
+}
+
+// A sea-level point's direction seen from the camera's vertical: x: azimuth (bins), y: horizontal
+// length, z: drop below the camera's horizontal plane (1 - cos of the angle between the two verticals).
+vec3 SeenFromCamera(vec2 xy) {
+  vec3 offset = OffsetFromCameraVertical(xy);
+  vec2 horizontal = vec2(dot(offset, east.xyz), dot(offset, north.xyz));
+  return vec3(AzimuthInBins(atan(horizontal.y, horizontal.x)), length(horizontal), 0.5 * dot(offset, offset));
 }
 
 void main() {
@@ -67,35 +84,29 @@ void main() {
   const float R = east.w;
   const float block_size = ChunkSize(id.x) / float(kBlocks);
   const vec2 origin = ChunkOrigin(id);
-  const vec3 u = vertical.xyz;
-  for (uint c = t; c < uint(kCorners); c += kInvocationsPerChunk) {
-    vec2 xy = origin + vec2(c % uint(kBlocks + 1), c / uint(kBlocks + 1)) * block_size;
-    // The direction minus the camera's vertical, its z without cancelling: both are nearly 1
-    // (scene/terrain.h's SurfacePoint: the vertical at (x, y) is (x / R, y / R, sqrt(1 - q))).
-    float q = dot(xy, xy) / (R * R), q_camera = dot(u.xy, u.xy);
-    vec3 offset = vec3(xy / R - u.xy, (q_camera - q) / (sqrt(1.0 - q) + u.z));
-    vec2 horizontal = vec2(dot(offset, east.xyz), dot(offset, north.xyz));
-    corners[chunk][c] = vec3(AzimuthInBins(atan(horizontal.y, horizontal.x)), length(horizontal), 0.5 * dot(offset, offset));
-  }
-  barrier();
   // A chunk around the camera's vertical has no span of azimuths; those near it add nothing.
-  const float nearest = min(min(corners[chunk][0].y, corners[chunk][kBlocks].y),
-                            min(corners[chunk][kCorners - 1 - kBlocks].y, corners[chunk][kCorners - 1].y));
-  const bool usable = present && nearest * R > kHalfDiagonal * float(kBlocks) * block_size;
+  const float chunk_size = float(kBlocks) * block_size;
+  const float nearest =
+      min(min(HorizontalLength(origin), HorizontalLength(origin + vec2(chunk_size, 0.0))),
+          min(HorizontalLength(origin + vec2(0.0, chunk_size)), HorizontalLength(origin + chunk_size)));
+  const bool usable = present && nearest * R > kHalfDiagonal * chunk_size;
   {
     const uint i = t % uint(kBlocks), j = t / uint(kBlocks);
-    const uint first = j * uint(kBlocks + 1) + i;
-    const uint block_corners[4] = uint[4](first, first + 1u, first + uint(kBlocks + 1), first + uint(kBlocks + 2));
+    // Each block finds its own corners, though neighbours share them: a CPU device reads shared
+    // memory a lane at a time, and sharing them cost more than the arithmetic.
+    vec3 block_corners[4];
+    for (int k = 0; k < 4; ++k)
+      block_corners[k] = SeenFromCamera(origin + vec2(i + uint(k & 1), j + uint(k >> 1)) * block_size);
     const vec2 heights = block_heights[uint(slot) * kInvocationsPerChunk + t];
     const float lowest = heights.x, highest = heights.y;
-    const float reference = corners[chunk][0].x;
+    const float reference = SeenFromCamera(origin).x;
     // At the height of the lowest vertex, to a ray's distance from the camera (height, horizontal).
-    vec3 first_corner = corners[chunk][first];
+    vec3 first_corner = block_corners[0];
     vec2 seen = vec2(lowest - vertical.w - (R + lowest) * first_corner.z, (R + lowest) * first_corner.y);
     const float h = lowest - kMarginM - kMarginPerM * length(seen);
     float z_min = 1e30, near_unit = 1e30, far_unit = 0.0, span_min = 1e30, span_max = -1e30;
     for (int k = 0; k < 4; ++k) {
-      vec3 c = corners[chunk][block_corners[k]];
+      vec3 c = block_corners[k];
       z_min = min(z_min, h - vertical.w - (R + h) * c.z);
       near_unit = min(near_unit, c.y);
       far_unit = max(far_unit, c.y);

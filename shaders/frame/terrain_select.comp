@@ -178,9 +178,9 @@ void Synchronize() {
 void SortKeys(uint n, uint t) {
   for (uint k = 2u; k <= n; k <<= 1u) {
     for (uint j = k >> 1u; j > 0u; j >>= 1u) {
-      for (uint i = t; i < n; i += kWorkgroupSize) {
-        uint l = i ^ j;
-        if (l <= i) continue;
+      for (uint pair = t; pair < n / 2u; pair += kWorkgroupSize) {
+        // The pair's first key: its number with a 0 inserted at j's bit; the second has a 1 there.
+        const uint low = pair & (j - 1u), i = ((pair - low) << 1u) | low, l = i | j;
         uvec2 a = keys[i], b = keys[l];
         if ((a.x > b.x) == ((i & k) == 0u)) {
           keys[i] = b;
