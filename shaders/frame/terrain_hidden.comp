@@ -25,12 +25,10 @@ layout(std430, set = 0, binding = 2) readonly buffer BlockTargets { vec4 targets
 // Per band and azimuth bin, OrderedBits of the tangent below which rays are hidden.
 layout(std430, set = 0, binding = 3) buffer TerrainHorizon { uint horizon[]; };
 
-const uint kBlocksPerChunk = 16u, kChunksPerGroup = 4u;  // terrain_occluders.comp's
-const uint kChunkBlocks = 4u;                            // a side (terrain::kChunkBlocks)
 const uint kBlockOrders = 4u;
 
-// Per chunk, a bit per block seen (j * kChunkBlocks + i for block (i, j)).
-shared uint visible_blocks[kChunksPerGroup];
+// Per chunk, a bit per block seen.
+shared uint visible_blocks[kBlockChunksPerGroup];
 
 // Where block (i, j) comes in a block order (terrain::BlockAtPosition's inverse): rows from the
 // south or the north, columns from the west or the east.
@@ -82,7 +80,7 @@ void main() {
     return;
   }
   const uint chunk = gl_LocalInvocationIndex / kBlocksPerChunk, block = gl_LocalInvocationIndex % kBlocksPerChunk;
-  const uint index = gl_WorkGroupID.x * kChunksPerGroup + chunk;
+  const uint index = gl_WorkGroupID.x * kBlockChunksPerGroup + chunk;
   const bool present = index < candidates;
   if (block == 0u) visible_blocks[chunk] = 0u;
   barrier();

@@ -14,12 +14,13 @@ layout(local_size_x = 64) in;
 
 #include "terrain_selection.glsl"
 #include "terrain_horizon.glsl"
+#include "terrain_keys.glsl"
 
 // The selection's chunks (their slots in y).
 layout(std430, set = 0, binding = 2) readonly buffer SelectionKeys { uvec2 keys[]; };
 // The selection's header: the number of chunks the walk kept (terrain_select.comp's draw_count).
 layout(std430, set = 0, binding = 3) readonly buffer SelectionDraws { uint candidates; };
-// Per slot, per block of its chunk (j * kBlocks + i), its cells' lowest and highest heights (m):
+// Per slot, per block of its chunk, its cells' lowest and highest heights (m):
 // the mesh over the block lies between them (terrain::BlockHeights).
 layout(std430, set = 0, binding = 4) readonly buffer ChunkBlockHeights { vec2 block_heights[]; };
 // Per band and azimuth bin, OrderedBits of the tangent below which rays are hidden.
@@ -29,10 +30,8 @@ layout(std430, set = 0, binding = 5) coherent buffer TerrainHorizon { uint horiz
 // when it cannot be hidden.
 layout(std430, set = 0, binding = 6) writeonly buffer BlockTargets { vec4 targets[]; };
 
-// Occluders are blocks of 2 x 2 cells: at a quarter of the work, they hide nearly as much.
-const int kBlock = 2;
-const int kBlocks = kChunkCells / kBlock;  // per side
-const uint kChunksPerGroup = 4u, kInvocationsPerChunk = 16u;  // one per block
+// Occluders are blocks of 2 x 2 cells (terrain_keys.glsl): at a quarter of the work, they hide
+// nearly as much.
 const float kNoOccluder = -1e30;
 // How far an occluder is lowered below its cells' lowest vertex: 1 m plus 1 mm per m of distance,
 // for float rounding of the mesh and the chord of a cell below the curved shell (as the CPU's
@@ -46,11 +45,11 @@ const float kTargetMarginM = 1.0;
 
 // Per chunk, per block: x: the tangent of its occluder (kNoOccluder: none); y, z: its azimuth span
 // (bins); w: its farthest horizontal distance (m).
-shared vec4 blocks[kChunksPerGroup][kBlocks * kBlocks];
+shared vec4 blocks[kBlockChunksPerGroup][kBlocksPerChunk];
 
 vec4 BlockOfStrip(uint chunk, uint strip, uint k) {
-  uint line = strip % uint(kBlocks);
-  return blocks[chunk][strip < uint(kBlocks) ? line * uint(kBlocks) + k : k * uint(kBlocks) + line];
+  uint line = strip % kChunkBlocks;
+  return blocks[chunk][strip < kChunkBlocks ? line * kChunkBlocks + k : k * kChunkBlocks + line];
 }
 
 // A sea-level point's vertical minus the camera's, its z without cancelling: both are nearly 1
@@ -76,28 +75,28 @@ vec3 SeenFromCamera(vec2 xy) {
 }
 
 void main() {
-  const uint chunk = gl_LocalInvocationIndex / kInvocationsPerChunk, t = gl_LocalInvocationIndex % kInvocationsPerChunk;
-  const uint index = gl_WorkGroupID.x * kChunksPerGroup + chunk;
+  const uint chunk = gl_LocalInvocationIndex / kBlocksPerChunk, t = gl_LocalInvocationIndex % kBlocksPerChunk;
+  const uint index = gl_WorkGroupID.x * kBlockChunksPerGroup + chunk;
   const bool present = index < candidates;
   const int slot = present ? int(keys[index].y) : 0;
   const ivec3 id = nodes[slot].id.xyz;
   const float R = east.w;
-  const float block_size = ChunkSize(id.x) / float(kBlocks);
+  const float block_size = ChunkSize(id.x) / float(kChunkBlocks);
   const vec2 origin = ChunkOrigin(id);
   // A chunk around the camera's vertical has no span of azimuths; those near it add nothing.
-  const float chunk_size = float(kBlocks) * block_size;
+  const float chunk_size = float(kChunkBlocks) * block_size;
   const float nearest =
       min(min(HorizontalLength(origin), HorizontalLength(origin + vec2(chunk_size, 0.0))),
           min(HorizontalLength(origin + vec2(0.0, chunk_size)), HorizontalLength(origin + chunk_size)));
   const bool usable = present && nearest * R > kHalfDiagonal * chunk_size;
   {
-    const uint i = t % uint(kBlocks), j = t / uint(kBlocks);
+    const uint i = t % kChunkBlocks, j = t / kChunkBlocks;
     // Each block finds its own corners, though neighbours share them: a CPU device reads shared
     // memory a lane at a time, and sharing them cost more than the arithmetic.
     vec3 block_corners[4];
     for (int k = 0; k < 4; ++k)
       block_corners[k] = SeenFromCamera(origin + vec2(i + uint(k & 1), j + uint(k >> 1)) * block_size);
-    const vec2 heights = block_heights[uint(slot) * kInvocationsPerChunk + t];
+    const vec2 heights = block_heights[uint(slot) * kBlocksPerChunk + t];
     const float lowest = heights.x, highest = heights.y;
     const float reference = SeenFromCamera(origin).x;
     // At the height of the lowest vertex, to a ray's distance from the camera (height, horizontal).
@@ -129,16 +128,16 @@ void main() {
     const float target_near = r_lowest * near_unit;
     const int band = usable && near_unit > 0.0 ? HorizonBandWithin(target_near) : -1;
     const float target = z_max / (z_max >= 0.0 ? target_near : (R + highest) * far_unit * 1.001);
-    if (present) targets[index * kInvocationsPerChunk + t] = vec4(target, span_min, span_max, float(band));
+    if (present) targets[index * kBlocksPerChunk + t] = vec4(target, span_min, span_max, float(band));
   }
   barrier();
   if (!usable) return;
 
   // Rows (strips 0-3, along x) and columns (4-7, along y) of blocks, 2 invocations a strip.
-  const uint strip = t % uint(2 * kBlocks), lane = t / uint(2 * kBlocks);
+  const uint strip = t % (2u * kChunkBlocks), lane = t / (2u * kChunkBlocks);
   float span_min = 1e30, span_max = -1e30, far = 0.0;
   bool whole = true;
-  for (uint k = 0u; k < uint(kBlocks); ++k) {
+  for (uint k = 0u; k < kChunkBlocks; ++k) {
     vec4 b = BlockOfStrip(chunk, strip, k);
     whole = whole && b.x > kNoOccluder;
     span_min = min(span_min, b.y);
@@ -150,7 +149,7 @@ void main() {
   // The bins wholly within the strip's span.
   for (int bin = int(ceil(span_min)) + int(lane); float(bin + 1) <= span_max; bin += 2) {
     float tangent = 1e30, within = kNoOccluder;
-    for (uint k = 0u; k < uint(kBlocks); ++k) {
+    for (uint k = 0u; k < kChunkBlocks; ++k) {
       vec4 b = BlockOfStrip(chunk, strip, k);
       if (b.z >= float(bin) && b.y <= float(bin + 1)) tangent = min(tangent, b.x);
       if (b.y <= float(bin) && b.z >= float(bin + 1)) within = max(within, b.x);

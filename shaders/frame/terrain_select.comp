@@ -25,7 +25,6 @@ layout(constant_id = 0) const int kStage = 0;
 // spread past its sea-level footprint by a little (lod_selection.cpp's kHorizontalSpread).
 const float kHorizontalSpread = 2e-3;
 const uint kWorkgroupSize = gl_WorkGroupSize.x;
-const uint kBlockChunksPerGroup = 4u;  // terrain_occluders.comp's and terrain_hidden.comp's kChunksPerGroup
 
 // Two queues of slots, a level's and the next's, each as long as there are slots; after the walk,
 // the chunks drawn as pairs of key and slot.

@@ -3,6 +3,13 @@
 // nearer terrain hides the whole chunk, or else how many of its blocks of cells come last, and
 // hidden, in one of the block orders (terrain::BlockAtPosition), for its draw to leave them out
 // (terrain::ChunkBlockIndexRange).
+// A chunk's cells in blocks of 2 x 2, kChunkBlocks a side (terrain::kChunkBlocks), block (i, j)
+// numbered j * kChunkBlocks + i; the horizon's passes take kBlockChunksPerGroup chunks a workgroup,
+// an invocation per block (terrain_occluders.comp, terrain_hidden.comp).
+const uint kChunkBlocks = 4u;
+const uint kBlocksPerChunk = kChunkBlocks * kChunkBlocks;
+const uint kBlockChunksPerGroup = 4u;
+
 const uint kSlotMask = 0x00ffffffu;
 const uint kHidden = 0x80000000u;
 const uint kBlockIndices = 24u;  // terrain::kBlockIndices
