@@ -375,7 +375,8 @@ TEST_F(LeanFrame, OneOffFramesAreCompleteWhateverCameBefore) {
 
 // The terrain selected on the GPU (gpu_chunk_selection.h) draws the CPU selection's picture bit for
 // bit: the same chunks at the same levels wherever they are seen (its horizon hides others than
-// the CPU's screen horizon, only hidden ones). At the default view and looking down from 2 km.
+// the CPU's screen horizon, only hidden ones, and it leaves out chunks whose ground the view does
+// not hold, which the CPU's bounds keep). At the default view and looking down from 2 km.
 TEST_F(LeanFrame, TerrainSelectedOnTheGpuDrawsTheCpuSelectionsPicture) {
   for (const Scene& scene : DefaultViewAndFromAbove()) {
     RendererOptions cpu{{.width = kWidth, .height = kHeight}};
@@ -386,8 +387,10 @@ TEST_F(LeanFrame, TerrainSelectedOnTheGpuDrawsTheCpuSelectionsPicture) {
     by_gpu.Render(scene);
     EXPECT_EQ(by_gpu.ReadOutput().rgba, by_cpu.ReadOutput().rgba);
     // Its counts are read back with the next frames, which select again while chunks enter the
-    // tree (the shadow casters' too). The two horizons hide about as much
-    // (GpuChunkSelection.LeavesOutOnlyChunksTheTerrainHides bounds the same ratio).
+    // tree (the shadow casters' too). It draws no more than the CPU's selection, within what the
+    // two horizons leave (GpuChunkSelection.LeavesOutOnlyTheTerrainNotSeen bounds them over the
+    // chunks in view); looking down it draws a quarter of them, as the CPU's keeps chunks whose
+    // bounds alone reach into the view.
     int frames = 1;
     do {
       by_gpu.Render(scene, kStream);
@@ -396,8 +399,8 @@ TEST_F(LeanFrame, TerrainSelectedOnTheGpuDrawsTheCpuSelectionsPicture) {
     EXPECT_TRUE(by_gpu.frame_info().settled);
     std::printf("chunks drawn: CPU %zu, GPU %zu, after %d frames\n", by_cpu.frame_info().chunks,
                 by_gpu.frame_info().chunks, frames);
-    EXPECT_GE(double(by_gpu.frame_info().chunks), 0.8 * double(by_cpu.frame_info().chunks));
-    EXPECT_LE(double(by_gpu.frame_info().chunks), 1.25 * double(by_cpu.frame_info().chunks));
+    EXPECT_GE(by_gpu.frame_info().chunks, 1u);
+    EXPECT_LE(double(by_gpu.frame_info().chunks), 1.1 * double(by_cpu.frame_info().chunks));
     EXPECT_EQ(by_gpu.ReadOutput().rgba, by_cpu.ReadOutput().rgba);
   }
 }

@@ -1,11 +1,12 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The chunks the walk kept that nearer terrain hides, whole or in part: a block of 2 x 2 cells is
-// hidden when, as a target (terrain_occluders.comp), it rises no higher than the horizon
-// (terrain_horizon.glsl) of the bands wholly in front of it, in every azimuth bin it spans: each of
-// its rays then passes under the ground first. A chunk whose every block is hidden is left out;
-// of the others, the hidden blocks that come last in one of the block orders are left out of the
-// chunk's draw, in the order that leaves out most (terrain::ChunkBlockIndexRange). Stage 0 first
+// The chunks the walk kept that are not seen, whole or in part: a block of 2 x 2 cells is unseen
+// when its ground lies outside the view (terrain_occluders.comp found it so), or is hidden: as a
+// target, it rises no higher than the horizon (terrain_horizon.glsl) of the bands wholly in front of
+// it, in every azimuth bin it spans, so that each of its rays passes under the ground first. A
+// chunk whose every block is unseen is left out; of the others, the unseen blocks that come last in
+// one of the block orders are left out of the chunk's draw, in the order that leaves out most
+// (terrain::ChunkBlockIndexRange). Stage 0 first
 // makes the horizon cumulative, so that each band holds what the nearer ones hold; stage 1 tests
 // four chunks a workgroup, an invocation per block.
 layout(local_size_x = 64) in;
@@ -20,7 +21,7 @@ layout(std430, set = 0, binding = 0) buffer SelectionKeys { uvec2 keys[]; };
 // The selection's header: the number of chunks the walk kept (terrain_select.comp's draw_count).
 layout(std430, set = 0, binding = 1) readonly buffer SelectionDraws { uint candidates; };
 // terrain_occluders.comp's: per chunk the walk kept, per block, its highest tangent, its azimuth
-// span (bins) and the last band wholly in front of it (-1: it cannot be hidden).
+// span (bins) and the last band wholly in front of it (-1: it cannot be hidden; kOutsideView).
 layout(std430, set = 0, binding = 2) readonly buffer BlockTargets { vec4 targets[]; };
 // Per band and azimuth bin, OrderedBits of the tangent below which rays are hidden.
 layout(std430, set = 0, binding = 3) buffer TerrainHorizon { uint horizon[]; };
@@ -59,7 +60,8 @@ uint LeaveOutHiddenBlocks(uint word, uint visible) {
   return best_left_out == 0u ? word : WithBlocksLeftOut(word, best_order, best_left_out);
 }
 
-bool TargetHidden(vec4 target) {
+bool TargetUnseen(vec4 target) {
+  if (target.w == kOutsideView) return true;
   const int band = int(target.w);
   if (band < 0) return false;
   for (int bin = int(floor(target.y)); bin <= int(floor(target.z)); ++bin) {
@@ -84,7 +86,7 @@ void main() {
   const bool present = index < candidates;
   if (block == 0u) visible_blocks[chunk] = 0u;
   barrier();
-  if (present && !TargetHidden(targets[index * kBlocksPerChunk + block])) atomicOr(visible_blocks[chunk], 1u << block);
+  if (present && !TargetUnseen(targets[index * kBlocksPerChunk + block])) atomicOr(visible_blocks[chunk], 1u << block);
   barrier();
   if (!present || block != 0u) return;
   const uint visible = visible_blocks[chunk];

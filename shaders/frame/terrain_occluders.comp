@@ -9,7 +9,9 @@
 // blocks', known within the row's farthest distance; a block that spans the whole bin alone is
 // crossed by every plane of it, and its own tangent holds there.
 // Seen as a target, a block's mesh lies under its cells' highest vertex, so its rays rise no higher
-// than that height over its nearest distance (or its farthest, when below the camera).
+// than that height over its nearest distance (or its farthest, when below the camera); and it lies
+// within a box of its footprint and heights, which the frustum may leave out though the chunk's
+// bounds, over all its heights, reach into it.
 layout(local_size_x = 64) in;
 
 #include "terrain_selection.glsl"
@@ -26,8 +28,8 @@ layout(std430, set = 0, binding = 4) readonly buffer ChunkBlockHeights { vec2 bl
 // Per band and azimuth bin, OrderedBits of the tangent below which rays are hidden.
 layout(std430, set = 0, binding = 5) coherent buffer TerrainHorizon { uint horizon[]; };
 // Per chunk the walk kept, per block, the block as a target (terrain_hidden.comp): x: the highest
-// tangent of its rays; y, z: its azimuth span (bins); w: the last band wholly in front of it, or -1
-// when it cannot be hidden.
+// tangent of its rays; y, z: its azimuth span (bins); w: the last band wholly in front of it, -1
+// when it cannot be hidden, or kOutsideView.
 layout(std430, set = 0, binding = 6) writeonly buffer BlockTargets { vec4 targets[]; };
 
 // Occluders are blocks of 2 x 2 cells (terrain_keys.glsl): at a quarter of the work, they hide
@@ -128,7 +130,15 @@ void main() {
     const float target_near = r_lowest * near_unit;
     const int band = usable && near_unit > 0.0 ? HorizonBandWithin(target_near) : -1;
     const float target = z_max / (z_max >= 0.0 ? target_near : (R + highest) * far_unit * 1.001);
-    if (present) targets[index * kBlocksPerChunk + t] = vec4(target, span_min, span_max, float(band));
+    // The ground over the block lies between its heights: at height h over the sea-level point
+    // (x, y), z is -R + (R + h) sqrt(1 - q) (SurfacePoint), at most h and, as sqrt(1 - q) >= 1 - q,
+    // at least h - (R + h) q; q = (x^2 + y^2) / R^2 is largest at the block's farthest corner.
+    const vec2 lower = origin + vec2(i, j) * block_size, upper = lower + block_size;
+    const vec2 farthest = max(abs(lower), abs(upper));
+    const float q = dot(farthest, farthest) / (R * R);
+    const bool in_view = FootprintMayBeInFrustum(lower, upper, lowest - (R + lowest) * q - kTargetMarginM,
+                                                 highest + kTargetMarginM);
+    if (present) targets[index * kBlocksPerChunk + t] = vec4(target, span_min, span_max, in_view ? float(band) : kOutsideView);
   }
   barrier();
   if (!usable) return;

@@ -21,9 +21,6 @@ layout(constant_id = 0) const int kStage = 0;
 #include "terrain_selection.glsl"
 #include "terrain_keys.glsl"
 
-// A point h above sea level sits at (R + h) / R times its sea-level x and y, so a chunk's bounds
-// spread past its sea-level footprint by a little (lod_selection.cpp's kHorizontalSpread).
-const float kHorizontalSpread = 2e-3;
 const uint kWorkgroupSize = gl_WorkGroupSize.x;
 
 // Two queues of slots, a level's and the next's, each as long as there are slots; after the walk,
@@ -68,15 +65,6 @@ shared uint queue_size[2];
 shared uint draw_size, deferred_size, request_size, drawn_size, per_vertex_size, index_size, slack_bits, changed_size;
 const uint kReadsPerVertex = 0x80000000u;  // the sort key's top bit
 
-bool IntersectsFrustum(vec3 lower, vec3 upper) {
-  for (int i = 0; i < 5; ++i) {
-    // The box's corner furthest along the plane's normal.
-    vec3 corner = mix(lower, upper, greaterThanEqual(planes[i].xyz, vec3(0.0)));
-    if (dot(planes[i].xyz, corner) + planes[i].w < 0.0) return false;
-  }
-  return true;
-}
-
 // The camera's distance to the chunk's bounds (0 inside them).
 float DistanceToBounds(ChunkNode node) {
   return length(camera.xyz - clamp(camera.xyz, node.lower.xyz, node.upper.xyz));
@@ -96,11 +84,9 @@ float RefinementSlack(ChunkNode node) {
 // Where a child that is not built may lie: its footprint, widened for the spread, over its
 // parent's heights grown by the parent's error (EstimateChildBounds in lod_selection.cpp).
 bool ChildMayBeInFrustum(ivec3 child, ChunkNode parent) {
-  float size = ChunkSize(child.x);
-  vec2 lower = -0.5 * kRootSizeM + vec2(child.yz) * size, upper = lower + size;
-  vec2 margin = kHorizontalSpread * max(abs(lower), abs(upper)) + 1.0;
-  return IntersectsFrustum(vec3(lower - margin, parent.lower.z - parent.lower.w),
-                           vec3(upper + margin, parent.upper.z + parent.lower.w));
+  const float size = ChunkSize(child.x);
+  const vec2 lower = -0.5 * kRootSizeM + vec2(child.yz) * size;
+  return FootprintMayBeInFrustum(lower, lower + size, parent.lower.z - parent.lower.w, parent.upper.z + parent.lower.w);
 }
 
 // The chunk's path from the root as ranks from the camera (2 bits a level, the child on the

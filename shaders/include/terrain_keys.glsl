@@ -9,6 +9,9 @@
 const uint kChunkBlocks = 4u;
 const uint kBlocksPerChunk = kChunkBlocks * kChunkBlocks;
 const uint kBlockChunksPerGroup = 4u;
+// A block's band as a target (terrain_occluders.comp's BlockTargets) when it lies outside the view:
+// left out of its chunk's draw as a hidden one is.
+const float kOutsideView = -2.0;
 
 const uint kSlotMask = 0x00ffffffu;
 const uint kHidden = 0x80000000u;

@@ -35,3 +35,22 @@ float ChunkSize(int level) { return kRootSizeM / float(1 << level); }
 
 // The chunk's sea-level footprint: its south-west corner (x, y) in meters.
 vec2 ChunkOrigin(ivec3 id) { return -0.5 * kRootSizeM + vec2(id.yz) * ChunkSize(id.x); }
+
+bool IntersectsFrustum(vec3 lower, vec3 upper) {
+  for (int i = 0; i < 5; ++i) {
+    // The box's corner furthest along the plane's normal.
+    vec3 corner = mix(lower, upper, greaterThanEqual(planes[i].xyz, vec3(0.0)));
+    if (dot(planes[i].xyz, corner) + planes[i].w < 0.0) return false;
+  }
+  return true;
+}
+
+// A point h above sea level sits at (R + h) / R times its sea-level x and y, so what stands on a
+// sea-level footprint spreads past it by a little (lod_selection.cpp's kHorizontalSpread).
+const float kHorizontalSpread = 2e-3;
+
+// Whether ground over a sea-level footprint, between two heights of the scene frame, may be seen.
+bool FootprintMayBeInFrustum(vec2 lower, vec2 upper, float lowest_z, float highest_z) {
+  const vec2 margin = kHorizontalSpread * max(abs(lower), abs(upper)) + 1.0;
+  return IntersectsFrustum(vec3(lower - margin, lowest_z), vec3(upper + margin, highest_z));
+}

@@ -7,10 +7,11 @@
 // vertical (shaders/include/terrain_horizon.glsl, terrain_occluders.comp), to which every chunk
 // the walk keeps adds its cells at once: unlike the CPU's horizon on the screen, no chunk waits
 // for those in front of it. Each is then tested against it block by block of its cells, at their
-// highest (terrain_hidden.comp): a chunk whose blocks are all hidden is left out, and one hidden in
-// part draws without its hidden blocks that come last in one of four block orders (rows or columns,
-// from either side; terrain::ChunkBlockIndexRange), as GPU-driven renderers cull clusters of a
-// mesh (Wihlidal, "Optimizing the Graphics Pipeline with Compute", GDC 2016). The CPU's part no
+// highest (terrain_hidden.comp), and against the frustum by the ground over the block, which the
+// chunk's bounds overstate: a chunk whose blocks are all hidden or outside the view is left out,
+// and one seen in part draws without the blocks unseen that come last in one of four block orders
+// (rows or columns, from either side; terrain::ChunkBlockIndexRange), as GPU-driven renderers cull
+// clusters of a mesh (Wihlidal, "Optimizing the Graphics Pipeline with Compute", GDC 2016). The CPU's part no
 // longer grows with the terrain: it keeps the tree of built chunks (a few links per chunk built or
 // dropped) and builds the chunks the GPU asks for.
 //
@@ -83,7 +84,8 @@ class GpuChunkSelection {
     uint32_t generation = 0;  // which selection wrote it, later ones higher; 0: none yet
     size_t per_pixel = 0, per_vertex = 0;  // chunks drawn, by where they read the froxels
     size_t indices = 0;                    // of the chunks drawn, skirts included
-    int deferred = 0, hidden = 0;          // terrain::Selection's
+    // terrain::Selection's; hidden also counts the chunks whose ground lies outside the view
+    int deferred = 0, hidden = 0;
     double camera_slack_m = 0.0;           // terrain::Selection's, in single precision
     std::vector<terrain::ChunkId> requested;  // the first kFedBackRequests children to build
     std::vector<uint32_t> drawn_slots;        // the slots of the chunks drawn
@@ -96,12 +98,12 @@ class GpuChunkSelection {
     // With their skirts: those that read the froxels per pixel, front to back, then the others.
     std::vector<terrain::SelectedChunk> chunks;
     // Per chunk, a bit per block of its cells (terrain::kBlocksPerChunk) that its draw leaves out,
-    // nearer terrain hiding it.
+    // nearer terrain hiding it or its ground lying outside the view.
     std::vector<uint32_t> blocks_left_out;
     size_t per_pixel = 0;                        // how many of chunks read them per pixel
     std::vector<terrain::ChunkId> requested;     // children to build
     int deferred = 0;                            // terrain::Selection::deferred
-    int hidden = 0;                              // terrain::Selection::hidden
+    int hidden = 0;                              // Feedback::hidden
     double camera_slack_m = 0.0;                 // terrain::Selection's, in single precision
     bool changed = false;                        // what it reported (Compare)
   };
