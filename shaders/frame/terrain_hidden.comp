@@ -6,9 +6,8 @@
 // it, in every azimuth bin it spans, so that each of its rays passes under the ground first. A
 // chunk whose every block is unseen is left out; of the others, the unseen blocks that come last in
 // one of the block orders are left out of the chunk's draw, in the order that leaves out most
-// (terrain::ChunkBlockIndexRange). Stage 0 first
-// makes the horizon cumulative, so that each band holds what the nearer ones hold; stage 1 tests
-// four chunks a workgroup, an invocation per block.
+// (terrain::ChunkBlockIndexRange). Stage 0 first makes the horizon cumulative, so that each band
+// holds what the nearer ones hold; stage 1 tests four chunks a workgroup, an invocation per block.
 layout(local_size_x = 64) in;
 layout(constant_id = 0) const int kStage = 0;
 
@@ -43,8 +42,8 @@ uint PositionInOrder(uint order, uint i, uint j) {
   }
 }
 
-// The chunk's key word with the most hidden blocks that come last in a block order left out.
-uint LeaveOutHiddenBlocks(uint word, uint visible) {
+// The chunk's key word with the most unseen blocks that come last in a block order left out.
+uint LeaveOutUnseenBlocks(uint word, uint visible) {
   uint best_order = 0u, best_left_out = 0u;
   for (uint order = 0u; order < kBlockOrders; ++order) {
     uint last_seen = 0u;
@@ -90,5 +89,5 @@ void main() {
   barrier();
   if (!present || block != 0u) return;
   const uint visible = visible_blocks[chunk];
-  keys[index].y = visible == 0u ? keys[index].y | kHidden : LeaveOutHiddenBlocks(keys[index].y, visible);
+  keys[index].y = visible == 0u ? keys[index].y | kHidden : LeaveOutUnseenBlocks(keys[index].y, visible);
 }

@@ -1,8 +1,8 @@
 // A chunk the selection's walk kept, as the second word of its key (terrain_select.comp's
 // SelectionKeys): its slot in the low 24 bits; what terrain_hidden.comp found: the top bit when
-// nearer terrain hides the whole chunk, or else how many of its blocks of cells come last, and
-// hidden, in one of the block orders (terrain::BlockAtPosition), for its draw to leave them out
-// (terrain::ChunkBlockIndexRange).
+// none of the chunk is seen (nearer terrain hides it, or it lies outside the view), or else how
+// many of its blocks of cells come last, and unseen, in one of the block orders
+// (terrain::BlockAtPosition), for its draw to leave them out (terrain::ChunkBlockIndexRange).
 // A chunk's cells in blocks of 2 x 2, kChunkBlocks a side (terrain::kChunkBlocks), block (i, j)
 // numbered j * kChunkBlocks + i; the horizon's passes take kBlockChunksPerGroup chunks a workgroup,
 // an invocation per block (terrain_occluders.comp, terrain_hidden.comp).
