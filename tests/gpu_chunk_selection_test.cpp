@@ -338,7 +338,8 @@ TEST_F(GpuChunkSelectionTest, SelectsEachCascadesCastersAsTheCpuDoes) {
 // corners of its blocks of 2 x 2 cells, each tested on its own), and of a 3 x 3 lattice over each
 // block left out of a chunk's draw, is behind the ground as the CPU marches it or outside the
 // frustum, and the chunks drawn are the rest of those without culling, in the same order. Blocks
-// of the chunks on the frustum's edges are left out for lying outside it. It hides about as much as the CPU's horizon on the screen
+// of the chunks on the frustum's edges are left out for lying outside it. Over the chunks with
+// ground in view, it hides about as much as the CPU's horizon on the screen
 // (terrain/screen_horizon.h): a different rule (a horizon per azimuth around the camera's vertical,
 // by bands of distance, with blocks of 2 x 2 cells as occluders at their lowest and as targets at
 // their highest), within 10 % more chunks drawn and no fewer than 90 % of them. The views: noon

@@ -63,16 +63,16 @@ vec3 OffsetFromCameraVertical(vec2 xy) {
   return vec3(xy / R - u.xy, (q_camera - q) / (sqrt(1.0 - q) + u.z));
 }
 
-float HorizontalLength(vec2 xy) {
-  vec3 offset = OffsetFromCameraVertical(xy);
-  return length(vec2(dot(offset, east.xyz), dot(offset, north.xyz)));
-}
+// The offset's part in the camera's horizontal plane (east, north).
+vec2 Horizontal(vec3 offset) { return vec2(dot(offset, east.xyz), dot(offset, north.xyz)); }
+
+float HorizontalLength(vec2 xy) { return length(Horizontal(OffsetFromCameraVertical(xy))); }
 
 // A sea-level point's direction seen from the camera's vertical: x: azimuth (bins), y: horizontal
 // length, z: drop below the camera's horizontal plane (1 - cos of the angle between the two verticals).
 vec3 SeenFromCamera(vec2 xy) {
-  vec3 offset = OffsetFromCameraVertical(xy);
-  vec2 horizontal = vec2(dot(offset, east.xyz), dot(offset, north.xyz));
+  const vec3 offset = OffsetFromCameraVertical(xy);
+  const vec2 horizontal = Horizontal(offset);
   return vec3(AzimuthInBins(atan(horizontal.y, horizontal.x)), length(horizontal), 0.5 * dot(offset, offset));
 }
 

@@ -11,9 +11,9 @@
 // chunk's bounds overstate: a chunk whose blocks are all hidden or outside the view is left out,
 // and one seen in part draws without the blocks unseen that come last in one of four block orders
 // (rows or columns, from either side; terrain::ChunkBlockIndexRange), as GPU-driven renderers cull
-// clusters of a mesh (Wihlidal, "Optimizing the Graphics Pipeline with Compute", GDC 2016). The CPU's part no
-// longer grows with the terrain: it keeps the tree of built chunks (a few links per chunk built or
-// dropped) and builds the chunks the GPU asks for.
+// clusters of a mesh (Wihlidal, "Optimizing the Graphics Pipeline with Compute", GDC 2016). The
+// CPU's part no longer grows with the terrain: it keeps the tree of built chunks (a few links per
+// chunk built or dropped) and builds the chunks the GPU asks for.
 //
 // The tree is the chunk slots' table: per slot, the chunk's bounds and error, its blocks' lowest and
 // highest heights, and the slots of its children and of its level's neighbours. Its changes reach the GPU
