@@ -1,15 +1,17 @@
-// The terrain chunk cache's eviction (src/aerial/render/terrain_chunk_cache.h) where a GPU's
-// selection draws: the chunks it drew (TerrainChunkCache::Used) and their ancestors, which its
+// The terrain chunk cache (src/aerial/render/terrain_chunk_cache.h): its eviction where a GPU's
+// selection draws (the chunks it drew, TerrainChunkCache::Used, and their ancestors, which its
 // walk from the root passes through, count as used; a slot emptied is filled again only after
-// the frames in flight.
+// the frames in flight), and chunks built in the background.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <map>
 #include <vector>
 
 #include "aerial/render/terrain_chunk_cache.h"
 #include "aerial/terrain/built_chunks.h"
+#include "aerial/terrain/terrain_chunk.h"
 #include "gpu_fixture.h"
 
 namespace aerial::testing {
@@ -93,6 +95,52 @@ TEST_F(TerrainChunkCacheTest, KeepsTheChunksTheGpuDrewAndTheirAncestors) {
   EXPECT_GE(emptied_.size(), 5u);
   EXPECT_LE(emptied_.size(), 5u + kFramesInFlight);
   for (const ChunkId& id : kept) EXPECT_FALSE(Emptied(id)) << id.level << "/" << id.x << "/" << id.y;
+}
+
+// Chunks built in the background are found only once FinishBackgroundBuilds took them in, then with
+// the vertices and the facts of the chunk built directly (not through the shared chunks the cache
+// reads), each in a slot of its own.
+TEST_F(TerrainChunkCacheTest, ChunksBuiltInTheBackgroundAreFoundOnceTakenIn) {
+  BeginFrame();
+  const std::vector<ChunkId> ids = Level(1);
+  cache_.BuildInBackground(ids);
+  for (const ChunkId& id : ids) EXPECT_EQ(cache_.Find(id), nullptr) << "found before it was taken in";
+  EXPECT_TRUE(cache_.TakeSlotChanges().empty());
+  cache_.FinishBackgroundBuilds();
+  TakeChanges();
+  EXPECT_EQ(slot_of_.size(), ids.size());
+  EXPECT_EQ(cache_.built_this_frame(), int(ids.size()));
+  for (const ChunkId& id : ids) {
+    const terrain::TerrainChunk reference = terrain::BuildTerrainChunk(id, kR);
+    const terrain::ChunkInfo* info = cache_.Find(id);
+    ASSERT_NE(info, nullptr);
+    EXPECT_EQ(info->geometric_error_m, reference.geometric_error_m);
+    EXPECT_EQ(info->bounds.min, reference.bounds.min);
+    EXPECT_EQ(info->bounds.max, reference.bounds.max);
+    const std::byte* slot = cache_.vertices().mapped() + size_t(cache_.VertexOffset(id)) * sizeof(Vertex);
+    EXPECT_EQ(std::memcmp(slot, reference.vertices.data(), reference.vertices.size() * sizeof(Vertex)), 0);
+  }
+}
+
+// A chunk asked of Build while it is being built in the background is waited for, not built twice
+// (the batch it is in is taken in whole); a Build of other chunks leaves the batch running.
+TEST_F(TerrainChunkCacheTest, BuildWaitsForTheBackgroundOnlyForAChunkItIsBuilding) {
+  BeginFrame();
+  const ChunkId a{1, 0, 0}, b{1, 1, 0}, c{1, 0, 1}, d{1, 1, 1};
+  const std::vector<ChunkId> batch = {a, b};
+  cache_.BuildInBackground(batch);
+  cache_.Build(std::vector<ChunkId>{d});
+  EXPECT_NE(cache_.Find(d), nullptr);
+  EXPECT_EQ(cache_.Find(a), nullptr) << "a Build of other chunks took the batch in";
+  cache_.Build(std::vector<ChunkId>{a, c});
+  for (const ChunkId& id : {a, b, c, d}) EXPECT_NE(cache_.Find(id), nullptr) << id.x << "/" << id.y;
+  TakeChanges();
+  EXPECT_EQ(cache_.size(), 4u);
+  std::vector<uint32_t> slots;
+  for (const auto& [id, slot] : slot_of_) slots.push_back(slot);
+  std::sort(slots.begin(), slots.end());
+  EXPECT_EQ(slot_of_.size(), 4u);
+  EXPECT_EQ(std::unique(slots.begin(), slots.end()), slots.end()) << "two chunks in one slot";
 }
 
 }  // namespace

@@ -459,14 +459,21 @@ void Renderer::SelectTerrain(const Scene& scene, bool complete, uint32_t slot) {
 }
 
 void Renderer::PrepareGpuTerrainSelection(const terrain::LodView& view, bool complete, uint32_t slot) {
-  // The slot's last frame has completed, and with it the selection it recorded, if any.
+  // The chunks the last frame asked to build join the tree (they were built beside that frame).
+  terrain_->FinishBackgroundBuilds();
+  if (gpu_casters_) gpu_casters_->ReadFeedback(slot, *terrain_);
+  // The slot's last frame has completed, and with it the selection it recorded, if any. What it
+  // asked for is built beside this frame, which draws the parents meanwhile; a one-off frame
+  // builds it first.
   if (GpuChunkSelection::Feedback feedback = gpu_terrain_->ReadFeedback(slot);
       feedback.generation > gpu_terrain_feedback_.generation) {
     for (uint32_t drawn : feedback.drawn_slots) terrain_->Used(drawn);
-    terrain_->Build(feedback.requested);
+    if (complete)
+      terrain_->Build(feedback.requested);
+    else
+      terrain_->BuildInBackground(feedback.requested);
     gpu_terrain_feedback_ = std::move(feedback);
   }
-  if (gpu_casters_) gpu_casters_->ReadFeedback(slot, *terrain_);
   int deferred = gpu_terrain_feedback_.deferred;
   if (complete) {
     // Every chunk the GPU may ask for: those of the CPU's rule without the horizon, which hides

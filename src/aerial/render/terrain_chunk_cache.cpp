@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstring>
+#include <exception>
 #include <thread>
 
 #include "aerial/error.h"
@@ -118,45 +119,87 @@ std::optional<uint32_t> TerrainChunkCache::TakeSlot() {
   return slot;
 }
 
-// Chunks are built on all cores: each thread takes the next chunk until none is left or the
-// frame's budget is spent, and writes it straight into its slot (slots are disjoint).
-void TerrainChunkCache::Build(std::span<const ChunkId> ids) {
-  std::vector<std::pair<ChunkId, uint32_t>> work;
+std::vector<TerrainChunkCache::Job> TerrainChunkCache::TakeSlotsFor(std::span<const ChunkId> ids) {
+  std::vector<Job> jobs;
   for (const ChunkId& id : ids) {
     if (chunks_.count(id)) continue;
     std::optional<uint32_t> slot = TakeSlot();
     if (!slot) break;  // the pool is full of chunks in use: the rest waits for a later frame
-    work.push_back({id, *slot});
+    jobs.push_back({id, *slot});
   }
-  if (work.empty()) return;
-  std::vector<std::optional<terrain::ChunkInfo>> infos(work.size());
+  return jobs;
+}
+
+std::optional<std::chrono::steady_clock::time_point> TerrainChunkCache::Deadline() const {
+  if (!limited_) return std::nullopt;
+  return deadline_;
+}
+
+// On all cores: each thread takes the next job until none is left or the deadline has passed,
+// and writes its chunk straight into the job's slot (slots are disjoint). It touches nothing else
+// of the cache, so it may run beside the rendering thread.
+void TerrainChunkCache::RunJobs(std::span<Job> jobs, std::optional<std::chrono::steady_clock::time_point> deadline) const {
   std::atomic<size_t> next{0};
   auto worker = [&] {
-    for (size_t i = next++; i < work.size(); i = next++) {
-      if (limited_ && std::chrono::steady_clock::now() > deadline_) return;
+    for (size_t i = next++; i < jobs.size(); i = next++) {
+      if (deadline && std::chrono::steady_clock::now() > *deadline) return;
       std::shared_ptr<const terrain::TerrainChunk> chunk =
-          shared_ ? shared_->Get(work[i].first, planet_radius_m_)
-                  : std::make_shared<const terrain::TerrainChunk>(
-                        terrain::BuildTerrainChunk(work[i].first, planet_radius_m_));
-      std::memcpy(vertices_.mapped() + work[i].second * kSlotBytes, chunk->vertices.data(), kSlotBytes);
-      infos[i] = terrain::InfoOf(*chunk);
+          shared_ ? shared_->Get(jobs[i].id, planet_radius_m_)
+                  : std::make_shared<const terrain::TerrainChunk>(terrain::BuildTerrainChunk(jobs[i].id, planet_radius_m_));
+      std::memcpy(vertices_.mapped() + jobs[i].slot * kSlotBytes, chunk->vertices.data(), kSlotBytes);
+      jobs[i].info = terrain::InfoOf(*chunk);
     }
   };
-  unsigned threads = std::clamp(std::thread::hardware_concurrency(), 1u, unsigned(work.size()));
+  unsigned threads = std::clamp(std::thread::hardware_concurrency(), 1u, unsigned(jobs.size()));
   std::vector<std::jthread> pool;
   for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
   worker();
-  pool.clear();  // joins
-  for (size_t i = 0; i < work.size(); ++i) {
-    if (infos[i]) {
-      chunks_[work[i].first] = {*infos[i], work[i].second, frame_};
-      id_in_slot_[work[i].second] = work[i].first;
-      if (log_slot_changes_) slot_changes_.push_back({work[i].second, work[i].first, infos[i]});
+}
+
+void TerrainChunkCache::TakeIn(std::span<const Job> jobs) {
+  for (const Job& job : jobs) {
+    if (job.info) {
+      chunks_[job.id] = {*job.info, job.slot, frame_};
+      id_in_slot_[job.slot] = job.id;
+      if (log_slot_changes_) slot_changes_.push_back({job.slot, job.id, job.info});
       ++built_this_frame_;
     } else {
-      free_slots_.push_back(work[i].second);
+      free_slots_.push_back(job.slot);
     }
   }
+}
+
+void TerrainChunkCache::Build(std::span<const ChunkId> ids) {
+  if (background_ && std::any_of(ids.begin(), ids.end(), [&](const ChunkId& id) {
+        return std::any_of(background_->jobs.begin(), background_->jobs.end(), [&](const Job& job) { return job.id == id; });
+      }))
+    FinishBackgroundBuilds();
+  std::vector<Job> jobs = TakeSlotsFor(ids);
+  if (jobs.empty()) return;
+  RunJobs(jobs, Deadline());
+  TakeIn(jobs);
+}
+
+void TerrainChunkCache::BuildInBackground(std::span<const ChunkId> ids) {
+  FinishBackgroundBuilds();
+  std::vector<Job> jobs = TakeSlotsFor(ids);
+  if (jobs.empty()) return;
+  background_ = std::make_unique<BackgroundBuild>(BackgroundBuild{.jobs = std::move(jobs)});
+  background_->thread = std::jthread([this, build = background_.get(), deadline = Deadline()] {
+    try {
+      RunJobs(build->jobs, deadline);
+    } catch (...) {
+      build->error = std::current_exception();
+    }
+  });
+}
+
+void TerrainChunkCache::FinishBackgroundBuilds() {
+  if (!background_) return;
+  background_->thread.join();
+  const std::unique_ptr<BackgroundBuild> done = std::move(background_);
+  if (done->error) std::rethrow_exception(done->error);
+  TakeIn(done->jobs);
 }
 
 int32_t TerrainChunkCache::VertexOffset(const ChunkId& id) const {

@@ -7,8 +7,11 @@
 // chunk the tree held when it was recorded. Chunks come from a BuiltChunks shared with other
 // renderers if given one.
 #include <chrono>
+#include <exception>
+#include <memory>
 #include <optional>
 #include <span>
+#include <thread>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -32,7 +35,15 @@ class TerrainChunkCache : public terrain::ChunkSource {
   void BeginFrame(double budget_ms);
 
   const terrain::ChunkInfo* Find(const terrain::ChunkId& id) override;
+  // Builds the chunks not built yet on all cores, each into a free slot, until the frame's budget is
+  // spent; first waits for those being built in the background if any of them is asked for.
   void Build(std::span<const terrain::ChunkId> ids) override;
+  // Starts building the chunks on other threads, each into a slot taken now, and returns: the
+  // rendering thread records its frame meanwhile, as engines stream their terrain. They are found
+  // once FinishBackgroundBuilds took them in; a call first finishes the last call's.
+  void BuildInBackground(std::span<const terrain::ChunkId> ids);
+  // Waits for the chunks BuildInBackground started, and takes them in as Build would have.
+  void FinishBackgroundBuilds();
   // The chunk in `slot`, and every chunk above it, was drawn by a selection made elsewhere (the
   // GPU's): it counts as used this frame, as Find would have made it.
   void Used(uint32_t slot);
@@ -60,6 +71,21 @@ class TerrainChunkCache : public terrain::ChunkSource {
     uint32_t slot;
     uint64_t last_used;
   };
+  // A chunk to build, the slot it goes in, and what it is once built (none: the budget ran out).
+  struct Job {
+    terrain::ChunkId id;
+    uint32_t slot;
+    std::optional<terrain::ChunkInfo> info;
+  };
+  struct BackgroundBuild {
+    std::vector<Job> jobs;
+    std::exception_ptr error;
+    std::jthread thread;
+  };
+  std::vector<Job> TakeSlotsFor(std::span<const terrain::ChunkId> ids);
+  std::optional<std::chrono::steady_clock::time_point> Deadline() const;
+  void RunJobs(std::span<Job> jobs, std::optional<std::chrono::steady_clock::time_point> deadline) const;
+  void TakeIn(std::span<const Job> jobs);
   std::optional<uint32_t> TakeSlot();
   void EmptyLeastUsed();
   void FoldDrawnSlots();  // Used's marks into the chunks' last_used, and their ancestors'
@@ -80,6 +106,8 @@ class TerrainChunkCache : public terrain::ChunkSource {
   std::chrono::steady_clock::time_point deadline_;
   bool limited_ = false;
   int built_this_frame_ = 0;
+  // Last, so that its thread, which writes into vertices_, is joined before anything else goes.
+  std::unique_ptr<BackgroundBuild> background_;
 };
 
 }  // namespace aerial
