@@ -130,7 +130,7 @@ std::vector<TerrainChunkCache::Job> TerrainChunkCache::TakeSlotsFor(std::span<co
   return jobs;
 }
 
-std::optional<std::chrono::steady_clock::time_point> TerrainChunkCache::Deadline() const {
+std::optional<TerrainChunkCache::TimePoint> TerrainChunkCache::Deadline() const {
   if (!limited_) return std::nullopt;
   return deadline_;
 }
@@ -138,14 +138,15 @@ std::optional<std::chrono::steady_clock::time_point> TerrainChunkCache::Deadline
 // On all cores: each thread takes the next job until none is left or the deadline has passed,
 // and writes its chunk straight into the job's slot (slots are disjoint). It touches nothing else
 // of the cache, so it may run beside the rendering thread.
-void TerrainChunkCache::RunJobs(std::span<Job> jobs, std::optional<std::chrono::steady_clock::time_point> deadline) const {
+void TerrainChunkCache::RunJobs(std::span<Job> jobs, std::optional<TimePoint> deadline) const {
   std::atomic<size_t> next{0};
   auto worker = [&] {
     for (size_t i = next++; i < jobs.size(); i = next++) {
       if (deadline && std::chrono::steady_clock::now() > *deadline) return;
       std::shared_ptr<const terrain::TerrainChunk> chunk =
           shared_ ? shared_->Get(jobs[i].id, planet_radius_m_)
-                  : std::make_shared<const terrain::TerrainChunk>(terrain::BuildTerrainChunk(jobs[i].id, planet_radius_m_));
+                  : std::make_shared<const terrain::TerrainChunk>(
+                        terrain::BuildTerrainChunk(jobs[i].id, planet_radius_m_));
       std::memcpy(vertices_.mapped() + jobs[i].slot * kSlotBytes, chunk->vertices.data(), kSlotBytes);
       jobs[i].info = terrain::InfoOf(*chunk);
     }
@@ -169,10 +170,13 @@ void TerrainChunkCache::TakeIn(std::span<const Job> jobs) {
   }
 }
 
+bool TerrainChunkCache::BuildingInBackground(const ChunkId& id) const {
+  return background_ &&
+         std::any_of(background_->jobs.begin(), background_->jobs.end(), [&](const Job& job) { return job.id == id; });
+}
+
 void TerrainChunkCache::Build(std::span<const ChunkId> ids) {
-  if (background_ && std::any_of(ids.begin(), ids.end(), [&](const ChunkId& id) {
-        return std::any_of(background_->jobs.begin(), background_->jobs.end(), [&](const Job& job) { return job.id == id; });
-      }))
+  if (std::any_of(ids.begin(), ids.end(), [&](const ChunkId& id) { return BuildingInBackground(id); }))
     FinishBackgroundBuilds();
   std::vector<Job> jobs = TakeSlotsFor(ids);
   if (jobs.empty()) return;

@@ -1,11 +1,12 @@
 #pragma once
 // The terrain chunks on the GPU: a fixed pool of chunk-sized slots in one host-visible vertex
 // buffer, and the index buffer every chunk shares. Chunks are built on the CPU when the LOD
-// selection first asks for them (terrain/lod_selection.h), written into a free slot, and kept
-// until the pool is full; then the chunks used longest ago go. A slot emptied is filled again only
-// once every frame recorded before may have completed: a selection made on the GPU may draw any
-// chunk the tree held when it was recorded. Chunks come from a BuiltChunks shared with other
-// renderers if given one.
+// selection first asks for them (terrain/lod_selection.h), at once or, for a selection made on the
+// GPU, in the background while the rendering thread records a frame, written into a free slot,
+// and kept until the pool is full; then the chunks used longest ago go. A slot emptied is filled
+// again only once every frame recorded before may have completed: a selection made on the GPU may
+// draw any chunk the tree held when it was recorded. Chunks come from a BuiltChunks shared with
+// other renderers if given one.
 #include <chrono>
 #include <exception>
 #include <memory>
@@ -82,9 +83,11 @@ class TerrainChunkCache : public terrain::ChunkSource {
     std::exception_ptr error;
     std::jthread thread;
   };
+  using TimePoint = std::chrono::steady_clock::time_point;
   std::vector<Job> TakeSlotsFor(std::span<const terrain::ChunkId> ids);
-  std::optional<std::chrono::steady_clock::time_point> Deadline() const;
-  void RunJobs(std::span<Job> jobs, std::optional<std::chrono::steady_clock::time_point> deadline) const;
+  std::optional<TimePoint> Deadline() const;  // the frame's budget's end, if it has one
+  void RunJobs(std::span<Job> jobs, std::optional<TimePoint> deadline) const;
+  bool BuildingInBackground(const terrain::ChunkId& id) const;
   void TakeIn(std::span<const Job> jobs);
   std::optional<uint32_t> TakeSlot();
   void EmptyLeastUsed();
