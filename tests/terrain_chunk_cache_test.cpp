@@ -1,3 +1,4 @@
+// CTest label "sanitizer": chunks built on other threads into the shared vertex buffer: run under the sanitizers too.
 // The terrain chunk cache (src/aerial/render/terrain_chunk_cache.h): its eviction where a GPU's
 // selection draws (the chunks it drew, TerrainChunkCache::Used, and their ancestors, which its
 // walk from the root passes through, count as used; a slot emptied is filled again only after

@@ -202,8 +202,8 @@ void TerrainChunkCache::FinishBackgroundBuilds() {
   if (!background_) return;
   background_->thread.join();
   const std::unique_ptr<BackgroundBuild> done = std::move(background_);
+  TakeIn(done->jobs);  // the chunks built before an error, and the other slots back to the pool
   if (done->error) std::rethrow_exception(done->error);
-  TakeIn(done->jobs);
 }
 
 int32_t TerrainChunkCache::VertexOffset(const ChunkId& id) const {
