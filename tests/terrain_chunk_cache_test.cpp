@@ -144,5 +144,19 @@ TEST_F(TerrainChunkCacheTest, BuildWaitsForTheBackgroundOnlyForAChunkItIsBuildin
   EXPECT_EQ(std::unique(slots.begin(), slots.end()), slots.end()) << "two chunks in one slot";
 }
 
+// The frame's selection and the shadow tiles' may ask for the same chunk in one batch: it is built
+// once, in one slot.
+TEST_F(TerrainChunkCacheTest, AChunkAskedForTwiceInOneCallIsBuiltOnce) {
+  BeginFrame();
+  const ChunkId a{1, 0, 0}, b{1, 1, 0}, c{1, 0, 1};
+  cache_.BuildInBackground(std::vector<ChunkId>{a, b, a});
+  cache_.FinishBackgroundBuilds();
+  cache_.Build(std::vector<ChunkId>{c, c});
+  TakeChanges();
+  EXPECT_EQ(cache_.built_this_frame(), 3);
+  EXPECT_EQ(cache_.size(), 3u);
+  EXPECT_EQ(slot_of_.size(), 3u);
+}
+
 }  // namespace
 }  // namespace aerial::testing

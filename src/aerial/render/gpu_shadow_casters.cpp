@@ -35,19 +35,21 @@ void GpuShadowCasters::Apply(const std::vector<TerrainChunkCache::SlotChange>& c
   }
 }
 
-void GpuShadowCasters::ReadFeedback(uint32_t feedback, TerrainChunkCache& cache) {
+std::vector<terrain::ChunkId> GpuShadowCasters::ReadFeedback(uint32_t feedback, TerrainChunkCache& cache) {
+  std::vector<terrain::ChunkId> requested;
   for (Tile& tile : tiles_) {
     if (!tile.selection) continue;
     GpuChunkSelection::Feedback read = tile.selection->ReadFeedback(feedback);
     if (read.generation <= tile.read_generation) continue;
     tile.read_generation = read.generation;
     for (uint32_t slot : read.drawn_slots) cache.Used(slot);
-    cache.Build(read.requested);
+    requested.insert(requested.end(), read.requested.begin(), read.requested.end());
     if (read.generation != tile.drawn_generation || !tile.made) continue;
     tile.made->camera_slack_m = TrustedSlackM(read.camera_slack_m);
     tile.made->whole = read.deferred == 0;
     tile.read = true;
   }
+  return requested;
 }
 
 bool GpuShadowCasters::Kept(int cascade, const terrain::LodView& frame_view, const ShadowCascade& now,

@@ -50,8 +50,9 @@ class GpuShadowCasters {
   void Apply(const std::vector<TerrainChunkCache::SlotChange>& changes);
 
   // Reads the feedbacks written with `feedback` (its frame has completed): the chunks drawn count
-  // as used, those asked for are built (the caller then Applies the cache's slot changes).
-  void ReadFeedback(uint32_t feedback, TerrainChunkCache& cache);
+  // as used; returns those asked for, for the caller to build (and then Apply the cache's slot
+  // changes).
+  std::vector<terrain::ChunkId> ReadFeedback(uint32_t feedback, TerrainChunkCache& cache);
 
   // Whether the tile of `cascade` keeps its casters (see above); moved: its window moved.
   bool Kept(int cascade, const terrain::LodView& frame_view, const ShadowCascade& now, bool moved) const;

@@ -461,19 +461,21 @@ void Renderer::SelectTerrain(const Scene& scene, bool complete, uint32_t slot) {
 void Renderer::PrepareGpuTerrainSelection(const terrain::LodView& view, bool complete, uint32_t slot) {
   // The chunks the last frame asked to build join the tree (they were built beside that frame).
   terrain_->FinishBackgroundBuilds();
-  if (gpu_casters_) gpu_casters_->ReadFeedback(slot, *terrain_);
-  // The slot's last frame has completed, and with it the selection it recorded, if any. What it
+  // The slot's last frame has completed, and with it the selections it recorded, if any. What they
   // asked for is built beside this frame, which draws the parents meanwhile; a one-off frame
   // builds it first.
+  std::vector<terrain::ChunkId> requested;
+  if (gpu_casters_) requested = gpu_casters_->ReadFeedback(slot, *terrain_);
   if (GpuChunkSelection::Feedback feedback = gpu_terrain_->ReadFeedback(slot);
       feedback.generation > gpu_terrain_feedback_.generation) {
     for (uint32_t drawn : feedback.drawn_slots) terrain_->Used(drawn);
-    if (complete)
-      terrain_->Build(feedback.requested);
-    else
-      terrain_->BuildInBackground(feedback.requested);
+    requested.insert(requested.begin(), feedback.requested.begin(), feedback.requested.end());
     gpu_terrain_feedback_ = std::move(feedback);
   }
+  if (complete)
+    terrain_->Build(requested);
+  else
+    terrain_->BuildInBackground(requested);
   int deferred = gpu_terrain_feedback_.deferred;
   if (complete) {
     // Every chunk the GPU may ask for: those of the CPU's rule without the horizon, which hides

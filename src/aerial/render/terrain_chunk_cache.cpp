@@ -5,6 +5,7 @@
 #include <cstring>
 #include <exception>
 #include <thread>
+#include <unordered_set>
 
 #include "aerial/error.h"
 
@@ -121,8 +122,9 @@ std::optional<uint32_t> TerrainChunkCache::TakeSlot() {
 
 std::vector<TerrainChunkCache::Job> TerrainChunkCache::TakeSlotsFor(std::span<const ChunkId> ids) {
   std::vector<Job> jobs;
+  std::unordered_set<ChunkId, terrain::ChunkIdHash> taken;
   for (const ChunkId& id : ids) {
-    if (chunks_.count(id)) continue;
+    if (chunks_.count(id) || !taken.insert(id).second) continue;
     std::optional<uint32_t> slot = TakeSlot();
     if (!slot) break;  // the pool is full of chunks in use: the rest waits for a later frame
     jobs.push_back({id, *slot});
