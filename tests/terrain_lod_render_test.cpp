@@ -406,27 +406,32 @@ TEST_F(LeanFrame, TerrainSelectedOnTheGpuDrawsTheCpuSelectionsPicture) {
 }
 
 // Streamed, the GPU's selections (the frame's and the shadow casters') ask for the chunks they
-// lack, the CPU builds them beside the frame that reads that selection back, and the frame after
-// takes them in (a level of the tree per round of frames); once the view holds still the
-// frame settles on the one-off frame of that view, bit for bit.
+// lack, the CPU builds them once it reads that selection back (a level of the tree per round of
+// frames), before it records the frame or, on other threads, beside it (the frame after takes them
+// in: a frame more a round); once the view holds still the frame settles on the one-off frame of
+// that view, bit for bit, either way.
 TEST_F(LeanFrame, TerrainSelectedOnTheGpuSettlesOnTheOneOffFrame) {
   Scene first = BuildPreset("noon", FullTables().atmosphere().bottom_radius_m);
   Scene scene = first;
   scene.camera.yaw_deg += 90.0;  // ground the first frame did not need
-  RendererOptions options{{.width = kWidth, .height = kHeight}};
-  options.terrain_selector = TerrainSelector::kGpu;
-  Renderer streamed(FullTables(), first, options);
-  streamed.Render(first, kStream);
-  streamed.Render(scene, kStream);
-  EXPECT_FALSE(streamed.frame_info().settled);
-  int frames = 2;
-  for (; frames < 40 && !streamed.frame_info().settled; ++frames) streamed.Render(scene, kStream);
-  std::printf("settled after %d frames, %d chunks built in the last\n", frames, streamed.frame_info().built);
-  EXPECT_TRUE(streamed.frame_info().settled);
-  EXPECT_EQ(streamed.frame_info().deferred, 0);
-  Renderer fresh(FullTables(), scene, options);
-  fresh.Render(scene);
-  EXPECT_EQ(streamed.ReadOutput().rgba, fresh.ReadOutput().rgba);
+  for (bool in_background : {false, true}) {
+    RendererOptions options{{.width = kWidth, .height = kHeight}};
+    options.terrain_selector = TerrainSelector::kGpu;
+    options.terrain_builds_in_background = in_background;
+    Renderer streamed(FullTables(), first, options);
+    streamed.Render(first, kStream);
+    streamed.Render(scene, kStream);
+    EXPECT_FALSE(streamed.frame_info().settled);
+    int frames = 2;
+    for (; frames < 40 && !streamed.frame_info().settled; ++frames) streamed.Render(scene, kStream);
+    std::printf("chunks built %s: settled after %d frames, %d chunks built in the last\n",
+                in_background ? "in the background" : "before the frame", frames, streamed.frame_info().built);
+    EXPECT_TRUE(streamed.frame_info().settled);
+    EXPECT_EQ(streamed.frame_info().deferred, 0);
+    Renderer fresh(FullTables(), scene, options);
+    fresh.Render(scene);
+    EXPECT_EQ(streamed.ReadOutput().rgba, fresh.ReadOutput().rgba);
+  }
 }
 
 }  // namespace

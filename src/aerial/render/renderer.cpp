@@ -274,10 +274,12 @@ std::unique_ptr<TerrainChunkCache> TerrainCache(const vk::Context& context, cons
                                              options.terrain_selector == TerrainSelector::kGpu);
 }
 
-// The options with TerrainSelector::kAuto resolved for the device.
-RendererOptions WithTerrainSelector(const vk::Context& context, RendererOptions options) {
+// The options with what they leave to the device resolved for it: TerrainSelector::kAuto and
+// terrain_builds_in_background.
+RendererOptions ForTheDevice(const vk::Context& context, RendererOptions options) {
   if (options.terrain_selector == TerrainSelector::kAuto)
     options.terrain_selector = context.cpu_device() ? TerrainSelector::kCpu : TerrainSelector::kGpu;
+  if (!options.terrain_builds_in_background) options.terrain_builds_in_background = !context.cpu_device();
   return options;
 }
 
@@ -342,7 +344,7 @@ int RenderOptions::render_height() const { return std::max(1, int(std::lround(he
 
 Renderer::Renderer(const AtmosphereTables& tables, const Scene& scene, const RendererOptions& options)
     : tables_(tables),
-      options_(WithTerrainSelector(tables.context(), (options.Validate(), options))),
+      options_(ForTheDevice(tables.context(), (options.Validate(), options))),
       geometry_(tables.context(), scene, options.frames_in_flight,
                 ReferenceTerrain(scene, options, tables.atmosphere().bottom_radius_m)),
       terrain_(TerrainCache(tables.context(), scene, options_, tables.atmosphere().bottom_radius_m)),
@@ -462,8 +464,8 @@ void Renderer::PrepareGpuTerrainSelection(const terrain::LodView& view, bool com
   // The chunks the last frame asked to build join the tree (they were built beside that frame).
   terrain_->FinishBackgroundBuilds();
   // The slot's last frame has completed, and with it the selections it recorded, if any. What they
-  // asked for is built beside this frame, which draws the parents meanwhile; a one-off frame
-  // builds it first.
+  // asked for is built beside this frame, which draws the parents meanwhile (or before it records,
+  // where the device runs its frame on the CPU's cores); a one-off frame builds it first.
   std::vector<terrain::ChunkId> requested;
   if (gpu_casters_) requested = gpu_casters_->ReadFeedback(slot, *terrain_);
   if (GpuChunkSelection::Feedback feedback = gpu_terrain_->ReadFeedback(slot);
@@ -472,7 +474,7 @@ void Renderer::PrepareGpuTerrainSelection(const terrain::LodView& view, bool com
     requested.insert(requested.begin(), feedback.requested.begin(), feedback.requested.end());
     gpu_terrain_feedback_ = std::move(feedback);
   }
-  if (complete)
+  if (complete || !*options_.terrain_builds_in_background)
     terrain_->Build(requested);
   else
     terrain_->BuildInBackground(requested);

@@ -2,6 +2,8 @@
 // What aerial's own tools choose of a frame besides the public RenderOptions (aerial/renderer.h):
 // the fixed terrain mesh the level of detail is measured against (`--terrain mesh`) and the passes
 // a benchmark leaves out. A caller's frame is always the level of detail's, with every pass.
+#include <optional>
+
 #include "aerial/renderer.h"
 
 namespace aerial {
@@ -63,6 +65,11 @@ struct RendererOptions : RenderOptions {
   // off: this renderer builds its own, as aerial_bench_render's timed frames do, so that a
   // configuration measured after another pays for its chunks too (their CPU times are figures).
   bool share_built_terrain = true;
+  // Where the chunks the GPU's terrain selections ask for are built: on other threads beside the
+  // frame (true), as engines stream terrain, or on the rendering thread before it records (false).
+  // Unset: beside the frame, but on a CPU device, whose frame runs on the same cores: there,
+  // building beside it made the frame's GPU time 2-3% longer (docs/speed.md).
+  std::optional<bool> terrain_builds_in_background;
 };
 
 // Whether the opaque pass writes its surfaces' radiance and distance and a full-screen pass after

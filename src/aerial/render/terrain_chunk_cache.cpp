@@ -7,6 +7,9 @@
 #include <thread>
 #include <unordered_set>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include "aerial/error.h"
 
 namespace aerial {
@@ -16,6 +19,7 @@ using terrain::ChunkId;
 using terrain::kChunkVertices;
 
 constexpr size_t kSlotBytes = kChunkVertices * sizeof(Vertex);
+constexpr int kBackgroundNice = 19;
 
 vk::Buffer IndexBuffer(const vk::Context& context) {
   const std::vector<uint32_t>& indices = terrain::ChunkIndices();
@@ -192,6 +196,8 @@ void TerrainChunkCache::BuildInBackground(std::span<const ChunkId> ids) {
   if (jobs.empty()) return;
   background_ = std::make_unique<BackgroundBuild>(BackgroundBuild{.jobs = std::move(jobs)});
   background_->thread = std::jthread([this, build = background_.get(), deadline = Deadline()] {
+    // The least priority, for this thread and the ones it starts: the rendering thread comes first.
+    setpriority(PRIO_PROCESS, gettid(), kBackgroundNice);
     try {
       RunJobs(build->jobs, deadline);
     } catch (...) {
