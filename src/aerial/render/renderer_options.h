@@ -67,8 +67,8 @@ struct RendererOptions : RenderOptions {
   bool share_built_terrain = true;
   // Where the chunks the GPU's terrain selections ask for are built: on other threads beside the
   // frame (true), as engines stream terrain, or on the rendering thread before it records (false).
-  // Unset: beside the frame, but on a CPU device, whose frame runs on the same cores: there,
-  // building beside it made the frame's GPU time 2-3% longer (docs/speed.md).
+  // Unset: beside the frame, except on a CPU device, whose frame runs on the cores the builders
+  // would take (docs/speed.md).
   std::optional<bool> terrain_builds_in_background;
 };
 
