@@ -29,9 +29,10 @@
 layout(constant_id = 3) const int kSunVisibilityFromCache = 0;
 layout(constant_id = 5) const bool kFroxelsPerVertex = false;
 // Reads a benchmark leaves out to measure what each costs (aerial_bench_render): the froxel
-// volume's (a constant segment instead) and the sun visibility's (1 instead). 0 in every frame.
+// volume's (a constant segment instead), the sun visibility's (1 instead) and the whole shading
+// (a constant radiance instead). 0 in every frame.
 layout(constant_id = 6) const int kReadsLeftOut = 0;
-const int kLeaveOutFroxelReads = 1, kLeaveOutSunVisibility = 2;
+const int kLeaveOutFroxelReads = 1, kLeaveOutSunVisibility = 2, kLeaveOutShading = 4;
 layout(constant_id = 8) const bool kAerialPerspectiveInFullScreenPass = false;
 layout(set = 0, binding = 5) uniform sampler3D rayleigh_froxels;
 layout(set = 0, binding = 6) uniform sampler3D mie_froxels;
@@ -66,6 +67,7 @@ Inscatter GetFragmentSegment(vec3 ray, float r, float mu, float mu_s, float nu, 
 // The fragment's radiance at the camera, its surface's sun part times sun_visibility; with the
 // aerial perspective applied in a full-screen pass, the surface's radiance and its distance.
 vec4 GetFragmentRadiance(float sun_visibility) {
+  if ((kReadsLeftOut & kLeaveOutShading) != 0) return vec4(0.05, 0.05, 0.05, 1.0);
   float distance = length(relative_position);
   vec3 ray = relative_position / distance;
   float r, mu, mu_s, nu;

@@ -95,7 +95,8 @@ struct MeshVariant {
 };
 
 std::vector<int32_t> MeshConstants(const RendererOptions& options, const MeshVariant& variant = {}) {
-  const int32_t left_out = (options.left_out_reads.froxels ? 1 : 0) | (options.left_out_reads.sun_visibility ? 2 : 0);
+  const int32_t left_out = (options.left_out_reads.froxels ? 1 : 0) | (options.left_out_reads.sun_visibility ? 2 : 0) |
+                           (options.left_out_reads.shading ? 4 : 0);
   return {PerPixel(options.mode), options.shadows ? 1 : 0, variant.light == SurfaceLight::kSunAndSky ? 1 : 0,
           variant.source == SunVisibilitySource::kCache ? 1 : 0, variant.sun_high ? 1 : 0,
           variant.froxels_per_vertex ? 1 : 0, left_out, options.ground_detail ? 1 : 0,

@@ -34,10 +34,11 @@ struct FramePasses {
 enum class SurfaceFroxelReads { kPerVertexWhereThin, kPerPixel, kPerVertex, kFullScreenPass };
 
 // Reads of the opaque fragments a benchmark leaves out to measure what each costs: the froxel
-// volume's (a constant segment instead) and the sun visibility's (1 instead). Every frame has
-// all of them.
+// volume's (a constant segment instead), the sun visibility's (1 instead), or every read and
+// operation of their shading (a constant radiance instead: what is left of the opaque pass is its
+// rasterization, its vertices and its depth tests). Every frame has all of them.
 struct LeftOutReads {
-  bool froxels = false, sun_visibility = false;
+  bool froxels = false, sun_visibility = false, shading = false;
 };
 
 // RendererOptions{{.width = 96, .height = 54}, TerrainMode::kStaticMesh}.
