@@ -4,18 +4,17 @@
 // (aerial/bench/frame_measurement.h), the camera moving a little every frame so that each frame
 // rebuilds its froxel volume and sky-view table: the frame as `aerial render` and the viewer draw
 // it, the same with a still camera, and with a still camera under a moving sun; all three again
-// without the sun's shadow map (a moving sun redraws every tile of the shadow map, a moving camera
-// only the tiles whose window or casters changed, shown as tiles redrawn per frame; a still view
-// keeps it and the screen's sun visibility: shadows on minus off is the shadows' cost in each
-// case); the frame with aerial perspective read per pixel from the tables; with the fixed
-// 294K-triangle terrain mesh instead of the level of detail; without the terrain's occlusion
-// culling; with one part left out at a time; and the moving, still and moving-sun frames with the
-// surfaces' shading and the sky left out, the floor of what the frame rasterizes. lavapipe defers rasterization and its threads
-// take a timestamp when they reach it, so a pass's interval can hold the work of others (even of a
-// compute pass, on a loaded machine): a raster part's cost is the frame's time minus the time of
-// the frame without it, and the passes' timestamps are indications. Each frame also has its wall
-// clock time, CPU work included. A full-screen pass with one 3D tap, timed in the same run, is the
-// unit of cost.
+// without the sun's shadow map (a moving sun redraws a tile a frame, a moving camera only the tiles
+// whose window or casters changed, shown as tiles redrawn per frame; a still view keeps it and the
+// screen's sun visibility: shadows on minus off is the shadows' cost in each case); all three
+// again with the surfaces' shading and the sky left out, the floor of what the frame rasterizes;
+// the frame with aerial perspective read per pixel from the tables; with the fixed 294K-triangle
+// terrain mesh instead of the level of detail; without the terrain's occlusion culling; and with
+// one part left out at a time. lavapipe defers rasterization and its threads take a timestamp when
+// they reach it, so a pass's interval can hold the work of others (even of a compute pass, on a
+// loaded machine): a raster part's cost is the frame's time minus the time of the frame without
+// it, and the passes' timestamps are indications. Each frame also has its wall clock time, CPU
+// work included. A full-screen pass with one 3D tap, timed in the same run, is the unit of cost.
 #include <algorithm>
 #include <cstdio>
 #include <functional>
