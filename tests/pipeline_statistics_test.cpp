@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "aerial/render/renderer.h"
 #include "aerial/render/renderer_options.h"
